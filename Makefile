@@ -1,0 +1,29 @@
+# hertzdash top-level targets. `make figures` and `make test` are the two
+# commands the README promises; both install missing Debian packages first.
+BUILD   ?= build
+JOBS    ?= $(shell nproc)
+FIGURES ?= paper/figures
+
+.PHONY: all deps configure build test figures clean
+
+all: build
+
+deps:
+	@tools/install-deps.sh debian-packages.txt
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+configure: deps $(BUILD)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+figures: build
+	validation/run_studies.sh $(BUILD) $(FIGURES)
+
+clean:
+	rm -rf $(BUILD)

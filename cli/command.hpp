@@ -1,0 +1,19 @@
+#pragma once
+// Each subcommand registers itself on the app; main() lists the registrations.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace hertzdash::cli {
+
+/// A registered subcommand and what it runs once its options are parsed
+/// (returns the exit code; throws InvalidParameter for bad input).
+struct Command {
+  CLI::App* subcommand;
+  std::function<int()> run;
+};
+
+/// `hertzdash simulate`: one drop test, summary as text or JSON, optional trace CSV.
+Command add_simulate_command(CLI::App& app);
+
+}  // namespace hertzdash::cli

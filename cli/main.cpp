@@ -1,0 +1,42 @@
+// hertzdash: command-line front end. Parses, validates, calls the library, prints.
+// Exit codes: 0 success, 2 invalid input (the message names the parameter and
+// its valid range), 1 any other failure. No output file is left half-written.
+#include "cli/command.hpp"
+#include "model/csv_table.hpp"
+#include "model/invalid_parameter.hpp"
+
+#include <iostream>
+#include <vector>
+
+int main(int argc, char** argv) {
+  CLI::App app{"hertzdash: Hertz spring + nonlinear dashpot impact models (Hongo et al.)"};
+  app.require_subcommand(1);
+  const std::vector<hertzdash::cli::Command> commands{
+      hertzdash::cli::add_simulate_command(app),
+  };
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "hertzdash: " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    for (const auto& command : commands)
+      if (command.subcommand->parsed()) return command.run();
+  } catch (const hertzdash::InvalidParameter& e) {
+    std::cerr << "hertzdash: " << e.what() << "\n";
+    return 2;
+  } catch (const hertzdash::DataError& e) {
+    std::cerr << "hertzdash: bad data file: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "hertzdash: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 1;
+}

@@ -1,0 +1,82 @@
+#include "cli/setup_options.hpp"
+
+#include "model/damping/registry.hpp"
+#include "model/invalid_parameter.hpp"
+
+#include <map>
+
+namespace hertzdash::cli {
+
+void SetupOptions::add_to(CLI::App& app) {
+  damping_ = std::string(default_damping_law);
+  app.add_option("--rod", rod_, "Rod of Tables 1-3: steel, duralumin-a, duralumin-b, duralumin-c")->capture_default_str();
+  app.add_option("--height", height_m_, "Drop height h [m], free fall from rest")->capture_default_str();
+  impact_velocity_opt_ = app.add_option("--impact-velocity", impact_velocity_mps_,
+                                        "Approach speed at contact onset [m/s]; overrides --height");
+  mass_opt_ = app.add_option("--mass", mass_kg_, "Rod mass [kg] (default: Table 1)");
+  restitution_opt_ = app.add_option("--restitution", restitution_,
+                                    "Input coefficient of restitution e in (0,1] (default: Table 2; 1 = undamped)");
+  ball_E_opt_ = app.add_option("--ball-E", ball_E_, "Hemisphere Young's modulus [Pa] (default: 2.0e9, assumed)");
+  ball_nu_opt_ = app.add_option("--ball-nu", ball_nu_, "Hemisphere Poisson ratio (default: 0.40, assumed)");
+  ball_radius_opt_ = app.add_option("--ball-radius", ball_radius_, "Hemisphere radius R [m] (default: 0.0127)");
+  rod_E_opt_ = app.add_option("--rod-E", rod_E_, "Rod Young's modulus [Pa]; inf for a rigid flat (default: Table 3)");
+  rod_nu_opt_ = app.add_option("--rod-nu", rod_nu_, "Rod Poisson ratio (default: 0.30 steel, 0.33 duralumin, assumed)");
+  gravity_opt_ = app.add_option("--gravity", gravity_, "Gravity g [m/s^2], 0 allowed (default: 9.80665)");
+  app.add_flag("--no-tension", no_tension_, "Clamp the contact force at >= 0; contact ends where it reaches zero");
+  app.add_option("--zeta", zeta_, "Damping ratio from e: paper (eq. 6) or exact (linear oscillator)")
+      ->capture_default_str();
+  app.add_option("--damping", damping_, "Damping law (see `hertzdash models`): " + registered_law_names())
+      ->capture_default_str();
+}
+
+DropTestSetup SetupOptions::resolve(const PaperParameters& paper) const {
+  DropTestSetup s = paper_setup(paper, rod_, height_m_);
+  if (impact_velocity_opt_->count()) s.impact_velocity_mps = impact_velocity_mps_;
+  if (mass_opt_->count()) s.mass_kg = mass_kg_;
+  if (restitution_opt_->count()) s.restitution = restitution_;
+  if (ball_E_opt_->count()) s.ball.E_Pa = ball_E_;
+  if (ball_nu_opt_->count()) s.ball.nu = ball_nu_;
+  if (ball_radius_opt_->count()) s.ball_radius_m = ball_radius_;
+  if (rod_E_opt_->count()) s.rod.E_Pa = rod_E_;
+  if (rod_nu_opt_->count()) s.rod.nu = rod_nu_;
+  if (gravity_opt_->count()) s.gravity_mps2 = gravity_;
+  s.no_tension = no_tension_;
+  if (zeta_ == "paper") s.damping.zeta_form = ZetaForm::paper;
+  else if (zeta_ == "exact") s.damping.zeta_form = ZetaForm::exact;
+  else throw InvalidParameter("--zeta", zeta_, "one of: paper, exact");
+  validate(s);
+  with_damping_law(damping_, [](auto) {});  // rejects an unknown law before any work
+  return s;
+}
+
+void SolverOptions::add_to(CLI::App& app) {
+  app.add_option("--integrator", integrator_, "euler, rk4 or cvode")->capture_default_str();
+  app.add_option("--dt", dt_s_, "Fixed step [s] for euler and rk4")->capture_default_str();
+  app.add_flag("--no-event-location", no_event_location_,
+               "euler/rk4: handle events at the end of the step that crosses them (convergence studies)");
+  app.add_option("--rtol", rtol_, "CVODE relative tolerance")->capture_default_str();
+  app.add_option("--atol", atol_, "CVODE absolute tolerance [m, m/s]")->capture_default_str();
+  app.add_option("--cvode-method", cvode_method_, "CVODE method: adams or bdf")->capture_default_str();
+  app.add_option("--max-step", max_step_s_, "CVODE largest step [s]; 0 = no limit")->capture_default_str();
+}
+
+SolverSettings SolverOptions::resolve() const {
+  static const std::map<std::string, IntegratorKind> kinds{
+      {"euler", IntegratorKind::euler}, {"rk4", IntegratorKind::rk4}, {"cvode", IntegratorKind::cvode}};
+  SolverSettings s;
+  const auto k = kinds.find(integrator_);
+  if (k == kinds.end()) throw InvalidParameter("--integrator", integrator_, "one of: euler, rk4, cvode");
+  s.integrator = k->second;
+  s.fixed_step.dt = dt_s_;
+  s.fixed_step.locate_events = !no_event_location_;
+  s.cvode.rtol = rtol_;
+  s.cvode.atol = atol_;
+  s.cvode.max_step = max_step_s_;
+  if (cvode_method_ == "adams") s.cvode.method = CvodeMethod::adams;
+  else if (cvode_method_ == "bdf") s.cvode.method = CvodeMethod::bdf;
+  else throw InvalidParameter("--cvode-method", cvode_method_, "one of: adams, bdf");
+  validate(s);
+  return s;
+}
+
+}  // namespace hertzdash::cli

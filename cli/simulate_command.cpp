@@ -1,0 +1,105 @@
+// `hertzdash simulate`: one drop test of the paper's set-up, any law, any integrator.
+#include "cli/command.hpp"
+#include "cli/setup_options.hpp"
+#include "validation/common/csv_writer.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+
+namespace hertzdash::cli {
+
+namespace {
+
+struct SimulateOptions {
+  SetupOptions setup;
+  SolverOptions solver;
+  std::string trace_path;
+  bool json = false;
+};
+
+// Parameters are text; numbers and booleans go into JSON as such.
+nlohmann::ordered_json json_value(const std::string& text) {
+  if (text == "true" || text == "false") return text == "true";
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (!text.empty() && end == text.c_str() + text.size() && std::isfinite(v)) return v;
+  return text;
+}
+
+nlohmann::ordered_json to_json(const ImpactSummary& s, const Parameters& inputs) {
+  nlohmann::ordered_json j;
+  j["e_effective"] = s.e_effective;
+  j["peak_force_N"] = s.peak_force_N;
+  j["max_deformation_m"] = s.max_deformation_m;
+  j["contact_time_s"] = s.contact_time_s;
+  j["impact_velocity_mps"] = s.impact_velocity_mps;
+  j["rebound_velocity_mps"] = s.rebound_velocity_mps;
+  j["separated"] = s.separated;
+  j["K"] = s.K;
+  for (const NamedValue& c : s.law_coefficients) j[c.name] = c.value;
+  j["steps"] = s.work.steps;
+  j["rhs_evaluations"] = s.work.rhs_evaluations;
+  j["events"] = s.work.events;
+  nlohmann::ordered_json in;
+  for (const auto& [name, value] : inputs) in[name] = json_value(value);
+  j["inputs"] = in;
+  j["git_revision"] = git_revision();
+  return j;
+}
+
+void print_text(const ImpactSummary& s, std::string_view law, IntegratorKind integrator) {
+  std::cout << fmt::format("hertzdash simulate: damping law '{}', integrator {}\n", law, to_string(integrator));
+  std::cout << fmt::format("  impact velocity   {:.6g} m/s\n", s.impact_velocity_mps);
+  std::cout << fmt::format("  rebound velocity  {:.6g} m/s\n", s.rebound_velocity_mps);
+  std::cout << fmt::format("  e_effective       {:.6g}\n", s.e_effective);
+  std::cout << fmt::format("  peak force        {:.6g} N\n", s.peak_force_N);
+  std::cout << fmt::format("  max deformation   {:.6g} m\n", s.max_deformation_m);
+  std::cout << fmt::format("  contact time      {:.6g} s\n", s.contact_time_s);
+  std::cout << fmt::format("  K                 {:.6g} N/m^1.5\n", s.K);
+  for (const NamedValue& c : s.law_coefficients) std::cout << fmt::format("  {:<17} {:.6g}\n", c.name, c.value);
+  std::cout << fmt::format("  work              {} steps, {} rhs evaluations\n", s.work.steps, s.work.rhs_evaluations);
+  if (!s.separated) std::cout << "  note: the rod did not separate (it came to rest on the ball)\n";
+}
+
+}  // namespace
+
+Command add_simulate_command(CLI::App& app) {
+  auto opt = std::make_shared<SimulateOptions>();
+  CLI::App* sub = app.add_subcommand("simulate", "Simulate one drop of a rod onto the nylon hemisphere");
+  opt->setup.add_to(*sub);
+  opt->solver.add_to(*sub);
+  sub->add_option("--trace", opt->trace_path, "Write the contact-phase time series to this CSV file");
+  sub->add_flag("--json", opt->json, "Print the summary as one JSON object");
+
+  return {sub, [opt]() {
+            const PaperParameters paper = load_paper_parameters();
+            const DropTestSetup setup = opt->setup.resolve(paper);
+            const SolverSettings solver = opt->solver.resolve();
+            const Parameters inputs = describe_run(setup, opt->setup.damping(), solver);
+
+            ImpactSimulator simulator(solver);
+            std::vector<TraceSample> trace;
+            const ImpactSummary s =
+                simulator.run(setup, opt->setup.damping(), opt->trace_path.empty() ? nullptr : &trace);
+
+            if (!opt->trace_path.empty()) {
+              CsvWriter csv("hertzdash simulate: contact-phase time series (x = deformation, force compressive "
+                            "positive, accel/velocity of the rod downward positive)",
+                            inputs, trace_columns());
+              for (const TraceSample& r : trace)
+                csv.add_row({r.t_s, r.x_m, r.xdot_mps, r.force_N, r.accel_mps2, r.rod_displacement_m,
+                             r.rod_velocity_mps});
+              csv.save(opt->trace_path);
+            }
+            if (opt->json) std::cout << to_json(s, inputs).dump(2) << "\n";
+            else print_text(s, opt->setup.damping(), solver.integrator);
+            return 0;
+          }};
+}
+
+}  // namespace hertzdash::cli

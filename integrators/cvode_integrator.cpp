@@ -1,0 +1,147 @@
+#include "integrators/cvode_integrator.hpp"
+
+#include <cvodes/cvodes.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <stdexcept>
+#include <vector>
+
+namespace hertzdash {
+
+const char* to_string(CvodeMethod m) { return m == CvodeMethod::adams ? "adams" : "bdf"; }
+
+namespace {
+
+// Every SUNDIALS return code is checked; failures name the call and CVODE's flag.
+void check(int flag, const char* call) {
+  if (flag < 0) {
+    throw std::runtime_error(std::string("CVODE: ") + call + " failed with " + CVodeGetReturnFlagName(flag));
+  }
+}
+template <class T> T* check_ptr(T* p, const char* call) {
+  if (p == nullptr) throw std::runtime_error(std::string("CVODE: ") + call + " returned NULL");
+  return p;
+}
+
+int rhs_thunk(realtype t, N_Vector y, N_Vector dy, void* user_data) {
+  auto* cb = static_cast<CvodeCallbacks*>(user_data);
+  cb->rhs(cb->system, t, N_VGetArrayPointer(y), N_VGetArrayPointer(dy));
+  return 0;
+}
+
+int events_thunk(realtype t, N_Vector y, realtype* g, void* user_data) {
+  auto* cb = static_cast<CvodeCallbacks*>(user_data);
+  cb->events(cb->system, t, N_VGetArrayPointer(y), g);
+  return 0;
+}
+
+}  // namespace
+
+struct CvodeIntegrator::Impl {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  SUNNonlinearSolver NLS = nullptr;
+  void* mem = nullptr;
+  int dimension = 0;
+  int event_count = 0;
+  std::vector<int> roots;
+  std::vector<int> direction;  ///< -1 each: events fire as g decreases through zero
+
+  ~Impl() {
+    if (mem) CVodeFree(&mem);
+    if (NLS) SUNNonlinSolFree(NLS);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+CvodeIntegrator::CvodeIntegrator(int dimension, int event_count, const CvodeOptions& options)
+    : impl_(std::make_unique<Impl>()), options_(options) {
+  if (!(options.rtol > 0)) throw std::invalid_argument("CVODE: rtol must be > 0");
+  if (!(options.atol > 0)) throw std::invalid_argument("CVODE: atol must be > 0");
+  Impl& d = *impl_;
+  d.dimension = dimension;
+  d.event_count = event_count;
+  d.roots.assign(static_cast<std::size_t>(event_count), 0);
+  check(SUNContext_Create(nullptr, &d.ctx), "SUNContext_Create");
+  d.y = check_ptr(N_VNew_Serial(dimension, d.ctx), "N_VNew_Serial");
+  N_VConst(0.0, d.y);
+  d.mem = check_ptr(CVodeCreate(options.method == CvodeMethod::adams ? CV_ADAMS : CV_BDF, d.ctx), "CVodeCreate");
+  check(CVodeInit(d.mem, rhs_thunk, 0.0, d.y), "CVodeInit");
+  check(CVodeSetUserData(d.mem, &callbacks_), "CVodeSetUserData");
+  check(CVodeSStolerances(d.mem, options.rtol, options.atol), "CVodeSStolerances");
+  check(CVodeSetMaxNumSteps(d.mem, options.max_num_steps), "CVodeSetMaxNumSteps");
+  if (options.max_step > 0) check(CVodeSetMaxStep(d.mem, options.max_step), "CVodeSetMaxStep");
+  if (options.method == CvodeMethod::adams) {
+    // Non-stiff: a fixed-point corrector needs no Jacobian.
+    d.NLS = check_ptr(SUNNonlinSol_FixedPoint(d.y, 0, d.ctx), "SUNNonlinSol_FixedPoint");
+    check(CVodeSetNonlinearSolver(d.mem, d.NLS), "CVodeSetNonlinearSolver");
+  } else {
+    d.A = check_ptr(SUNDenseMatrix(dimension, dimension, d.ctx), "SUNDenseMatrix");
+    d.LS = check_ptr(SUNLinSol_Dense(d.y, d.A, d.ctx), "SUNLinSol_Dense");
+    check(CVodeSetLinearSolver(d.mem, d.LS, d.A), "CVodeSetLinearSolver");
+  }
+  d.direction.assign(static_cast<std::size_t>(event_count), -1);
+}
+
+CvodeIntegrator::~CvodeIntegrator() = default;
+
+void CvodeIntegrator::check_dimensions(int dimension, int event_count) const {
+  if (dimension != impl_->dimension || event_count != impl_->event_count) {
+    throw std::invalid_argument("CvodeIntegrator: system size does not match the integrator's");
+  }
+}
+
+void CvodeIntegrator::restart(double t, const double* y) {
+  Impl& d = *impl_;
+  double* yv = N_VGetArrayPointer(d.y);
+  for (int i = 0; i < d.dimension; ++i) yv[i] = y[i];
+  check(CVodeReInit(d.mem, t, d.y), "CVodeReInit");
+  if (d.event_count > 0) {
+    // CVodeReInit keeps the root finder's memory of the last root; re-initialise it
+    // so that a g_i that is zero at the restart point counts as a fresh start.
+    check(CVodeRootInit(d.mem, d.event_count, events_thunk), "CVodeRootInit");
+    check(CVodeSetRootDirection(d.mem, d.direction.data()), "CVodeSetRootDirection");
+  }
+}
+
+int CvodeIntegrator::step(double t_end, double& t, double* y) {
+  Impl& d = *impl_;
+  check(CVodeSetStopTime(d.mem, t_end), "CVodeSetStopTime");
+  realtype t_reached = t;
+  const int flag = CVode(d.mem, t_end, d.y, &t_reached, CV_ONE_STEP);
+  check(flag, "CVode");
+  t = t_reached;
+  const double* yv = N_VGetArrayPointer(d.y);
+  for (int i = 0; i < d.dimension; ++i) y[i] = yv[i];
+  if (flag == CV_ROOT_RETURN) return 1;
+  if (flag == CV_TSTOP_RETURN) return 2;
+  return 0;
+}
+
+const int* CvodeIntegrator::roots_found() {
+  check(CVodeGetRootInfo(impl_->mem, impl_->roots.data()), "CVodeGetRootInfo");
+  return impl_->roots.data();
+}
+
+IntegrationStats CvodeIntegrator::work_since_restart() const {
+  long steps = 0, rhs = 0, lin_rhs = 0;
+  check(CVodeGetNumSteps(impl_->mem, &steps), "CVodeGetNumSteps");
+  check(CVodeGetNumRhsEvals(impl_->mem, &rhs), "CVodeGetNumRhsEvals");
+  if (options_.method == CvodeMethod::bdf) {
+    check(CVodeGetNumLinRhsEvals(impl_->mem, &lin_rhs), "CVodeGetNumLinRhsEvals");
+  }
+  IntegrationStats s;
+  s.steps = steps;
+  s.rhs_evaluations = rhs + lin_rhs;
+  return s;
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,121 @@
+#pragma once
+// SUNDIALS CVODE(S) 6.4 behind the OdeSystem interface.
+//
+// Method: variable-order, variable-step Adams-Moulton (orders 1-12, fixed-point
+// corrector) or BDF (orders 1-5, Newton with a dense difference-quotient
+// Jacobian). Local error control: ||e_i|| <= rtol |y_i| + atol in the WRMS norm.
+// Events: CVODE's root finding on the system's event functions with direction
+// -1 (g decreasing through zero). After an event whose action is `restart`,
+// the integrator restarts with CVodeReInit at the event point, so no step
+// straddles a change of force law.
+//
+// One CvodeIntegrator owns its SUNContext, vectors and solver memory; integrate()
+// may be called any number of times and reuses them (CVodeReInit), so a sweep
+// over many impacts pays for the set-up once. Not thread-safe: one per thread.
+#include "integrators/ode_system.hpp"
+
+#include <memory>
+#include <string>
+
+namespace hertzdash {
+
+enum class CvodeMethod { adams, bdf };
+const char* to_string(CvodeMethod m);
+
+struct CvodeOptions {
+  CvodeMethod method = CvodeMethod::adams;
+  double rtol = 1e-8;          ///< relative tolerance, > 0
+  double atol = 1e-12;         ///< absolute tolerance (state units), > 0
+  double max_step = 0.0;       ///< largest step [s]; 0 means no limit
+  long max_num_steps = 1000000;
+};
+
+/// Type-erased view of a system, so the CVODE callbacks are plain functions.
+struct CvodeCallbacks {
+  void* system = nullptr;
+  void (*rhs)(void* system, double t, const double* y, double* dy) = nullptr;
+  void (*events)(void* system, double t, const double* y, double* g) = nullptr;
+};
+
+class CvodeIntegrator {
+ public:
+  CvodeIntegrator(int dimension, int event_count, const CvodeOptions& options);
+  ~CvodeIntegrator();
+  CvodeIntegrator(const CvodeIntegrator&) = delete;
+  CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
+
+  const CvodeOptions& options() const { return options_; }
+
+  /// Integrate `sys` from (t0, y) towards t_end; y is updated in place.
+  template <OdeSystem S, IntegrationObserver<typename S::State> Observer>
+  IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t_end, Observer& observer);
+
+ private:
+  // Non-template core: restart at (t, y), take one step towards t_end.
+  void restart(double t, const double* y);
+  /// Returns +1 on a root return, 0 on an ordinary step, and 2 at the stop time.
+  int step(double t_end, double& t, double* y);
+  const int* roots_found();
+  /// Steps and right-hand-side evaluations since the last restart (CVODE's counters).
+  IntegrationStats work_since_restart() const;
+  void check_dimensions(int dimension, int event_count) const;
+
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  CvodeOptions options_;
+  CvodeCallbacks callbacks_;
+};
+
+template <OdeSystem S, IntegrationObserver<typename S::State> Observer>
+IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double t0, double t_end,
+                                            Observer& observer) {
+  check_dimensions(S::dimension, S::event_count);
+  callbacks_.system = &sys;
+  callbacks_.rhs = [](void* s, double t, const double* yp, double* dy) {
+    Eigen::Map<typename S::State> out(dy);
+    typename S::State d;
+    static_cast<const S*>(s)->rhs(t, Eigen::Map<const typename S::State>(yp), d);
+    out = d;
+  };
+  callbacks_.events = [](void* s, double t, const double* yp, double* g) {
+    typename S::Events e;
+    static_cast<const S*>(s)->events(t, Eigen::Map<const typename S::State>(yp), e);
+    for (int i = 0; i < S::event_count; ++i) g[i] = e[i];
+  };
+
+  IntegrationStats total;
+  double t = t0;
+  restart(t, y.data());
+  observer.on_step(t, y);
+  while (t < t_end) {
+    const int kind = step(t_end, t, y.data());
+    observer.on_step(t, y);
+    if (kind == 2) break;
+    if (kind != 1) continue;
+    const int* found = roots_found();
+    bool restart_needed = false;
+    for (int i = 0; i < S::event_count; ++i) {
+      if (found[i] == 0) continue;
+      const EventAction action = sys.handle_event(i, t, y);
+      ++total.events;
+      observer.on_event(i, t, y, action);
+      if (action == EventAction::stop) {
+        total += work_since_restart();
+        total.t_final = t;
+        total.stopped_by_event = true;
+        return total;
+      }
+      restart_needed |= action == EventAction::restart;
+    }
+    if (restart_needed) {
+      total += work_since_restart();
+      restart(t, y.data());
+    }
+  }
+  total += work_since_restart();
+  total.t_final = t;
+  total.stopped_by_event = false;
+  return total;
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,67 @@
+#pragma once
+// What an integrator needs from a system, and what it reports back.
+//
+// A system offers a right-hand side y' = f(t, y) of compile-time size and a
+// fixed number of event (gap) functions g_i(t, y). An event fires when g_i
+// decreases through zero (from > 0 to <= 0); the system then decides whether
+// integration continues, restarts (its right-hand side changed form, so the
+// integrator must not carry information across the event) or stops.
+// Integrators know nothing else about the system.
+#include <Eigen/Core>
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+
+namespace hertzdash {
+
+enum class EventAction {
+  continue_integration,  ///< an observation only; the right-hand side is unchanged
+  restart,               ///< the right-hand side changed form: restart the method here
+  stop,                  ///< end the integration at this event
+};
+
+template <class S>
+concept OdeSystem = requires(S& s, const S& cs, double t, const typename S::State& y,
+                             typename S::State& dy, typename S::Events& g) {
+  { S::dimension } -> std::convertible_to<int>;
+  { S::event_count } -> std::convertible_to<int>;
+  requires std::same_as<typename S::State, Eigen::Matrix<double, S::dimension, 1>>;
+  requires std::same_as<typename S::Events, std::array<double, S::event_count>>;
+  cs.rhs(t, y, dy);
+  cs.events(t, y, g);
+  { s.handle_event(0, t, y) } -> std::same_as<EventAction>;
+};
+
+/// Receives every accepted step and every fired event (after the system handled it).
+template <class O, class State>
+concept IntegrationObserver = requires(O& o, double t, const State& y, int event, EventAction a) {
+  o.on_step(t, y);
+  o.on_event(event, t, y, a);
+};
+
+/// An observer that ignores everything.
+struct NullObserver {
+  template <class State> void on_step(double, const State&) noexcept {}
+  template <class State> void on_event(int, double, const State&, EventAction) noexcept {}
+};
+
+/// The work one integration did.
+struct IntegrationStats {
+  long steps = 0;            ///< accepted steps (event-cut steps included)
+  long rhs_evaluations = 0;  ///< right-hand-side evaluations, event location included
+  long events = 0;           ///< events fired
+  double t_final = 0.0;      ///< time reached [s]
+  bool stopped_by_event = false;
+
+  IntegrationStats& operator+=(const IntegrationStats& o) {
+    steps += o.steps;
+    rhs_evaluations += o.rhs_evaluations;
+    events += o.events;
+    t_final = o.t_final;
+    stopped_by_event = o.stopped_by_event;
+    return *this;
+  }
+};
+
+}  // namespace hertzdash

@@ -1,0 +1,61 @@
+#pragma once
+// The one extension point: a damping law.
+//
+// A law is a small class in its own header under model/damping/laws/, listed
+// once in model/damping/registry.hpp. It carries
+//   - `static constexpr LawInfo info`: name (CLI spelling), citation, formula,
+//     how its coefficients follow from (e, v0, K, m), validity range;
+//   - a constructor from the impact's ImpactConditions and the DampingSettings,
+//     which fixes its coefficients for that impact (called at contact onset);
+//   - `double force(double x, double xdot) const noexcept`: the total contact
+//     force [N], compressive positive, for deformation x >= 0 [m] and
+//     deformation rate xdot [m/s] (positive while approaching);
+//   - `std::vector<NamedValue> coefficients() const`: its fixed coefficients,
+//     with units in the names, for reports (never on the hot path).
+// The drop test, the CLI, the restitution maps and the standard tests all take
+// every registered law from the registry; see model/README.md.
+#include "model/restitution.hpp"
+
+#include <concepts>
+#include <string_view>
+#include <vector>
+
+namespace hertzdash {
+
+/// What a law's coefficients may depend on, fixed at contact onset.
+struct ImpactConditions {
+  double K;              ///< Hertz stiffness [N/m^{3/2}], eq. (3)
+  double mass_kg;        ///< impacting mass [kg]
+  double v0_mps;         ///< approach speed at contact onset [m/s], > 0
+  double restitution;    ///< input coefficient of restitution e in (0, 1]
+};
+
+/// Modelling choices shared by laws that need them.
+struct DampingSettings {
+  ZetaForm zeta_form = ZetaForm::paper;  ///< eq. (6) or the exact linear-oscillator relation
+};
+
+/// Descriptive data of a law, shown by `hertzdash models`.
+struct LawInfo {
+  std::string_view name;          ///< CLI spelling, e.g. "hunt-crossley"
+  std::string_view citation;      ///< full reference
+  std::string_view formula;       ///< the force law, plain text
+  std::string_view coefficients;  ///< how the coefficients follow from e, v0, K, m
+  std::string_view validity;      ///< stated validity range
+  bool force_continuous_at_onset; ///< F(0, v0) = 0 ?
+};
+
+struct NamedValue {
+  const char* name;
+  double value;
+};
+
+template <class L>
+concept DampingLaw = requires(const L& law, const ImpactConditions& c, const DampingSettings& s, double x) {
+  { L::info } -> std::convertible_to<LawInfo>;
+  L(c, s);
+  { law.force(x, x) } -> std::same_as<double>;
+  { law.coefficients() } -> std::same_as<std::vector<NamedValue>>;
+};
+
+}  // namespace hertzdash

@@ -1,0 +1,55 @@
+#pragma once
+// The paper's law: Hertz spring plus an equivalent viscous dashpot, eqs. (2), (5), (6), (11), (12).
+#include "model/damping/damping_law.hpp"
+
+#include <cmath>
+
+namespace hertzdash {
+
+/// Natural frequency of the Hertz contact at amplitude X [rad/s], eqs. (7)-(9) corrected
+/// (NOTES.md erratum): (1/2) m (X w)^2 = (2/5) K X^{5/2}  =>  w = sqrt((4K/(5m)) X^{1/2}).
+inline double hertz_natural_frequency(double K, double mass_kg, double amplitude_m) {
+  return std::sqrt(4.0 * K / (5.0 * mass_kg) * std::sqrt(amplitude_m));
+}
+
+/// Peak deformation estimated from the mean of the kinetic energies before and after
+/// impact, eq. (10): (1/2)(m v0^2/2 + m v0^2 e^2/2) = (2/5) K X^{5/2} [m].
+inline double paper_peak_deformation(double K, double mass_kg, double v0_mps, double e) {
+  return std::pow(5.0 * mass_kg * v0_mps * v0_mps * (1.0 + e * e) / (8.0 * K), 0.4);
+}
+
+/// F = K x^{3/2} + c_e xdot,  c_e = 2 K x^{1/2} zeta / omega_n      (eqs. 2, 5, 12)
+/// zeta from e by eq. (6); omega_n by eq. (11) (= eqs. 9 and 10 combined), fixed per
+/// impact from that impact's approach speed v0.
+class HongoPaper {
+ public:
+  static constexpr LawInfo info{
+      "hongo",
+      "T. Hongo, H. Sato, Y. Iwata, T. Komatsuzaki, Y. Hongo, Analysis of elastic impact system "
+      "composed of a ball and walls, JSME conference paper, eqs. (2)-(12).",
+      "F = K x^{3/2} + (2 K x^{1/2} zeta / omega_n) xdot",
+      "zeta = ln(1/e)/pi (eq. 6); omega_n = sqrt((4K/5m) (5 m v0^2 (1+e^2)/(8K))^{1/5}) (eq. 11)",
+      "paper: elastic bodies whose e does not depend on impact speed",
+      true};
+
+  HongoPaper(const ImpactConditions& c, const DampingSettings& s)
+      : K_(c.K),
+        zeta_(zeta_from_restitution(c.restitution, s.zeta_form)),
+        omega_n_(hertz_natural_frequency(c.K, c.mass_kg,
+                                         paper_peak_deformation(c.K, c.mass_kg, c.v0_mps, c.restitution))),
+        tau_(2.0 * zeta_ / omega_n_) {}
+
+  double force(double x, double xdot) const noexcept { return K_ * std::sqrt(x) * (x + tau_ * xdot); }
+
+  std::vector<NamedValue> coefficients() const {
+    return {{"zeta", zeta_}, {"omega_n_rad_per_s", omega_n_}, {"c_e_coefficient_N_s_per_m_1_5", K_ * tau_}};
+  }
+
+ private:
+  double K_;
+  double zeta_;
+  double omega_n_;
+  double tau_;  ///< 2 zeta / omega_n [s]: c_e = K tau x^{1/2}
+};
+
+}  // namespace hertzdash

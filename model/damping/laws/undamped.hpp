@@ -1,0 +1,28 @@
+#pragma once
+// Undamped Hertz contact: the elastic force of eq. (3) alone.
+#include "model/damping/damping_law.hpp"
+
+#include <cmath>
+
+namespace hertzdash {
+
+/// F = K x^{3/2}. Conserves energy: e_effective = 1 whatever the input e.
+class Undamped {
+ public:
+  static constexpr LawInfo info{
+      "none",
+      "H. Hertz, Ueber die Beruehrung fester elastischer Koerper, J. reine angew. Math. 92 (1882) 156-171.",
+      "F = K x^{3/2}",
+      "no coefficients; the input restitution is ignored",
+      "elastic contact, any impact speed small against the wave speed",
+      true};
+
+  Undamped(const ImpactConditions& c, const DampingSettings&) : K_(c.K) {}
+  double force(double x, double /*xdot*/) const noexcept { return K_ * x * std::sqrt(x); }
+  std::vector<NamedValue> coefficients() const { return {}; }
+
+ private:
+  double K_;
+};
+
+}  // namespace hertzdash

@@ -1,0 +1,33 @@
+#include "model/drop_test_setup.hpp"
+
+#include "model/invalid_parameter.hpp"
+
+#include <cmath>
+
+namespace hertzdash {
+
+void validate(const DropTestSetup& s) {
+  require_positive("--mass", s.mass_kg, "kg");
+  require_positive("--ball-radius", s.ball_radius_m, "m");
+  require_positive("--ball-E", s.ball.E_Pa, "Pa");
+  require_in_open("--ball-nu", s.ball.nu, -1.0, 0.5);
+  require_positive_or_infinite("--rod-E", s.rod.E_Pa, "Pa");
+  require_in_open("--rod-nu", s.rod.nu, -1.0, 0.5);
+  require_in_open_closed("--restitution", s.restitution, 0.0, 1.0);
+  require_non_negative("--height", s.height_m, "m");
+  require_non_negative("--gravity", s.gravity_mps2, "m/s^2");
+  if (s.impact_velocity_mps) {
+    require_positive("--impact-velocity", *s.impact_velocity_mps, "m/s");
+  } else if (!(s.height_m > 0 && s.gravity_mps2 > 0)) {
+    throw InvalidParameter("--height", format_value(s.height_m),
+                           "> 0 with --gravity > 0 when no --impact-velocity is given (the rod must reach the ball)");
+  }
+}
+
+double hertz_stiffness(const DropTestSetup& s) { return hertz_stiffness(s.ball_radius_m, s.ball, s.rod); }
+
+double approach_speed(const DropTestSetup& s) {
+  return s.impact_velocity_mps ? *s.impact_velocity_mps : std::sqrt(2.0 * s.gravity_mps2 * s.height_m);
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,33 @@
+#pragma once
+// The physical set-up of one drop test (Fig. 4 of the paper), validated.
+#include "model/damping/damping_law.hpp"
+#include "model/hertz.hpp"
+
+#include <optional>
+
+namespace hertzdash {
+
+/// Everything that defines one drop: constant for the run.
+struct DropTestSetup {
+  double mass_kg;            ///< rod mass m [kg], > 0
+  double ball_radius_m;      ///< hemisphere radius R [m], > 0
+  Material ball;             ///< hemisphere (nylon): E [Pa] > 0, nu in (-1, 0.5)
+  Material rod;              ///< flat rod end: E [Pa] > 0 or +inf (rigid), nu in (-1, 0.5)
+  double restitution;        ///< input e in (0, 1]; 1 is undamped for the paper's law
+  double height_m;           ///< drop height h [m] >= 0: free fall from rest, eq. (1)
+  std::optional<double> impact_velocity_mps;  ///< if set (> 0), start at contact onset with this speed
+  double gravity_mps2;       ///< g [m/s^2] >= 0, acting throughout, eq. (1)
+  bool no_tension = false;   ///< clamp the contact force at >= 0; contact then ends where it reaches zero
+  DampingSettings damping;
+};
+
+/// Throws InvalidParameter naming the CLI option and its valid range.
+void validate(const DropTestSetup& s);
+
+/// Hertz stiffness of the set-up, eq. (3) [N/m^{3/2}].
+double hertz_stiffness(const DropTestSetup& s);
+
+/// Approach speed at contact onset [m/s]: the given impact velocity, else sqrt(2 g h).
+double approach_speed(const DropTestSetup& s);
+
+}  // namespace hertzdash

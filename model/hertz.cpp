@@ -1,0 +1,26 @@
+#include "model/hertz.hpp"
+
+#include <gsl/gsl_sf_gamma.h>
+
+#include <cmath>
+
+namespace hertzdash {
+
+namespace {
+double compliance(const Material& m) { return std::isinf(m.E_Pa) ? 0.0 : (1.0 - m.nu * m.nu) / m.E_Pa; }
+}  // namespace
+
+double hertz_stiffness(double sphere_radius_m, const Material& sphere, const Material& flat) {
+  return 4.0 * std::sqrt(sphere_radius_m) / 3.0 / (compliance(sphere) + compliance(flat));
+}
+
+UndampedHertzImpact undamped_hertz_impact(double K, double mass_kg, double v0_mps) {
+  // Energy: (1/2) m v^2 + (2/5) K x^{5/2} = (1/2) m v0^2. Time to X:
+  //   t = int_0^X dx / sqrt(v0^2 - (4K/5m) x^{5/2}) = (X/v0) int_0^1 ds / sqrt(1 - s^{5/2})
+  // and with w = s^{5/2}: int = (2/5) B(2/5, 1/2). Contact lasts twice that.
+  const double X = std::pow(5.0 * mass_kg * v0_mps * v0_mps / (4.0 * K), 0.4);
+  const double tc = 0.8 * gsl_sf_beta(0.4, 0.5) * X / v0_mps;
+  return {X, K * std::pow(X, 1.5), tc};
+}
+
+}  // namespace hertzdash

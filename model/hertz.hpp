@@ -1,0 +1,28 @@
+#pragma once
+// Hertz contact of a sphere on a flat, eq. (3) of Hongo et al.
+
+namespace hertzdash {
+
+/// Elastic constants of an isotropic body.
+struct Material {
+  double E_Pa;  ///< Young's modulus [Pa]; +inf for a rigid body
+  double nu;    ///< Poisson ratio [-], in (-1, 0.5)
+};
+
+/// Hertz stiffness of a sphere of radius R on a flat, eq. (3):
+///   K = (4 sqrt(R) / 3) * ((1 - nu_s^2)/E_s + (1 - nu_w^2)/E_w)^{-1}   [N/m^{3/2}]
+/// so that the elastic contact force is K x^{3/2} for a deformation x [m].
+/// A rigid body (E = +inf) contributes nothing to the compliance sum.
+double hertz_stiffness(double sphere_radius_m, const Material& sphere, const Material& flat);
+
+/// Closed forms of the undamped Hertz impact (no gravity) at approach speed v0 [m/s]
+/// for a mass m [kg]; energy balance (1/2) m v0^2 = (2/5) K X^{5/2} gives the
+/// maximum deformation, and the half-period integral gives the contact time.
+struct UndampedHertzImpact {
+  double max_deformation_m;  ///< X = (5 m v0^2 / (4 K))^{2/5}
+  double peak_force_N;       ///< K X^{3/2}
+  double contact_time_s;     ///< (4/5) B(2/5, 1/2) X / v0  ~= 2.9432 X / v0
+};
+UndampedHertzImpact undamped_hertz_impact(double K, double mass_kg, double v0_mps);
+
+}  // namespace hertzdash

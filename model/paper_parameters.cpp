@@ -1,0 +1,65 @@
+#include "model/paper_parameters.hpp"
+
+#include "model/csv_table.hpp"
+#include "model/invalid_parameter.hpp"
+
+#include <cstdlib>
+
+namespace hertzdash {
+
+const RodData& PaperParameters::rod(const std::string& name) const {
+  std::string names;
+  for (const auto& r : rods) {
+    if (r.name == name) return r;
+    names += (names.empty() ? "" : ", ") + r.name;
+  }
+  throw InvalidParameter("--rod", name, "one of: " + names);
+}
+
+std::filesystem::path default_data_dir() {
+  if (const char* env = std::getenv("HERTZDASH_DATA_DIR"); env && *env) return env;
+  return HERTZDASH_DATA_DIR;
+}
+
+PaperParameters load_paper_parameters(const std::filesystem::path& dir) {
+  const CsvTable t1 = CsvTable::read(dir / "table1_dimensions.csv");
+  const CsvTable t2 = CsvTable::read(dir / "table2_restitution.csv");
+  const CsvTable t3 = CsvTable::read(dir / "table3_properties.csv");
+  const CsvTable as = CsvTable::read(dir / "assumptions.csv");
+  t1.require_columns({"body", "diameter_m", "length_m", "mass_kg", "provenance"});
+  t2.require_columns({"rod", "e", "e_second", "zeta_printed", "provenance"});
+  t3.require_columns({"body", "natural_frequency_hz", "E_Pa", "E_min_Pa", "E_max_Pa", "provenance"});
+  as.require_columns({"parameter", "value", "unit", "provenance"});
+  auto assumed = [&](const std::string& name) { return as.number(as.find_row("parameter", name), "value"); };
+
+  PaperParameters p;
+  p.gravity_mps2 = assumed("gravity_mps2");
+  const std::size_t b1 = t1.find_row("body", "nylon-ball"), b3 = t3.find_row("body", "nylon-ball");
+  p.ball = BallData{t1.number(b1, "diameter_m"), t1.number(b1, "length_m"), t1.number(b1, "mass_kg"),
+                    assumed("nylon_E_Pa"),       t3.number(b3, "E_min_Pa"),  t3.number(b3, "E_max_Pa"),
+                    assumed("nylon_nu"),         assumed("ball_radius_m")};
+  for (std::size_t r = 0; r < t2.rows(); ++r) {
+    const std::string& name = t2.text(r, "rod");
+    const std::size_t r1 = t1.find_row("body", name), r3 = t3.find_row("body", name);
+    const bool steel = name.rfind("steel", 0) == 0;
+    p.rods.push_back(RodData{name, t1.number(r1, "diameter_m"), t1.number(r1, "length_m"), t1.number(r1, "mass_kg"),
+                             t2.number(r, "e"), t2.number(r, "zeta_printed"), t3.number(r3, "natural_frequency_hz"),
+                             t3.number(r3, "E_Pa"), assumed(steel ? "steel_nu" : "duralumin_nu")});
+  }
+  return p;
+}
+
+DropTestSetup paper_setup(const PaperParameters& p, const std::string& rod_name, double height_m) {
+  const RodData& rod = p.rod(rod_name);
+  DropTestSetup s{};
+  s.mass_kg = rod.mass_kg;
+  s.ball_radius_m = p.ball.radius_m;
+  s.ball = Material{p.ball.E_Pa, p.ball.nu};
+  s.rod = Material{rod.E_Pa, rod.nu};
+  s.restitution = rod.restitution;
+  s.height_m = height_m;
+  s.gravity_mps2 = p.gravity_mps2;
+  return s;
+}
+
+}  // namespace hertzdash

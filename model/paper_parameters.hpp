@@ -1,0 +1,49 @@
+#pragma once
+// The paper's Tables 1-3 and the stated assumptions, read from data/*.csv.
+#include "model/drop_test_setup.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace hertzdash {
+
+/// One rod of Tables 1-3.
+struct RodData {
+  std::string name;              ///< steel, duralumin-a, duralumin-b, duralumin-c
+  double diameter_m;             ///< Table 1
+  double length_m;               ///< Table 1
+  double mass_kg;                ///< Table 1
+  double restitution;            ///< Table 2, against the nylon ball
+  double zeta_printed;           ///< Table 2, in brackets
+  double natural_frequency_hz;   ///< Table 3
+  double E_Pa;                   ///< Table 3
+  double nu;                     ///< assumption (data/assumptions.csv)
+};
+
+/// The nylon hemisphere.
+struct BallData {
+  double diameter_m, height_m, mass_kg;  ///< Table 1
+  double E_Pa;                           ///< assumption inside the catalogue range
+  double E_min_Pa, E_max_Pa;             ///< Table 3 catalogue range
+  double nu;                             ///< assumption
+  double radius_m;                       ///< assumption: diameter / 2
+};
+
+struct PaperParameters {
+  std::vector<RodData> rods;
+  BallData ball;
+  double gravity_mps2;
+  const RodData& rod(const std::string& name) const;  ///< throws InvalidParameter("--rod", ...)
+};
+
+/// The directory of the data tables: $HERTZDASH_DATA_DIR if set, else the source tree's data/.
+std::filesystem::path default_data_dir();
+
+/// Read the tables; throws DataError naming the file, line and column of any defect.
+PaperParameters load_paper_parameters(const std::filesystem::path& data_dir = default_data_dir());
+
+/// The paper's drop test for a rod at height h [m]: Table values plus assumptions.
+DropTestSetup paper_setup(const PaperParameters& p, const std::string& rod, double height_m);
+
+}  // namespace hertzdash

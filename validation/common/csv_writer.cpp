@@ -1,0 +1,49 @@
+#include "validation/common/csv_writer.hpp"
+
+#include "validation/common/atomic_file.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace hertzdash {
+
+namespace {
+std::string quoted_if_needed(const std::string& v) {
+  if (v.find_first_of(",\"\n") == std::string::npos) return v;
+  std::string q = "\"";
+  for (char c : v) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+}  // namespace
+
+CsvWriter::CsvWriter(std::string what, Parameters parameters, std::vector<std::string> columns)
+    : what_(std::move(what)), parameters_(std::move(parameters)), columns_(std::move(columns)) {}
+
+void CsvWriter::add_row(const std::vector<Cell>& cells) {
+  if (cells.size() != columns_.size()) {
+    throw std::logic_error(fmt::format("CsvWriter: row has {} cells for {} columns", cells.size(), columns_.size()));
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i) body_ += ',';
+    std::visit(
+        [&](const auto& v) {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, double>) body_ += fmt::format("{:.17g}", v);
+          else if constexpr (std::is_same_v<T, long>) body_ += std::to_string(v);
+          else body_ += quoted_if_needed(v);
+        },
+        cells[i]);
+  }
+  body_ += '\n';
+}
+
+std::string CsvWriter::str() const {
+  std::string header;
+  for (std::size_t i = 0; i < columns_.size(); ++i) header += (i ? "," : "") + columns_[i];
+  return provenance_header(what_, parameters_) + header + "\n" + body_;
+}
+
+void CsvWriter::save(const std::filesystem::path& path) const { write_file_atomically(path, str()); }
+
+}  // namespace hertzdash

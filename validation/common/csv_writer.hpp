@@ -1,0 +1,32 @@
+#pragma once
+// A CSV file under a provenance header, built in memory and saved atomically.
+#include "validation/common/provenance.hpp"
+
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace hertzdash {
+
+class CsvWriter {
+ public:
+  using Cell = std::variant<double, long, std::string>;
+
+  /// `what` says what the file holds; `parameters` go into the header.
+  CsvWriter(std::string what, Parameters parameters, std::vector<std::string> columns);
+
+  /// One row; must have one cell per column. Doubles are written with 17 significant digits.
+  void add_row(const std::vector<Cell>& cells);
+
+  std::string str() const;
+  void save(const std::filesystem::path& path) const;
+
+ private:
+  std::string what_;
+  Parameters parameters_;
+  std::vector<std::string> columns_;
+  std::string body_;
+};
+
+}  // namespace hertzdash

@@ -1,0 +1,69 @@
+#include "validation/common/impact_simulator.hpp"
+
+#include "model/invalid_parameter.hpp"
+
+#include <fmt/format.h>
+
+namespace hertzdash {
+
+const char* to_string(IntegratorKind k) {
+  switch (k) {
+    case IntegratorKind::euler: return "euler";
+    case IntegratorKind::rk4: return "rk4";
+    case IntegratorKind::cvode: return "cvode";
+  }
+  return "?";
+}
+
+void validate(const SolverSettings& s) {
+  if (s.integrator == IntegratorKind::cvode) {
+    require_positive("--rtol", s.cvode.rtol, "-");
+    require_positive("--atol", s.cvode.atol, "m, m/s");
+    require_non_negative("--max-step", s.cvode.max_step, "s");
+  } else {
+    require_positive("--dt", s.fixed_step.dt, "s");
+  }
+}
+
+std::vector<std::string> trace_columns() {
+  return {"t_s", "x_m", "xdot_mps", "force_N", "accel_mps2", "rod_displacement_m", "rod_velocity_mps"};
+}
+
+ImpactSimulator::ImpactSimulator(const SolverSettings& settings) : settings_(settings) {}
+ImpactSimulator::~ImpactSimulator() = default;
+
+ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view law, std::vector<TraceSample>* trace) {
+  ImpactSummary s;
+  with_damping_law(law, [&]<class Law>(std::type_identity<Law>) { s = run<Law>(setup, trace); });
+  return s;
+}
+
+Parameters describe_run(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver) {
+  auto num = [](double v) { return fmt::format("{}", v); };
+  Parameters p{{"damping", std::string(law)},
+               {"mass_kg", num(setup.mass_kg)},
+               {"ball_radius_m", num(setup.ball_radius_m)},
+               {"ball_E_Pa", num(setup.ball.E_Pa)},
+               {"ball_nu", num(setup.ball.nu)},
+               {"rod_E_Pa", num(setup.rod.E_Pa)},
+               {"rod_nu", num(setup.rod.nu)},
+               {"restitution", num(setup.restitution)},
+               {"zeta_form", to_string(setup.damping.zeta_form)},
+               {"height_m", num(setup.height_m)}};
+  if (setup.impact_velocity_mps) p.emplace_back("impact_velocity_input_mps", num(*setup.impact_velocity_mps));
+  p.emplace_back("gravity_mps2", num(setup.gravity_mps2));
+  p.emplace_back("no_tension", setup.no_tension ? "true" : "false");
+  p.emplace_back("integrator", to_string(solver.integrator));
+  if (solver.integrator == IntegratorKind::cvode) {
+    p.emplace_back("cvode_method", to_string(solver.cvode.method));
+    p.emplace_back("rtol", num(solver.cvode.rtol));
+    p.emplace_back("atol", num(solver.cvode.atol));
+    if (solver.cvode.max_step > 0) p.emplace_back("max_step_s", num(solver.cvode.max_step));
+  } else {
+    p.emplace_back("dt_s", num(solver.fixed_step.dt));
+    p.emplace_back("locate_events", solver.fixed_step.locate_events ? "true" : "false");
+  }
+  return p;
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,35 @@
+#include "validation/common/latex_macros.hpp"
+
+#include "validation/common/atomic_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+namespace hertzdash {
+
+LatexMacros::LatexMacros(std::string what, Parameters parameters)
+    : what_(std::move(what)), parameters_(std::move(parameters)) {}
+
+void LatexMacros::add(const std::string& name, double value, const std::string& fmt_spec) {
+  add_text(name, fmt::format(fmt::runtime(fmt_spec), value));
+}
+
+void LatexMacros::add_text(const std::string& name, const std::string& text) {
+  if (name.empty() || !std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalpha(c); })) {
+    throw std::invalid_argument("LatexMacros: macro name must be letters only: " + name);
+  }
+  body_ += "\\newcommand{\\" + name + "}{" + text + "}\n";
+}
+
+std::string LatexMacros::str() const {
+  std::string header = provenance_header(what_, parameters_);
+  std::replace(header.begin(), header.end(), '#', '%');
+  return header + body_;
+}
+
+void LatexMacros::save(const std::filesystem::path& path) const { write_file_atomically(path, str()); }
+
+}  // namespace hertzdash

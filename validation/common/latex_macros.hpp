@@ -1,0 +1,30 @@
+#pragma once
+// Numbers for the paper: a study writes paper/generated/<study>.tex holding
+// \newcommand definitions, and the paper \input's it. No hand-typed results.
+#include "validation/common/provenance.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace hertzdash {
+
+class LatexMacros {
+ public:
+  /// `what` and `parameters` go into a comment header with the git revision.
+  LatexMacros(std::string what, Parameters parameters);
+
+  /// \newcommand{\<name>}{<value formatted with fmt spec, e.g. "{:.3f}">}; name must be letters only.
+  void add(const std::string& name, double value, const std::string& fmt_spec = "{:.4g}");
+  /// \newcommand{\<name>}{<text>} (text inserted verbatim).
+  void add_text(const std::string& name, const std::string& text);
+
+  std::string str() const;
+  void save(const std::filesystem::path& path) const;
+
+ private:
+  std::string what_;
+  Parameters parameters_;
+  std::string body_;
+};
+
+}  // namespace hertzdash

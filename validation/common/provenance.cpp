@@ -1,0 +1,13 @@
+#include "validation/common/provenance.hpp"
+
+namespace hertzdash {
+
+std::string provenance_header(const std::string& what, const Parameters& parameters) {
+  std::string h = "# " + what + "\n# generator: hertzdash " HERTZDASH_VERSION "\n# git_revision: ";
+  h += git_revision();
+  h += "\n";
+  for (const auto& [name, value] : parameters) h += "# " + name + " = " + value + "\n";
+  return h;
+}
+
+}  // namespace hertzdash

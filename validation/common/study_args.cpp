@@ -1,0 +1,29 @@
+#include "validation/common/study_args.hpp"
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace hertzdash {
+
+StudyArgs parse_study_args(int argc, char** argv) {
+  StudyArgs a;
+  auto usage = [&] {
+    std::cerr << "usage: " << argv[0] << " --out DIR [--generated DIR] [--reduced]\n";
+    std::exit(2);
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--out" && i + 1 < argc) a.out_dir = argv[++i];
+    else if (arg == "--generated" && i + 1 < argc) a.generated_dir = argv[++i];
+    else if (arg == "--reduced") a.reduced = true;
+    else usage();
+  }
+  if (a.out_dir.empty()) usage();
+  if (a.generated_dir.empty()) a.generated_dir = a.out_dir.parent_path() / "generated";
+  std::filesystem::create_directories(a.out_dir);
+  std::filesystem::create_directories(a.generated_dir);
+  return a;
+}
+
+}  // namespace hertzdash

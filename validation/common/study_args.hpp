@@ -1,0 +1,20 @@
+#pragma once
+// The command line every study program takes:
+//   <study> --out DIR [--generated DIR] [--reduced]
+// --out: where CSV data (and the figures drawn from it) go, e.g. paper/figures;
+// --generated: where LaTeX fragments go (default: DIR/../generated);
+// --reduced: a small, fast version of the study for the pipeline test.
+#include <filesystem>
+
+namespace hertzdash {
+
+struct StudyArgs {
+  std::filesystem::path out_dir;
+  std::filesystem::path generated_dir;
+  bool reduced = false;
+};
+
+/// Parses the arguments; prints usage and exits with code 2 on bad ones.
+StudyArgs parse_study_args(int argc, char** argv);
+
+}  // namespace hertzdash
