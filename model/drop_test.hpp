@@ -12,12 +12,12 @@
 //   0 contact: in flight g = -x (gap closes: onset, restart); in contact g = x
 //     (deformation returns to zero: separation, stop)
 //   1 max_compression: in contact g = x' (observation)
-//   2 peak_force: in contact g = dF/dt (observation); dF/dt by a central
-//     difference along the trajectory with step d = 1e-3 T, T = X*/v0 the
-//     contact time scale. Its truncation error O(d^2 F''') moves the root by
-//     O(d^2/T) = 1e-6 T, which changes the peak force only by O(1e-12) relative
-//     (F is stationary there). A much smaller d makes the difference exactly
-//     zero over a span of roundoff wider than the root finder's resolution.
+//   2 peak_force: in contact g = dF/dt = F_x x' + F_v x'' (observation). The
+//     partial derivatives are central differences with relative steps 1e-6
+//     (truncation ~1e-12 relative); differentiating along the state's partials,
+//     not along a time shift, keeps g nonzero wherever x' or x'' is, so the root
+//     finder never meets a flat zero (at the undamped turning point F_x x' is
+//     tiny but not zero, while a time-shifted difference cancels exactly).
 //   3 force_zero: with the tension clamp, g = F (separation where the force
 //     reaches zero, stop); else inactive
 // At onset the law's coefficients are fixed from that impact's approach speed.
@@ -76,11 +76,7 @@ class DropTest {
   const DropTestModel& model() const { return model_; }
 
   /// Contact force [N], compressive positive; zero in flight.
-  double contact_force(const State& y) const {
-    if (!law_) return 0.0;
-    const double F = law_->force(std::max(y[0], 0.0), y[1]);
-    return model_.setup.no_tension ? std::max(F, 0.0) : F;
-  }
+  double contact_force(const State& y) const { return law_ ? force_at(std::max(y[0], 0.0), y[1]) : 0.0; }
 
   void rhs(double, const State& y, State& dy) const {
     dy[0] = y[1];
@@ -92,10 +88,13 @@ class DropTest {
       g = {-y[0], 1.0, 1.0, 1.0};
       return;
     }
+    const double x = std::max(y[0], 0.0), v = y[1];
     const double a = model_.gravity_mps2 - contact_force(y) / model_.mass_kg;
-    const double h = fd_step_s_;
-    const State ahead{y[0] + h * y[1], y[1] + h * a}, behind{y[0] - h * y[1], y[1] - h * a};
-    const double dFdt = (contact_force(ahead) - contact_force(behind)) / (2 * h);
+    const double dx = 1e-6 * std::max(x, 1e-6 * x_scale_m_), dv = 1e-6 * v_scale_mps_;
+    const double x_lo = std::max(x - dx, 0.0);
+    const double F_x = (force_at(x + dx, v) - force_at(x_lo, v)) / (x + dx - x_lo);
+    const double F_v = (force_at(x, v + dv) - force_at(x, v - dv)) / (2 * dv);
+    const double dFdt = F_x * v + F_v * a;
     g = {y[0], y[1], dFdt, model_.setup.no_tension ? law_->force(std::max(y[0], 0.0), y[1]) : 1.0};
   }
 
@@ -115,13 +114,20 @@ class DropTest {
   void begin_contact(const State& y) {
     const double v0 = y[1];
     law_.emplace(ImpactConditions{model_.K, model_.mass_kg, v0, model_.setup.restitution}, model_.setup.damping);
-    // Contact time scale X*/v0 with X* = (m v0^2 / K)^{2/5}.
-    fd_step_s_ = 1e-3 * std::pow(model_.mass_kg * v0 * v0 / model_.K, 0.4) / v0;
+    // Scales of the impact: X* = (m v0^2 / K)^{2/5} and v0.
+    x_scale_m_ = std::pow(model_.mass_kg * v0 * v0 / model_.K, 0.4);
+    v_scale_mps_ = v0;
+  }
+
+  /// The law's force at x >= 0, with the tension clamp applied.
+  double force_at(double x, double v) const {
+    const double F = law_->force(x, v);
+    return model_.setup.no_tension ? std::max(F, 0.0) : F;
   }
 
   const DropTestModel& model_;
   std::optional<Law> law_;
-  double fd_step_s_ = 0.0;
+  double x_scale_m_ = 0.0, v_scale_mps_ = 0.0;  ///< per impact, for difference steps
 };
 
 }  // namespace hertzdash
