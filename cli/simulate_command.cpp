@@ -54,15 +54,16 @@ nlohmann::ordered_json to_json(const ImpactSummary& s, const Parameters& inputs)
 
 void print_text(const ImpactSummary& s, std::string_view law, IntegratorKind integrator) {
   std::cout << fmt::format("hertzdash simulate: damping law '{}', integrator {}\n", law, to_string(integrator));
-  std::cout << fmt::format("  impact velocity   {:.6g} m/s\n", s.impact_velocity_mps);
-  std::cout << fmt::format("  rebound velocity  {:.6g} m/s\n", s.rebound_velocity_mps);
-  std::cout << fmt::format("  e_effective       {:.6g}\n", s.e_effective);
-  std::cout << fmt::format("  peak force        {:.6g} N\n", s.peak_force_N);
-  std::cout << fmt::format("  max deformation   {:.6g} m\n", s.max_deformation_m);
-  std::cout << fmt::format("  contact time      {:.6g} s\n", s.contact_time_s);
-  std::cout << fmt::format("  K                 {:.6g} N/m^1.5\n", s.K);
-  for (const NamedValue& c : s.law_coefficients) std::cout << fmt::format("  {:<17} {:.6g}\n", c.name, c.value);
-  std::cout << fmt::format("  work              {} steps, {} rhs evaluations\n", s.work.steps, s.work.rhs_evaluations);
+  auto line = [](std::string_view name, double value) { std::cout << fmt::format("  {:<30} {:.6g}\n", name, value); };
+  line("impact_velocity_mps", s.impact_velocity_mps);
+  line("rebound_velocity_mps", s.rebound_velocity_mps);
+  line("e_effective", s.e_effective);
+  line("peak_force_N", s.peak_force_N);
+  line("max_deformation_m", s.max_deformation_m);
+  line("contact_time_s", s.contact_time_s);
+  line("K_N_per_m_1_5", s.K);
+  for (const NamedValue& c : s.law_coefficients) line(c.name, c.value);
+  std::cout << fmt::format("  {:<30} {} steps, {} rhs evaluations\n", "work", s.work.steps, s.work.rhs_evaluations);
   if (!s.separated) std::cout << "  note: the rod did not separate (it came to rest on the ball)\n";
 }
 

@@ -1,0 +1,96 @@
+// Bad input: every invalid parameter exits with code 2, names the parameter and its
+// valid range, and writes no file (the trace is written only after a successful run,
+// atomically).
+#include "cli_runner.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <unistd.h>
+
+using hertzdash::test::run_cli;
+
+namespace {
+
+struct BadInput {
+  const char* args;
+  const char* parameter;  // must appear in the message
+  const char* range;      // must appear in the message
+};
+
+}  // namespace
+
+TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes no file", "[cli]") {
+  const BadInput cases[] = {
+      {"--mass 0", "--mass", "> 0"},
+      {"--mass -1", "--mass", "> 0"},
+      {"--mass nan", "--mass", "> 0"},
+      {"--ball-radius 0", "--ball-radius", "> 0"},
+      {"--ball-radius -0.01", "--ball-radius", "> 0"},
+      {"--ball-E 0", "--ball-E", "> 0"},
+      {"--ball-E nan", "--ball-E", "> 0"},
+      {"--rod-E -1", "--rod-E", "> 0 or inf"},
+      {"--restitution 0", "--restitution", "(0, 1]"},
+      {"--restitution 1.5", "--restitution", "(0, 1]"},
+      {"--restitution nan", "--restitution", "(0, 1]"},
+      {"--ball-nu 0.5", "--ball-nu", "(-1, 0.5)"},
+      {"--ball-nu -1", "--ball-nu", "(-1, 0.5)"},
+      {"--rod-nu 0.7", "--rod-nu", "(-1, 0.5)"},
+      {"--height -0.01", "--height", ">= 0"},
+      {"--height 0", "--height", "> 0 with --gravity > 0"},
+      {"--gravity -9.8", "--gravity", ">= 0"},
+      {"--gravity 0", "--height", "> 0 with --gravity > 0"},
+      {"--impact-velocity 0", "--impact-velocity", "> 0"},
+      {"--impact-velocity nan", "--impact-velocity", "> 0"},
+      {"--integrator rk4 --dt 0", "--dt", "> 0"},
+      {"--integrator euler --dt -1e-6", "--dt", "> 0"},
+      {"--rtol 0", "--rtol", "> 0"},
+      {"--atol -1", "--atol", "> 0"},
+      {"--rtol nan", "--rtol", "> 0"},
+      {"--integrator leapfrog", "--integrator", "euler, rk4, cvode"},
+      {"--damping nonsense", "--damping", "hongo"},
+      {"--rod titanium", "--rod", "steel"},
+      {"--zeta approx", "--zeta", "paper, exact"},
+      {"--cvode-method rk", "--cvode-method", "adams, bdf"},
+  };
+  const auto trace = std::filesystem::temp_directory_path() / ("hertzdash_bad_" + std::to_string(::getpid()) + ".csv");
+  for (const BadInput& c : cases) {
+    std::filesystem::remove(trace);
+    const auto r = run_cli(std::string("simulate ") + c.args + " --trace " + trace.string());
+    INFO("hertzdash simulate " << c.args << "\n  stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.parameter) != std::string::npos);
+    CHECK(r.err.find(c.range) != std::string::npos);
+    CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(trace));
+  }
+}
+
+TEST_CASE("CLI: an option value that is not a number exits 2 naming the option", "[cli]") {
+  const auto r = run_cli("simulate --mass heavy");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("--mass") != std::string::npos);
+}
+
+TEST_CASE("CLI: a malformed data table exits 2 naming the file, line and column", "[cli][data]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("hertzdash_data_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  for (const auto& f : fs::directory_iterator(fs::path(HERTZDASH_SOURCE_DIR) / "data"))
+    if (f.is_regular_file()) fs::copy_file(f.path(), dir / f.path().filename(), fs::copy_options::overwrite_existing);
+
+  SECTION("a row with a missing field") {
+    std::ofstream(dir / "table1_dimensions.csv", std::ios::app) << "extra-rod,0.025,0.2\n";
+    const auto r = run_cli("simulate", "HERTZDASH_DATA_DIR=" + dir.string());
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("table1_dimensions.csv:9") != std::string::npos);
+    CHECK(r.err.find("expected 5 fields") != std::string::npos);
+  }
+  SECTION("a field that is not a number") {
+    std::ofstream(dir / "table2_restitution.csv") << "rod,e,e_second,zeta_printed,provenance\nsteel,zero point eight,,0.07,x\n";
+    const auto r = run_cli("simulate", "HERTZDASH_DATA_DIR=" + dir.string());
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("table2_restitution.csv:2: column 'e'") != std::string::npos);
+  }
+  fs::remove_all(dir);
+}

@@ -1,0 +1,71 @@
+// `hertzdash simulate`: the JSON summary carries every promised field and the
+// inputs actually used; the trace is the contact phase under a provenance header;
+// the README's example prints what the README says it prints.
+#include "cli_runner.hpp"
+#include "model/csv_table.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <unistd.h>
+
+using hertzdash::test::run_cli;
+
+TEST_CASE("CLI simulate --json: fields, units and inputs", "[cli]") {
+  const auto r = run_cli("simulate --rod steel --height 0.02 --integrator cvode --json");
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"e_effective", "peak_force_N", "max_deformation_m", "contact_time_s", "impact_velocity_mps",
+                          "rebound_velocity_mps", "K", "zeta", "omega_n_rad_per_s", "steps", "rhs_evaluations", "inputs",
+                          "git_revision"}) {
+    INFO(key);
+    CHECK(j.contains(key));
+  }
+  // e_effective is rebound over approach speed; v0 = sqrt(2 g h) for a free fall.
+  CHECK(j["e_effective"].get<double>() ==
+        Approx(j["rebound_velocity_mps"].get<double>() / j["impact_velocity_mps"].get<double>()).epsilon(1e-15));
+  CHECK(j["impact_velocity_mps"].get<double>() == Approx(std::sqrt(2 * 9.80665 * 0.02)).epsilon(1e-8));
+  // Table 2: steel e = 0.795 -> eq. (6) zeta = ln(1/0.795)/pi.
+  CHECK(j["zeta"].get<double>() == Approx(std::log(1 / 0.795) / M_PI).epsilon(1e-14));
+  const auto& in = j["inputs"];
+  CHECK(in["mass_kg"].get<double>() == 0.778);
+  CHECK(in["restitution"].get<double>() == 0.795);
+  CHECK(in["height_m"].get<double>() == 0.02);
+  CHECK(in["integrator"].get<std::string>() == "cvode");
+  CHECK(in["damping"].get<std::string>() == "hongo");
+}
+
+TEST_CASE("CLI simulate --trace: contact phase under a provenance header", "[cli]") {
+  const auto path = std::filesystem::temp_directory_path() / ("hertzdash_trace_" + std::to_string(::getpid()) + ".csv");
+  const auto r = run_cli("simulate --json --trace " + path.string());
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto t = hertzdash::CsvTable::read(path);
+  std::filesystem::remove(path);
+  CHECK(t.columns() == std::vector<std::string>{"t_s", "x_m", "xdot_mps", "force_N", "accel_mps2",
+                                                "rod_displacement_m", "rod_velocity_mps"});
+  bool has_revision = false, has_mass = false;
+  for (const auto& c : t.comments()) {
+    has_revision |= c.rfind("git_revision: ", 0) == 0;
+    has_mass |= c == "mass_kg = 0.778";
+  }
+  CHECK(has_revision);
+  CHECK(has_mass);
+  REQUIRE(t.rows() > 10);
+  // Starts at onset (x = 0, approach speed), ends at separation (x = 0, rebound).
+  CHECK(std::abs(t.number(0, "x_m")) < 1e-12);
+  CHECK(t.number(0, "xdot_mps") == Approx(j["impact_velocity_mps"].get<double>()));
+  const std::size_t last = t.rows() - 1;
+  CHECK(std::abs(t.number(last, "x_m")) < 1e-12);
+  CHECK(-t.number(last, "xdot_mps") == Approx(j["rebound_velocity_mps"].get<double>()));
+  CHECK(t.number(last, "t_s") - t.number(0, "t_s") == Approx(j["contact_time_s"].get<double>()));
+  // The peak-force event puts a sample on the maximum; eq. (1): accel = g - F/m.
+  double peak = 0;
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    peak = std::max(peak, t.number(i, "force_N"));
+    CHECK(t.number(i, "accel_mps2") == Approx(9.80665 - t.number(i, "force_N") / 0.778).margin(1e-9));
+    CHECK(t.number(i, "rod_displacement_m") == Approx(0.02 + t.number(i, "x_m")).margin(1e-15));
+  }
+  CHECK(peak == Approx(j["peak_force_N"].get<double>()).epsilon(1e-15));
+}
