@@ -16,4 +16,10 @@ struct Command {
 /// `hertzdash simulate`: one drop test, summary as text or JSON, optional trace CSV.
 Command add_simulate_command(CLI::App& app);
 
+/// `hertzdash models`: the registered damping laws with their citations.
+Command add_models_command(CLI::App& app);
+
+/// `hertzdash restitution`: a law's effective restitution (rigid wall, no gravity), or calibration.
+Command add_restitution_command(CLI::App& app);
+
 }  // namespace hertzdash::cli

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<hertzdash::cli::Command> commands{
       hertzdash::cli::add_simulate_command(app),
+      hertzdash::cli::add_models_command(app),
+      hertzdash::cli::add_restitution_command(app),
   };
 
   try {

@@ -16,7 +16,18 @@ template <DampingLaw... L> struct LawList {};
 
 using RegisteredLaws = LawList<
     Undamped,
-    HongoPaper
+    HongoPaper,
+    KelvinVoigt,
+    HuntCrossley,
+    HerbertMcWhannell,
+    LeeWang,
+    LankaraniNikravesh,
+    Gonthier,
+    ZhiyingQishao,
+    Flores,
+    HuGuo,
+    GharibHurmuzlu,
+    TsujiDem
 >;
 
 /// The law used when none is named: the paper's.

@@ -1,0 +1,44 @@
+// `hertzdash models`: every registered damping law with its citation, formula,
+// coefficients, validity and whether its force is continuous at contact onset.
+#include "cli/command.hpp"
+#include "model/damping/registry.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace hertzdash::cli {
+
+Command add_models_command(CLI::App& app) {
+  auto json = std::make_shared<bool>(false);
+  CLI::App* sub = app.add_subcommand("models", "List the damping laws (--damping NAME) with their citations");
+  sub->add_flag("--json", *json, "Print the list as a JSON array");
+  return {sub, [json]() {
+            if (*json) {
+              nlohmann::ordered_json list = nlohmann::ordered_json::array();
+              for (const LawInfo& l : registered_laws())
+                list.push_back({{"name", l.name},
+                                {"citation", l.citation},
+                                {"formula", l.formula},
+                                {"coefficients", l.coefficients},
+                                {"validity", l.validity},
+                                {"force_continuous_at_onset", l.force_continuous_at_onset}});
+              std::cout << list.dump(2) << "\n";
+              return 0;
+            }
+            for (const LawInfo& l : registered_laws()) {
+              std::cout << fmt::format("{}{}\n", l.name, l.name == default_damping_law ? " (default)" : "");
+              std::cout << fmt::format("  force:        {}\n", l.formula);
+              std::cout << fmt::format("  coefficients: {}\n", l.coefficients);
+              std::cout << fmt::format("  validity:     {}\n", l.validity);
+              std::cout << fmt::format("  onset:        force {} at contact onset\n",
+                                       l.force_continuous_at_onset ? "continuous (F = 0)" : "jumps (F != 0)");
+              std::cout << fmt::format("  reference:    {}\n\n", l.citation);
+            }
+            return 0;
+          }};
+}
+
+}  // namespace hertzdash::cli

@@ -1,0 +1,25 @@
+#pragma once
+// HuGuo: Hunt-Crossley form with chi v0 = 3(1-e)/(2e).
+#include "model/damping/hertz_proportional_dashpot.hpp"
+
+namespace hertzdash {
+
+/// F = K x^{3/2} (1 + chi xdot),  chi = 3(1-e)/(2e) / v0
+/// S. Hu, X. Guo, A dissipative contact force model for impact analysis in multibody dynamics, Multibody Syst. Dyn. 35(2) (2015) 131-151.
+class HuGuo : public HertzProportionalDashpot<HuGuo> {
+ public:
+  static constexpr LawInfo info{
+      "hu-guo",
+      "S. Hu, X. Guo, A dissipative contact force model for impact analysis in multibody dynamics, Multibody Syst. Dyn. 35(2) (2015) 131-151.",
+      "F = K x^{3/2} (1 + chi xdot)",
+      "chi = 3(1-e)/(2e) / v0, v0 = approach speed; independent of K and m",
+      "any e in (0, 1]",
+      true};
+
+  /// chi v0 [-] as a function of the input restitution e in (0, 1].
+  static double chi_v0(double e) { return 1.5 * (1.0 - e) / e; }
+
+  using HertzProportionalDashpot::HertzProportionalDashpot;
+};
+
+}  // namespace hertzdash
