@@ -18,6 +18,8 @@
 //     not along a time shift, keeps g nonzero wherever x' or x'' is, so the root
 //     finder never meets a flat zero (at the undamped turning point F_x x' is
 //     tiny but not zero, while a time-shifted difference cancels exactly).
+//     Where F <= 0 no peak can occur and g = -1 (F is identically zero once a
+//     heavily damped Hunt-Crossley law reaches 1 + chi x' = 0 to roundoff).
 //   3 force_zero: with the tension clamp, g = F (separation where the force
 //     reaches zero, stop); else inactive
 // At onset the law's coefficients are fixed from that impact's approach speed.
@@ -95,7 +97,11 @@ class DropTest {
     const double F_x = (force_at(x + dx, v) - force_at(x_lo, v)) / (x + dx - x_lo);
     const double F_v = (force_at(x, v + dv) - force_at(x, v - dv)) / (2 * dv);
     const double dFdt = F_x * v + F_v * a;
-    g = {y[0], y[1], dFdt, model_.setup.no_tension ? law_->force(std::max(y[0], 0.0), y[1]) : 1.0};
+    // A peak force is positive: where F <= 0, g2 = -1 (no root). Heavily damped
+    // Hunt-Crossley laws reach 1 + chi x' = 0 to roundoff, where F and dF/dt are
+    // identically zero and CVODE's root finder would stop on a flat zero.
+    const double F = force_at(x, v);
+    g = {y[0], y[1], F > 0 ? dFdt : -1.0, model_.setup.no_tension ? law_->force(std::max(y[0], 0.0), y[1]) : 1.0};
   }
 
   EventAction handle_event(int which, double, const State& y) {

@@ -1,0 +1,73 @@
+#pragma once
+// Shared by the damping-law tests: the list of laws every standard check runs on
+// (every registered law plus the worked example of model/README.md), and a
+// rigid-wall, gravity-free contact set-up with a prescribed K, m and v0.
+#include "example_law.hpp"
+#include "model/damping/registry.hpp"
+#include "model/paper_parameters.hpp"
+#include "validation/common/calibrate_restitution.hpp"
+#include "validation/common/impact_simulator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+namespace hertzdash::test {
+
+template <class List, class Extra> struct AppendLaw;
+template <class... L, class Extra> struct AppendLaw<LawList<L...>, Extra> {
+  using type = std::tuple<L..., Extra>;
+};
+
+/// Every registered law, then the guide's example: a newly registered law is checked
+/// without touching the tests.
+using TestedLaws = AppendLaw<RegisteredLaws, ExactHertzDashpot>::type;
+
+/// A contact phase with Hertz stiffness K [N/m^{3/2}], mass m [kg], approach speed v0
+/// [m/s], input e: rigid flat, no gravity, nylon-like ball whose modulus is chosen so
+/// that eq. (3) gives K: K = (4/3) sqrt(R) E / (1 - nu^2).
+inline DropTestSetup contact_setup(double K, double mass_kg, double v0_mps, double e, bool no_tension = false) {
+  DropTestSetup s{};
+  s.mass_kg = mass_kg;
+  s.ball_radius_m = 0.0127;
+  s.ball = Material{3.0 * K * (1.0 - 0.4 * 0.4) / (4.0 * std::sqrt(s.ball_radius_m)), 0.4};
+  s.rod = Material{std::numeric_limits<double>::infinity(), 0.3};
+  s.restitution = e;
+  s.height_m = 0.0;
+  s.impact_velocity_mps = v0_mps;
+  s.gravity_mps2 = 0.0;
+  s.no_tension = no_tension;
+  validate(s);
+  return s;
+}
+
+/// The paper's steel case at h = 20 mm as a contact phase: K of the nylon ball on a
+/// rigid flat, m = 0.778 kg, v0 = sqrt(2 g h) (Tables 1-3 and data/assumptions.csv).
+struct ContactScales {
+  double K, mass_kg, v0_mps;
+};
+inline ContactScales paper_steel_contact() {
+  const DropTestSetup s = contact_phase_setup(paper_setup(load_paper_parameters(), "steel", 0.02));
+  return {hertz_stiffness(s), s.mass_kg, *s.impact_velocity_mps};
+}
+
+/// CVODE at rtol 1e-10 with atol 1e-10 of the smaller state scale (X* = (m v0^2/K)^{2/5}
+/// and v0), so every parameter set is solved to the same relative accuracy. Over the
+/// few hundred steps of one contact the global error in e_effective stays below ~1e-8.
+inline SolverSettings accurate_solver(double K, double mass_kg, double v0_mps) {
+  SolverSettings s;
+  s.cvode.rtol = 1e-10;
+  s.cvode.atol = 1e-10 * std::min(std::pow(mass_kg * v0_mps * v0_mps / K, 0.4), v0_mps);
+  return s;
+}
+
+/// e_effective of Law for the contact phase (K, m, v0, e).
+template <class Law>
+double effective_restitution_of(double K, double mass_kg, double v0_mps, double e, bool no_tension = false) {
+  ImpactSimulator sim(accurate_solver(K, mass_kg, v0_mps));
+  const ImpactSummary r = sim.run<Law>(contact_setup(K, mass_kg, v0_mps, e, no_tension));
+  return r.separated ? r.e_effective : 0.0;
+}
+
+}  // namespace hertzdash::test
