@@ -16,7 +16,9 @@ namespace hertzdash {
 /// With tension allowed the contact is half a period of a damped linear oscillator,
 /// so e_effective = e exactly. The force jumps to c v0 at onset (discontinuous), and
 /// it turns tensile (F < 0) before x returns to zero: with --no-tension contact ends
-/// earlier, at F = 0, with a smaller rebound speed.
+/// earlier, at F = 0, before the tensile tail can pull the rod back, so the rebound is
+/// FASTER: e_effective = exp(-(zeta/s)(pi - atan2(2 zeta s, 1 - 2 zeta^2))) > e,
+/// s = sqrt(1 - zeta^2) (derived in tests/test_damping_law_restitution.cpp).
 class KelvinVoigt {
  public:
   static constexpr LawInfo info{

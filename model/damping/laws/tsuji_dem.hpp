@@ -26,7 +26,8 @@ namespace hertzdash {
 /// exactly beta = ln e / sqrt(ln^2 e + pi^2). Checked in tests/test_damping_law_restitution.cpp.
 /// The force is F = x^{1/4} (K z + c v): x^{1/4} times the linear oscillator's force,
 /// which turns tensile late in the restitution phase. So, as for Kelvin-Voigt, the
-/// tension clamp (--no-tension) ends contact earlier and lowers e_effective.
+/// tension clamp (--no-tension) ends contact earlier, where that force is zero, and
+/// RAISES e_effective, to exactly Kelvin-Voigt's clamped value (same phase curve).
 class TsujiDem {
  public:
   static constexpr LawInfo info{
