@@ -51,9 +51,11 @@ RestitutionCalibration calibrate_restitution(ImpactSimulator& simulator, const D
                                              double target) {
   require_in_open_closed("--target-restitution", target, 0.0, 1.0);
   Residual residual{&simulator, contact_phase_setup(s), law, target};
+  // A target within the runs' accuracy of an end of the range is met at that end.
   const double f_hi = residual(1.0);
-  if (std::abs(f_hi) < 1e-12) return {1.0, target, 0};
+  if (std::abs(f_hi) <= calibration_end_tolerance) return {1.0, f_hi + target, 0};
   const double f_lo = residual(calibration_e_min);
+  if (std::abs(f_lo) <= calibration_end_tolerance) return {calibration_e_min, f_lo + target, 0};
   if (f_lo > 0 || f_hi < 0)
     throw InvalidParameter("--target-restitution", format_value(target),
                            fmt::format("within [{:.6g}, {:.6g}], the effective restitutions law '{}' reaches for "
@@ -64,8 +66,6 @@ RestitutionCalibration calibrate_restitution(ImpactSimulator& simulator, const D
   const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
   if (!solver) throw std::runtime_error("GSL gsl_root_fsolver_alloc failed");
-  // A target at an end of the range is a root there; Brent needs a sign change.
-  if (f_lo == 0) return {calibration_e_min, target, 0};
   check_gsl(gsl_root_fsolver_set(solver.get(), &F, calibration_e_min, 1.0), "gsl_root_fsolver_set");
   constexpr int max_iterations = 200;
   for (int i = 1; i <= max_iterations; ++i) {

@@ -30,6 +30,10 @@ struct RestitutionCalibration {
 /// Smallest input e the calibration searches; below it most laws do not separate at all.
 inline constexpr double calibration_e_min = 1e-3;
 
+/// A target this close to e_effective at an end of [calibration_e_min, 1] is met there:
+/// a single run's e_effective is accurate to ~1e-7 at the default CVODE tolerances.
+inline constexpr double calibration_end_tolerance = 1e-6;
+
 /// Solve e_effective(e_input) = target for e_input in [calibration_e_min, 1], contact phase
 /// of `s`. Converged when the bracket is narrower than 1e-10 in e_input. Throws
 /// InvalidParameter("--target-restitution", ...) when the target is outside (0, 1] or
