@@ -64,9 +64,9 @@ Command add_restitution_command(CLI::App& app) {
               std::cout << fmt::format("hertzdash restitution: law '{}', tension {}, v0 = {:.6g} m/s (rigid wall, "
                                        "no gravity)\n",
                                        law, j["tension"].get<std::string>(), *setup.impact_velocity_mps);
-              if (opt->target_opt->count()) std::cout << fmt::format("  e_target     {:.10g}\n", opt->target);
-              std::cout << fmt::format("  e_input      {:.10g}\n", j["e_input"].get<double>());
-              std::cout << fmt::format("  e_effective  {:.10g}\n", j["e_effective"].get<double>());
+              if (opt->target_opt->count()) std::cout << fmt::format("  e_target     {:.6g}\n", opt->target);
+              std::cout << fmt::format("  e_input      {:.6g}\n", j["e_input"].get<double>());
+              std::cout << fmt::format("  e_effective  {:.6g}\n", j["e_effective"].get<double>());
             }
             return 0;
           }};

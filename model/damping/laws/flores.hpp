@@ -5,12 +5,14 @@
 namespace hertzdash {
 
 /// F = K x^{3/2} (1 + chi xdot),  chi = 8(1-e)/(5e) / v0
-/// P. Flores, M. Machado, M. T. Silva, J. M. Martins, On the continuous contact force models for soft materials in multibody dynamics, Multibody Syst. Dyn. 25(3) (2011) 357-375.
+/// P. Flores, M. Machado, M. T. Silva, J. M. Martins, On the continuous contact force models for soft
+/// materials in multibody dynamics, Multibody Syst. Dyn. 25(3) (2011) 357-375.
 class Flores : public HertzProportionalDashpot<Flores> {
  public:
   static constexpr LawInfo info{
       "flores",
-      "P. Flores, M. Machado, M. T. Silva, J. M. Martins, On the continuous contact force models for soft materials in multibody dynamics, Multibody Syst. Dyn. 25(3) (2011) 357-375.",
+      "P. Flores, M. Machado, M. T. Silva, J. M. Martins, On the continuous contact force models for soft "
+      "materials in multibody dynamics, Multibody Syst. Dyn. 25(3) (2011) 357-375.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 8(1-e)/(5e) / v0, v0 = approach speed; independent of K and m",
       "any e in (0, 1]; intended for soft materials and low e",

@@ -5,12 +5,14 @@
 namespace hertzdash {
 
 /// F = K x^{3/2} (1 + chi xdot),  chi = (1/e - 1) / v0
-/// M. Gharib, Y. Hurmuzlu, A new contact force model for low coefficient of restitution impact, J. Appl. Mech. 79(6) (2012) 064506.
+/// M. Gharib, Y. Hurmuzlu, A new contact force model for low coefficient of restitution impact, J.
+/// Appl. Mech. 79(6) (2012) 064506.
 class GharibHurmuzlu : public HertzProportionalDashpot<GharibHurmuzlu> {
  public:
   static constexpr LawInfo info{
       "gharib-hurmuzlu",
-      "M. Gharib, Y. Hurmuzlu, A new contact force model for low coefficient of restitution impact, J. Appl. Mech. 79(6) (2012) 064506.",
+      "M. Gharib, Y. Hurmuzlu, A new contact force model for low coefficient of restitution impact, J. "
+      "Appl. Mech. 79(6) (2012) 064506.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = (1/e - 1) / v0, v0 = approach speed; independent of K and m",
       "any e in (0, 1]; intended for low e",

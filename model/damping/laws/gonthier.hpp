@@ -5,12 +5,14 @@
 namespace hertzdash {
 
 /// F = K x^{3/2} (1 + chi xdot),  chi = (1-e^2)/e / v0
-/// Y. Gonthier, J. McPhee, C. Lange, J.-C. Piedboeuf, A regularized contact model with asymmetric damping and dwell-time dependent friction, Multibody Syst. Dyn. 11(3) (2004) 209-233.
+/// Y. Gonthier, J. McPhee, C. Lange, J.-C. Piedboeuf, A regularized contact model with asymmetric
+/// damping and dwell-time dependent friction, Multibody Syst. Dyn. 11(3) (2004) 209-233.
 class Gonthier : public HertzProportionalDashpot<Gonthier> {
  public:
   static constexpr LawInfo info{
       "gonthier",
-      "Y. Gonthier, J. McPhee, C. Lange, J.-C. Piedboeuf, A regularized contact model with asymmetric damping and dwell-time dependent friction, Multibody Syst. Dyn. 11(3) (2004) 209-233.",
+      "Y. Gonthier, J. McPhee, C. Lange, J.-C. Piedboeuf, A regularized contact model with asymmetric "
+      "damping and dwell-time dependent friction, Multibody Syst. Dyn. 11(3) (2004) 209-233.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = (1-e^2)/e / v0, v0 = approach speed; independent of K and m",
       "any e in (0, 1], approximate for low e",

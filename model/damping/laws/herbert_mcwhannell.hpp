@@ -5,12 +5,14 @@
 namespace hertzdash {
 
 /// F = K x^{3/2} (1 + chi xdot),  chi = 6(1-e)/((2e-1)^2+3) / v0
-/// R. G. Herbert, D. C. McWhannell, Shape and frequency composition of pulses from an impact pair, J. Eng. Ind. 99(3) (1977) 513-518.
+/// R. G. Herbert, D. C. McWhannell, Shape and frequency composition of pulses from an impact pair, J.
+/// Eng. Ind. 99(3) (1977) 513-518.
 class HerbertMcWhannell : public HertzProportionalDashpot<HerbertMcWhannell> {
  public:
   static constexpr LawInfo info{
       "herbert-mcwhannell",
-      "R. G. Herbert, D. C. McWhannell, Shape and frequency composition of pulses from an impact pair, J. Eng. Ind. 99(3) (1977) 513-518.",
+      "R. G. Herbert, D. C. McWhannell, Shape and frequency composition of pulses from an impact pair, J. "
+      "Eng. Ind. 99(3) (1977) 513-518.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 6(1-e)/((2e-1)^2+3) / v0, v0 = approach speed; independent of K and m",
       "fitted over moderate to high e",

@@ -5,12 +5,14 @@
 namespace hertzdash {
 
 /// F = K x^{3/2} (1 + chi xdot),  chi = 3(1-e)/2 / v0
-/// K. H. Hunt, F. R. E. Crossley, Coefficient of restitution interpreted as damping in vibroimpact, J. Appl. Mech. 42(2) (1975) 440-445.
+/// K. H. Hunt, F. R. E. Crossley, Coefficient of restitution interpreted as damping in vibroimpact, J.
+/// Appl. Mech. 42(2) (1975) 440-445.
 class HuntCrossley : public HertzProportionalDashpot<HuntCrossley> {
  public:
   static constexpr LawInfo info{
       "hunt-crossley",
-      "K. H. Hunt, F. R. E. Crossley, Coefficient of restitution interpreted as damping in vibroimpact, J. Appl. Mech. 42(2) (1975) 440-445.",
+      "K. H. Hunt, F. R. E. Crossley, Coefficient of restitution interpreted as damping in vibroimpact, J. "
+      "Appl. Mech. 42(2) (1975) 440-445.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 3(1-e)/2 / v0, v0 = approach speed; independent of K and m",
       "derived for e close to 1 (linearised e = 1 - (2/3) chi v0)",

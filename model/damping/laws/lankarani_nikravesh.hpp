@@ -5,12 +5,14 @@
 namespace hertzdash {
 
 /// F = K x^{3/2} (1 + chi xdot),  chi = 3(1-e^2)/4 / v0
-/// H. M. Lankarani, P. E. Nikravesh, A contact force model with hysteresis damping for impact analysis of multibody systems, J. Mech. Des. 112(3) (1990) 369-376.
+/// H. M. Lankarani, P. E. Nikravesh, A contact force model with hysteresis damping for impact analysis
+/// of multibody systems, J. Mech. Des. 112(3) (1990) 369-376.
 class LankaraniNikravesh : public HertzProportionalDashpot<LankaraniNikravesh> {
  public:
   static constexpr LawInfo info{
       "lankarani-nikravesh",
-      "H. M. Lankarani, P. E. Nikravesh, A contact force model with hysteresis damping for impact analysis of multibody systems, J. Mech. Des. 112(3) (1990) 369-376.",
+      "H. M. Lankarani, P. E. Nikravesh, A contact force model with hysteresis damping for impact analysis "
+      "of multibody systems, J. Mech. Des. 112(3) (1990) 369-376.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 3(1-e^2)/4 / v0, v0 = approach speed; independent of K and m",
       "e close to 1 (energy balance with compression-phase velocity taken for both phases)",

@@ -5,12 +5,14 @@
 namespace hertzdash {
 
 /// F = K x^{3/2} (1 + chi xdot),  chi = 3(1-e)/4 / v0
-/// T. W. Lee, A. C. Wang, On the dynamics of intermittent-motion mechanisms, Part 1: dynamic model and response, J. Mech. Trans. Autom. Des. 105(3) (1983) 534-540.
+/// T. W. Lee, A. C. Wang, On the dynamics of intermittent-motion mechanisms, Part 1: dynamic model and
+/// response, J. Mech. Trans. Autom. Des. 105(3) (1983) 534-540.
 class LeeWang : public HertzProportionalDashpot<LeeWang> {
  public:
   static constexpr LawInfo info{
       "lee-wang",
-      "T. W. Lee, A. C. Wang, On the dynamics of intermittent-motion mechanisms, Part 1: dynamic model and response, J. Mech. Trans. Autom. Des. 105(3) (1983) 534-540.",
+      "T. W. Lee, A. C. Wang, On the dynamics of intermittent-motion mechanisms, Part 1: dynamic model and "
+      "response, J. Mech. Trans. Autom. Des. 105(3) (1983) 534-540.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 3(1-e)/4 / v0, v0 = approach speed; independent of K and m",
       "e close to 1",

@@ -15,7 +15,8 @@ namespace hertzdash {
 /// Ishida introduced the x^{1/4} weighting and gave alpha(e) = c / sqrt(K m) as a graph.
 ///
 /// With tension allowed the coefficient is exact: the law returns its input e.
-/// Proof by a change of the independent variable of the phase-plane equation. With v = xdot as a function of x,
+/// Proof by a change of the independent variable of the phase-plane equation. With v = xdot as a
+/// function of x,
 ///   m v dv/dx + c x^{1/4} v + K x^{3/2} = 0.
 /// Put z = x^{5/4}, dz = (5/4) x^{1/4} dx, and divide by x^{1/4}:
 ///   (5m/4) v dv/dz + c v + K z = 0,
@@ -37,11 +38,14 @@ class TsujiDem {
       "used in DEM codes (LIGGGHTS, Yade).",
       "F = K x^{3/2} + c x^{1/4} xdot",
       "c = -sqrt(5) beta sqrt(K m), beta = ln e / sqrt(ln^2 e + pi^2); independent of v0",
-      "DEM granular contacts; reproduces e exactly with tension allowed (phase-plane change of variable z = x^{5/4})",
+      "DEM granular contacts; reproduces e exactly with tension allowed (phase-plane change of variable z ="
+      " x^{5/4})",
       true};
 
   TsujiDem(const ImpactConditions& c, const DampingSettings&)
-      : K_(c.K), beta_(beta_from_restitution(c.restitution)), c_(-std::sqrt(5.0) * beta_ * std::sqrt(c.K * c.mass_kg)) {}
+      : K_(c.K),
+        beta_(beta_from_restitution(c.restitution)),
+        c_(-std::sqrt(5.0) * beta_ * std::sqrt(c.K * c.mass_kg)) {}
 
   double force(double x, double xdot) const noexcept {
     const double x_quarter = std::sqrt(std::sqrt(x));

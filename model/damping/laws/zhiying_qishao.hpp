@@ -5,12 +5,14 @@
 namespace hertzdash {
 
 /// F = K x^{3/2} (1 + chi xdot),  chi = 3(1-e^2) exp(2(1-e))/4 / v0
-/// Q. Zhiying, L. Qishao, Analysis of impact process based on restitution coefficient, J. Dyn. Control 4 (2006) 294-298 (in Chinese).
+/// Q. Zhiying, L. Qishao, Analysis of impact process based on restitution coefficient, J. Dyn. Control
+/// 4 (2006) 294-298 (in Chinese).
 class ZhiyingQishao : public HertzProportionalDashpot<ZhiyingQishao> {
  public:
   static constexpr LawInfo info{
       "zhiying-qishao",
-      "Q. Zhiying, L. Qishao, Analysis of impact process based on restitution coefficient, J. Dyn. Control 4 (2006) 294-298 (in Chinese).",
+      "Q. Zhiying, L. Qishao, Analysis of impact process based on restitution coefficient, J. Dyn. Control "
+      "4 (2006) 294-298 (in Chinese).",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 3(1-e^2) exp(2(1-e))/4 / v0, v0 = approach speed; independent of K and m",
       "any e in (0, 1], approximate for low e",
