@@ -87,6 +87,13 @@ std::string commented_header(const std::string& what, const Parameters& p, const
   return out;
 }
 
+// A deviation for LaTeX: two significant digits, powers of ten as \times 10^{n}.
+std::string latex_number(double v) {
+  if (v == 0 || v >= 1e-3) return fmt::format("{:.2g}", v);
+  const int exponent = static_cast<int>(std::floor(std::log10(v)));
+  return fmt::format("${:.1f}\\times10^{{{}}}$", v / std::pow(10.0, exponent), exponent);
+}
+
 struct LawSummary {
   std::string name;
   double e_eff_allowed = 0, e_eff_clamped = 0;      // at e = paper_e
@@ -177,12 +184,15 @@ int main(int argc, char** argv) {
   macros.add("dlPaperE", paper_e, "{:.3f}");
   macros.add("dlGridPoints", static_cast<double>(e_grid.size()), "{:.0f}");
   macros.add("dlLawCount", static_cast<double>(summaries.size()), "{:.0f}");
-  macros.add("dlReproductionThreshold", reproduction_threshold, "{:.0e}");
+  macros.add_text("dlReproductionThreshold", fmt::format("10^{{{:.0f}}}", std::log10(reproduction_threshold)));
   int exact_count = 0;
   std::string tex = commented_header("damping_laws: restitution table", params, "% ", "") +
-                    "\\begin{tabular}{lccccc}\n\\toprule\n"
-                    "law & $e_\\mathrm{eff}(0.795)$ & $e_\\mathrm{eff}(0.795)$ clamped & "
-                    "$\\max|e_\\mathrm{eff}-e|$ & clamped & $e$ for $e_\\mathrm{eff}=0.795$ \\\\\n\\midrule\n";
+                    fmt::format("\\begin{{tabular}}{{lccccc}}\n\\toprule\n"
+                                "& \\multicolumn{{2}}{{c}}{{$e_\\mathrm{{eff}}$ at $e={0:.3f}$}} & "
+                                "\\multicolumn{{2}}{{c}}{{$\\max|e_\\mathrm{{eff}}-e|$}} & input $e$ for \\\\\n"
+                                "law & allowed & clamped & allowed & clamped & $e_\\mathrm{{eff}}={0:.3f}$ \\\\\n"
+                                "\\midrule\n",
+                                paper_e);
   std::string md = commented_header("damping_laws: restitution table", params, "<!-- ", " -->") +
                    "\n| law | e_eff at e = 0.795 | clamped | max abs(e_eff - e), e in [0.05, 1] | clamped | "
                    "reproduces e? | input e giving e_eff = 0.795 |\n|---|---|---|---|---|---|---|\n";
@@ -193,14 +203,14 @@ int main(int argc, char** argv) {
     const std::string tag = camel(s.name);
     macros.add("dlEffective" + tag, s.e_eff_allowed, "{:.4f}");
     macros.add("dlEffectiveClamped" + tag, s.e_eff_clamped, "{:.4f}");
-    macros.add("dlMaxDeviation" + tag, s.max_dev_allowed, "{:.2g}");
-    macros.add("dlMaxDeviationClamped" + tag, s.max_dev_clamped, "{:.2g}");
+    macros.add_text("dlMaxDeviation" + tag, latex_number(s.max_dev_allowed));
+    macros.add_text("dlMaxDeviationClamped" + tag, latex_number(s.max_dev_clamped));
     const std::string calibrated = s.calibrated_input ? fmt::format("{:.4f}", *s.calibrated_input) : "--";
     macros.add_text("dlCalibratedInput" + tag, calibrated);
     const std::string reproduces = s.reproduces_allowed() ? (s.reproduces_clamped() ? "yes" : "yes, tension allowed")
                                                           : (s.reproduces_clamped() ? "clamped only" : "no");
-    tex += fmt::format("\\texttt{{{}}} & {:.4f} & {:.4f} & {:.2g} & {:.2g} & {} \\\\\n", s.name, s.e_eff_allowed,
-                       s.e_eff_clamped, s.max_dev_allowed, s.max_dev_clamped, calibrated);
+    tex += fmt::format("\\texttt{{{}}} & {:.4f} & {:.4f} & {} & {} & {} \\\\\n", s.name, s.e_eff_allowed,
+                       s.e_eff_clamped, latex_number(s.max_dev_allowed), latex_number(s.max_dev_clamped), calibrated);
     md += fmt::format("| `{}` | {:.4f} | {:.4f} | {:.2g} | {:.2g} | {} | {} |\n", s.name, s.e_eff_allowed,
                       s.e_eff_clamped, s.max_dev_allowed, s.max_dev_clamped, reproduces, calibrated);
     std::cout << fmt::format("{:20} {:10.4f} {:10.4f} {:12.3g} {:12.3g} {:>10}  reproduces e: {}\n", s.name,
