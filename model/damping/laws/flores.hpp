@@ -15,7 +15,7 @@ class Flores : public HertzProportionalDashpot<Flores> {
       "materials in multibody dynamics, Multibody Syst. Dyn. 25(3) (2011) 357-375.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 8(1-e)/(5e) / v0, v0 = approach speed; independent of K and m",
-      "any e in (0, 1]; intended for soft materials and low e",
+      "intended for soft materials and any e in (0, 1], low e included; not exact",
       true};
 
   /// chi v0 [-] as a function of the input restitution e in (0, 1].

@@ -15,7 +15,7 @@ class GharibHurmuzlu : public HertzProportionalDashpot<GharibHurmuzlu> {
       "Appl. Mech. 79(6) (2012) 064506.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = (1/e - 1) / v0, v0 = approach speed; independent of K and m",
-      "any e in (0, 1]; intended for low e",
+      "intended for low e (the paper's title); not exact",
       true};
 
   /// chi v0 [-] as a function of the input restitution e in (0, 1].

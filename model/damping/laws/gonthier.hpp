@@ -15,7 +15,7 @@ class Gonthier : public HertzProportionalDashpot<Gonthier> {
       "damping and dwell-time dependent friction, Multibody Syst. Dyn. 11(3) (2004) 209-233.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = (1-e^2)/e / v0, v0 = approach speed; independent of K and m",
-      "any e in (0, 1], approximate for low e",
+      "intended for any e in (0, 1]; not exact (hertzdash restitution shows by how much)",
       true};
 
   /// chi v0 [-] as a function of the input restitution e in (0, 1].

@@ -15,7 +15,7 @@ class HerbertMcWhannell : public HertzProportionalDashpot<HerbertMcWhannell> {
       "Eng. Ind. 99(3) (1977) 513-518.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 6(1-e)/((2e-1)^2+3) / v0, v0 = approach speed; independent of K and m",
-      "fitted over moderate to high e",
+      "fitted to numerical solutions of the Hunt-Crossley form; not exact",
       true};
 
   /// chi v0 [-] as a function of the input restitution e in (0, 1].

@@ -22,7 +22,7 @@ class HuGuo : public HertzProportionalDashpot<HuGuo> {
       "Multibody Syst. Dyn. 35(2) (2015) 131-151.",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 3(1-e)/(2e) / v0, v0 = approach speed; independent of K and m",
-      "any e in (0, 1]",
+      "intended for any e in (0, 1]; not exact",
       true};
 
   /// chi v0 [-] as a function of the input restitution e in (0, 1].

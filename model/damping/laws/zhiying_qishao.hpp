@@ -15,7 +15,7 @@ class ZhiyingQishao : public HertzProportionalDashpot<ZhiyingQishao> {
       "4 (2006) 294-298 (in Chinese).",
       "F = K x^{3/2} (1 + chi xdot)",
       "chi = 3(1-e^2) exp(2(1-e))/4 / v0, v0 = approach speed; independent of K and m",
-      "any e in (0, 1], approximate for low e",
+      "intended for any e in (0, 1]; not exact (hertzdash restitution shows by how much)",
       true};
 
   /// chi v0 [-] as a function of the input restitution e in (0, 1].
