@@ -21,7 +21,8 @@
 // Part 2, the hysteresis loops: force against deformation of the paper's steel drop
 // (h = 20 mm, gravity, steel rod), every law (tension allowed) (a) at the paper's
 // input e = 0.795 and (b) at the input e calibrated (GSL Brent) so that each law's
-// effective restitution is 0.795. (b) isolates the SHAPE of each law's damping from
+// effective restitution is 0.795 in the rigid-wall contact phase, the definition used
+// throughout (in the drop itself the steel rod's compliance and gravity move it slightly). (b) isolates the SHAPE of each law's damping from
 // its calibration error. "none" (undamped) appears in (a) only: it cannot reach 0.795.
 //
 // Writes OUT/restitution_map.csv (model, tension, e_input, e_effective),
