@@ -44,7 +44,7 @@ do for [format in 'pdf png'] {
   set label 1 '(d)' at graph 0.04, 0.90 left
   set ytics autofreq
   set ylabel 'Coefficient of restitution'
-  set yrange [0.70:0.90]
+  set yrange [0.70:0.92]
   set offsets 0, 0, 0, 0
   set key bottom right font ',7.5' samplen 2 spacing 0.9 opaque
   plot for [i=1:4] data using (pick(word(rods,i), column('impact_velocity_mps'))):'e_input' with lines lc rgb word(colors,i) dt 3 lw 1.2 notitle, \
