@@ -5,7 +5,7 @@
 fig_width_in = real(ARG3)
 fig_height_in = real(ARG4)
 if (ARG2 eq 'pdf') {
-  set terminal pdfcairo enhanced color font 'Helvetica,9' size fig_width_in, fig_height_in linewidth 1
+  set terminal pdfcairo enhanced color font 'Helvetica,9' size fig_width_in, fig_height_in fontscale 1.0 linewidth 1.0
   set output ARG1.'.pdf'
 } else {
   fig_dpi = 150.0
