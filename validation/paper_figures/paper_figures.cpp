@@ -166,13 +166,17 @@ void write_figure(const FigureSpec& fig, const PaperParameters& paper, const Stu
 
   // Where the force peaks relative to the deepest compression: the dashpot adds to
   // the force while compressing, so the damped peak comes first.
-  double t_peak = 0, t_deepest = 0, peak = -INFINITY, deepest = -INFINITY;
+  // The least force over the contact: negative means the law pulls (tension) before separation.
+  double t_peak = 0, t_deepest = 0, peak = -INFINITY, deepest = -INFINITY, least = INFINITY;
   for (int k = 0; k < 20001; ++k) {
     const double t = model.contact_time_s * k / 20000.0;
     const ImpactState s = model_history.at(t);
     if (s.force_N > peak) peak = s.force_N, t_peak = t;
     if (s.displacement_m > deepest) deepest = s.displacement_m, t_deepest = t;
+    least = std::min(least, s.force_N);
   }
+  macros.add("figs" + fig.tag + "LeastForceN", least, "{:.1f}");
+  macros.add("figs" + fig.tag + "LeastForcePercent", 100.0 * least / model.peak_force_N, "{:.1f}");
   macros.add("figs" + fig.tag + "PeakForceLeadMs", 1e3 * (t_deepest - t_peak), "{:.3f}");
   macros.add("figs" + fig.tag + "PeakForceLeadPercent", 100.0 * (t_deepest - t_peak) / model.contact_time_s, "{:.1f}");
 

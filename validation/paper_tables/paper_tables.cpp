@@ -140,6 +140,8 @@ int main(int argc, char** argv) {
     const std::string tag = macro_tag(rod.name);
     macros.add_text("tabs" + tag + "EfromFrequencyGPa", gpa_text(E_f));
     macros.add("tabs" + tag + "EdiffPercent", 100.0 * rel, "{:+.1f}");
+    macros.add("tabs" + tag + "FrequencyPrintedkHz", rod.natural_frequency_hz / 1e3, "{:.4g}");
+    macros.add("tabs" + tag + "EPrintedGPa", rod.E_Pa / 1e9, "{:.1f}");
     macros.add("tabs" + tag + "EfromFrequencyRatio", E_f / rod.E_Pa, "{:.0f}");
     macros.add("tabs" + tag + "FlexuralFrequencykHz", flexural_frequency_hz(g, rod.E_Pa) / 1e3, "{:.3g}");
     macros.add("tabs" + tag + "LongitudinalFrequencykHz", longitudinal_frequency_hz(g, rod.E_Pa) / 1e3, "{:.3g}");
