@@ -180,9 +180,9 @@ void write_figure(const FigureSpec& fig, const PaperParameters& paper, const Stu
   macros.add("figs" + fig.tag + "PeakForceLeadMs", 1e3 * (t_deepest - t_peak), "{:.3f}");
   macros.add("figs" + fig.tag + "PeakForceLeadPercent", 100.0 * (t_deepest - t_peak) / model.contact_time_s, "{:.1f}");
 
-  std::cout << fmt::format("{} ({}): peak force {:.1f} N [{:.1f}, {:.1f}] (Hertz {:.1f}), max displacement {:.1f} um, "
+  std::cout << fmt::format("{} ({}): peak force {:.1f} N (nylon E min {:.1f}, max {:.1f}; Hertz {:.1f}), max displacement {:.1f} um, "
                            "contact time {:.4f} ms, e_eff {:.4f} (input {}), {} measured trace(s)\n",
-                           fig.name, fig.rod, model.peak_force_N, band.back().peak_force_N, band.front().peak_force_N,
+                           fig.name, fig.rod, model.peak_force_N, band.front().peak_force_N, band.back().peak_force_N,
                            hertz.peak_force_N, 1e6 * model.max_deformation_m, 1e3 * model.contact_time_s,
                            model.e_effective, setup.restitution, measured.size());
 }
