@@ -89,3 +89,38 @@ TEST_CASE("run_studies.sh --reduced produces every file the study manifests decl
   CHECK(files >= 14);
   fs::remove_all(scratch);
 }
+
+TEST_CASE("a trace in the measurements directory is overlaid on Fig. 5", "[pipeline]") {
+  // A copy of data/ with one SYNTHETIC trace for the steel rod at 20 mm (made up here,
+  // labelled synthetic; no measured trace exists). paper_figures must copy it beside
+  // fig5.csv with the provenance kept, not for fig6, and fig5.gp must still draw.
+  const fs::path source = HERTZDASH_SOURCE_DIR;
+  const fs::path build = fs::path(HERTZDASH_BIN).parent_path();
+  const fs::path scratch = fs::temp_directory_path() / ("hertzdash_overlay_" + std::to_string(::getpid()));
+  fs::remove_all(scratch);
+  fs::create_directories(scratch / "data" / "measurements");
+  for (const auto& f : fs::directory_iterator(source / "data"))
+    if (f.path().extension() == ".csv") fs::copy_file(f.path(), scratch / "data" / f.path().filename());
+  std::ofstream(scratch / "data" / "measurements" / "steel_h20mm_synthetic.csv")
+      << "# source: SYNTHETIC trace written by tests/test_figures_pipeline.cpp, not a measurement\n"
+         "# synthetic: true\n# rod: steel\n# height_m: 0.020\n"
+         "t_s,force_N,accel_mps2\n0,0,9.8\n5e-4,1200,-1500\n1e-3,100,\n";
+  const fs::path out = scratch / "figures";
+  const std::string log = (scratch / "log.txt").string();
+  const std::string command = "HERTZDASH_DATA_DIR='" + (scratch / "data").string() + "' '" +
+                              (build / "validation" / "paper_figures").string() + "' --out '" + out.string() +
+                              "' --reduced > '" + log + "' 2>&1 && gnuplot -d -c '" +
+                              (source / "validation" / "paper_figures" / "fig5.gp").string() + "' '" + out.string() +
+                              "' >> '" + log + "' 2>&1";
+  const int status = std::system(command.c_str());
+  INFO(read_text(log));
+  REQUIRE(status == 0);
+  const hertzdash::CsvTable overlay = hertzdash::CsvTable::read(out / "fig5_measured_1.csv");
+  CHECK(overlay.columns() == std::vector<std::string>{"t_s", "force_N", "accel_mps2", "velocity_mps", "displacement_m"});
+  CHECK(overlay.rows() == 3);
+  CHECK(overlay.number(1, "force_N") == 1200.0);
+  CHECK(read_text(out / "fig5_measured_1.csv").find("synthetic = true") != std::string::npos);
+  CHECK_FALSE(fs::exists(out / "fig6_measured_1.csv"));
+  CHECK(fs::file_size(out / "fig5.png") > 0);
+  fs::remove_all(scratch);
+}

@@ -16,6 +16,7 @@
 // GENERATED/height_sweep.tex (macros \sweep...).
 #include "model/damping/laws/hongo_paper.hpp"
 #include "model/paper_parameters.hpp"
+#include "validation/common/all_rods.hpp"
 #include "validation/common/csv_writer.hpp"
 #include "validation/common/impact_simulator.hpp"
 #include "validation/common/latex_macros.hpp"
@@ -44,10 +45,6 @@ double log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-std::string macro_tag(const std::string& rod) {
-  return rod == "steel" ? "Steel" : "Dural" + std::string(1, static_cast<char>(std::toupper(rod.back())));
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -57,14 +54,7 @@ int main(int argc, char** argv) {
   const SolverSettings solver;
   ImpactSimulator sim(solver);
 
-  Parameters header = describe_run(paper_setup(paper, "steel", lowest_height_m), "hongo", solver);
-  header.erase(std::remove_if(header.begin(), header.end(),
-                              [](const auto& p) {
-                                return p.first == "mass_kg" || p.first == "rod_E_Pa" || p.first == "rod_nu" ||
-                                       p.first == "restitution" || p.first == "height_m";
-                              }),
-               header.end());
-  header.emplace_back("per_rod", "mass_kg, rod_E_Pa, rod_nu, restitution from Tables 1-3 and data/assumptions.csv");
+  Parameters header = all_rods_parameters(paper, solver, lowest_height_m, {"height_m"});
   header.emplace_back("heights", fmt::format("{} log-spaced from {} m to {} m", heights, lowest_height_m,
                                              highest_height_m));
   header.emplace_back("reference", "undamped Hertz closed forms at the same impact velocity, no gravity");
@@ -92,7 +82,7 @@ int main(int argc, char** argv) {
     }
     const auto [e_lo, e_hi] = std::minmax_element(e.begin(), e.end());
     e_spread = std::max(e_spread, *e_hi - *e_lo);
-    const std::string tag = "sweep" + macro_tag(rod.name);
+    const std::string tag = "sweep" + rod_macro_tag(rod.name);
     macros.add(tag + "ForceSlope", log_log_slope(v0, force), "{:.3f}");
     macros.add(tag + "DeformationSlope", log_log_slope(v0, depth), "{:.3f}");
     macros.add(tag + "ContactTimeSlope", log_log_slope(v0, duration), "{:.3f}");

@@ -18,8 +18,14 @@ overlay_velocity = overlay(t_ms.":'velocity_mps'")
 overlay_displacement = overlay(t_ms.":(1e6*column('displacement_m'))")
 overlay_loop = overlay("(in_contact(column('displacement_m'))):'force_N'")
 in_contact(x) = x >= 0 ? 1e6*x : NaN
-note = n_measured > 0 ? sprintf('%d measured trace(s) overlaid', n_measured) \
-                      : 'model only: the measured traces of the paper were never published'
+# A trace marked synthetic (not a measurement) is never called measured.
+n_synthetic = 0
+do for [i=1:n_measured] { n_synthetic = n_synthetic + (csv_parameter(word(measured, i), 'synthetic') eq 'true') }
+note = n_measured == 0 ? 'model only: the measured traces of the paper were never published' \
+     : sprintf('%d trace(s) overlaid, of which %d SYNTHETIC, not measured', n_measured, n_synthetic)
+trace_title = n_measured == 0 ? 'Measured (none published)' \
+            : n_synthetic == n_measured ? 'SYNTHETIC trace (not a measurement)' \
+            : n_synthetic > 0 ? 'Measured or SYNTHETIC (see header)' : 'Measured'
 
 # Time tics: about four per panel whatever the contact time.
 stats data using (1e3*column('t_s')) nooutput
@@ -85,5 +91,5 @@ set yrange [0:1]
 plot 2 with lines ls 1 title sprintf("Paper's model, nylon E = %.1f GPa", E_default), \
      2 with filledcurves y1=3 ls 11 title sprintf("Paper's model, nylon E = %.1f-%.1f GPa", E_min, E_max), \
      2 with lines ls 2 title 'Undamped Hertz contact', \
-     2 with lines ls 3 title n_measured > 0 ? 'Measured' : 'Measured (none published)'
+     2 with lines ls 3 title trace_title
 unset multiplot

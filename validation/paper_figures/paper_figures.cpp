@@ -163,6 +163,10 @@ void write_figure(const FigureSpec& fig, const PaperParameters& paper, const Stu
   macros.add("figs" + fig.tag + "ReboundVelocityMps", model.rebound_velocity_mps, "{:.3f}");
   macros.add("figs" + fig.tag + "MassKg", setup.mass_kg, "{:.3f}");
   macros.add("figs" + fig.tag + "MeasuredTraces", static_cast<double>(measured.size()), "{:.0f}");
+  macros.add("figs" + fig.tag + "SyntheticTraces",
+             static_cast<double>(std::count_if(measured.begin(), measured.end(),
+                                               [](const MeasuredTrace& m) { return m.synthetic; })),
+             "{:.0f}");
 
   // Where the force peaks relative to the deepest compression: the dashpot adds to
   // the force while compressing, so the damped peak comes first.

@@ -19,6 +19,7 @@
 #include "model/paper_parameters.hpp"
 #include "model/restitution.hpp"
 #include "model/rod_vibration.hpp"
+#include "validation/common/all_rods.hpp"
 #include "validation/common/atomic_file.hpp"
 #include "validation/common/csv_writer.hpp"
 #include "validation/common/latex_macros.hpp"
@@ -38,23 +39,6 @@ namespace {
 // digits alone (3 significant figures in f, m, d, L; E ~ m f^2 L^3 / d^4) allow
 // about 3 %; 10 % leaves room for a real rod's departures from the ideal beam.
 constexpr double consistency_threshold = 0.10;
-
-std::string rod_label(const std::string& rod) {
-  if (rod == "steel") return "Steel";
-  return "Duralumin " + std::string(1, static_cast<char>(std::toupper(rod.back())));
-}
-
-// "duralumin-a" -> "DuraluminA" (macro names are letters only).
-std::string macro_tag(const std::string& rod) {
-  std::string tag;
-  bool upper = true;
-  for (char c : rod) {
-    if (c == '-') { upper = true; continue; }
-    tag += upper ? static_cast<char>(std::toupper(c)) : c;
-    upper = false;
-  }
-  return tag;
-}
 
 // A modulus in GPa for a table: one decimal, or a whole number with thin-space
 // thousands separators when it is absurdly large (the steel row).
@@ -137,7 +121,7 @@ int main(int argc, char** argv) {
                     std::string(consistent ? "yes" : "no")});
     tex3 += fmt::format("{} & {:.4g} & {:.1f} & {} & {} \\\\\n", rod_label(rod.name),
                         rod.natural_frequency_hz / 1e3, rod.E_Pa / 1e9, gpa_text(E_f), consistent ? "yes" : "no");
-    const std::string tag = macro_tag(rod.name);
+    const std::string tag = rod_macro_tag(rod.name);
     macros.add_text("tabs" + tag + "EfromFrequencyGPa", gpa_text(E_f));
     macros.add("tabs" + tag + "EdiffPercent", 100.0 * rel, "{:+.1f}");
     macros.add("tabs" + tag + "FrequencyPrintedkHz", rod.natural_frequency_hz / 1e3, "{:.4g}");

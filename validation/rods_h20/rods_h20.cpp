@@ -19,6 +19,7 @@
 // GENERATED/rods_h20.tex (macros \rods...).
 #include "model/damping/laws/hongo_paper.hpp"
 #include "model/paper_parameters.hpp"
+#include "validation/common/all_rods.hpp"
 #include "validation/common/atomic_file.hpp"
 #include "validation/common/csv_writer.hpp"
 #include "validation/common/impact_simulator.hpp"
@@ -41,15 +42,6 @@ struct Range {
   void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); }
 };
 
-std::string rod_label(const std::string& rod) {
-  if (rod == "steel") return "Steel";
-  return "Duralumin " + std::string(1, static_cast<char>(std::toupper(rod.back())));
-}
-
-std::string macro_tag(const std::string& rod) {
-  return rod == "steel" ? "Steel" : "Dural" + std::string(1, static_cast<char>(std::toupper(rod.back())));
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,14 +51,7 @@ int main(int argc, char** argv) {
   const SolverSettings solver;  // CVODE defaults: rtol 1e-8, atol 1e-12
   ImpactSimulator sim(solver);
 
-  Parameters header = describe_run(paper_setup(paper, "steel", drop_height_m), "hongo", solver);
-  header.erase(std::remove_if(header.begin(), header.end(),
-                              [](const auto& p) {
-                                return p.first == "mass_kg" || p.first == "rod_E_Pa" || p.first == "rod_nu" ||
-                                       p.first == "restitution";
-                              }),
-               header.end());
-  header.emplace_back("per_rod", "mass_kg, rod_E_Pa, rod_nu, restitution from Tables 1-3 and data/assumptions.csv");
+  Parameters header = all_rods_parameters(paper, solver, drop_height_m);
   header.emplace_back("band", fmt::format("min/max over {} runs with ball_E_Pa evenly spaced in the range below",
                                           band_runs));
   header.emplace_back("band_ball_E_min_Pa", fmt::format("{}", paper.ball.E_min_Pa));
@@ -103,7 +88,7 @@ int main(int argc, char** argv) {
     table += fmt::format("{} & {:.3f} & {:.0f} & {:.0f} & {:.3f} & {:.3f} & {:.3f} \\\\\n", rod_label(rod.name),
                          setup.mass_kg, s.peak_force_N, 1e6 * s.max_deformation_m, 1e3 * s.contact_time_s,
                          setup.restitution, s.e_effective);
-    const std::string tag = "rods" + macro_tag(rod.name);
+    const std::string tag = "rods" + rod_macro_tag(rod.name);
     macros.add(tag + "PeakForceN", s.peak_force_N, "{:.0f}");
     macros.add(tag + "MaxDeformationMicrometre", 1e6 * s.max_deformation_m, "{:.0f}");
     macros.add(tag + "ContactTimeMs", 1e3 * s.contact_time_s, "{:.3f}");
