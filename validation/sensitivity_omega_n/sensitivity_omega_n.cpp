@@ -121,6 +121,32 @@ Row simulate(Solvers& solvers, const PaperParameters& paper, OmegaNVariant varia
   return row;
 }
 
+/// The omega_n [rad/s] at which the paper's law returns the input e (e_effective = e), by
+/// bisection on ln omega_n: e_effective grows with omega_n (c_e ~ 1/omega_n). The law is run
+/// with a prescribed omega_n through the hook of the iterated variants
+/// (DampingSettings::omega_n_rad_per_s), without iterating.
+double omega_n_reproducing_e(Solvers& solvers, const PaperParameters& paper, const std::string& rod, double h) {
+  DropTestSetup setup = paper_setup(paper, rod, h);
+  setup.damping.omega_n = OmegaNVariant::self_consistent;  // only to prescribe omega_n
+  const double e = setup.restitution;
+  auto e_effective = [&](double w) {
+    setup.damping.omega_n_rad_per_s = w;
+    try {
+      return solvers.cvode.run<HongoPaper>(setup).e_effective;
+    } catch (const std::runtime_error&) {  // see Solvers
+      return solvers.rk4.run<HongoPaper>(setup).e_effective;
+    }
+  };
+  const ImpactConditions c{hertz_stiffness(setup), setup.mass_kg, approach_speed(setup), e};
+  double hi = paper_law_natural_frequency(c, DampingSettings{}), lo = 0.05 * hi;
+  if (!(e_effective(hi) > e && e_effective(lo) < e)) return not_a_number;
+  while (hi / lo - 1 > 1e-9) {
+    const double mid = std::sqrt(lo * hi);
+    (e_effective(mid) > e ? hi : lo) = mid;
+  }
+  return std::sqrt(lo * hi);
+}
+
 // Macro names are letters only: "self-consistent" -> "SelfConsistent".
 std::string camel(const std::string& s) {
   std::string out;
@@ -221,6 +247,10 @@ int main(int argc, char** argv) {
     const Row base = simulate(sim, paper, OmegaNVariant::paper, ZetaForm::paper, rod, e_table, paper_height_m);
     const std::string rt = rod_tag(rod);
     tex.add("sens" + rt + "InputE", e_table, "{:.3f}");
+    const double w_e = omega_n_reproducing_e(sim, paper, rod, paper_height_m);
+    tex.add("sens" + rt + "OmegaNReproducingE", w_e, "{:.0f}");
+    tex.add("sens" + rt + "OmegaNReproducingERelPct", 100.0 * (w_e / base.omega_n_rad_per_s - 1.0), "{:+.0f}");
+    tex.add("sens" + rt + "CeReproducingERelPct", 100.0 * (base.omega_n_rad_per_s / w_e - 1.0), "{:+.0f}");
     table += fmt::format("\\midrule\n\\multicolumn{{8}}{{l}}{{{} rod, $e = {:.3f}$, $h = 20$\\,mm}}\\\\\n",
                          rod == "steel" ? "Steel" : "Duralumin C", e_table);
     for (OmegaNVariant v : all_omega_n_variants) {
@@ -257,6 +287,23 @@ int main(int argc, char** argv) {
       tex.add(tag + "MaxEDev", worst, "{:.3f}");
       if (is_iterated(v)) tex.add(tag + "MinEFixedPoint", e_min_fixed, "{:.2f}");
     }
+  // (b') Where a variant reproduces the input e on the e grid (steel, h = 20 mm, zeta eq. 6):
+  // the sign change of e_effective - e, located by linear interpolation; "none" if there is none.
+  for (OmegaNVariant v : all_omega_n_variants) {
+    std::vector<const Row*> rows;
+    for (const Row& r : e_sweep)
+      if (r.variant == v && r.zeta_form == ZetaForm::paper && r.rod == "steel" && r.ok) rows.push_back(&r);
+    std::string crossing = "none";
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      const double d0 = rows[i - 1]->e_effective - rows[i - 1]->e_input, d1 = rows[i]->e_effective - rows[i]->e_input;
+      if ((d0 < 0) != (d1 < 0)) {
+        const double e0 = rows[i - 1]->e_input, e1 = rows[i]->e_input;
+        crossing = fmt::format("{:.2f}", e0 - d0 * (e1 - e0) / (d1 - d0));
+        break;
+      }
+    }
+    tex.add_text("sensSteel" + camel(to_string(v)) + "ReproducesEAt", crossing);
+  }
   // (c) The h dependence: spread of e_effective over the h grid for the paper variant.
   for (const std::string& rod : rods) {
     double lo = 1, hi = 0;
