@@ -29,6 +29,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -114,6 +115,13 @@ int main(int argc, char** argv) {
   const BallData& ball = paper.ball;
   const double span = std::log(ball.E_max_Pa / ball.E_min_Pa);  // ln(2.9/1.2)
   tex.add("sensElNylonRangeLogSpan", span, "{:.2f}");
+  tex.add("sensElNylonEMinGPa", 1e-9 * ball.E_min_Pa, "{:.1f}");
+  tex.add("sensElNylonEMaxGPa", 1e-9 * ball.E_max_Pa, "{:.1f}");
+  double largest = 0;  // e_effective's largest elasticity to anything but e
+  for (const PaperLawElasticities* el : {&steel_paper, &dural_paper})
+    for (int p = 0; p < elasticity_parameter_count; ++p)
+      if (p != p_restitution) largest = std::max(largest, std::abs(el->e_effective_el[p]));
+  tex.add("sensElEeffLargestOtherThanE", largest, "{:.1g}");
   tex.add("sensElSteelPeakOverNylonRangePct", 100.0 * (std::exp(steel_paper.peak_force_el[p_ball_E] * span) - 1.0),
           "{:.0f}");
   tex.add("sensElSteelContactOverNylonRangePct",
