@@ -27,17 +27,6 @@ using namespace hertzdash;
 
 namespace {
 
-double& parameter_of(DropTestSetup& s, int p) {
-  switch (p) {
-    case p_ball_E: return s.ball.E_Pa;
-    case p_ball_nu: return s.ball.nu;
-    case p_restitution: return s.restitution;
-    case p_mass: return s.mass_kg;
-    case p_height: return s.height_m;
-    default: return s.ball_radius_m;
-  }
-}
-
 struct Outputs {
   double e_eff, peak, tc;
 };
@@ -71,8 +60,8 @@ TEST_CASE("CVODES elasticities agree with central differences of the full simula
       std::printf("  %-12s %12s %12s %12s %12s %12s %12s\n", "p", "e_eff", "FD", "P_max", "FD", "t_c", "FD");
       for (int p = 0; p < elasticity_parameter_count; ++p) {
         DropTestSetup up = base, down = base;
-        parameter_of(up, p) *= 1 + d;
-        parameter_of(down, p) *= 1 - d;
+        elasticity_parameter(up, p) *= 1 + d;
+        elasticity_parameter(down, p) *= 1 - d;
         const Outputs a = simulate(sim, up), b = simulate(sim, down);
         const double dlnp = std::log((1 + d) / (1 - d));
         const double fd_e = std::log(a.e_eff / b.e_eff) / dlnp, fd_P = std::log(a.peak / b.peak) / dlnp,

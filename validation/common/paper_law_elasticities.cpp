@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace hertzdash {
 
@@ -12,6 +14,18 @@ std::string_view elasticity_parameter_name(int p) {
   constexpr std::array<std::string_view, elasticity_parameter_count> names{"ball_E", "ball_nu", "restitution",
                                                                           "mass",   "height",  "ball_radius"};
   return names.at(static_cast<std::size_t>(p));
+}
+
+double& elasticity_parameter(DropTestSetup& s, int p) {
+  switch (p) {
+    case p_ball_E: return s.ball.E_Pa;
+    case p_ball_nu: return s.ball.nu;
+    case p_restitution: return s.restitution;
+    case p_mass: return s.mass_kg;
+    case p_height: return s.height_m;
+    case p_radius: return s.ball_radius_m;
+  }
+  throw std::out_of_range("elasticity_parameter: no parameter " + std::to_string(p));
 }
 
 PaperLawElasticities paper_law_elasticities(const DropTestSetup& s, const ContactSensitivityOptions& options) {

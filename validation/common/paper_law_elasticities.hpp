@@ -32,6 +32,9 @@ inline constexpr int elasticity_parameter_count = 6;
 /// Column names (letters and underscores), e.g. "ball_E".
 std::string_view elasticity_parameter_name(int p);
 
+/// The set-up's value of parameter p (E_b [Pa], nu_b, e, m [kg], h [m], R [m]), to read or perturb.
+double& elasticity_parameter(DropTestSetup& s, int p);
+
 using Elasticities = std::array<double, elasticity_parameter_count>;  ///< d ln y / d ln p
 
 struct PaperLawElasticities {

@@ -37,17 +37,6 @@ using namespace hertzdash;
 
 namespace {
 
-double parameter_value(const DropTestSetup& s, int p) {
-  switch (p) {
-    case p_ball_E: return s.ball.E_Pa;
-    case p_ball_nu: return s.ball.nu;
-    case p_restitution: return s.restitution;
-    case p_mass: return s.mass_kg;
-    case p_height: return s.height_m;
-    default: return s.ball_radius_m;
-  }
-}
-
 // LaTeX symbol and macro tag of each parameter.
 const char* symbol(int p) {
   constexpr const char* s[] = {"$E_s$ (nylon)", "$\\nu_s$ (nylon)", "$e$", "$m$", "$h$", "$R$"};
@@ -93,7 +82,7 @@ int main(int argc, char** argv) {
       const PaperLawElasticities el = paper_law_elasticities(s, options);
       if (z == ZetaForm::paper) (rod == "steel" ? steel_paper : dural_paper) = el;
       for (int p = 0; p < elasticity_parameter_count; ++p) {
-        csv.add_row({rod, to_string(z), std::string(elasticity_parameter_name(p)), parameter_value(s, p),
+        csv.add_row({rod, to_string(z), std::string(elasticity_parameter_name(p)), elasticity_parameter(s, p),
                      el.e_effective_el[p], el.peak_force_el[p], el.contact_time_el[p]});
         if (z != ZetaForm::paper) continue;
         const std::string t = std::string("sensEl") + (rod == "steel" ? "Steel" : "DurC") + tag(p);
