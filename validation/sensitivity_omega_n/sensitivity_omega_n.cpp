@@ -63,6 +63,7 @@ struct Row {
   double omega_n_rad_per_s, c_e_coefficient;  ///< c_e = c_e_coefficient x^{1/2} [N s / m^{3/2}]
   double e_effective, peak_force_N, max_deformation_m, contact_time_s;
   int iterations;
+  double contraction;  ///< last observed contraction factor of an iterated variant (0 for closed forms)
   bool ok;         ///< false: the iterated variant found no fixed point (values nan)
   bool separated;  ///< false: the rod came to rest on the ball (e_effective 0, contact time nan)
 };
@@ -89,7 +90,7 @@ Row simulate(Solvers& solvers, const PaperParameters& paper, OmegaNVariant varia
   setup.damping.zeta_form = zeta;
   setup.damping.omega_n = variant;
   const double nan = not_a_number;
-  Row row{variant, zeta, rod, e, h, nan, nan, nan, nan, nan, nan, 0, false, false};
+  Row row{variant, zeta, rod, e, h, nan, nan, nan, nan, nan, nan, 0, 0.0, false, false};
   OmegaNFixedPoint r;
   bool cvode_gave_up = false;
   try {
@@ -104,6 +105,7 @@ Row simulate(Solvers& solvers, const PaperParameters& paper, OmegaNVariant varia
     ++solvers.rk4_fallbacks;
   }
   row.iterations = r.iterations;
+  row.contraction = r.contraction;
   row.ok = r.converged;
   if (!r.converged) {
     std::cerr << fmt::format("  no fixed point for {} zeta={} {} e={} h={}: {}\n", to_string(variant),
@@ -262,6 +264,7 @@ int main(int argc, char** argv) {
       tex.add(tag + "Eeff", r.e_effective, "{:.3f}");
       tex.add(tag + "EeffExact", x.e_effective, "{:.3f}");
       tex.add(tag + "CeRelPct", 100.0 * (r.c_e_coefficient / base.c_e_coefficient - 1.0), "{:+.1f}");
+      tex.add(tag + "CeRatio", r.c_e_coefficient / base.c_e_coefficient, "{:.1f}");
       tex.add(tag + "PeakRelPct", 100.0 * (r.peak_force_N / base.peak_force_N - 1.0), "{:+.2f}");
       tex.add(tag + "ContactRelPct", 100.0 * (r.contact_time_s / base.contact_time_s - 1.0), "{:+.2f}");
       tex.add(tag + "XmaxRelPct", 100.0 * (r.max_deformation_m / base.max_deformation_m - 1.0), "{:+.2f}");
@@ -295,17 +298,24 @@ int main(int argc, char** argv) {
   // zeta form (both rods), and where the iterated variants have a fixed point.
   for (OmegaNVariant v : all_omega_n_variants)
     for (ZetaForm z : zeta_forms) {
-      double worst = 0, e_min_fixed = not_a_number;
+      double worst = 0, e_min_fixed = not_a_number, contraction = 0;
+      int iterations = 0;
       for (const Row& r : e_sweep) {
         if (r.variant != v || r.zeta_form != z) continue;
         if (r.ok) {
           worst = std::max(worst, std::abs(r.e_effective - r.e_input));
           if (!(r.e_input >= e_min_fixed)) e_min_fixed = r.e_input;
+          contraction = std::max(contraction, r.contraction);
+          iterations = std::max(iterations, r.iterations);
         }
       }
       const std::string tag = "sens" + camel(to_string(v)) + "Zeta" + camel(to_string(z));
       tex.add(tag + "MaxEDev", worst, "{:.3f}");
-      if (is_iterated(v)) tex.add(tag + "MinEFixedPoint", e_min_fixed, "{:.2f}");
+      if (is_iterated(v)) {
+        tex.add(tag + "MinEFixedPoint", e_min_fixed, "{:.2f}");
+        tex.add(tag + "MaxContraction", contraction, "{:.2f}");
+        tex.add(tag + "MaxIterations", iterations, "{:.0f}");
+      }
     }
   // (b') Where a variant reproduces the input e on the e grid (steel, h = 20 mm, zeta eq. 6):
   // the sign change of e_effective - e, located by linear interpolation; "none" if there is none.
@@ -324,6 +334,15 @@ int main(int argc, char** argv) {
     }
     tex.add_text("sensSteel" + camel(to_string(v)) + "ReproducesEAt", crossing);
   }
+  // (b'') The misprint: the largest e of the grid at which the steel rod does not separate.
+  {
+    double e_rest = not_a_number;
+    for (const Row& r : e_sweep)
+      if (r.variant == OmegaNVariant::as_printed && r.zeta_form == ZetaForm::paper && r.rod == "steel" && r.ok &&
+          !r.separated && !(r.e_input <= e_rest))
+        e_rest = r.e_input;
+    tex.add("sensSteelAsPrintedNoSeparationMaxE", e_rest, "{:.2f}");
+  }
   // (c) The h dependence: spread of e_effective over the h grid for the paper variant.
   for (const std::string& rod : rods) {
     double lo = 1, hi = 0;
@@ -332,6 +351,7 @@ int main(int argc, char** argv) {
         lo = std::min(lo, r.e_effective), hi = std::max(hi, r.e_effective);
     tex.add("sens" + rod_tag(rod) + "PaperEeffSpreadOverH", hi - lo, "{:.1e}");
   }
+  tex.add("sensFixedPointRtolExponent", std::log10(OmegaNFixedPointOptions{}.rtol), "{:.0f}");
   tex.add("sensEGridMin", e_grid.front(), "{:.2f}");
   tex.add("sensEGridMax", e_grid.back(), "{:.2f}");
   tex.add("sensHGridMinMm", 1e3 * h_grid.front(), "{:.0f}");
