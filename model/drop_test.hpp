@@ -12,12 +12,16 @@
 //   0 contact: in flight g = -x (gap closes: onset, restart); in contact g = x
 //     (deformation returns to zero: separation, stop)
 //   1 max_compression: in contact g = x' (observation)
-//   2 peak_force: in contact g = dF/dt (observation); dF/dt by a central
-//     difference along the trajectory with step d = 1e-3 T, T = X*/v0 the
-//     contact time scale. Its truncation error O(d^2 F''') moves the root by
-//     O(d^2/T) = 1e-6 T, which changes the peak force only by O(1e-12) relative
-//     (F is stationary there). A much smaller d makes the difference exactly
-//     zero over a span of roundoff wider than the root finder's resolution.
+//   2 peak_force: in contact g = dF/dt = F_x x' + F_xdot x'' (observation), the
+//     partial derivatives by central differences with steps 1e-3 X* in x and
+//     1e-3 v0 in x' (X* = (m v0^2/K)^{2/5} the deformation scale). Their relative
+//     truncation error O(1e-6) moves the root by O(1e-6) of the contact time, which
+//     changes the peak force only by O(1e-12) relative (F is stationary there).
+//     Differencing in x and x' separately (rather than along the trajectory) keeps
+//     g nonzero on both sides of its root even where the peak force coincides with
+//     the maximum compression (undamped law without gravity): a difference along
+//     the trajectory is exactly zero over a span of roundoff there, which CVODE's
+//     root finder rejects ("root found at and very near t").
 //   3 force_zero: with the tension clamp, g = F (separation where the force
 //     reaches zero, stop); else inactive
 // At onset the law's coefficients are fixed from that impact's approach speed.
@@ -93,9 +97,10 @@ class DropTest {
       return;
     }
     const double a = model_.gravity_mps2 - contact_force(y) / model_.mass_kg;
-    const double h = fd_step_s_;
-    const State ahead{y[0] + h * y[1], y[1] + h * a}, behind{y[0] - h * y[1], y[1] - h * a};
-    const double dFdt = (contact_force(ahead) - contact_force(behind)) / (2 * h);
+    const double dx = fd_step_m_, dv = fd_step_mps_;
+    const double F_x = (contact_force(State{y[0] + dx, y[1]}) - contact_force(State{y[0] - dx, y[1]})) / (2 * dx);
+    const double F_v = (contact_force(State{y[0], y[1] + dv}) - contact_force(State{y[0], y[1] - dv})) / (2 * dv);
+    const double dFdt = F_x * y[1] + F_v * a;
     g = {y[0], y[1], dFdt, model_.setup.no_tension ? law_->force(std::max(y[0], 0.0), y[1]) : 1.0};
   }
 
@@ -115,13 +120,15 @@ class DropTest {
   void begin_contact(const State& y) {
     const double v0 = y[1];
     law_.emplace(ImpactConditions{model_.K, model_.mass_kg, v0, model_.setup.restitution}, model_.setup.damping);
-    // Contact time scale X*/v0 with X* = (m v0^2 / K)^{2/5}.
-    fd_step_s_ = 1e-3 * std::pow(model_.mass_kg * v0 * v0 / model_.K, 0.4) / v0;
+    // Deformation scale X* = (m v0^2 / K)^{2/5} and speed scale v0.
+    fd_step_m_ = 1e-3 * std::pow(model_.mass_kg * v0 * v0 / model_.K, 0.4);
+    fd_step_mps_ = 1e-3 * v0;
   }
 
   const DropTestModel& model_;
   std::optional<Law> law_;
-  double fd_step_s_ = 0.0;
+  double fd_step_m_ = 0.0;    ///< central-difference step in x for F_x [m]
+  double fd_step_mps_ = 0.0;  ///< central-difference step in x' for F_xdot [m/s]
 };
 
 }  // namespace hertzdash
