@@ -248,7 +248,7 @@ void write_csv(const std::filesystem::path& path, const std::string& law, const 
 
 void write_work_precision(const std::filesystem::path& path, const Parameters& params, const std::vector<Series>& all) {
   CsvWriter csv("work-precision, paper's law: largest relative error over the five quantities against the "
-                "right-hand-side evaluations and the CPU time of one impact (mean over repeats; fixed step: "
+                "right-hand-side evaluations and the thread CPU time of one impact (fastest of repeated batches; fixed step: "
                 "mean over the four onset phases)",
                 params, {"integrator", "event_location", "step", "rhs_evaluations", "cpu_time_s", "error"});
   for (const Series& s : all)
