@@ -21,8 +21,9 @@
 // through the sweep (paper's law 3.76 to 3.97; for the undamped law the peak sits at
 // the symmetric turning point, where the leading error term nearly cancels and the
 // pre-asymptotic range is longer, so it is not asserted); the tolerance slope of
-// CVODE is scattered by its order and step selection (study: 0.5 to 1.1), so only
-// "clearly convergent, at most proportional" is asserted there.
+// CVODE is scattered by its order and step selection: for the state the study fits
+// 0.96 to 1.01 over rtol 1e-8..1e-12 and this test's sweep 0.92 to 1.15 over
+// 1e-5..1e-10, so 1 +- 0.3 is asserted (the located maxima, 0.5 to 0.9, are not).
 #include "validation/common/step_resolution.hpp"
 #include "validation/convergence/convergence_runs.hpp"
 
@@ -162,7 +163,7 @@ TEST_CASE("RK4 in regularising variables restores order 4 on both laws", "[conve
   CHECK(regularized_order<HongoPaper>(paper_reference(), peak_force_q) == Approx(4.0).margin(0.2));
 }
 
-TEST_CASE("CVODE's error falls with its tolerance, at most proportionally", "[convergence]") {
+TEST_CASE("CVODE's error in the state is roughly proportional to its tolerance", "[convergence]") {
   const ConvergenceProblem& p = problem();
   for (CvodeMethod method : {CvodeMethod::adams, CvodeMethod::bdf}) {
     const double slope =
@@ -170,8 +171,7 @@ TEST_CASE("CVODE's error falls with its tolerance, at most proportionally", "[co
                     {1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}, [&](double rtol) {
                       return relative_errors(p, measure_cvode<HongoPaper>(p, method, rtol).q, paper_reference())[state_q];
                     });
-    CHECK(slope > 0.5);
-    CHECK(slope < 1.15);
+    CHECK(slope == Approx(1.0).margin(0.3));
   }
 }
 
