@@ -175,29 +175,6 @@ std::vector<Series> run_series(const ConvergenceProblem& p, const ImpactQuantiti
   return all;
 }
 
-/// The paper's-law reference and how well it is verified (largest relative
-/// differences over the five quantities).
-struct NumericalReference {
-  ImpactQuantities q;
-  double self_difference;    ///< 20000 vs 40000 steps
-  double adams_difference;   ///< CVODE Adams, rtol 1e-13
-  double bdf_difference;     ///< CVODE BDF, rtol 1e-13
-};
-
-template <DampingLaw Law> NumericalReference numerical_reference(const ConvergenceProblem& p) {
-  const double tau_c = regularized_contact_tau<Law>(p);
-  NumericalReference r;
-  r.q = measure_regularized<ClassicalRk4, Law>(p, tau_c / 40000).q;
-  auto largest = [&](const ImpactQuantities& other) {
-    const auto e = relative_errors(p, other, r.q);
-    return *std::max_element(e.begin(), e.end());
-  };
-  r.self_difference = largest(measure_regularized<ClassicalRk4, Law>(p, tau_c / 20000).q);
-  r.adams_difference = largest(measure_cvode<Law>(p, CvodeMethod::adams, 1e-13).q);
-  r.bdf_difference = largest(measure_cvode<Law>(p, CvodeMethod::bdf, 1e-13).q);
-  return r;
-}
-
 void print_table(const std::string& law, const std::vector<Series>& all) {
   for (const Series& s : all) {
     std::cout << fmt::format("\n{} law, {} ({} events), nominal order {}\n", law, s.integrator, s.event_location,
