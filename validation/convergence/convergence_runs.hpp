@@ -305,7 +305,9 @@ template <DampingLaw Law> NumericalReference numerical_reference(const Convergen
 
 /// The four positions of onset inside a step at which fixed-step runs are made; the
 /// error at a step is the largest of the four, so an unlocated kink's error is not
-/// flattered by a lucky alignment.
+/// flattered by a lucky alignment. (With located events the step is cut at onset and
+/// the grid restarts there, so the phase does not matter; separation then falls where
+/// tc/h puts it.)
 inline constexpr std::array<double, 4> step_phases{0.1, 0.35, 0.6, 0.85};
 
 /// The fixed step for N steps per contact: tc / (N + 1/2), so that separation falls
