@@ -44,21 +44,21 @@ do for [kind in 'pdf png'] {
   set title '(a) undamped Hertz law (closed-form reference)'
   set xrange [1e-7:2e-4]
   plot hertz u (col('euler','located','state_at_t_star',4)):5 w lp ls 11 t 'Euler, located', \
-       hertz u (col('euler','unlocated','state_at_t_star',4)):5 w lp ls 12 t 'Euler, unlocated', \
+       hertz u (col('euler','unlocated','state_at_t_star',4)):5 w lp ls 12 t 'Euler, unlocated (on top of located)', \
        hertz u (col('rk4','located','state_at_t_star',4)):5 w lp ls 13 t 'RK4, located', \
        hertz u (col('rk4','unlocated','state_at_t_star',4)):5 w lp ls 14 t 'RK4, unlocated', \
        hertz u (col('rk4-regularized','located','state_at_t_star',4)):5 w lp ls 15 t 'RK4, regularised (mean h)', \
        slope(x, 1e-4, 3e-2, 1) ls 20 t 'slopes 1, 2.5, 4', slope(x, 1e-4, 1e-5, 2.5) ls 20 notitle, \
-       slope(x, 1e-4, 1e-7, 4) ls 20 notitle
+       slope(x, 1e-4, 3e-5, 4) ls 20 notitle
 
   set title "(b) paper's law (numerical reference)"
   plot paper u (col('euler','located','state_at_t_star',4)):5 w lp ls 11 t 'Euler, located', \
-       paper u (col('euler','unlocated','state_at_t_star',4)):5 w lp ls 12 t 'Euler, unlocated', \
+       paper u (col('euler','unlocated','state_at_t_star',4)):5 w lp ls 12 t 'Euler, unlocated (on top of located)', \
        paper u (col('rk4','located','state_at_t_star',4)):5 w lp ls 13 t 'RK4, located', \
        paper u (col('rk4','unlocated','state_at_t_star',4)):5 w lp ls 14 t 'RK4, unlocated', \
        paper u (col('rk4-regularized','located','state_at_t_star',4)):5 w lp ls 15 t 'RK4, regularised (mean h)', \
        slope(x, 1e-4, 3e-2, 1) ls 20 t 'slopes 1, 1.5, 4', slope(x, 1e-4, 3e-4, 1.5) ls 20 notitle, \
-       slope(x, 1e-4, 1e-7, 4) ls 20 notitle
+       slope(x, 1e-4, 3e-5, 4) ls 20 notitle
 
   set title '(c) undamped law, RK4 without event location'
   set ylabel 'relative error'
