@@ -76,15 +76,7 @@ double sweep_order(const std::string& title, const std::vector<double>& steps,
     std::cout << fmt::format("{:12.4g} {:12.4e} {:8.3f} {:8.3f}\n", steps[i], errors[i], errors[i - 1] / errors[i],
                              observed_order(steps[i - 1], errors[i - 1], steps[i], errors[i], 0.0));
   }
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < steps.size(); ++i) mx += std::log(steps[i]), my += std::log(errors[i]);
-  mx /= double(steps.size()), my /= double(steps.size());
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const double dx = std::log(steps[i]) - mx;
-    sxy += dx * (std::log(errors[i]) - my), sxx += dx * dx;
-  }
-  const double order = sxy / sxx;
+  const double order = fitted_slope(steps, errors);
   std::cout << fmt::format("fitted order {:.3f}\n", order);
   return order;
 }

@@ -103,16 +103,10 @@ double max_error(const Level& l) { return *std::max_element(l.error.begin(), l.e
 /// Least-squares slope of log(error) against log(step) over the `count` finest
 /// resolutions whose error is above the floor (NaN with fewer than three).
 double fitted_order(const Series& s, int q, std::size_t count = 5) {
-  std::vector<std::pair<double, double>> pts;
-  for (auto it = s.levels.rbegin(); it != s.levels.rend() && pts.size() < count; ++it)
-    if (it->error[q] > error_floor) pts.emplace_back(std::log(it->step), std::log(it->error[q]));
-  if (pts.size() < 3) return std::nan("");
-  double mx = 0, my = 0;
-  for (auto [x, y] : pts) mx += x, my += y;
-  mx /= static_cast<double>(pts.size()), my /= static_cast<double>(pts.size());
-  double sxy = 0, sxx = 0;
-  for (auto [x, y] : pts) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
-  return sxy / sxx;
+  std::vector<double> steps, errors;
+  for (auto it = s.levels.rbegin(); it != s.levels.rend() && steps.size() < count; ++it)
+    if (it->error[q] > error_floor) steps.push_back(it->step), errors.push_back(it->error[q]);
+  return steps.size() < 3 ? std::nan("") : fitted_slope(steps, errors);
 }
 
 /// Smallest N of the sweep from which on every quantity's error stays <= target (0 if none).

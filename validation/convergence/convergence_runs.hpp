@@ -346,4 +346,17 @@ inline double observed_order(double step_coarse, double err_coarse, double step_
   return std::log(err_coarse / err_fine) / std::log(step_coarse / step_fine);
 }
 
+/// Least-squares slope of log(error) against log(step): the order over a sweep.
+inline double fitted_slope(const std::vector<double>& steps, const std::vector<double>& errors) {
+  const double n = static_cast<double>(steps.size());
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) mx += std::log(steps[i]) / n, my += std::log(errors[i]) / n;
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const double dx = std::log(steps[i]) - mx;
+    sxy += dx * (std::log(errors[i]) - my), sxx += dx * dx;
+  }
+  return sxy / sxx;
+}
+
 }  // namespace hertzdash::convergence
