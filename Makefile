@@ -4,7 +4,7 @@ BUILD   ?= build
 JOBS    ?= $(shell nproc)
 FIGURES ?= paper/figures
 
-.PHONY: all deps configure build test figures clean
+.PHONY: all deps configure build test figures convergence clean
 
 all: build
 
@@ -24,6 +24,13 @@ test: build
 
 figures: build
 	validation/run_studies.sh $(BUILD) $(FIGURES)
+
+# Convergence: the order tests (verbose, so their tables print), then the study's
+# full order tables (its CSV and LaTeX go to a scratch directory; `make figures`
+# writes the real ones).
+convergence: build
+	cd $(BUILD) && ctest -L convergence --output-on-failure -V
+	$(BUILD)/validation/convergence --out $(BUILD)/convergence/figures
 
 clean:
 	rm -rf $(BUILD)

@@ -3,6 +3,7 @@
 #include "cli/setup_options.hpp"
 #include "validation/common/csv_writer.hpp"
 #include "validation/common/omega_n_fixed_point.hpp"
+#include "validation/common/step_resolution.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -128,6 +129,15 @@ Command add_simulate_command(CLI::App& app) {
                 csv.add_row({r.t_s, r.x_m, r.xdot_mps, r.force_N, r.accel_mps2, r.rod_displacement_m,
                              r.rod_velocity_mps});
               csv.save(opt->trace_path);
+            }
+            if (const auto r = under_resolved_contact(s, solver)) {
+              std::cerr << fmt::format(
+                  "hertzdash: warning: the fixed step resolved the contact with only {:.0f} steps (contact time {:.6g} s, "
+                  "--dt {:.6g} s); the convergence study needs at least {} steps per contact with {} ({}) for errors "
+                  "below {:g} % (README, Convergence)\n",
+                  r->steps_per_contact, s.contact_time_s, solver.fixed_step.dt, r->required, to_string(solver.integrator),
+                  solver.fixed_step.locate_events ? "events located" : "--no-event-location",
+                  100 * step_resolution_target_error);
             }
             if (opt->json) std::cout << to_json(s, inputs, fp).dump(2) << "\n";
             else print_text(s, opt->setup.damping(), solver.integrator, fp);
