@@ -7,6 +7,8 @@
 #   - any LaTeX error (latexmk's status),
 #   - undefined references or citations, or labels that changed on the last run,
 #   - overfull boxes wider than 5 pt (text running into the margin),
+#   - bitmap (Type 3) fonts from TeX, which blur when zoomed: a symbol from the TS1
+#     text companion such as \textmu; use the math-mode symbol instead,
 #   - a figure in figures/*.pdf or a fragment in generated/*.tex that the article
 #     never reads (every output of the suite belongs in the article).
 # For a reproducible PDF set SOURCE_DATE_EPOCH (and FORCE_SOURCE_DATE=1) first;
@@ -19,10 +21,10 @@ for need in generated figures; do
 done
 
 status=0
-latexmk -pdf -recorder -halt-on-error -interaction=nonstopmode -file-line-error paper.tex >latexmk.out 2>&1 || status=$?
+latexmk -pdf -recorder -halt-on-error -interaction=nonstopmode -file-line-error paper.tex >latexmk.log 2>&1 || status=$?
 if [ $status -ne 0 ]; then
   echo "paper: latexmk failed (status $status); the first error in $dir/paper.log:" >&2
-  grep -m1 -A6 -E '^(\./|/)?[^:]*:[0-9]+: |^! ' paper.log >&2 || tail -20 latexmk.out >&2
+  grep -m1 -A6 -E '^(\./|/)?[^:]*:[0-9]+: |^! ' paper.log >&2 || tail -20 latexmk.log >&2
   exit 1
 fi
 
@@ -37,9 +39,16 @@ for f in figures/*.pdf generated/*.tex; do
   grep -qE "^INPUT (\./)?$f\$" paper.fls || unused+=" $f"
 done
 
+# pdffonts names TeX's bitmap fonts "[none]", Type 3.
+bitmap_fonts=$(pdffonts paper.pdf | grep -cE '^\[none\] +Type 3' || true)
+
 fail=0
 if [ -n "$problems" ]; then echo "paper: unresolved references:" >&2; echo "$problems" >&2; fail=1; fi
 if [ -n "$overfull" ]; then echo "paper: lines running into the margin:" >&2; echo "$overfull" >&2; fail=1; fi
+if [ "$bitmap_fonts" -gt 0 ]; then
+  echo "paper: $bitmap_fonts bitmap font(s) in paper.pdf: a TS1 text symbol (e.g. \\textmu, \\textbullet); use math mode" >&2
+  fail=1
+fi
 if [ -n "$unused" ]; then echo "paper: outputs the article never uses:$unused" >&2; fail=1; fi
 [ $fail -eq 0 ] || exit 1
 pages=$(grep -oE 'Output written on paper.pdf \(([0-9]+) pages' paper.log | grep -oE '[0-9]+ pages' || echo "? pages")
