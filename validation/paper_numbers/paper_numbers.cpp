@@ -65,9 +65,8 @@ namespace {
 struct FigureRod {
   const char* name;  ///< as in data/table*.csv
   const char* tag;   ///< in macro names (letters only)
-  const char* label; ///< in the article's tables
 };
-const FigureRod figure_rods[] = {{"steel", "Steel", "steel"}, {"duralumin-c", "DurC", "duralumin C"}};
+const FigureRod figure_rods[] = {{"steel", "Steel"}, {"duralumin-c", "DurC"}};
 constexpr double drop_height_m = 0.020;  // Figs. 5 and 6: h = 20 mm
 
 // ---------------------------------------------------------------------------
@@ -167,7 +166,8 @@ int main(int argc, char** argv) try {
 
   // -------------------------------------------------------------------------
   // 1. Limiting case: e = 1, so Xmax of eq. (10) is the undamped peak deformation
-  //    X and the corrected w = v0/X. The Hertz contact time T = (4/5)B(2/5,1/2) X/v0
+  //    X and the corrected w = v0/X (tests/test_natural_frequency_limit.cpp checks
+  //    the identity). The Hertz contact time T = (4/5)B(2/5,1/2) X/v0
   //    (model/hertz.hpp) makes pi/w / T = pi / ((4/5) B(2/5,1/2)) for every rod.
   //    The printed eq. (9), w = sqrt(4K/5m) X^{1/2} = (v0/X) X^{1/4}, gives
   //    pi/w / T = X^{-1/4} pi/((4/5)B): with X in metres or in millimetres, two
@@ -180,13 +180,12 @@ int main(int argc, char** argv) try {
     const double K = hertz_stiffness(setup), v0 = approach_speed(setup);
     const UndampedHertzImpact undamped = undamped_hertz_impact(K, setup.mass_kg, v0);
     const double X = paper_peak_deformation(K, setup.mass_kg, v0, 1.0);
-    const double w_corrected = hertz_natural_frequency(K, setup.mass_kg, X);
     const double w_printed_m = std::sqrt(4.0 * K / (5.0 * setup.mass_kg)) * std::sqrt(X);
-    // The same printed formula with lengths in millimetres: K in N/mm^{3/2}, X in mm.
-    const double K_mm = K * std::pow(1e-3, 1.5), X_mm = 1e3 * X;
+    // The same printed formula in the consistent millimetre-kilogram-second system:
+    // force in kg mm/s^2 = 1e-3 N, so K [kg mm s^-2 / mm^{3/2}] = 1e3 (1e-3)^{3/2} K [SI].
+    const double K_mm = K * 1e3 * std::pow(1e-3, 1.5), X_mm = 1e3 * X;
     const double w_printed_mm = std::sqrt(4.0 * K_mm / (5.0 * setup.mass_kg)) * std::sqrt(X_mm);
     const double T = undamped.contact_time_s;
-    macros.add(fmt::format("pnHalfPeriodRatioCorrected{}", rod.tag), std::numbers::pi / w_corrected / T, "{:.3f}");
     macros.add(fmt::format("pnHalfPeriodRatioPrintedSI{}", rod.tag), std::numbers::pi / w_printed_m / T, "{:.2f}");
     macros.add(fmt::format("pnHalfPeriodRatioPrintedMM{}", rod.tag), std::numbers::pi / w_printed_mm / T, "{:.2f}");
   }
@@ -247,7 +246,6 @@ int main(int argc, char** argv) try {
     macros.add("pnPrintedNineEffectiveRestitution" + t, printed9.e_effective, "{:.3f}");
     macros.add("pnPrintedTwelveDampingFactor" + t, c_e(printed12) / c_e(corrected), "{:.0f}");
     macros.add_text("pnPrintedTwelveRebounds" + t, printed12.separated ? "rebounds" : "comes to rest on the ball");
-    macros.add("pnPrintedTwelveEffectiveRestitution" + t, printed12.e_effective, "{:.3f}");
     macros.add("pnPrintedTwelvePeakForceRatio" + t, printed12.peak_force_N / corrected.peak_force_N, "{:.2f}");
   }
   errata.save(args.out_dir / "errata_effects.csv");
@@ -290,7 +288,6 @@ int main(int argc, char** argv) try {
     macros.add("pnRodARestitutionFirst", table2.number(a, "e"), "{:.3f}");
     macros.add("pnRodARestitutionSecond", table2.number(a, "e_second"), "{:.3f}");
     macros.add("pnBallRadiusMM", 1e3 * paper.ball.radius_m, "{:.2f}");
-    macros.add("pnBallDiameterMM", 1e3 * paper.ball.diameter_m, "{:.1f}");
     macros.add("pnNylonNuAssumed", paper.ball.nu, "{:.2f}");
     macros.add("pnSteelNuAssumed", paper.rod("steel").nu, "{:.2f}");
     macros.add("pnDuraluminNuAssumed", paper.rod("duralumin-c").nu, "{:.2f}");
