@@ -21,7 +21,9 @@ for need in generated figures; do
 done
 
 status=0
-latexmk -pdf -recorder -halt-on-error -interaction=nonstopmode -file-line-error paper.tex >latexmk.log 2>&1 || status=$?
+# -g: always run, since latexmk cannot see a section file appear (\IfFileExists of a
+# missing file leaves no dependency behind).
+latexmk -g -pdf -recorder -halt-on-error -interaction=nonstopmode -file-line-error paper.tex >latexmk.log 2>&1 || status=$?
 if [ $status -ne 0 ]; then
   echo "paper: latexmk failed (status $status); the first error in $dir/paper.log:" >&2
   grep -m1 -A6 -E '^(\./|/)?[^:]*:[0-9]+: |^! ' paper.log >&2 || tail -20 latexmk.log >&2
