@@ -8,7 +8,7 @@
 # and writes OUT_DIR/<figure>.pdf and OUT_DIR/<figure>.png from OUT_DIR/<figure>*.csv,
 # so restyling a plot never re-runs a simulation. validation/<study>/outputs.txt lists
 # what each study must produce (checked by tests/test_figures_pipeline.cpp on a
-# --reduced run). A full run records its wall time, the date and the machine in
+# --reduced run). Every run records its mode (full or reduced), wall time, the date and the machine in
 # OUT_DIR/../generated/run_studies.tex for the paper and the README.
 set -euo pipefail
 usage="usage: run_studies.sh BUILD_DIR OUT_DIR [--reduced]"
@@ -45,18 +45,17 @@ for gp in "$here"/*/*.gp; do
 done
 seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.3f", b - a }')
 printf '== all figures in %s (%.1f s)\n' "$out" "$seconds"
-if [ "$reduced" = false ]; then
-  revision=$(git -C "$here" describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
-  cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1)
-  tmp="$generated/run_studies.tex.tmp.$$"
-  {
-    echo "% hertzdash validation/run_studies.sh: wall time of one full figure run (studies + gnuplot)"
-    echo "% git_revision: $revision"
-    echo "% build_dir = $build"
-    printf '\\newcommand{\\runStudiesSeconds}{%.0f}\n' "$seconds"
-    echo "\\newcommand{\\runStudiesDate}{$(date -u +%Y-%m-%d)}"
-    echo "\\newcommand{\\runStudiesCores}{$(nproc)}"
-    echo "\\newcommand{\\runStudiesCpu}{${cpu:-unknown CPU}}"
-  } > "$tmp"
-  mv "$tmp" "$generated/run_studies.tex"
-fi
+revision=$(git -C "$here" describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
+cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1)
+tmp="$generated/run_studies.tex.tmp.$$"
+{
+  echo "% hertzdash validation/run_studies.sh: wall time of one figure run (studies + gnuplot)"
+  echo "% git_revision: $revision"
+  echo "% build_dir = $build"
+  printf '\\newcommand{\\runStudiesSeconds}{%.0f}\n' "$seconds"
+  echo "\\newcommand{\\runStudiesMode}{$([ "$reduced" = true ] && echo reduced || echo full)}"
+  echo "\\newcommand{\\runStudiesDate}{$(date -u +%Y-%m-%d)}"
+  echo "\\newcommand{\\runStudiesCores}{$(nproc)}"
+  echo "\\newcommand{\\runStudiesCpu}{${cpu:-unknown CPU}}"
+} > "$tmp"
+mv "$tmp" "$generated/run_studies.tex"
