@@ -144,9 +144,7 @@ TEST_CASE("without damping the iterated variants reduce to the undamped Hertz cl
   //   contact-time:    omega_n = pi / t_c.
   // Integrated with RK4 at dt = 1e-7 s (~1.2e4 steps per contact, global error ~(dt/t_c)^4
   // ~ 1e-16 relative) with Illinois event location, so 1e-8 relative is dominated by nothing
-  // but leaves room for the event tolerance. (CVODE is not used here: with zeta = 0 the
-  // drop test's central-difference dF/dt event is exactly zero over a span around maximum
-  // compression, which CVODE's root finder rejects with CV_ILL_INPUT; reported separately.)
+  // but leaves room for the event tolerance.
   SolverSettings solver;
   solver.integrator = IntegratorKind::rk4;
   solver.fixed_step.dt = 1e-7;

@@ -68,22 +68,10 @@ struct Row {
   bool separated;  ///< false: the rod came to rest on the ball (e_effective 0, contact time nan)
 };
 
-/// The solvers of the study. CVODE (Adams, rtol 1e-8: results to ~1e-7 relative) first; where
-/// the rod comes to rest on the ball CVODE's root finder can stop with CV_ILL_INPUT ("root found
-/// at and very near t": an event function stays zero as the motion dies out), and that run is
-/// repeated with RK4 at dt = 1e-7 s (~1e4 steps per contact) with located events.
-struct Solvers {
-  ImpactSimulator cvode{SolverSettings{}};
-  ImpactSimulator rk4{[] {
-    SolverSettings s;
-    s.integrator = IntegratorKind::rk4;
-    s.fixed_step.dt = 1e-7;
-    return s;
-  }()};
-  int rk4_fallbacks = 0;
-};
+/// The study's solver: CVODE (Adams, rtol 1e-8, events located), results to ~1e-7 relative.
+ImpactSimulator make_solver() { return ImpactSimulator(SolverSettings{}); }
 
-Row simulate(Solvers& solvers, const PaperParameters& paper, OmegaNVariant variant, ZetaForm zeta,
+Row simulate(ImpactSimulator& solver, const PaperParameters& paper, OmegaNVariant variant, ZetaForm zeta,
              const std::string& rod, double e, double h, std::vector<TraceSample>* trace = nullptr) {
   DropTestSetup setup = paper_setup(paper, rod, h);
   setup.restitution = e;
@@ -91,19 +79,7 @@ Row simulate(Solvers& solvers, const PaperParameters& paper, OmegaNVariant varia
   setup.damping.omega_n = variant;
   const double nan = not_a_number;
   Row row{variant, zeta, rod, e, h, nan, nan, nan, nan, nan, nan, 0, 0.0, false, false};
-  OmegaNFixedPoint r;
-  bool cvode_gave_up = false;
-  try {
-    r = run_paper_law(solvers.cvode, setup, {}, trace);
-    cvode_gave_up = !r.converged && r.failure.find("CVODE") != std::string::npos;  // inside an iteration
-  } catch (const std::runtime_error&) {  // a closed-form variant
-    cvode_gave_up = true;
-  }
-  if (cvode_gave_up) {
-    if (trace) trace->clear();
-    r = run_paper_law(solvers.rk4, setup, {}, trace);
-    ++solvers.rk4_fallbacks;
-  }
+  const OmegaNFixedPoint r = run_paper_law(solver, setup, {}, trace);
   row.iterations = r.iterations;
   row.contraction = r.contraction;
   row.ok = r.converged;
@@ -127,17 +103,13 @@ Row simulate(Solvers& solvers, const PaperParameters& paper, OmegaNVariant varia
 /// bisection on ln omega_n: e_effective grows with omega_n (c_e ~ 1/omega_n). The law is run
 /// with a prescribed omega_n through the hook of the iterated variants
 /// (DampingSettings::omega_n_rad_per_s), without iterating.
-double omega_n_reproducing_e(Solvers& solvers, const PaperParameters& paper, const std::string& rod, double h) {
+double omega_n_reproducing_e(ImpactSimulator& solver, const PaperParameters& paper, const std::string& rod, double h) {
   DropTestSetup setup = paper_setup(paper, rod, h);
   setup.damping.omega_n = OmegaNVariant::self_consistent;  // only to prescribe omega_n
   const double e = setup.restitution;
   auto e_effective = [&](double w) {
     setup.damping.omega_n_rad_per_s = w;
-    try {
-      return solvers.cvode.run<HongoPaper>(setup).e_effective;
-    } catch (const std::runtime_error&) {  // see Solvers
-      return solvers.rk4.run<HongoPaper>(setup).e_effective;
-    }
+    return solver.run<HongoPaper>(setup).e_effective;
   };
   const ImpactConditions c{hertz_stiffness(setup), setup.mass_kg, approach_speed(setup), e};
   double hi = paper_law_natural_frequency(c, DampingSettings{}), lo = 0.05 * hi;
@@ -167,7 +139,7 @@ std::string rod_tag(const std::string& rod) { return rod == "steel" ? "Steel" : 
 int main(int argc, char** argv) {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
-  Solvers sim;
+  ImpactSimulator sim = make_solver();
 
   const std::vector<double> e_grid =
       args.reduced ? std::vector<double>{0.1, 0.5, 0.99}
@@ -186,8 +158,7 @@ int main(int argc, char** argv) {
       }
 
   const Parameters params{{"rods", "steel, duralumin-c (Tables 1-3, data/assumptions.csv)"},
-                          {"solver", "cvode adams rtol 1e-8 atol 1e-12, events located; rk4 dt 1e-7 s where cvode stops "
-                           "as the rod comes to rest"},
+                          {"solver", "cvode adams rtol 1e-8 atol 1e-12, events located"},
                           {"e_sweep_height_m", fmt::format("{}", paper_height_m)},
                           {"h_sweep_restitution", "Table 2 value of each rod"},
                           {"reduced", args.reduced ? "true" : "false"}};
@@ -368,7 +339,7 @@ int main(int argc, char** argv) {
       "$e_\\mathrm{eff}$ (exact $\\zeta$) & $P_\\mathrm{max}$ [N] & $x_\\mathrm{max}$ [$\\mu$m] & $t_c$ [ms]\\\\\n";
   write_file_atomically(args.generated_dir / "sensitivity_omega_n_table.tex",
                         header + table + "\\bottomrule\n\\end{tabular}\n");
-  std::cout << fmt::format("sensitivity_omega_n: {} runs written to {} ({} repeated with RK4)\n",
-                           e_sweep.size() + h_sweep.size(), args.out_dir.string(), sim.rk4_fallbacks);
+  std::cout << fmt::format("sensitivity_omega_n: {} runs written to {}\n", e_sweep.size() + h_sweep.size(),
+                           args.out_dir.string());
   return 0;
 }
