@@ -4,12 +4,13 @@ BUILD   ?= build
 JOBS    ?= $(shell nproc)
 FIGURES ?= paper/figures
 
-.PHONY: all deps configure build test figures clean
+.PHONY: all deps configure build test figures convergence paper clean
 
 all: build
 
+# TeX is in the test dependencies: the test suite builds the paper.
 deps:
-	@tools/install-deps.sh debian-packages.txt
+	@tools/install-deps.sh debian-packages.txt debian-packages-paper.txt
 
 $(BUILD)/CMakeCache.txt: | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
@@ -24,6 +25,20 @@ test: build
 
 figures: build
 	validation/run_studies.sh $(BUILD) $(FIGURES)
+
+# Convergence: the order tests (verbose, so their tables print), then the study's
+# full order tables (its CSV and LaTeX go to a scratch directory; `make figures`
+# writes the real ones).
+convergence: build
+	cd $(BUILD) && ctest -L convergence --output-on-failure -V
+	$(BUILD)/validation/convergence --out $(BUILD)/convergence/figures
+
+# The article: every study and figure, then latexmk in paper/. The date in the PDF
+# is the last commit's (SOURCE_DATE_EPOCH), so the same commit gives the same PDF.
+paper: figures
+	@epoch=$$(git log -1 --format=%ct 2>/dev/null); \
+	if [ -n "$$epoch" ]; then export SOURCE_DATE_EPOCH=$$epoch FORCE_SOURCE_DATE=1; fi; \
+	paper/build.sh paper
 
 clean:
 	rm -rf $(BUILD)

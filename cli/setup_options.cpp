@@ -25,6 +25,11 @@ void SetupOptions::add_to(CLI::App& app) {
   app.add_flag("--no-tension", no_tension_, "Clamp the contact force at >= 0; contact ends where it reaches zero");
   app.add_option("--zeta", zeta_, "Damping ratio from e: paper (eq. 6) or exact (linear oscillator)")
       ->capture_default_str();
+  omega_n_opt_ = app.add_option("--omega-n", omega_n_,
+                                "Natural frequency assumption of the paper's law (hongo only): paper (eq. 11), "
+                                "impact-energy, rebound-energy, self-consistent, contact-time (both iterated to a "
+                                "fixed point), as-printed (the eq. 9 erratum)")
+                     ->capture_default_str();
   app.add_option("--damping", damping_, "Damping law (see `hertzdash models`): " + registered_law_names())
       ->capture_default_str();
 }
@@ -44,8 +49,13 @@ DropTestSetup SetupOptions::resolve(const PaperParameters& paper) const {
   if (zeta_ == "paper") s.damping.zeta_form = ZetaForm::paper;
   else if (zeta_ == "exact") s.damping.zeta_form = ZetaForm::exact;
   else throw InvalidParameter("--zeta", zeta_, "one of: paper, exact");
+  s.damping.omega_n = parse_omega_n_variant(omega_n_);
   validate(s);
   with_damping_law(damping_, [](auto) {});  // rejects an unknown law before any work
+  if (omega_n_opt_->count() && damping_ != HongoPaper::info.name)
+    throw InvalidParameter("--omega-n", omega_n_,
+                           "given only with --damping " + std::string(HongoPaper::info.name) +
+                               " (the omega_n assumption belongs to the paper's law; --damping is " + damping_ + ")");
   return s;
 }
 

@@ -13,7 +13,7 @@
 namespace hertzdash::cli {
 
 /// --rod, --height, --impact-velocity, --mass, --restitution, --ball-E, --ball-nu,
-/// --ball-radius, --rod-E, --rod-nu, --gravity, --no-tension, --zeta, --damping.
+/// --ball-radius, --rod-E, --rod-nu, --gravity, --no-tension, --zeta, --omega-n, --damping.
 class SetupOptions {
  public:
   void add_to(CLI::App& app);
@@ -25,13 +25,14 @@ class SetupOptions {
   std::string rod_ = "steel";
   std::string damping_;
   std::string zeta_ = "paper";
+  std::string omega_n_ = "paper";
   double height_m_ = 0.02;
   double impact_velocity_mps_ = 0, mass_kg_ = 0, restitution_ = 0, ball_E_ = 0, ball_nu_ = 0, ball_radius_ = 0,
          rod_E_ = 0, rod_nu_ = 0, gravity_ = 0;
   bool no_tension_ = false;
   CLI::Option *impact_velocity_opt_ = nullptr, *mass_opt_ = nullptr, *restitution_opt_ = nullptr,
               *ball_E_opt_ = nullptr, *ball_nu_opt_ = nullptr, *ball_radius_opt_ = nullptr, *rod_E_opt_ = nullptr,
-              *rod_nu_opt_ = nullptr, *gravity_opt_ = nullptr;
+              *rod_nu_opt_ = nullptr, *gravity_opt_ = nullptr, *omega_n_opt_ = nullptr;
 };
 
 /// --integrator, --dt, --no-event-location, --rtol, --atol, --cvode-method, --max-step.

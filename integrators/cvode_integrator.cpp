@@ -89,6 +89,10 @@ CvodeIntegrator::CvodeIntegrator(int dimension, int event_count, const CvodeOpti
     check(CVodeSetLinearSolver(d.mem, d.LS, d.A), "CVodeSetLinearSolver");
   }
   d.direction.assign(static_cast<std::size_t>(event_count), -1);
+  if (event_count > 0) {
+    check(CVodeRootInit(d.mem, event_count, events_thunk), "CVodeRootInit");
+    check(CVodeSetRootDirection(d.mem, d.direction.data()), "CVodeSetRootDirection");
+  }
 }
 
 CvodeIntegrator::~CvodeIntegrator() = default;
@@ -104,12 +108,6 @@ void CvodeIntegrator::restart(double t, const double* y) {
   double* yv = N_VGetArrayPointer(d.y);
   for (int i = 0; i < d.dimension; ++i) yv[i] = y[i];
   check(CVodeReInit(d.mem, t, d.y), "CVodeReInit");
-  if (d.event_count > 0) {
-    // CVodeReInit keeps the root finder's memory of the last root; re-initialise it
-    // so that a g_i that is zero at the restart point counts as a fresh start.
-    check(CVodeRootInit(d.mem, d.event_count, events_thunk), "CVodeRootInit");
-    check(CVodeSetRootDirection(d.mem, d.direction.data()), "CVodeSetRootDirection");
-  }
 }
 
 int CvodeIntegrator::step(double t_end, double& t, double* y) {

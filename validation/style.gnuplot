@@ -1,5 +1,5 @@
 # House style for every figure: load it first in each .gp script, then call
-#   call STYLE.'/output.gnuplot' 'OUTDIR/name' 'pdf'|'png'
+#   call VALIDATION.'/output.gnuplot' 'OUTDIR/name' 'pdf'|'png' WIDTH_IN HEIGHT_IN
 # Line styles: 1 paper model, 2 undamped Hertz reference, 3 measured data,
 # 4.. other models/variants. Band fill for parameter ranges.
 set encoding utf8
@@ -18,3 +18,7 @@ set key top right samplen 2.5 spacing 1.1 box opaque
 set tics nomirror out scale 0.6
 set datafile separator ','
 set datafile commentschars '#'
+# 11: the fill of a parameter band around line style 1 (draw with filledcurves ls 11).
+set style line 11 lc rgb '#7f9fd8' lw 0.8 dt 1
+# Read a "# name = value" provenance line from a CSV written by CsvWriter.
+csv_parameter(file, name) = system(sprintf("sed -n 's/^# %s = //p' '%s' | head -n 1", name, file))

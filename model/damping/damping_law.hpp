@@ -14,6 +14,7 @@
 //     with units in the names, for reports (never on the hot path).
 // The drop test, the CLI, the restitution maps and the standard tests all take
 // every registered law from the registry; see model/README.md.
+#include "model/omega_n_variant.hpp"
 #include "model/restitution.hpp"
 
 #include <concepts>
@@ -33,6 +34,8 @@ struct ImpactConditions {
 /// Modelling choices shared by laws that need them.
 struct DampingSettings {
   ZetaForm zeta_form = ZetaForm::paper;  ///< eq. (6) or the exact linear-oscillator relation
+  OmegaNVariant omega_n = OmegaNVariant::paper;  ///< the paper's law only: how omega_n is chosen (eqs. 7-11)
+  double omega_n_rad_per_s = 0;  ///< omega_n [rad/s] used by the iterated variants (> 0 then), else ignored
 };
 
 /// Descriptive data of a law, shown by `hertzdash models`.

@@ -49,6 +49,7 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
                {"rod_nu", num(setup.rod.nu)},
                {"restitution", num(setup.restitution)},
                {"zeta_form", to_string(setup.damping.zeta_form)},
+               {"omega_n_variant", to_string(setup.damping.omega_n)},
                {"height_m", num(setup.height_m)}};
   if (setup.impact_velocity_mps) p.emplace_back("impact_velocity_input_mps", num(*setup.impact_velocity_mps));
   p.emplace_back("gravity_mps2", num(setup.gravity_mps2));

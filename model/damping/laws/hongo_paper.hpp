@@ -18,9 +18,46 @@ inline double paper_peak_deformation(double K, double mass_kg, double v0_mps, do
   return std::pow(5.0 * mass_kg * v0_mps * v0_mps * (1.0 + e * e) / (8.0 * K), 0.4);
 }
 
+/// Peak deformation of the undamped Hertz impact with kinetic energy (1/2) m v^2:
+/// (1/2) m v^2 = (2/5) K X^{5/2}  =>  X = (5 m v^2 / (4K))^{2/5} [m]. With v = v0 this is the
+/// `impact-energy` variant (e = 1 in eq. 10); with v = e v0 the `rebound-energy` variant.
+inline double energy_peak_deformation(double K, double mass_kg, double speed_mps) {
+  return std::pow(5.0 * mass_kg * speed_mps * speed_mps / (4.0 * K), 0.4);
+}
+
+/// Eq. (9) as transcribed (the erratum): sqrt(4K/(5m)) X^{1/2}, the X^{1/2} outside the
+/// radical. Dimensionally wrong: with K in N/m^{3/2}, m in kg and X in m the result has
+/// units s^{-1} m^{1/4}; it is evaluated numerically in SI units, as the literal
+/// formula would be, only to show what the misprint would have done.
+inline double as_printed_natural_frequency(double K, double mass_kg, double amplitude_m) {
+  return std::sqrt(4.0 * K / (5.0 * mass_kg)) * std::sqrt(amplitude_m);
+}
+
+/// omega_n [rad/s] of the paper's law for one impact, by the chosen variant (OmegaNVariant).
+/// The iterated variants (self-consistent, contact-time) take the given
+/// settings.omega_n_rad_per_s, which their fixed-point iteration supplies
+/// (validation/common/omega_n_fixed_point.hpp); throws InvalidParameter if it is not > 0.
+inline double paper_law_natural_frequency(const ImpactConditions& c, const DampingSettings& s) {
+  const double K = c.K, m = c.mass_kg, v0 = c.v0_mps, e = c.restitution;
+  switch (s.omega_n) {
+    case OmegaNVariant::paper: return hertz_natural_frequency(K, m, paper_peak_deformation(K, m, v0, e));
+    case OmegaNVariant::impact_energy: return hertz_natural_frequency(K, m, energy_peak_deformation(K, m, v0));
+    case OmegaNVariant::rebound_energy: return hertz_natural_frequency(K, m, energy_peak_deformation(K, m, e * v0));
+    case OmegaNVariant::as_printed: return as_printed_natural_frequency(K, m, paper_peak_deformation(K, m, v0, e));
+    case OmegaNVariant::self_consistent:
+    case OmegaNVariant::contact_time:
+      require_positive(std::string("omega_n_rad_per_s (") + to_string(s.omega_n) +
+                           " variant, set by its fixed-point iteration)",
+                       s.omega_n_rad_per_s, "rad/s");
+      return s.omega_n_rad_per_s;
+  }
+  return NAN;
+}
+
 /// F = K x^{3/2} + c_e xdot,  c_e = 2 K x^{1/2} zeta / omega_n      (eqs. 2, 5, 12)
 /// zeta from e by eq. (6); omega_n by eq. (11) (= eqs. 9 and 10 combined), fixed per
-/// impact from that impact's approach speed v0.
+/// impact from that impact's approach speed v0; other omega_n assumptions by
+/// DampingSettings::omega_n (paper_law_natural_frequency).
 class HongoPaper {
  public:
   static constexpr LawInfo info{
@@ -35,8 +72,7 @@ class HongoPaper {
   HongoPaper(const ImpactConditions& c, const DampingSettings& s)
       : K_(c.K),
         zeta_(zeta_from_restitution(c.restitution, s.zeta_form)),
-        omega_n_(hertz_natural_frequency(c.K, c.mass_kg,
-                                         paper_peak_deformation(c.K, c.mass_kg, c.v0_mps, c.restitution))),
+        omega_n_(paper_law_natural_frequency(c, s)),
         tau_(2.0 * zeta_ / omega_n_) {}
 
   double force(double x, double xdot) const noexcept { return K_ * std::sqrt(x) * (x + tau_ * xdot); }

@@ -1,0 +1,98 @@
+#pragma once
+// The contact phase of the drop test in regularising variables, for integrators
+// that need a smooth right-hand side up to contact onset and separation.
+//
+// Why: in the physical variables the right-hand side x'' = g - F(x, x')/m has a
+// force that is not smooth at x = 0: K x^{3/2} has an unbounded second derivative,
+// and the paper's dashpot x^{1/2} x' an unbounded first derivative. Along the
+// motion x ~ v0 t, so the solution carries powers t^{7/2} (spring) and t^{5/2}
+// (dashpot) at onset and the same in (t_sep - t) at separation, and a p-th order
+// one-step method loses order there whatever the step (see validation/convergence).
+//
+// The change of variables: u = x^{1/2} and a new independent variable tau with
+// dt/dtau = 2u (a Sundman time transformation). With v = x':
+//   du/dtau = v
+//   dv/dtau = 2u (g - F(u^2, v)/m)
+//   dt/dtau = 2u
+// For every law of the form x^{1/2} * (polynomial in x, x') -- Hertz, the paper's
+// law, the Hunt-Crossley family -- F(u^2, v) is a polynomial in (u, v) for u >= 0,
+// so this system is smooth on the whole contact, onset (u = 0, v = v0) and
+// separation (u = 0 again, v < 0) included. Uniform steps in tau are steps in t
+// graded like (t - t_on)^{1/2} near onset and separation.
+//
+// State (u [m^{1/2}], v [m/s], t [s]); tau [s/m^{1/2}]. Events (decreasing through 0):
+//   0 separation: g = u (stop)
+//   1 max_compression: g = v (observation)
+//   2 peak_force: g = dF/dtau by a central difference with step 1e-3 of the
+//     contact's tau scale (the same argument as in DropTest: the root moves by
+//     O(1e-6) of the scale, the peak force by O(1e-12) relative)
+//   3 observation time: g = t_obs - t, if an observation time is set (observation)
+#include "integrators/ode_system.hpp"  // the OdeSystem vocabulary only (EventAction); no integrator
+#include "model/damping/damping_law.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cmath>
+#include <optional>
+
+namespace hertzdash {
+
+enum RegularizedContactEvent : int {
+  separation_event = 0,
+  regularized_max_compression_event = 1,
+  regularized_peak_force_event = 2,
+  observation_time_event = 3
+};
+
+template <DampingLaw Law>
+class RegularizedContact {
+ public:
+  static constexpr int dimension = 3;
+  static constexpr int event_count = 4;
+  using State = Eigen::Matrix<double, 3, 1>;
+  using Events = std::array<double, event_count>;
+
+  /// The contact of an impact at approach speed c.v0_mps; t_obs_s: optional time
+  /// after onset [s] at which event 3 fires.
+  RegularizedContact(const ImpactConditions& c, const DampingSettings& s, double gravity_mps2,
+                     std::optional<double> t_obs_s = std::nullopt)
+      : law_(c, s), mass_kg_(c.mass_kg), gravity_mps2_(gravity_mps2), t_obs_s_(t_obs_s), v0_mps_(c.v0_mps) {
+    // tau scale of the contact: T / (2 X*^{1/2}), T = X*/v0, X* = (m v0^2 / K)^{2/5}.
+    const double X = std::pow(c.mass_kg * c.v0_mps * c.v0_mps / c.K, 0.4);
+    fd_step_ = 1e-3 * (X / c.v0_mps) / (2.0 * std::sqrt(X));
+  }
+
+  /// Onset: u = 0, v = v0, t = 0.
+  State initial_state() const { return State{0.0, v0_mps_, 0.0}; }
+
+  const Law& law() const { return law_; }
+  double force(const State& y) const { return law_.force(y[0] * y[0], y[1]); }
+
+  void rhs(double, const State& y, State& dy) const {
+    dy[0] = y[1];
+    dy[1] = 2.0 * y[0] * (gravity_mps2_ - force(y) / mass_kg_);
+    dy[2] = 2.0 * y[0];
+  }
+
+  void events(double tau, const State& y, Events& g) const {
+    State dy;
+    rhs(tau, y, dy);
+    const double d = fd_step_;
+    const double dF = (force(State(y + d * dy)) - force(State(y - d * dy))) / (2 * d);
+    g = {y[0], y[1], dF, t_obs_s_ ? *t_obs_s_ - y[2] : 1.0};
+  }
+
+  EventAction handle_event(int which, double, const State&) const {
+    return which == separation_event ? EventAction::stop : EventAction::continue_integration;
+  }
+
+ private:
+  Law law_;
+  double mass_kg_, gravity_mps2_;
+  std::optional<double> t_obs_s_;
+  double v0_mps_;
+  double fd_step_;  ///< central-difference step in tau for dF/dtau [s/m^{1/2}]
+};
+
+}  // namespace hertzdash

@@ -1,0 +1,104 @@
+// The measured-trace reader (data/measurements/README.md), exercised on SYNTHETIC
+// files written by the test itself: no measured data exists for the paper.
+#include "model/csv_table.hpp"
+#include "validation/common/measured_trace.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+using namespace hertzdash;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh directory per test case, removed afterwards.
+struct ScratchDir {
+  fs::path path;
+  explicit ScratchDir(const std::string& name)
+      : path(fs::temp_directory_path() / ("hertzdash_measured_" + name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~ScratchDir() { fs::remove_all(path); }
+  fs::path write(const std::string& file, const std::string& text) const {
+    std::ofstream(path / file) << text;
+    return path / file;
+  }
+};
+
+const std::string synthetic_header =
+    "# source: SYNTHETIC test data written by tests/test_measured_trace.cpp, not a measurement\n"
+    "# synthetic: true\n"
+    "# rod: steel\n"
+    "# height_m: 0.020\n";
+
+}  // namespace
+
+TEST_CASE("a well-formed synthetic trace is read with its provenance and gaps", "[measured_trace]") {
+  ScratchDir dir("ok");
+  const auto file = dir.write("steel_h20mm_synthetic.csv", synthetic_header +
+                                                              "t_s,force_N,accel_mps2\n"
+                                                              "0.0,0.0,9.8\n"
+                                                              "1e-4,120.5,\n"
+                                                              "2e-4,300.0,-375.0\n");
+  const MeasuredTrace m = read_measured_trace(file);
+  CHECK(m.synthetic);
+  CHECK(m.rod == "steel");
+  CHECK(m.height_m == 0.020);
+  CHECK(m.source.find("SYNTHETIC") != std::string::npos);
+  REQUIRE(m.t_s.size() == 3);
+  CHECK(m.force_N == std::vector<double>{0.0, 120.5, 300.0});
+  REQUIRE(m.accel_mps2.size() == 3);
+  CHECK(std::isnan(m.accel_mps2[1]));  // an empty field is a sample not measured
+  CHECK(m.velocity_mps.empty());        // a column absent is a quantity not measured
+  CHECK(m.displacement_m.empty());
+}
+
+TEST_CASE("malformed traces are rejected with a message naming the file and the defect", "[measured_trace]") {
+  ScratchDir dir("bad");
+  auto rejects = [&](const std::string& text, const std::string& expected) {
+    const auto file = dir.write("bad.csv", text);
+    CHECK_THROWS_WITH(read_measured_trace(file),
+                      Catch::Contains(file.string()) && Catch::Contains(expected));
+  };
+  rejects("# rod: steel\n# height_m: 0.02\nt_s,force_N\n0,0\n1e-4,1\n", "'# source: ...'");
+  rejects("# source: x\n# height_m: 0.02\nt_s,force_N\n0,0\n1e-4,1\n", "'# rod: ...'");
+  rejects("# source: x\n# rod: steel\n# height_m: -1\nt_s,force_N\n0,0\n1e-4,1\n", "must be a finite number > 0");
+  rejects(synthetic_header + "time,force_N\n0,0\n1e-4,1\n", "missing column 't_s'");
+  rejects(synthetic_header + "t_s,force_kN\n0,0\n1e-4,1\n", "unknown column 'force_kN'");
+  rejects(synthetic_header + "t_s\n0\n1e-4\n", "at least one measured quantity");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n", "at least two samples");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n0,1\n", "t_s must increase strictly");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,abc\n", "'abc' is not a number");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4\n", "expected 2 fields");
+}
+
+TEST_CASE("traces are found by the rod and height in their header", "[measured_trace]") {
+  ScratchDir dir("find");
+  const std::string body = "t_s,force_N\n0,0\n1e-4,1\n";
+  dir.write("b.csv", synthetic_header + body);
+  dir.write("a.csv", synthetic_header + body);
+  dir.write("other_rod.csv", "# source: x\n# rod: duralumin-c\n# height_m: 0.020\n" + body);
+  dir.write("other_height.csv", "# source: x\n# rod: steel\n# height_m: 0.030\n" + body);
+  dir.write("README.md", "not a trace\n");
+  const auto found = find_measured_traces(dir.path, "steel", 0.0201);  // within the 0.5 mm tolerance
+  REQUIRE(found.size() == 2);
+  CHECK(found[0].path.filename() == "a.csv");  // sorted by file name
+  CHECK(found[1].path.filename() == "b.csv");
+  CHECK(find_measured_traces(dir.path, "steel", 0.0206).empty());
+  CHECK(find_measured_traces(dir.path / "missing", "steel", 0.02).empty());
+}
+
+TEST_CASE("every trace shipped in data/measurements/ reads cleanly", "[measured_trace]") {
+  // None ships today (the paper's traces were never published); any added later must
+  // follow the format, or the figure programs would stop on it.
+  const fs::path dir = fs::path(HERTZDASH_SOURCE_DIR) / "data" / "measurements";
+  REQUIRE(fs::is_directory(dir));
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".csv") CHECK_NOTHROW(read_measured_trace(entry.path()));
+}

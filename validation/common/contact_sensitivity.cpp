@@ -1,0 +1,190 @@
+#include "validation/common/contact_sensitivity.hpp"
+
+#include <cvodes/cvodes.h>
+#include <nvector/nvector_serial.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hertzdash {
+
+namespace {
+
+constexpr int Ns = 4;  // sensitivity parameters q = (K, tau, m, v0)
+
+void check(int flag, const char* call) {
+  if (flag < 0) throw std::runtime_error(std::string("CVODES: ") + call + " failed with " + CVodeGetReturnFlagName(flag));
+}
+template <class T> T* check_ptr(T* p, const char* call) {
+  if (p == nullptr) throw std::runtime_error(std::string("CVODES: ") + call + " returned NULL");
+  return p;
+}
+
+/// The contact-phase model: force, acceleration and their partial derivatives.
+struct ContactModel {
+  ContactPhaseParameters p;
+  double force(double x, double v) const { return p.K * std::sqrt(std::max(x, 0.0)) * (x + p.tau_s * v); }
+  double accel(double x, double v) const { return p.gravity_mps2 - force(x, v) / p.mass_kg; }
+  /// dF/dx * s_x, with its x -> 0 limit (see the header): K (3/2 x^{1/2} s_x + tau v s_x / (2 x^{1/2})).
+  double force_x_times(double x, double v, double s_x) const {
+    if (x <= 0) return 0.0;
+    const double r = std::sqrt(x);
+    return p.K * (1.5 * r * s_x + p.tau_s * v * s_x / (2.0 * r));
+  }
+  double force_v(double x) const { return p.K * std::sqrt(std::max(x, 0.0)) * p.tau_s; }
+  /// Explicit partial derivatives dF/dq (F does not depend on m or v0 explicitly).
+  ContactGradient force_q(double x, double v) const {
+    const double r = std::sqrt(std::max(x, 0.0));
+    return {r * (x + p.tau_s * v), p.K * r * v, 0.0, 0.0};
+  }
+};
+
+int rhs(realtype, N_Vector y, N_Vector dy, void* user) {
+  const auto& m = *static_cast<const ContactModel*>(user);
+  const double* Y = N_VGetArrayPointer(y);
+  double* D = N_VGetArrayPointer(dy);
+  D[0] = Y[1];
+  D[1] = m.accel(Y[0], Y[1]);
+  return 0;
+}
+
+// s_i' = J s_i + df/dq_i, f = (v, g - F/m).
+int sensitivity_rhs(int ns, realtype, N_Vector y, N_Vector, N_Vector* yS, N_Vector* ySdot, void* user, N_Vector,
+                    N_Vector) {
+  const auto& m = *static_cast<const ContactModel*>(user);
+  const double* Y = N_VGetArrayPointer(y);
+  const double x = Y[0], v = Y[1], M = m.p.mass_kg;
+  const ContactGradient Fq = m.force_q(x, v);
+  const double F = m.force(x, v);
+  for (int i = 0; i < ns; ++i) {
+    const double* s = N_VGetArrayPointer(yS[i]);
+    double* ds = N_VGetArrayPointer(ySdot[i]);
+    ds[0] = s[1];
+    double explicit_term = -Fq[i] / M;
+    if (i == q_mass) explicit_term = F / (M * M);  // d(-F/m)/dm
+    ds[1] = -(m.force_x_times(x, v, s[0]) + m.force_v(x) * s[1]) / M + explicit_term;
+  }
+  return 0;
+}
+
+int roots(realtype, N_Vector y, realtype* g, void* user) {
+  const auto& m = *static_cast<const ContactModel*>(user);
+  const double* Y = N_VGetArrayPointer(y);
+  const double x = Y[0], v = Y[1], tau = m.p.tau_s;
+  g[0] = x;                                                          // separation
+  g[1] = v;                                                          // max compression
+  g[2] = (1.5 * x + 0.5 * tau * v) * v + tau * std::max(x, 0.0) * m.accel(x, v);  // x^{1/2} dF/dt / K
+  return 0;
+}
+
+/// Owns the CVODES objects; frees them on every path.
+struct Cvodes {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  N_Vector* yS = nullptr;
+  SUNNonlinearSolver nls = nullptr, nls_sens = nullptr;
+  void* mem = nullptr;
+  ~Cvodes() {
+    if (mem) CVodeFree(&mem);
+    if (nls_sens) SUNNonlinSolFree(nls_sens);
+    if (nls) SUNNonlinSolFree(nls);
+    if (yS) N_VDestroyVectorArray(yS, Ns);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+}  // namespace
+
+ContactPhaseSensitivities contact_phase_sensitivities(const ContactPhaseParameters& p,
+                                                      const ContactSensitivityOptions& options) {
+  if (!(p.K > 0 && p.tau_s >= 0 && p.mass_kg > 0 && p.v0_mps > 0 && p.gravity_mps2 >= 0))
+    throw std::invalid_argument("contact_phase_sensitivities: need K, m, v0 > 0 and tau, g >= 0");
+  ContactModel model{p};
+  Cvodes c;
+  check(SUNContext_Create(nullptr, &c.ctx), "SUNContext_Create");
+  c.y = check_ptr(N_VNew_Serial(2, c.ctx), "N_VNew_Serial");
+  double* Y = N_VGetArrayPointer(c.y);
+  Y[0] = 0.0;
+  Y[1] = p.v0_mps;
+  c.yS = check_ptr(N_VCloneVectorArray(Ns, c.y), "N_VCloneVectorArray");
+  for (int i = 0; i < Ns; ++i) N_VConst(0.0, c.yS[i]);
+  N_VGetArrayPointer(c.yS[q_v0])[1] = 1.0;  // dv(0)/dv0
+
+  c.mem = check_ptr(CVodeCreate(CV_ADAMS, c.ctx), "CVodeCreate");
+  check(CVodeInit(c.mem, rhs, 0.0, c.y), "CVodeInit");
+  check(CVodeSetUserData(c.mem, &model), "CVodeSetUserData");
+  N_Vector atol = check_ptr(N_VClone(c.y), "N_VClone");
+  N_VGetArrayPointer(atol)[0] = options.atol_x_m;
+  N_VGetArrayPointer(atol)[1] = options.atol_v_mps;
+  const int tol_flag = CVodeSVtolerances(c.mem, options.rtol, atol);
+  N_VDestroy(atol);
+  check(tol_flag, "CVodeSVtolerances");
+  check(CVodeSetMaxNumSteps(c.mem, 100000), "CVodeSetMaxNumSteps");
+  // At separation s_x != 0 while x -> 0, so J s has an integrable (t_c - t)^{-1/2} term (see the
+  // header); CVODES resolves it with steps near the roundoff of t and would warn each time.
+  check(CVodeSetMaxHnilWarns(c.mem, -1), "CVodeSetMaxHnilWarns");
+  c.nls = check_ptr(SUNNonlinSol_FixedPoint(c.y, 0, c.ctx), "SUNNonlinSol_FixedPoint");
+  check(CVodeSetNonlinearSolver(c.mem, c.nls), "CVodeSetNonlinearSolver");
+
+  check(CVodeSensInit(c.mem, Ns, CV_SIMULTANEOUS, sensitivity_rhs, c.yS), "CVodeSensInit");
+  // Scale each sensitivity by its parameter (pbar), so the estimated tolerances are relative.
+  double q[Ns] = {p.K, p.tau_s, p.mass_kg, p.v0_mps};
+  double pbar[Ns];
+  for (int i = 0; i < Ns; ++i) pbar[i] = q[i] > 0 ? q[i] : 1.0;
+  check(CVodeSetSensParams(c.mem, nullptr, pbar, nullptr), "CVodeSetSensParams");
+  check(CVodeSensEEtolerances(c.mem), "CVodeSensEEtolerances");
+  check(CVodeSetSensErrCon(c.mem, SUNTRUE), "CVodeSetSensErrCon");
+  c.nls_sens = check_ptr(SUNNonlinSol_FixedPointSens(Ns + 1, c.y, 0, c.ctx), "SUNNonlinSol_FixedPointSens");
+  check(CVodeSetNonlinearSolverSensSim(c.mem, c.nls_sens), "CVodeSetNonlinearSolverSensSim");
+  check(CVodeRootInit(c.mem, 3, roots), "CVodeRootInit");
+  int direction[3] = {-1, -1, -1};
+  check(CVodeSetRootDirection(c.mem, direction), "CVodeSetRootDirection");
+
+  // Long enough for any separation: 20 contact-time scales X*/v0, X* = (m v0^2/K)^{2/5}.
+  const double t_end = 20.0 * 2.94 * std::pow(p.mass_kg * p.v0_mps * p.v0_mps / p.K, 0.4) / p.v0_mps;
+  ContactPhaseSensitivities out;
+  bool peak_seen = false, max_seen = false;
+  double t = 0.0;
+  while (true) {
+    const int flag = CVode(c.mem, t_end, c.y, &t, CV_NORMAL);
+    check(flag, "CVode");
+    if (flag != CV_ROOT_RETURN) throw std::runtime_error("contact_phase_sensitivities: no separation before t_end");
+    int found[3];
+    check(CVodeGetRootInfo(c.mem, found), "CVodeGetRootInfo");
+    realtype t_sens = 0;
+    check(CVodeGetSens(c.mem, &t_sens, c.yS), "CVodeGetSens");
+    const double x = Y[0], v = Y[1];
+    auto s = [&](int i, int k) { return N_VGetArrayPointer(c.yS[i])[k]; };
+    if (found[2] && !peak_seen) {  // the first (compressive) force maximum
+      peak_seen = true;
+      out.peak_force_N = model.force(x, v);
+      const ContactGradient Fq = model.force_q(x, v);
+      for (int i = 0; i < Ns; ++i)
+        out.d_peak_force[i] = model.force_x_times(x, v, s(i, 0)) + model.force_v(x) * s(i, 1) + Fq[i];
+    }
+    if (found[1] && !max_seen) {
+      max_seen = true;
+      out.max_deformation_m = x;
+      for (int i = 0; i < Ns; ++i) out.d_max_deformation[i] = s(i, 0);
+    }
+    if (found[0]) {
+      const double a = model.accel(x, v);
+      out.contact_time_s = t;
+      out.rebound_velocity_mps = -v;
+      for (int i = 0; i < Ns; ++i) {
+        out.d_contact_time[i] = -s(i, 0) / v;
+        out.d_rebound_velocity[i] = -(s(i, 1) + a * out.d_contact_time[i]);
+      }
+      break;
+    }
+  }
+  if (!peak_seen || !max_seen) throw std::runtime_error("contact_phase_sensitivities: peak or max compression missed");
+  check(CVodeGetNumSteps(c.mem, &out.steps), "CVodeGetNumSteps");
+  return out;
+}
+
+}  // namespace hertzdash
