@@ -77,6 +77,15 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
   return t;
 }
 
+std::map<std::string, std::string> CsvTable::comment_fields() const {
+  std::map<std::string, std::string> fields;
+  for (const std::string& line : comments_) {
+    const auto colon = line.find(':');
+    if (colon != std::string::npos) fields[trim(line.substr(0, colon))] = trim(line.substr(colon + 1));
+  }
+  return fields;
+}
+
 void CsvTable::require_columns(const std::vector<std::string>& names) const {
   for (const auto& name : names) column_index(name);
 }

@@ -2,6 +2,7 @@
 // Reading the CSV files under data/: '#' comment lines, one header row, then rows
 // with exactly as many fields. Every error names the file, the line and the column.
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +23,8 @@ class CsvTable {
   std::size_t rows() const { return rows_.size(); }
   /// The comment lines before the header, without the leading '#'.
   const std::vector<std::string>& comments() const { return comments_; }
+  /// The comment lines of the form "key: value", as key -> value (both trimmed).
+  std::map<std::string, std::string> comment_fields() const;
 
   /// Throws DataError if the table lacks any of these columns.
   void require_columns(const std::vector<std::string>& names) const;

@@ -4,29 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace hertzdash {
-
-namespace {
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
-
-// "key: value" comment lines -> map; other comment lines are free text.
-std::map<std::string, std::string> header_fields(const CsvTable& t) {
-  std::map<std::string, std::string> fields;
-  for (const std::string& line : t.comments()) {
-    const auto colon = line.find(':');
-    if (colon != std::string::npos) fields[trim(line.substr(0, colon))] = trim(line.substr(colon + 1));
-  }
-  return fields;
-}
-
-}  // namespace
 
 const std::vector<std::string>& measured_quantity_columns() {
   static const std::vector<std::string> columns{"force_N", "accel_mps2", "velocity_mps", "displacement_m"};
@@ -36,7 +15,7 @@ const std::vector<std::string>& measured_quantity_columns() {
 MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
   const CsvTable t = CsvTable::read(path);
   const std::string file = path.string();
-  const auto fields = header_fields(t);
+  const auto fields = t.comment_fields();
   auto required = [&](const std::string& key) {
     const auto it = fields.find(key);
     if (it == fields.end() || it->second.empty())
