@@ -1,0 +1,265 @@
+#pragma once
+// Adaptive Dormand-Prince 5(4) with dense output and event location that lands
+// steps on the events.
+//
+// Method (J. R. Dormand, P. J. Prince, J. Comput. Appl. Math. 6 (1980) 19-26;
+// dense output of L. F. Shampine, Math. Comp. 46 (1986) 135-150, as in Hairer,
+// Norsett, Wanner, Solving ODEs I, sec. II.6):
+//   seven stages, the seventh evaluated at the new point (first-same-as-last,
+//   so an accepted step costs 6 right-hand-side evaluations), order 5 solution
+//   propagated (local extrapolation), order 4 embedded solution for the error
+//   estimate, and a continuous extension of order 4 that costs no evaluation:
+//     y(t + theta h) = y0 + theta (r1 + (1-theta) (r2 + theta (r3 + (1-theta) r4))),
+//     r1 = y1 - y0, r2 = h k1 - r1, r3 = r1 - h k7 - r2, r4 = h sum_i d_i k_i.
+//   The coefficients below were checked in exact rational arithmetic: b and the
+//   embedded b* satisfy all order conditions up to order 4 (b up to 5), and the
+//   continuous weights b_i(theta) satisfy the order-4 conditions at every theta.
+//
+// Step control: the error estimate e = y1 - y1* is measured in the weighted RMS
+// norm ||e|| = sqrt(mean_i (e_i / (atol + rtol max(|y0_i|, |y1_i|)))^2); a step is
+// accepted when ||e|| <= 1 and the next step is h 0.9 ||e||^{-1/5}, limited to
+// [0.2 h, 5 h] (no growth right after a rejection). The first step, and the first
+// after every restart, follows Hairer-Norsett-Wanner I, II.4 (one extra
+// evaluation). Global error is then proportional to the tolerance (local
+// extrapolation: local error O(tol^{6/5}) per step times O(tol^{-1/5}) steps).
+//
+// Events: after each accepted step, a g_i that went from > 0 to <= 0 is located on
+// the dense output (Illinois regula falsi on theta -> g_i(t + theta h, y(theta)):
+// no right-hand-side evaluation). The step is then re-taken with exactly the
+// length that ends at the earliest crossing (6 evaluations), the event is handled
+// there, and a `restart` action restarts the method from that point with the new
+// right-hand side. So no step straddles an event: the contact force law never
+// changes inside a step, which is what keeps the order when the right-hand side
+// is only continuous (or less) across the event.
+//
+// No allocation: all state is fixed-size (Eigen::Matrix<double, N, 1>) on the stack.
+#include "integrators/fixed_step.hpp"  // detail::illinois_root
+#include "integrators/ode_system.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace hertzdash {
+
+struct DormandPrinceOptions {
+  double rtol = 1e-8;        ///< relative tolerance, > 0
+  double atol = 1e-12;       ///< absolute tolerance (state units), > 0
+  double max_step = 0.0;     ///< largest step [s]; 0 means no limit
+  long max_steps = 1000000;  ///< accepted plus rejected steps before giving up
+};
+
+namespace detail {
+
+/// The Dormand-Prince 5(4) tableau (c, a, b = the seventh row of a, error weights
+/// e = b - b*, dense-output weights d).
+struct DormandPrinceTableau {
+  static constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
+  static constexpr double a21 = 1.0 / 5;
+  static constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
+  static constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
+  static constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
+  static constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
+                          a65 = -5103.0 / 18656;
+  static constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
+  static constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
+                          e6 = 22.0 / 525, e7 = -1.0 / 40;
+  static constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700410799.0,
+                          d4 = -10690763975.0 / 1880347072.0, d5 = 701980252875.0 / 199316789632.0,
+                          d6 = -1453857185.0 / 822651844.0, d7 = 69997945.0 / 29380423.0;
+};
+
+/// Per-run workspace of one step: the stages and the new point.
+template <class State>
+struct DormandPrinceStep {
+  State k1, k2, k3, k4, k5, k6, k7;  ///< stage derivatives; k1 = f(t, y), k7 = f(t + h, y1)
+  State y1;                          ///< order-5 solution at t + h
+};
+
+/// One step of size h from (t, y) with k1 = f(t, y) given: fills k2..k7 and y1 (6 evaluations).
+template <OdeSystem S>
+void dormand_prince_step(const S& sys, double t, const typename S::State& y, double h,
+                         DormandPrinceStep<typename S::State>& w) {
+  using T = DormandPrinceTableau;
+  typename S::State z;
+  z = y + h * (T::a21 * w.k1);
+  sys.rhs(t + T::c2 * h, z, w.k2);
+  z = y + h * (T::a31 * w.k1 + T::a32 * w.k2);
+  sys.rhs(t + T::c3 * h, z, w.k3);
+  z = y + h * (T::a41 * w.k1 + T::a42 * w.k2 + T::a43 * w.k3);
+  sys.rhs(t + T::c4 * h, z, w.k4);
+  z = y + h * (T::a51 * w.k1 + T::a52 * w.k2 + T::a53 * w.k3 + T::a54 * w.k4);
+  sys.rhs(t + T::c5 * h, z, w.k5);
+  z = y + h * (T::a61 * w.k1 + T::a62 * w.k2 + T::a63 * w.k3 + T::a64 * w.k4 + T::a65 * w.k5);
+  sys.rhs(t + h, z, w.k6);
+  w.y1 = y + h * (T::b1 * w.k1 + T::b3 * w.k3 + T::b4 * w.k4 + T::b5 * w.k5 + T::b6 * w.k6);
+  sys.rhs(t + h, w.y1, w.k7);
+}
+
+/// Weighted RMS norm of v with weights atol + rtol max(|a_i|, |b_i|).
+template <class State>
+double weighted_rms(const State& v, const State& a, const State& b, double rtol, double atol) {
+  const auto scale = (atol + rtol * a.cwiseAbs().cwiseMax(b.cwiseAbs()).array());
+  return std::sqrt((v.array() / scale).square().mean());
+}
+
+/// The continuous extension over one accepted step [t, t + h].
+template <class State>
+struct DormandPrinceDense {
+  State r0, r1, r2, r3, r4;
+  void build(const State& y0, double h, const DormandPrinceStep<State>& w) {
+    using T = DormandPrinceTableau;
+    r0 = y0;
+    r1 = w.y1 - y0;
+    r2 = h * w.k1 - r1;
+    r3 = r1 - h * w.k7 - r2;
+    r4 = h * (T::d1 * w.k1 + T::d3 * w.k3 + T::d4 * w.k4 + T::d5 * w.k5 + T::d6 * w.k6 + T::d7 * w.k7);
+  }
+  State at(double theta) const {
+    const double s = 1.0 - theta;
+    return r0 + theta * (r1 + s * (r2 + theta * (r3 + s * r4)));
+  }
+};
+
+/// First step size (Hairer-Norsett-Wanner I, II.4): one explicit Euler trial step.
+template <OdeSystem S>
+double dormand_prince_initial_step(const S& sys, double t, const typename S::State& y, const typename S::State& f0,
+                                   double span, const DormandPrinceOptions& opt, long& rhs_evaluations) {
+  using State = typename S::State;
+  const double d0 = weighted_rms(y, y, y, opt.rtol, opt.atol);
+  const double d1 = weighted_rms(f0, y, y, opt.rtol, opt.atol);
+  double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 * span : 0.01 * d0 / d1;
+  h0 = std::min(h0, span);
+  const State y1 = y + h0 * f0;
+  State f1;
+  sys.rhs(t + h0, y1, f1);
+  ++rhs_evaluations;
+  const double d2 = weighted_rms(State(f1 - f0), y, y, opt.rtol, opt.atol) / h0;
+  const double dmax = std::max(d1, d2);
+  const double h1 = dmax <= 1e-15 ? std::max(1e-6 * span, 1e-3 * h0) : std::pow(0.01 / dmax, 0.2);
+  double h = std::min({100 * h0, h1, span});
+  if (opt.max_step > 0) h = std::min(h, opt.max_step);
+  return h;
+}
+
+}  // namespace detail
+
+/// Integrate `sys` from (t0, y) towards t_end with Dormand-Prince 5(4); y is updated in place.
+template <OdeSystem S, IntegrationObserver<typename S::State> Observer>
+IntegrationStats integrate_dormand_prince(S& sys, typename S::State& y, double t0, double t_end,
+                                          const DormandPrinceOptions& opt, Observer& observer) {
+  if (!(opt.rtol > 0)) throw std::invalid_argument("integrate_dormand_prince: rtol must be > 0");
+  if (!(opt.atol > 0)) throw std::invalid_argument("integrate_dormand_prince: atol must be > 0");
+  using State = typename S::State;
+  using Events = typename S::Events;
+  constexpr double safety = 0.9, min_factor = 0.2, max_factor = 5.0;
+
+  IntegrationStats stats;
+  double t = t0;
+  detail::DormandPrinceStep<State> w;
+  detail::DormandPrinceDense<State> dense;
+  Events g, g_new;
+  sys.events(t, y, g);
+  observer.on_step(t, y);
+  sys.rhs(t, y, w.k1);
+  ++stats.rhs_evaluations;
+  double h = detail::dormand_prince_initial_step(sys, t, y, w.k1, t_end - t, opt, stats.rhs_evaluations);
+  bool rejected_last = false;
+
+  for (long attempts = 0; t < t_end; ++attempts) {
+    if (attempts >= opt.max_steps) throw std::runtime_error("integrate_dormand_prince: too many steps");
+    if (opt.max_step > 0) h = std::min(h, opt.max_step);
+    const bool last = t + h >= t_end;
+    if (last) h = t_end - t;
+    detail::dormand_prince_step(sys, t, y, h, w);
+    stats.rhs_evaluations += 6;
+    using T = detail::DormandPrinceTableau;
+    const State err = h * (T::e1 * w.k1 + T::e3 * w.k3 + T::e4 * w.k4 + T::e5 * w.k5 + T::e6 * w.k6 + T::e7 * w.k7);
+    const double err_norm = detail::weighted_rms(err, y, w.y1, opt.rtol, opt.atol);
+    if (!(err_norm <= 1.0)) {
+      if (!std::isfinite(err_norm)) throw std::runtime_error("integrate_dormand_prince: non-finite error estimate");
+      h *= std::max(min_factor, safety * std::pow(err_norm, -0.2));
+      rejected_last = true;
+      continue;
+    }
+    double factor = err_norm > 0 ? safety * std::pow(err_norm, -0.2) : max_factor;
+    factor = std::clamp(factor, min_factor, rejected_last ? 1.0 : max_factor);
+    rejected_last = false;
+
+    sys.events(t + h, w.y1, g_new);
+    bool any = false;
+    for (int i = 0; i < S::event_count; ++i) any |= (g[i] > 0 && g_new[i] <= 0);
+    if (!any) {
+      t = last ? t_end : t + h;
+      y = w.y1;
+      w.k1 = w.k7;
+      g = g_new;
+      ++stats.steps;
+      observer.on_step(t, y);
+      h *= factor;
+      continue;
+    }
+
+    // Locate every crossing on the dense output; the earliest decides where to land.
+    dense.build(y, h, w);
+    const double theta_tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t), h) / h;
+    std::array<double, S::event_count> theta;
+    double theta_event = 1.0;
+    for (int i = 0; i < S::event_count; ++i) {
+      theta[i] = 2.0;  // no crossing
+      if (!(g[i] > 0 && g_new[i] <= 0)) continue;
+      auto phi = [&](double th) {
+        Events gt;
+        sys.events(t + th * h, dense.at(th), gt);
+        return gt[i];
+      };
+      theta[i] = detail::illinois_root(phi, 0.0, g[i], 1.0, g_new[i], theta_tol);
+      theta_event = std::min(theta_event, theta[i]);
+    }
+
+    // Land on it: re-take the step with the length that ends there.
+    const double h_event = theta_event * h;
+    if (theta_event < 1.0) {
+      detail::dormand_prince_step(sys, t, y, h_event, w);
+      stats.rhs_evaluations += 6;
+    }
+    const Events g_start = g;
+    t = (last && theta_event == 1.0) ? t_end : t + h_event;
+    y = w.y1;
+    w.k1 = w.k7;
+    ++stats.steps;
+    observer.on_step(t, y);
+    sys.events(t, y, g);
+    // Fire, in index order, the events located at the landing point, and any other
+    // that has already crossed there.
+    bool restart = false;
+    for (int i = 0; i < S::event_count; ++i) {
+      if (!(g_start[i] > 0 && (theta[i] <= theta_event + theta_tol || g[i] <= 0))) continue;
+      const EventAction action = sys.handle_event(i, t, y);
+      ++stats.events;
+      observer.on_event(i, t, y, action);
+      if (action == EventAction::stop) {
+        stats.t_final = t;
+        stats.stopped_by_event = true;
+        return stats;
+      }
+      restart |= action == EventAction::restart;
+      g[i] = std::min(g[i], 0.0);  // fired: it must rise above zero before it can fire again
+    }
+    if (restart) {
+      // New right-hand side: nothing carries over but the state.
+      sys.events(t, y, g);
+      sys.rhs(t, y, w.k1);
+      ++stats.rhs_evaluations;
+      h = detail::dormand_prince_initial_step(sys, t, y, w.k1, t_end - t, opt, stats.rhs_evaluations);
+    } else {
+      h *= factor;
+    }
+  }
+  stats.t_final = t;
+  return stats;
+}
+
+}  // namespace hertzdash
