@@ -146,120 +146,212 @@ double dormand_prince_initial_step(const S& sys, double t, const typename S::Sta
 
 }  // namespace detail
 
+namespace detail {
+
+/// One integration: the per-run workspace and the steps of the algorithm.
+template <OdeSystem S, class Observer>
+class DormandPrinceRun {
+  using State = typename S::State;
+  using Events = typename S::Events;
+  using Step = DormandPrinceStep<State>;
+  static constexpr double safety = 0.9, min_factor = 0.2, max_factor = 5.0;
+
+ public:
+  DormandPrinceRun(S& sys, State& y, double t0, double t_end, const DormandPrinceOptions& opt, Observer& observer)
+      : sys_(sys), y_(y), t_(t0), t_end_(t_end), t_restart_(t0), opt_(opt), observer_(observer) {}
+
+  IntegrationStats run() {
+    sys_.events(t_, y_, g_);
+    observer_.on_step(t_, y_);
+    restart();
+    bool rejected_last = false;
+    for (long attempts = 0; t_ < t_end_; ++attempts) {
+      if (attempts >= opt_.max_steps) throw std::runtime_error("integrate_dormand_prince: too many steps");
+      double h = std::min(h_, t_end_ - t_);
+      if (opt_.max_step > 0) h = std::min(h, opt_.max_step);
+      // The right-hand side may be singular at the last restart (sqrt(t - t_restart)
+      // after contact onset). The embedded estimate of a step [t, t + h] misses such an
+      // error by a factor 37 when t = t_restart, 5 when h = 4 (t - t_restart), and
+      // 1.1 when h = t - t_restart. So the first step after a restart is checked by step
+      // doubling, and the following ones are no longer than the time since the restart.
+      const bool near_restart = t_ == t_restart_;
+      if (!near_restart) h = std::min(h, t_ - t_restart_);
+      const double err = near_restart ? doubling_error(h) : embedded_error(h);
+      if (!(err <= 1.0)) {
+        if (!std::isfinite(err)) throw std::runtime_error("integrate_dormand_prince: non-finite error estimate");
+        // Shrink by (0.9/err)^{1/5}, the order of the estimate if the solution is
+        // smooth. After a second rejection at the same point, use the order the two
+        // attempts show instead (3/2 at a square-root singularity), so that a
+        // singular start costs two or three attempts rather than ten.
+        double factor = std::max(min_factor, safety * fifth_root_inverse(err));
+        if (rejected_last && rejected_t_ == t_ && rejected_err_ > err) {
+          const double order = std::clamp(std::log(rejected_err_ / err) / std::log(rejected_h_ / h), 0.5, 5.0);
+          factor = std::min(factor, std::exp(std::log(safety / err) / order));
+        }
+        rejected_t_ = t_, rejected_h_ = h, rejected_err_ = err;
+        h_ = h * factor;
+        rejected_last = true;
+        continue;
+      }
+      const double factor =
+          std::clamp(err > 0 ? safety * fifth_root_inverse(err) : max_factor, min_factor, rejected_last ? 1.0 : max_factor);
+      rejected_last = false;
+      h_ = h * factor;
+      // Accept: the step itself, or (near a restart) its two more accurate halves.
+      const bool to_end = h == t_end_ - t_;
+      if (near_restart) {
+        const Step second = half2_;  // accept() overwrites the workspaces when it lands on an event
+        if (!accept(half1_, 0.5 * h, false)) accept(second, 0.5 * h, to_end);
+      } else {
+        accept(w_, h, to_end);
+      }
+      if (stats_.stopped_by_event) return stats_;
+    }
+    stats_.t_final = t_;
+    return stats_;
+  }
+
+ private:
+  /// x^{-1/5} for the step-size update (a step-size heuristic: exp/log is plenty).
+  static double fifth_root_inverse(double x) { return std::exp(-0.2 * std::log(x)); }
+
+  /// One step of length h into w_; its embedded error estimate (weighted RMS).
+  double embedded_error(double h) {
+    dormand_prince_step(sys_, t_, y_, h, w_);
+    stats_.rhs_evaluations += 6;
+    using T = DormandPrinceTableau;
+    const State err = h * (T::e1 * w_.k1 + T::e3 * w_.k3 + T::e4 * w_.k4 + T::e5 * w_.k5 + T::e6 * w_.k6 + T::e7 * w_.k7);
+    return weighted_rms(err, y_, w_.y1, opt_.rtol, opt_.atol);
+  }
+
+  /// One step of length h into w_ and two of h/2 into half1_, half2_; the
+  /// difference of the two results estimates the error of the single step whatever
+  /// the form of the local error (h^6 if smooth, h^{3/2} at a square-root
+  /// singularity), and bounds that of the two halves, which are kept.
+  double doubling_error(double h) {
+    dormand_prince_step(sys_, t_, y_, h, w_);
+    half1_.k1 = w_.k1;
+    dormand_prince_step(sys_, t_, y_, 0.5 * h, half1_);
+    half2_.k1 = half1_.k7;
+    dormand_prince_step(sys_, t_ + 0.5 * h, half1_.y1, 0.5 * h, half2_);
+    stats_.rhs_evaluations += 18;
+    return weighted_rms(State(half2_.y1 - w_.y1), y_, half2_.y1, opt_.rtol, opt_.atol);
+  }
+
+  /// Move to the end t_new of the accepted step `ws` from (t_, y_).
+  void advance(const Step& ws, double t_new) {
+    t_ = t_new;
+    y_ = ws.y1;
+    w_.k1 = ws.k7;
+    ++stats_.steps;
+    observer_.on_step(t_, y_);
+  }
+
+  /// Accept the step `ws` of length h from (t_, y_), or, if an event function
+  /// crosses zero within it, land on the earliest crossing instead. Returns true if
+  /// the step was cut short by an event (the rest of it is then void).
+  bool accept(const Step& ws, double h, bool to_end) {
+    Events g_end;
+    sys_.events(t_ + h, ws.y1, g_end);
+    bool any = false;
+    for (int i = 0; i < S::event_count; ++i) any |= (g_[i] > 0 && g_end[i] <= 0);
+    if (!any) {
+      advance(ws, to_end ? t_end_ : t_ + h);
+      g_ = g_end;
+      return false;
+    }
+    // Locate every crossing on the dense output (no evaluations); land on the earliest.
+    dense_.build(y_, h, ws);
+    const double theta_tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t_), h) / h;
+    std::array<double, S::event_count> theta;
+    double theta_event = 1.0;
+    for (int i = 0; i < S::event_count; ++i) {
+      theta[i] = 2.0;  // no crossing
+      if (!(g_[i] > 0 && g_end[i] <= 0)) continue;
+      auto phi = [&](double th) {
+        Events gt;
+        sys_.events(t_ + th * h, dense_.at(th), gt);
+        return gt[i];
+      };
+      theta[i] = illinois_root(phi, 0.0, g_[i], 1.0, g_end[i], theta_tol);
+      theta_event = std::min(theta_event, theta[i]);
+    }
+    const Events g_start = g_;
+    const double t_start = t_;
+    land(t_ + theta_event * h, to_end && theta_event == 1.0);
+    // Fire, in index order, the events located at the landing point and any other
+    // that has already crossed there.
+    sys_.events(t_, y_, g_);
+    bool restart_needed = false;
+    for (int i = 0; i < S::event_count; ++i) {
+      const bool located_here = t_start + theta[i] * h <= t_ + theta_tol * h;
+      if (!(g_start[i] > 0 && (located_here || g_[i] <= 0))) continue;
+      const EventAction action = sys_.handle_event(i, t_, y_);
+      ++stats_.events;
+      observer_.on_event(i, t_, y_, action);
+      if (action == EventAction::stop) {
+        stats_.t_final = t_;
+        stats_.stopped_by_event = true;
+        return true;
+      }
+      restart_needed |= action == EventAction::restart;
+      g_[i] = std::min(g_[i], 0.0);  // fired: it must rise above zero before it can fire again
+    }
+    if (restart_needed) restart();
+    return true;
+  }
+
+  /// Reach t_star exactly. The step that ends on an event may end on a singularity
+  /// of the solution (sqrt(t_star - t) at separation), so it is checked by step
+  /// doubling; while the check fails, an ordinary step of half the distance or less
+  /// (checked by its embedded estimate, reliable that far from t_star) goes first.
+  void land(double t_star, bool to_end) {
+    for (int tries = 0;; ++tries) {
+      const double d = t_star - t_;
+      if (d <= 0) return;
+      const double err = doubling_error(d);
+      if (err <= 1.0 || tries >= 40) {
+        const Step second = half2_;
+        advance(half1_, t_ + 0.5 * d);
+        advance(second, to_end ? t_end_ : t_star);
+        return;
+      }
+      double h = 0.5 * d;
+      for (int k = 0; k < 60 && !(embedded_error(h) <= 1.0); ++k) h *= 0.5;
+      advance(w_, t_ + h);
+    }
+  }
+
+  /// (Re)start the method at (t_, y_): nothing carries over but the state.
+  void restart() {
+    t_restart_ = t_;
+    sys_.rhs(t_, y_, w_.k1);
+    ++stats_.rhs_evaluations;
+    h_ = dormand_prince_initial_step(sys_, t_, y_, w_.k1, t_end_ - t_, opt_, stats_.rhs_evaluations);
+  }
+
+  S& sys_;
+  State& y_;
+  double t_, t_end_, t_restart_;
+  double h_ = 0;  ///< the next step size to try [s]
+  double rejected_t_ = 0, rejected_h_ = 0, rejected_err_ = 0;  ///< the last rejected attempt
+  const DormandPrinceOptions& opt_;
+  Observer& observer_;
+  IntegrationStats stats_;
+  Events g_;                      ///< event functions at (t_, y_)
+  Step w_, half1_, half2_;        ///< w_.k1 = f(t_, y_) between steps
+  DormandPrinceDense<State> dense_;
+};
+
+}  // namespace detail
+
 /// Integrate `sys` from (t0, y) towards t_end with Dormand-Prince 5(4); y is updated in place.
 template <OdeSystem S, IntegrationObserver<typename S::State> Observer>
 IntegrationStats integrate_dormand_prince(S& sys, typename S::State& y, double t0, double t_end,
                                           const DormandPrinceOptions& opt, Observer& observer) {
   if (!(opt.rtol > 0)) throw std::invalid_argument("integrate_dormand_prince: rtol must be > 0");
   if (!(opt.atol > 0)) throw std::invalid_argument("integrate_dormand_prince: atol must be > 0");
-  using State = typename S::State;
-  using Events = typename S::Events;
-  constexpr double safety = 0.9, min_factor = 0.2, max_factor = 5.0;
-
-  IntegrationStats stats;
-  double t = t0;
-  detail::DormandPrinceStep<State> w;
-  detail::DormandPrinceDense<State> dense;
-  Events g, g_new;
-  sys.events(t, y, g);
-  observer.on_step(t, y);
-  sys.rhs(t, y, w.k1);
-  ++stats.rhs_evaluations;
-  double h = detail::dormand_prince_initial_step(sys, t, y, w.k1, t_end - t, opt, stats.rhs_evaluations);
-  bool rejected_last = false;
-
-  for (long attempts = 0; t < t_end; ++attempts) {
-    if (attempts >= opt.max_steps) throw std::runtime_error("integrate_dormand_prince: too many steps");
-    if (opt.max_step > 0) h = std::min(h, opt.max_step);
-    const bool last = t + h >= t_end;
-    if (last) h = t_end - t;
-    detail::dormand_prince_step(sys, t, y, h, w);
-    stats.rhs_evaluations += 6;
-    using T = detail::DormandPrinceTableau;
-    const State err = h * (T::e1 * w.k1 + T::e3 * w.k3 + T::e4 * w.k4 + T::e5 * w.k5 + T::e6 * w.k6 + T::e7 * w.k7);
-    const double err_norm = detail::weighted_rms(err, y, w.y1, opt.rtol, opt.atol);
-    if (!(err_norm <= 1.0)) {
-      if (!std::isfinite(err_norm)) throw std::runtime_error("integrate_dormand_prince: non-finite error estimate");
-      h *= std::max(min_factor, safety * std::pow(err_norm, -0.2));
-      rejected_last = true;
-      continue;
-    }
-    double factor = err_norm > 0 ? safety * std::pow(err_norm, -0.2) : max_factor;
-    factor = std::clamp(factor, min_factor, rejected_last ? 1.0 : max_factor);
-    rejected_last = false;
-
-    sys.events(t + h, w.y1, g_new);
-    bool any = false;
-    for (int i = 0; i < S::event_count; ++i) any |= (g[i] > 0 && g_new[i] <= 0);
-    if (!any) {
-      t = last ? t_end : t + h;
-      y = w.y1;
-      w.k1 = w.k7;
-      g = g_new;
-      ++stats.steps;
-      observer.on_step(t, y);
-      h *= factor;
-      continue;
-    }
-
-    // Locate every crossing on the dense output; the earliest decides where to land.
-    dense.build(y, h, w);
-    const double theta_tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t), h) / h;
-    std::array<double, S::event_count> theta;
-    double theta_event = 1.0;
-    for (int i = 0; i < S::event_count; ++i) {
-      theta[i] = 2.0;  // no crossing
-      if (!(g[i] > 0 && g_new[i] <= 0)) continue;
-      auto phi = [&](double th) {
-        Events gt;
-        sys.events(t + th * h, dense.at(th), gt);
-        return gt[i];
-      };
-      theta[i] = detail::illinois_root(phi, 0.0, g[i], 1.0, g_new[i], theta_tol);
-      theta_event = std::min(theta_event, theta[i]);
-    }
-
-    // Land on it: re-take the step with the length that ends there.
-    const double h_event = theta_event * h;
-    if (theta_event < 1.0) {
-      detail::dormand_prince_step(sys, t, y, h_event, w);
-      stats.rhs_evaluations += 6;
-    }
-    const Events g_start = g;
-    t = (last && theta_event == 1.0) ? t_end : t + h_event;
-    y = w.y1;
-    w.k1 = w.k7;
-    ++stats.steps;
-    observer.on_step(t, y);
-    sys.events(t, y, g);
-    // Fire, in index order, the events located at the landing point, and any other
-    // that has already crossed there.
-    bool restart = false;
-    for (int i = 0; i < S::event_count; ++i) {
-      if (!(g_start[i] > 0 && (theta[i] <= theta_event + theta_tol || g[i] <= 0))) continue;
-      const EventAction action = sys.handle_event(i, t, y);
-      ++stats.events;
-      observer.on_event(i, t, y, action);
-      if (action == EventAction::stop) {
-        stats.t_final = t;
-        stats.stopped_by_event = true;
-        return stats;
-      }
-      restart |= action == EventAction::restart;
-      g[i] = std::min(g[i], 0.0);  // fired: it must rise above zero before it can fire again
-    }
-    if (restart) {
-      // New right-hand side: nothing carries over but the state.
-      sys.events(t, y, g);
-      sys.rhs(t, y, w.k1);
-      ++stats.rhs_evaluations;
-      h = detail::dormand_prince_initial_step(sys, t, y, w.k1, t_end - t, opt, stats.rhs_evaluations);
-    } else {
-      h *= factor;
-    }
-  }
-  stats.t_final = t;
-  return stats;
+  return detail::DormandPrinceRun<S, Observer>(sys, y, t0, t_end, opt, observer).run();
 }
 
 }  // namespace hertzdash
