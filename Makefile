@@ -4,7 +4,7 @@ BUILD   ?= build
 JOBS    ?= $(shell nproc)
 FIGURES ?= paper/figures
 
-.PHONY: all deps configure build test figures clean
+.PHONY: all deps configure build test figures bench clean
 
 all: build
 
@@ -24,6 +24,13 @@ test: build
 
 figures: build
 	validation/run_studies.sh $(BUILD) $(FIGURES)
+
+# Work precision against Boost.Odeint, GSL and CVODE at full repeats (a few minutes):
+# prints the table and ratios, writes the CSVs the figure is drawn from, the paper's
+# \perf macros, and the measured block of the README.
+bench: build
+	$(BUILD)/bench/hertzdash_bench --out $(FIGURES) --generated paper/generated --readme README.md
+	gnuplot -d -c validation/work_precision_peers/work_precision_peers.gp $(FIGURES)
 
 clean:
 	rm -rf $(BUILD)
