@@ -28,8 +28,13 @@ figures: build
 # Work precision against Boost.Odeint, GSL and CVODE at full repeats (a few minutes):
 # prints the table and ratios, writes the CSVs the figure is drawn from, the paper's
 # \perf macros, and the measured block of the README.
+# It first times `make figures` from the built tree (into a scratch directory).
 bench: build
-	$(BUILD)/bench/hertzdash_bench --out $(FIGURES) --generated paper/generated --readme README.md
+	@start=$$(date +%s%N); \
+	validation/run_studies.sh $(BUILD) $(BUILD)/figures-timing > /dev/null; \
+	ms=$$(( ($$(date +%s%N) - start) / 1000000 )); \
+	$(BUILD)/bench/hertzdash_bench --out $(FIGURES) --generated paper/generated --readme README.md \
+	  --figures-ms $$ms
 	gnuplot -d -c validation/work_precision_peers/work_precision_peers.gp $(FIGURES)
 
 clean:

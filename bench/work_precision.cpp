@@ -329,10 +329,18 @@ int run_work_precision(const WorkPrecisionConfig& c) {
     macros.add("perfSweepRateOne", one, "{:.0f}");
     macros.add("perfSweepRateAll", all, "{:.0f}");
     summary_md << fmt::format("\nParallel sweep (restitution map of {} contact phases, dopri5 at tolerance 1e-8): "
-                              "{:.3g} impacts/s on 1 thread, {:.3g} impacts/s on {} threads.\n",
+                              "{:.3g} impacts/s on 1 thread, {:.3g} impacts/s on {} threads.\n\n",
                               n, one, all, cores);
   }
 
+  if (c.figures_seconds > 0) {
+    fmt::print("\n== make figures from the built tree: {:.1f} s on {} cores\n", c.figures_seconds, cores);
+    macros.add("perfFiguresSeconds", c.figures_seconds, "{:.0f}");
+    summary_md << fmt::format("`make figures` from a built tree: {:.1f} s on {} cores.\n", c.figures_seconds, cores);
+  }
+  fmt::print("\n== summary: wall time per impact at equal error, fastest hertzdash over fastest peer\n"
+             "| workload | error | fastest hertzdash [us] | fastest peer [us] | ratio |\n{}",
+             summary_md.str());
   macros.save(c.generated_dir / "work_precision_peers.tex");
   write_file_atomically(c.generated_dir / "work_precision_peers_table.tex", table_tex.str());
 

@@ -15,6 +15,7 @@ struct WorkPrecisionConfig {
   bool half_decades = true;             ///< tolerances every half decade (else every decade)
   long sweep_impacts = 20000;           ///< impacts in the parallel-sweep throughput run
   std::filesystem::path readme;         ///< if set, the README's generated performance block is refreshed
+  double figures_seconds = 0;           ///< measured wall time of `make figures` (0: not measured)
 };
 
 /// Runs everything, prints the side-by-side table and the ratios, writes
