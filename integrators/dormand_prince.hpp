@@ -38,6 +38,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -212,10 +214,18 @@ class DormandPrinceRun {
   }
 
  private:
-  /// x^{-1/5} for the step-size update: a heuristic, so single precision is plenty
-  /// (and a third of the cost of the double-precision pow per step).
+  /// x^{-1/5} for the step-size update. A heuristic needs ~1%, not pow's 1 ulp (pow
+  /// was a tenth of the run time): the exponent-field estimate y = x^{-1/5} read off
+  /// the float bit pattern (bits(y) ~ (6/5) bits(1) - bits(x)/5, within 15%), then
+  /// one Newton step on x y^5 = 1, y <- y (6 - x y^5)/5 (error squared: < 3%).
   static double fifth_root_inverse(double x) {
-    return std::pow(static_cast<float>(std::clamp(x, 1e-30, 1e30)), -0.2f);
+    const float xf = static_cast<float>(std::clamp(x, 1e-30, 1e30));
+    const auto bits = std::bit_cast<std::uint32_t>(xf);
+    constexpr std::uint32_t one = 0x3f800000u;  // bits of 1.0f
+    float y = std::bit_cast<float>(static_cast<std::uint32_t>(one + one / 5 - bits / 5));
+    const float y2 = y * y;
+    y = y * (6.0f - xf * y2 * y2 * y) * 0.2f;
+    return y;
   }
 
   /// One step of length h into w_; its embedded error estimate (weighted RMS).
