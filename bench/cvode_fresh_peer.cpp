@@ -8,8 +8,6 @@
 // code is checked.
 #include "bench/impact_solvers.hpp"
 
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/drop_test.hpp"
 
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
@@ -71,13 +69,11 @@ class CvodeFresh final : public ImpactSolver {
   explicit CvodeFresh(double tol) : tol_(tolerances_for(tol)) {}
 
   ImpactResult run(const DropTestSetup& setup) override {
-    const DropTestModel model(setup);
-    DropTest<HongoPaper> sys(model);
+    PeerImpact impact(setup);
+    auto& sys = impact.sys;
+    const auto& y0 = impact.y0;
     CvodeContext user{&sys};
-    const auto y0 = sys.initial_state();
-    const double contact_scale_s = undamped_hertz_impact(model.K, model.mass_kg, approach_speed(setup)).contact_time_s;
-    const double fall_s = sys.in_contact() ? 0.0 : std::sqrt(2 * setup.height_m / setup.gravity_mps2);
-    const double t_end = 10 * fall_s + 20 * contact_scale_s;
+    const double t_end = 10 * impact.fall_time_s + 20 * impact.contact_time_s;
 
     CvodeInstance c;
     check(SUNContext_Create(nullptr, &c.ctx), "SUNContext_Create");

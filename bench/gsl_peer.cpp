@@ -8,8 +8,6 @@
 // interpolant of xdot, whose end derivatives cost two evaluations.
 #include "bench/impact_solvers.hpp"
 
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/drop_test.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
@@ -60,16 +58,15 @@ class GslRk8pd final : public ImpactSolver {
   GslRk8pd& operator=(const GslRk8pd&) = delete;
 
   ImpactResult run(const DropTestSetup& setup) override {
-    const DropTestModel model(setup);
-    DropTest<HongoPaper> sys(model);
+    PeerImpact impact(setup);
+    auto& sys = impact.sys;
     GslContext ctx{&sys, 0};
     gsl_odeiv2_system ode{gsl_rhs, nullptr, 2, &ctx};
-    const auto y0 = sys.initial_state();
-    double y[2] = {y0[0], y0[1]};
+    double y[2] = {impact.y0[0], impact.y0[1]};
     double t = 0;
-    const double contact_scale_s = undamped_hertz_impact(model.K, model.mass_kg, approach_speed(setup)).contact_time_s;
+    const double contact_scale_s = impact.contact_time_s;
     if (!sys.in_contact()) {
-      const double fall_s = std::sqrt(2 * setup.height_m / setup.gravity_mps2);
+      const double fall_s = impact.fall_time_s;
       to_crossing(ode, ctx, y, t, 1e-3 * fall_s, 10 * fall_s, +1);
       sys.handle_event(contact_event, t, DropTest<HongoPaper>::State{y[0], y[1]});
     }

@@ -10,8 +10,12 @@
 //
 // Every solver reports the effective restitution (rebound over approach speed at
 // separation, x = 0 decreasing) and the right-hand-side evaluations it spent.
+#include "model/damping/laws/hongo_paper.hpp"
+#include "model/drop_test.hpp"
 #include "model/drop_test_setup.hpp"
 #include "validation/common/impact_simulator.hpp"
+
+#include <cmath>
 
 #include <memory>
 #include <string>
@@ -38,6 +42,26 @@ struct Tolerances {
   double rtol, atol;
 };
 inline Tolerances tolerances_for(double tol) { return {tol, tol * 1e-4}; }
+
+/// What every peer starts one impact from: the model, the system (the same
+/// right-hand side hertzdash integrates), its initial state, and the time scales that
+/// size first steps and end times.
+struct PeerImpact {
+  explicit PeerImpact(const DropTestSetup& setup)
+      : model(setup),
+        sys(model),
+        y0(sys.initial_state()),
+        contact_time_s(undamped_hertz_impact(model.K, model.mass_kg, approach_speed(setup)).contact_time_s),
+        fall_time_s(sys.in_contact() ? 0.0 : std::sqrt(2 * setup.height_m / setup.gravity_mps2)) {}
+  PeerImpact(const PeerImpact&) = delete;
+  PeerImpact& operator=(const PeerImpact&) = delete;
+
+  DropTestModel model;
+  DropTest<HongoPaper> sys;      ///< refers to `model`
+  DropTest<HongoPaper>::State y0;
+  double contact_time_s;         ///< undamped Hertz contact time at the approach speed [s]
+  double fall_time_s;            ///< free fall from rest to contact [s] (0 if starting at onset)
+};
 
 /// hertzdash's ImpactSimulator with `kind`; for rk4 `tol_or_dt` is the step [s].
 std::unique_ptr<ImpactSolver> make_hertzdash_solver(IntegratorKind kind, double tol_or_dt);

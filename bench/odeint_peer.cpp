@@ -8,8 +8,6 @@
 // onset the stepper is re-initialised in contact mode from the interpolated state.
 #include "bench/impact_solvers.hpp"
 
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/drop_test.hpp"
 
 #include <boost/numeric/odeint.hpp>
 
@@ -38,17 +36,16 @@ class OdeintDopri5 final : public ImpactSolver {
   explicit OdeintDopri5(double tol) : tol_(tolerances_for(tol)) {}
 
   ImpactResult run(const DropTestSetup& setup) override {
-    const DropTestModel model(setup);
-    DropTest<HongoPaper> sys(model);
+    PeerImpact impact(setup);
+    auto& sys = impact.sys;
     long evaluations = 0;
     const CountingRhs rhs{&sys, &evaluations};
-    const auto y0 = sys.initial_state();
-    OdeintState y{y0[0], y0[1]};
+    OdeintState y{impact.y0[0], impact.y0[1]};
     double t = 0;
-    const double contact_scale_s = undamped_hertz_impact(model.K, model.mass_kg, approach_speed(setup)).contact_time_s;
+    const double contact_scale_s = impact.contact_time_s;
     if (!sys.in_contact()) {
       // Free fall until x rises through zero.
-      y = integrate_to_crossing(rhs, y, t, 1e-3 * std::sqrt(2 * setup.height_m / setup.gravity_mps2), +1);
+      y = integrate_to_crossing(rhs, y, t, 1e-3 * impact.fall_time_s, +1);
       sys.handle_event(contact_event, t, DropTest<HongoPaper>::State{y[0], y[1]});
     }
     const double v_impact = y[1];
