@@ -4,7 +4,7 @@ BUILD   ?= build
 JOBS    ?= $(shell nproc)
 FIGURES ?= paper/figures
 
-.PHONY: all deps configure build test figures convergence paper clean
+.PHONY: all deps configure build test figures convergence paper bench clean
 
 all: build
 
@@ -39,6 +39,18 @@ paper: figures
 	@epoch=$$(git log -1 --format=%ct 2>/dev/null); \
 	if [ -n "$$epoch" ]; then export SOURCE_DATE_EPOCH=$$epoch FORCE_SOURCE_DATE=1; fi; \
 	paper/build.sh paper
+
+# Work precision against Boost.Odeint, GSL and CVODE at full repeats (a few minutes):
+# prints the table and ratios, writes the CSVs the figure is drawn from, the paper's
+# \perf macros, and the measured block of the README.
+# It first times `make figures` from the built tree (into a scratch directory).
+bench: build
+	@start=$$(date +%s%N); \
+	validation/run_studies.sh $(BUILD) $(BUILD)/figures-timing > /dev/null; \
+	ms=$$(( ($$(date +%s%N) - start) / 1000000 )); \
+	$(BUILD)/bench/hertzdash_bench --out $(FIGURES) --generated paper/generated --readme README.md \
+	  --figures-ms $$ms
+	gnuplot -d -c validation/work_precision_peers/work_precision_peers.gp $(FIGURES)
 
 clean:
 	rm -rf $(BUILD)

@@ -60,28 +60,32 @@ DropTestSetup SetupOptions::resolve(const PaperParameters& paper) const {
 }
 
 void SolverOptions::add_to(CLI::App& app) {
-  app.add_option("--integrator", integrator_, "euler, rk4 or cvode")->capture_default_str();
+  app.add_option("--integrator", integrator_, "euler, rk4, cvode or dopri5")->capture_default_str();
   app.add_option("--dt", dt_s_, "Fixed step [s] for euler and rk4")->capture_default_str();
   app.add_flag("--no-event-location", no_event_location_,
                "euler/rk4: handle events at the end of the step that crosses them (convergence studies)");
-  app.add_option("--rtol", rtol_, "CVODE relative tolerance")->capture_default_str();
-  app.add_option("--atol", atol_, "CVODE absolute tolerance [m, m/s]")->capture_default_str();
+  app.add_option("--rtol", rtol_, "CVODE and dopri5 relative tolerance")->capture_default_str();
+  app.add_option("--atol", atol_, "CVODE and dopri5 absolute tolerance [m, m/s]")->capture_default_str();
   app.add_option("--cvode-method", cvode_method_, "CVODE method: adams or bdf")->capture_default_str();
-  app.add_option("--max-step", max_step_s_, "CVODE largest step [s]; 0 = no limit")->capture_default_str();
+  app.add_option("--max-step", max_step_s_, "CVODE and dopri5 largest step [s]; 0 = no limit")->capture_default_str();
 }
 
 SolverSettings SolverOptions::resolve() const {
   static const std::map<std::string, IntegratorKind> kinds{
-      {"euler", IntegratorKind::euler}, {"rk4", IntegratorKind::rk4}, {"cvode", IntegratorKind::cvode}};
+      {"euler", IntegratorKind::euler}, {"rk4", IntegratorKind::rk4}, {"cvode", IntegratorKind::cvode},
+      {"dopri5", IntegratorKind::dopri5}};
   SolverSettings s;
   const auto k = kinds.find(integrator_);
-  if (k == kinds.end()) throw InvalidParameter("--integrator", integrator_, "one of: euler, rk4, cvode");
+  if (k == kinds.end()) throw InvalidParameter("--integrator", integrator_, "one of: euler, rk4, cvode, dopri5");
   s.integrator = k->second;
   s.fixed_step.dt = dt_s_;
   s.fixed_step.locate_events = !no_event_location_;
   s.cvode.rtol = rtol_;
   s.cvode.atol = atol_;
   s.cvode.max_step = max_step_s_;
+  s.dopri5.rtol = rtol_;
+  s.dopri5.atol = atol_;
+  s.dopri5.max_step = max_step_s_;
   if (cvode_method_ == "adams") s.cvode.method = CvodeMethod::adams;
   else if (cvode_method_ == "bdf") s.cvode.method = CvodeMethod::bdf;
   else throw InvalidParameter("--cvode-method", cvode_method_, "one of: adams, bdf");

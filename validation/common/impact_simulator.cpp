@@ -11,6 +11,7 @@ const char* to_string(IntegratorKind k) {
     case IntegratorKind::euler: return "euler";
     case IntegratorKind::rk4: return "rk4";
     case IntegratorKind::cvode: return "cvode";
+    case IntegratorKind::dopri5: return "dopri5";
   }
   return "?";
 }
@@ -20,6 +21,10 @@ void validate(const SolverSettings& s) {
     require_positive("--rtol", s.cvode.rtol, "-");
     require_positive("--atol", s.cvode.atol, "m, m/s");
     require_non_negative("--max-step", s.cvode.max_step, "s");
+  } else if (s.integrator == IntegratorKind::dopri5) {
+    require_positive("--rtol", s.dopri5.rtol, "-");
+    require_positive("--atol", s.dopri5.atol, "m, m/s");
+    require_non_negative("--max-step", s.dopri5.max_step, "s");
   } else {
     require_positive("--dt", s.fixed_step.dt, "s");
   }
@@ -60,6 +65,10 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
     p.emplace_back("rtol", num(solver.cvode.rtol));
     p.emplace_back("atol", num(solver.cvode.atol));
     if (solver.cvode.max_step > 0) p.emplace_back("max_step_s", num(solver.cvode.max_step));
+  } else if (solver.integrator == IntegratorKind::dopri5) {
+    p.emplace_back("rtol", num(solver.dopri5.rtol));
+    p.emplace_back("atol", num(solver.dopri5.atol));
+    if (solver.dopri5.max_step > 0) p.emplace_back("max_step_s", num(solver.dopri5.max_step));
   } else {
     p.emplace_back("dt_s", num(solver.fixed_step.dt));
     p.emplace_back("locate_events", solver.fixed_step.locate_events ? "true" : "false");

@@ -3,6 +3,7 @@
 // trajectory and events -> summary. The integrator is one setting, so comparing
 // integrators on the same model is one flag.
 #include "integrators/cvode_integrator.hpp"
+#include "integrators/dormand_prince.hpp"
 #include "integrators/explicit_euler.hpp"
 #include "integrators/fixed_step.hpp"
 #include "integrators/rk4.hpp"
@@ -20,13 +21,14 @@
 
 namespace hertzdash {
 
-enum class IntegratorKind { euler, rk4, cvode };
+enum class IntegratorKind { euler, rk4, cvode, dopri5 };
 const char* to_string(IntegratorKind k);
 
 struct SolverSettings {
   IntegratorKind integrator = IntegratorKind::cvode;
   FixedStepOptions fixed_step;  ///< euler, rk4
   CvodeOptions cvode;           ///< cvode
+  DormandPrinceOptions dopri5;  ///< dopri5 (adaptive Dormand-Prince 5(4), events landed on)
 };
 
 /// Throws InvalidParameter for a non-positive step or tolerance.
@@ -147,6 +149,9 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<Trace
     case IntegratorKind::cvode:
       if (!cvode_) cvode_ = std::make_unique<CvodeIntegrator>(DropTest<Law>::dimension, DropTest<Law>::event_count, settings_.cvode);
       s.work = cvode_->integrate(sys, y, 0.0, t_end, observer);
+      break;
+    case IntegratorKind::dopri5:
+      s.work = integrate_dormand_prince(sys, y, 0.0, t_end, settings_.dopri5, observer);
       break;
   }
   if (s.separated) {

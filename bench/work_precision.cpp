@@ -1,0 +1,396 @@
+// Work-precision benchmark: hertzdash's integrators against Boost.Odeint, GSL and
+// naive CVODE at equal accuracy, and the throughput of a parallel sweep.
+//
+// Workloads (the paper's steel case, h = 20 mm, every other parameter at its
+// default): "contact", the contact phase alone, started at onset with the free-fall
+// speed sqrt(2 g h) and gravity kept; "drop", the free fall from rest, the contact
+// and the separation. Accuracy is |e_eff - e_ref|, e_eff the effective restitution
+// (rebound over approach speed at separation). e_ref is the mean of two independent
+// methods at tolerance 1e-13 -- hertzdash's Dormand-Prince 5(4) with events landed
+// on, and GSL's rk8pd (order 8) with a Hermite crossing -- whose difference is
+// printed and written as \perfReferenceAgreement...; it is far below the errors
+// measured at the tolerances compared (1e-4 to 1e-10).
+//
+// Timing: for each solver and tolerance, one untimed impact gives the error and the
+// right-hand-side evaluations (every impact of a workload is identical); then
+// `repeats` timed runs of as many impacts as fill `budget_ms` each; the median of
+// the per-impact times is reported. No test asserts any of these times.
+#include "bench/work_precision.hpp"
+
+#include "bench/impact_solvers.hpp"
+#include "integrators/dormand_prince.hpp"
+#include "model/damping/laws/hongo_paper.hpp"
+#include "model/paper_parameters.hpp"
+#include "validation/common/atomic_file.hpp"
+#include "validation/common/csv_writer.hpp"
+#include "validation/common/latex_macros.hpp"
+#include "validation/common/parallel_sweep.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace hertzdash::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Workload {
+  std::string name;     ///< contact, drop
+  std::string tag;      ///< for macro names: Contact, Drop
+  DropTestSetup setup;
+};
+
+struct SolverSpec {
+  std::string name;  ///< CSV spelling, e.g. hertzdash-dopri5
+  bool peer;         ///< a peer library (not hertzdash)
+  bool adaptive;     ///< tolerance-driven (else the "tolerance" column is the step [s])
+  std::function<std::unique_ptr<ImpactSolver>(double)> make;
+};
+
+struct Point {
+  std::string solver;
+  double tolerance;
+  double abs_error;
+  long rhs_evaluations;
+  double us_per_impact;
+};
+
+std::string machine_name() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+  }
+  return "unknown CPU";
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// Median wall time per impact [us] of `solver` on `setup`.
+double time_per_impact_us(ImpactSolver& solver, const DropTestSetup& setup, const WorkPrecisionConfig& c) {
+  // Calibrate the number of impacts per repeat on one timed impact.
+  auto t0 = Clock::now();
+  double sink = solver.run(setup).e_effective;
+  const double one_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  const long n = std::max(1L, static_cast<long>(c.budget_ms * 1e-3 / std::max(one_s, 1e-9)));
+  std::vector<double> per_impact_us;
+  for (int r = 0; r < c.repeats; ++r) {
+    t0 = Clock::now();
+    for (long i = 0; i < n; ++i) sink += solver.run(setup).e_effective;
+    per_impact_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count() / static_cast<double>(n));
+  }
+  if (!std::isfinite(sink)) throw std::runtime_error("benchmark: non-finite restitution");
+  return median(per_impact_us);
+}
+
+/// Time [us] at which `solver` reaches error E along its work-precision front
+/// (points not dominated by a faster, more accurate one), interpolated linearly in
+/// log(time) against log(error) between the neighbouring front points. Empty if it
+/// never reaches E.
+std::optional<double> time_at_error(const std::vector<Point>& points, const std::string& solver, double E) {
+  std::vector<Point> p;
+  for (const Point& q : points)
+    if (q.solver == solver) p.push_back(q);
+  std::sort(p.begin(), p.end(), [](const Point& a, const Point& b) { return a.us_per_impact < b.us_per_impact; });
+  const Point* previous = nullptr;
+  double best = INFINITY;
+  for (const Point& q : p) {
+    if (!(q.abs_error < best)) continue;  // dominated
+    best = q.abs_error;
+    if (q.abs_error <= E) {
+      if (!previous) return q.us_per_impact;
+      const double le0 = std::log(std::max(previous->abs_error, 1e-17)), le1 = std::log(std::max(q.abs_error, 1e-17));
+      const double s = (std::log(E) - le0) / (le1 - le0);
+      return std::exp(std::log(previous->us_per_impact) + s * (std::log(q.us_per_impact) - std::log(previous->us_per_impact)));
+    }
+    previous = &q;
+  }
+  return std::nullopt;
+}
+
+/// Least-squares slope of log(error) against log(tolerance), and the spread
+/// max/min of error/tolerance: 1 and small for an error proportional to tolerance.
+struct Proportionality {
+  double slope = NAN;
+  double spread = NAN;
+};
+Proportionality proportionality(const std::vector<Point>& points, const std::string& solver) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, lo = INFINITY, hi = 0;
+  int n = 0;
+  for (const Point& q : points) {
+    if (q.solver != solver || !(q.abs_error > 0)) continue;
+    const double x = std::log10(q.tolerance), y = std::log10(q.abs_error);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+    lo = std::min(lo, q.abs_error / q.tolerance);
+    hi = std::max(hi, q.abs_error / q.tolerance);
+  }
+  if (n < 2) return {};
+  return {(n * sxy - sx * sy) / (n * sxx - sx * sx), hi / lo};
+}
+
+/// How far Dormand-Prince's embedded estimate misses the true error of its order-5
+/// solution on one step of y' = sqrt(t - t0) from t to t + h with t - t0 = a h: the
+/// ratio (true error)/(estimated error), from the tableau's weights. At a = 0 the step
+/// starts on the singularity (contact onset).
+double sqrt_singularity_miss(double a) {
+  using T = detail::DormandPrinceTableau;
+  const double c[7] = {0, T::c2, T::c3, T::c4, T::c5, 1, 1};
+  const double b[7] = {T::b1, 0, T::b3, T::b4, T::b5, T::b6, 0};
+  const double e[7] = {T::e1, 0, T::e3, T::e4, T::e5, T::e6, T::e7};
+  double quad = 0, est = 0;
+  for (int i = 0; i < 7; ++i) {
+    quad += b[i] * std::sqrt(a + c[i]);
+    est += e[i] * std::sqrt(a + c[i]);
+  }
+  const double exact = 2.0 / 3.0 * (std::pow(a + 1, 1.5) - std::pow(a, 1.5));
+  return std::abs((quad - exact) / est);
+}
+
+/// 6.4e-14 as "6.4\times10^{-14}", for math mode.
+std::string latex_scientific(double v) {
+  if (v == 0) return "0";
+  const int exponent = static_cast<int>(std::floor(std::log10(std::abs(v))));
+  return fmt::format("{:.1f}\\times10^{{{}}}", v / std::pow(10.0, exponent), exponent);
+}
+
+std::string macro_name(const std::string& solver) {
+  // hertzdash-dopri5 -> HertzdashDopriFive: letters only.
+  static const std::map<char, std::string> digits{{'0', "Zero"}, {'1', "One"}, {'2', "Two"}, {'3', "Three"},
+                                                  {'4', "Four"}, {'5', "Five"}, {'6', "Six"}, {'7', "Seven"},
+                                                  {'8', "Eight"}, {'9', "Nine"}};
+  std::string out;
+  bool upper = true;
+  for (char ch : solver) {
+    if (ch == '-' || ch == '_') {
+      upper = true;
+    } else if (digits.count(ch)) {
+      out += digits.at(ch);
+      upper = true;
+    } else {
+      out += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(ch))) : ch;
+      upper = false;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+int run_work_precision(const WorkPrecisionConfig& c) {
+  const PaperParameters paper = load_paper_parameters();
+  Workload contact{"contact", "Contact", paper_setup(paper, "steel", 0.02)};
+  contact.setup.impact_velocity_mps = std::sqrt(2 * contact.setup.gravity_mps2 * contact.setup.height_m);
+  Workload drop{"drop", "Drop", paper_setup(paper, "steel", 0.02)};
+  validate(contact.setup);
+  validate(drop.setup);
+  const std::vector<Workload> workloads{contact, drop};
+
+  std::vector<double> tolerances;
+  for (int k = 0; k <= 12; k += c.half_decades ? 1 : 2) tolerances.push_back(std::pow(10.0, -4.0 - 0.5 * k));
+  const std::vector<double> rk4_steps{1e-5, 3e-6, 1e-6, 3e-7};
+
+  const std::vector<SolverSpec> solvers{
+      {"hertzdash-dopri5", false, true, [](double t) { return make_hertzdash_solver(IntegratorKind::dopri5, t); }},
+      {"hertzdash-cvode", false, true, [](double t) { return make_hertzdash_solver(IntegratorKind::cvode, t); }},
+      {"hertzdash-rk4", false, false, [](double t) { return make_hertzdash_solver(IntegratorKind::rk4, t); }},
+      {"odeint-dopri5", true, true, make_odeint_dopri5},
+      {"gsl-rk8pd", true, true, make_gsl_rk8pd},
+      {"cvode-fresh", true, true, make_cvode_fresh},
+  };
+
+  const std::string machine = machine_name();
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  fmt::print("work-precision benchmark on {} ({} cores); {} timed repeats of {} ms each, median\n", machine, cores,
+             c.repeats, c.budget_ms);
+
+  LatexMacros macros("Work-precision benchmark against Boost.Odeint, GSL and CVODE (bench/work_precision.cpp)",
+                     {{"machine", machine}, {"cores", std::to_string(cores)}, {"repeats", std::to_string(c.repeats)}});
+  macros.add_text("perfMachine", machine);
+  macros.add("perfCores", cores, "{}");
+  macros.add("perfSqrtMissAtStart", sqrt_singularity_miss(0.0), "{:.0f}");
+  macros.add("perfSqrtMissQuarter", sqrt_singularity_miss(0.25), "{:.0f}");
+  macros.add("perfSqrtMissOne", sqrt_singularity_miss(1.0), "{:.1f}");
+  std::ostringstream summary_md;  // for the README block
+  std::ostringstream table_tex;
+  table_tex << "% generated by bench/work_precision.cpp: time per impact at equal error\n"
+            << "\\begin{tabular}{lllrlrr}\n\\toprule\n"
+            << "workload & error & \\multicolumn{2}{c}{fastest hertzdash [$\\mu$s]} & "
+            << "\\multicolumn{2}{c}{fastest peer [$\\mu$s]} & ratio \\\\\n\\midrule\n";
+
+  for (const Workload& w : workloads) {
+    // The reference: two independent methods at tight tolerance.
+    const double e_dopri = make_hertzdash_solver(IntegratorKind::dopri5, 1e-13)->run(w.setup).e_effective;
+    const double e_rk8 = make_gsl_rk8pd(1e-13)->run(w.setup).e_effective;
+    const double e_ref = 0.5 * (e_dopri + e_rk8);
+    const double agreement = std::abs(e_dopri - e_rk8);
+    fmt::print("\n== workload '{}': e_ref = {:.15f} (hertzdash-dopri5 and gsl-rk8pd at tol 1e-13 agree to {:.1e})\n",
+               w.name, e_ref, agreement);
+    macros.add("perfReference" + w.tag, e_ref, "{:.12f}");
+    macros.add_text("perfReferenceAgreement" + w.tag, latex_scientific(agreement));
+
+    std::vector<Point> points;
+    fmt::print("{:<18} {:>9} {:>12} {:>10} {:>12}\n", "solver", "tol/dt", "|error|", "rhs evals", "us/impact");
+    for (const SolverSpec& s : solvers) {
+      for (double tol : s.adaptive ? tolerances : rk4_steps) {
+        if (!s.adaptive && w.name == "drop" && tol < 1e-6) continue;  // minutes of fixed steps through the fall
+        auto solver = s.make(tol);
+        const ImpactResult r = solver->run(w.setup);
+        const double us = time_per_impact_us(*solver, w.setup, c);
+        points.push_back({s.name, tol, std::abs(r.e_effective - e_ref), r.rhs_evaluations, us});
+        fmt::print("{:<18} {:>9.1e} {:>12.3e} {:>10} {:>12.2f}\n", s.name, tol, points.back().abs_error,
+                   r.rhs_evaluations, us);
+      }
+    }
+
+    CsvWriter csv(fmt::format("Work precision of hertzdash's integrators and peer libraries, workload '{}' (steel, "
+                              "h = 20 mm); tolerance is the step [s] for hertzdash-rk4; rtol = tolerance, atol = "
+                              "1e-4 tolerance; us_per_impact is the median of {} repeats on {} ({} cores)",
+                              w.name, c.repeats, machine, cores),
+                  {{"workload", w.name}, {"e_reference", fmt::format("{:.17g}", e_ref)},
+                   {"reference_agreement", fmt::format("{:.3g}", agreement)}},
+                  {"solver", "tolerance", "abs_error_e_eff", "rhs_evals", "us_per_impact"});
+    for (const Point& p : points) csv.add_row({p.solver, p.tolerance, p.abs_error, p.rhs_evaluations, p.us_per_impact});
+    csv.save(c.out_dir / (w.name == "contact" ? "work_precision_peers.csv" : "work_precision_peers_drop.csv"));
+
+    // Ratios at equal error.
+    fmt::print("\n-- '{}': time per impact at equal error (log-log interpolation on each solver's front)\n", w.name);
+    for (double E : {1e-6, 1e-8, 1e-9}) {
+      std::string best_own, best_peer;
+      double t_own = INFINITY, t_peer = INFINITY;
+      for (const SolverSpec& s : solvers) {
+        const auto t = time_at_error(points, s.name, E);
+        if (!t) continue;
+        if (s.peer && *t < t_peer) t_peer = *t, best_peer = s.name;
+        if (!s.peer && *t < t_own) t_own = *t, best_own = s.name;
+      }
+      const double ratio = t_own / t_peer;
+      fmt::print("   error {:.0e}: {} {:.2f} us, fastest peer {} {:.2f} us, ratio {:.3f}\n", E, best_own, t_own,
+                 best_peer, t_peer, ratio);
+      const std::string e_tag = E == 1e-6 ? "Six" : E == 1e-8 ? "Eight" : "Nine";
+      macros.add("perfRatio" + w.tag + e_tag, ratio, "{:.2f}");
+      macros.add("perfOwnUs" + w.tag + e_tag, t_own, "{:.1f}");
+      macros.add("perfPeerUs" + w.tag + e_tag, t_peer, "{:.1f}");
+      macros.add_text("perfOwnSolver" + w.tag + e_tag, best_own);
+      macros.add_text("perfPeerSolver" + w.tag + e_tag, best_peer);
+      table_tex << fmt::format("{} & $10^{{-{}}}$ & \\texttt{{{}}} & {:.1f} & \\texttt{{{}}} & {:.1f} & {:.2f} \\\\\n",
+                               w.name, static_cast<int>(std::round(-std::log10(E))), best_own, t_own, best_peer,
+                               t_peer, ratio);
+      summary_md << fmt::format("| {} | {:.0e} | {} {:.1f} | {} {:.1f} | {:.2f} |\n", w.name, E, best_own, t_own,
+                                best_peer, t_peer, ratio);
+    }
+    fmt::print("-- '{}': error against tolerance, slope of log error vs log tol and spread max/min of error/tol\n",
+               w.name);
+    for (const SolverSpec& s : solvers) {
+      if (!s.adaptive) continue;
+      const Proportionality q = proportionality(points, s.name);
+      fmt::print("   {:<18} slope {:.2f}  spread {:.1f}\n", s.name, q.slope, q.spread);
+      macros.add("perfSlope" + macro_name(s.name) + w.tag, q.slope, "{:.2f}");
+      macros.add("perfSpread" + macro_name(s.name) + w.tag, q.spread, "{:.0f}");
+    }
+    if (w.name == "contact") {
+      for (const Point& p : points) {
+        if (p.solver == "hertzdash-cvode" && std::abs(p.tolerance - 1e-8) < 1e-20) {
+          macros.add("perfCvodeReusedUs", p.us_per_impact, "{:.1f}");
+          fmt::print("-- hertzdash-cvode (memory reused) at rtol 1e-8: {:.1f} us per impact\n", p.us_per_impact);
+        }
+        if (p.solver == "cvode-fresh" && std::abs(p.tolerance - 1e-8) < 1e-20)
+          macros.add("perfCvodeFreshUs", p.us_per_impact, "{:.1f}");
+        // Cost per right-hand-side evaluation, everything included, at tolerance 1e-8.
+        if (std::abs(p.tolerance - 1e-8) < 1e-20 && (p.solver == "hertzdash-cvode" || p.solver == "hertzdash-dopri5")) {
+          const std::string tag = p.solver == "hertzdash-cvode" ? "Cvode" : "Dopri";
+          macros.add("perf" + tag + "NsPerEval", 1e3 * p.us_per_impact / static_cast<double>(p.rhs_evaluations), "{:.0f}");
+          macros.add("perf" + tag + "Evals", static_cast<double>(p.rhs_evaluations), "{:.0f}");
+        }
+      }
+    }
+  }
+  table_tex << "\\bottomrule\n\\end{tabular}\n";
+
+  // Parallel sweep throughput: a restitution map (h from 1 to 100 mm, e from 0.5 to
+  // 1), contact phases with Dormand-Prince at the tolerance that gives error <= 1e-8
+  // on the contact workload (1e-8: the benchmark shows its error below tolerance).
+  {
+    SolverSettings settings;
+    settings.integrator = IntegratorKind::dopri5;
+    const Tolerances tol = tolerances_for(1e-8);
+    settings.dopri5.rtol = tol.rtol;
+    settings.dopri5.atol = tol.atol;
+    const long n = c.sweep_impacts, side = static_cast<long>(std::sqrt(static_cast<double>(n)));
+    std::vector<double> e(static_cast<std::size_t>(n));
+    auto body = [&](ImpactSimulator& sim, std::size_t i) {
+      DropTestSetup s = contact.setup;
+      const double h = 1e-3 + 99e-3 * static_cast<double>(static_cast<long>(i) % side) / static_cast<double>(side - 1);
+      s.restitution = 0.5 + 0.5 * static_cast<double>(static_cast<long>(i) / side % side) / static_cast<double>(side - 1);
+      s.impact_velocity_mps = std::sqrt(2 * s.gravity_mps2 * h);
+      e[i] = sim.run<HongoPaper>(s).e_effective;
+    };
+    auto rate = [&](unsigned threads) {
+      const auto t0 = Clock::now();
+      parallel_sweep(static_cast<std::size_t>(n), settings, body, {.threads = threads, .label = "restitution map"});
+      return static_cast<double>(n) / std::chrono::duration<double>(Clock::now() - t0).count();
+    };
+    const double one = rate(1), all = rate(cores);
+    fmt::print("\n== parallel sweep (restitution map, {} impacts, dopri5 at tol 1e-8): {:.3g} impacts/s on 1 thread, "
+               "{:.3g} impacts/s on {} threads\n",
+               n, one, all, cores);
+    macros.add("perfSweepImpacts", static_cast<double>(n), "{:.0f}");
+    macros.add("perfSweepRateOne", one, "{:.0f}");
+    macros.add("perfSweepRateAll", all, "{:.0f}");
+    summary_md << fmt::format("\nParallel sweep (restitution map of {} contact phases, dopri5 at tolerance 1e-8): "
+                              "{:.3g} impacts/s on 1 thread, {:.3g} impacts/s on {} threads.\n\n",
+                              n, one, all, cores);
+  }
+
+  if (c.figures_seconds > 0) {
+    fmt::print("\n== make figures from the built tree: {:.1f} s on {} cores\n", c.figures_seconds, cores);
+    macros.add("perfFiguresSeconds", c.figures_seconds, "{:.0f}");
+    summary_md << fmt::format("`make figures` from a built tree: {:.1f} s on {} cores.\n", c.figures_seconds, cores);
+  }
+  fmt::print("\n== summary: wall time per impact at equal error, fastest hertzdash over fastest peer\n"
+             "| workload | error | fastest hertzdash [us] | fastest peer [us] | ratio |\n{}",
+             summary_md.str());
+  macros.save(c.generated_dir / "work_precision_peers.tex");
+  write_file_atomically(c.generated_dir / "work_precision_peers_table.tex", table_tex.str());
+
+  if (!c.readme.empty()) {
+    // Refresh the generated block of the README's performance section.
+    std::ifstream in(c.readme);
+    std::stringstream buf;
+    buf << in.rdbuf();
+    std::string text = buf.str();
+    const std::string begin = "<!-- perf:begin (generated by make bench) -->\n", end = "<!-- perf:end -->";
+    const auto b = text.find(begin), e = text.find(end);
+    if (b != std::string::npos && e != std::string::npos && e > b) {
+      std::string block = fmt::format("Measured on {} ({} cores, shared), `make bench`:\n\n"
+                                      "| workload | error | fastest hertzdash [us] | fastest peer [us] | ratio |\n"
+                                      "|---|---|---|---|---|\n",
+                                      machine, cores) +
+                          summary_md.str();
+      text.replace(b + begin.size(), e - b - begin.size(), block);
+      write_file_atomically(c.readme, text);
+    }
+  }
+  return 0;
+}
+
+}  // namespace hertzdash::bench

@@ -1,0 +1,59 @@
+# Work precision of hertzdash's integrators against the peer libraries.
+#   gnuplot -d -c work_precision_peers.gp OUT
+# reads OUT/work_precision_peers.csv (contact phase) and OUT/work_precision_peers_drop.csv
+# (full drop); writes OUT/work_precision_peers.pdf and .png.
+# Top: |e_eff error| against wall time per impact (lower left is better).
+# Bottom: |e_eff error| against the tolerance for the adaptive solvers, with error = tolerance.
+out = ARG1
+here = system('dirname '.ARG0)
+load here.'/../style.gnuplot'
+contact = out.'/work_precision_peers.csv'
+drop = out.'/work_precision_peers_drop.csv'
+
+# One colour per solver; hertzdash solid with filled points, peers dashed with open points.
+set style line 21 lc rgb '#0b3c8c' lw 2.0 dt 1 pt 7 ps 0.55   # hertzdash-dopri5
+set style line 22 lc rgb '#8e44ad' lw 1.6 dt 1 pt 5 ps 0.5    # hertzdash-cvode
+set style line 23 lc rgb '#27ae60' lw 1.6 dt 1 pt 9 ps 0.55   # hertzdash-rk4
+set style line 24 lc rgb '#e67e22' lw 1.6 dt 2 pt 6 ps 0.55   # odeint-dopri5
+set style line 25 lc rgb '#c0392b' lw 1.6 dt 2 pt 4 ps 0.5    # gsl-rk8pd
+set style line 26 lc rgb '#555555' lw 1.6 dt 2 pt 8 ps 0.55   # cvode-fresh
+set style line 27 lc rgb '#999999' lw 1.0 dt 3                # error = tolerance
+
+solvers = 'hertzdash-dopri5 hertzdash-cvode hertzdash-rk4 odeint-dopri5 gsl-rk8pd cvode-fresh'
+pick(s, c) = (strcol(1) eq s) ? column(c) : NaN
+
+set logscale xy
+set format x '10^{%T}'
+set format y '10^{%T}'
+set yrange [1e-11:1e-2]
+
+do for [kind in 'pdf png'] {
+  if (kind eq 'pdf') { set terminal pdfcairo size 7in,5.6in font 'Helvetica,9' enhanced }
+  else { set terminal pngcairo size 1400,1120 font 'Helvetica,11' enhanced }
+  set output out.'/work_precision_peers.'.kind
+  set multiplot layout 2,2
+
+  set key bottom left
+  set xlabel 'wall time per impact [{/Symbol m}s]'
+  set ylabel '|e_{eff} - e_{ref}|'
+  set xrange [*:*]
+  set title '(a) contact phase, steel, h = 20 mm'
+  plot for [i=1:words(solvers)] contact using (pick(word(solvers, i), 5)):(pick(word(solvers, i), 3)) \
+       with linespoints ls 20 + i title word(solvers, i)
+  set title '(b) full drop: free fall, contact, separation'
+  plot for [i=1:words(solvers)] drop using (pick(word(solvers, i), 5)):(pick(word(solvers, i), 3)) \
+       with linespoints ls 20 + i title word(solvers, i)
+
+  set xlabel 'tolerance (rtol; atol = 10^{-4} rtol)'
+  set xrange [1e-11:1e-3]
+  set key top left
+  set title '(c) contact phase: error against tolerance'
+  plot for [i in '1 2 4 5 6'] contact using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
+       with linespoints ls 20 + i title word(solvers, i+0), \
+       x with lines ls 27 title 'error = tolerance'
+  set title '(d) full drop: error against tolerance'
+  plot for [i in '1 2 4 5 6'] drop using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
+       with linespoints ls 20 + i title word(solvers, i+0), \
+       x with lines ls 27 title 'error = tolerance'
+  unset multiplot
+}
