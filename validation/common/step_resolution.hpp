@@ -30,12 +30,13 @@ inline constexpr long min_steps_per_contact_rk4_located = 10;
 inline constexpr long min_steps_per_contact_rk4_unlocated = 1280;
 
 /// Steps per contact time a fixed-step method needs for step_resolution_target_error
-/// (0 for CVODE, whose accuracy is set by its tolerances).
+/// (0 for the adaptive CVODE and dopri5, whose accuracy is set by their tolerances).
 inline long min_steps_per_contact(IntegratorKind integrator, bool locate_events) {
   switch (integrator) {
     case IntegratorKind::euler: return min_steps_per_contact_euler;
     case IntegratorKind::rk4: return locate_events ? min_steps_per_contact_rk4_located : min_steps_per_contact_rk4_unlocated;
-    case IntegratorKind::cvode: return 0;
+    case IntegratorKind::cvode:
+    case IntegratorKind::dopri5: return 0;
   }
   return 0;
 }
