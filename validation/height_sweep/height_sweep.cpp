@@ -20,6 +20,7 @@
 #include "validation/common/csv_writer.hpp"
 #include "validation/common/impact_simulator.hpp"
 #include "validation/common/latex_macros.hpp"
+#include "validation/common/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>
@@ -52,7 +53,6 @@ int main(int argc, char** argv) {
   const PaperParameters paper = load_paper_parameters();
   const int heights = args.reduced ? 3 : 40;  // log-spaced, ends included
   const SolverSettings solver;
-  ImpactSimulator sim(solver);
 
   Parameters header = all_rods_parameters(paper, solver, lowest_height_m, {"height_m"});
   header.emplace_back("heights", fmt::format("{} log-spaced from {} m to {} m", heights, lowest_height_m,
@@ -67,13 +67,28 @@ int main(int argc, char** argv) {
 
   std::vector<double> all_slopes_force, all_slopes_depth, all_slopes_time;
   double e_spread = 0;  // largest (max - min) of e_effective over the heights, any rod
-  for (const RodData& rod : paper.rods) {
+  // Every (rod, height) drop on all cores, then the rows in order.
+  auto height_m = [&](int i) {
+    return lowest_height_m * std::pow(highest_height_m / lowest_height_m, double(i) / (heights - 1));
+  };
+  const std::size_t n_heights = static_cast<std::size_t>(heights);
+  std::vector<ImpactSummary> runs(paper.rods.size() * n_heights);
+  parallel_sweep(
+      runs.size(), solver,
+      [&](ImpactSimulator& sim, std::size_t k) {
+        const DropTestSetup setup = paper_setup(paper, paper.rods[k / n_heights].name, height_m(int(k % n_heights)));
+        validate(setup);
+        runs[k] = sim.run<HongoPaper>(setup);
+      },
+      {.label = "height sweep"});
+
+  for (std::size_t r = 0; r < paper.rods.size(); ++r) {
+    const RodData& rod = paper.rods[r];
     std::vector<double> v0, force, depth, duration, e;
     for (int i = 0; i < heights; ++i) {
-      const double h = lowest_height_m * std::pow(highest_height_m / lowest_height_m, double(i) / (heights - 1));
+      const double h = height_m(i);
       const DropTestSetup setup = paper_setup(paper, rod.name, h);
-      validate(setup);
-      const ImpactSummary s = sim.run<HongoPaper>(setup);
+      const ImpactSummary& s = runs[r * n_heights + static_cast<std::size_t>(i)];
       const UndampedHertzImpact ref = undamped_hertz_impact(s.K, setup.mass_kg, s.impact_velocity_mps);
       csv.add_row({rod.name, h, s.impact_velocity_mps, s.peak_force_N, s.max_deformation_m, s.contact_time_s,
                    s.e_effective, setup.restitution, ref.peak_force_N, ref.max_deformation_m, ref.contact_time_s});

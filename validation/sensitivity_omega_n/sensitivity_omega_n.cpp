@@ -32,6 +32,7 @@
 #include "validation/common/csv_writer.hpp"
 #include "validation/common/latex_macros.hpp"
 #include "validation/common/omega_n_fixed_point.hpp"
+#include "validation/common/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>
@@ -66,10 +67,11 @@ struct Row {
   double contraction;  ///< last observed contraction factor of an iterated variant (0 for closed forms)
   bool ok;         ///< false: the iterated variant found no fixed point (values nan)
   bool separated;  ///< false: the rod came to rest on the ball (e_effective 0, contact time nan)
+  std::string failure;  ///< why an iterated variant found no fixed point (empty if ok)
 };
 
 /// The study's solver: CVODE (Adams, rtol 1e-8, events located), results to ~1e-7 relative.
-ImpactSimulator make_solver() { return ImpactSimulator(SolverSettings{}); }
+const SolverSettings study_solver{};
 
 Row simulate(ImpactSimulator& solver, const PaperParameters& paper, OmegaNVariant variant, ZetaForm zeta,
              const std::string& rod, double e, double h, std::vector<TraceSample>* trace = nullptr) {
@@ -78,14 +80,14 @@ Row simulate(ImpactSimulator& solver, const PaperParameters& paper, OmegaNVarian
   setup.damping.zeta_form = zeta;
   setup.damping.omega_n = variant;
   const double nan = not_a_number;
-  Row row{variant, zeta, rod, e, h, nan, nan, nan, nan, nan, nan, 0, 0.0, false, false};
+  Row row{variant, zeta, rod, e, h, nan, nan, nan, nan, nan, nan, 0, 0.0, false, false, {}};
   const OmegaNFixedPoint r = run_paper_law(solver, setup, {}, trace);
   row.iterations = r.iterations;
   row.contraction = r.contraction;
   row.ok = r.converged;
   if (!r.converged) {
-    std::cerr << fmt::format("  no fixed point for {} zeta={} {} e={} h={}: {}\n", to_string(variant),
-                             to_string(zeta), rod, e, h, r.failure);
+    row.failure = fmt::format("no fixed point for {} zeta={} {} e={} h={}: {}", to_string(variant),
+                              to_string(zeta), rod, e, h, r.failure);
     return row;
   }
   const double K = hertz_stiffness(setup);
@@ -139,7 +141,7 @@ std::string rod_tag(const std::string& rod) { return rod == "steel" ? "Steel" : 
 int main(int argc, char** argv) {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
-  ImpactSimulator sim = make_solver();
+  ImpactSimulator sim(study_solver);
 
   const std::vector<double> e_grid =
       args.reduced ? std::vector<double>{0.1, 0.5, 0.99}
@@ -149,13 +151,34 @@ int main(int argc, char** argv) {
                    : std::vector<double>{0.002, 0.003, 0.005, 0.007, 0.01, 0.015, 0.02, 0.03, 0.05, 0.07, 0.1};
 
   // ---- 1. Every run: the e sweep at h = 20 mm and the h sweep at the Table 2 e. ----
-  std::vector<Row> e_sweep, h_sweep;
+  //      The runs are independent: listed first, then run on all cores.
+  struct Run {
+    OmegaNVariant v;
+    ZetaForm z;
+    std::string rod;
+    double e, h;
+  };
+  std::vector<Run> e_runs, h_runs;
   for (OmegaNVariant v : all_omega_n_variants)
     for (ZetaForm z : zeta_forms)
       for (const std::string& rod : rods) {
-        for (double e : e_grid) e_sweep.push_back(simulate(sim, paper, v, z, rod, e, paper_height_m));
-        for (double h : h_grid) h_sweep.push_back(simulate(sim, paper, v, z, rod, paper.rod(rod).restitution, h));
+        for (double e : e_grid) e_runs.push_back({v, z, rod, e, paper_height_m});
+        for (double h : h_grid) h_runs.push_back({v, z, rod, paper.rod(rod).restitution, h});
       }
+  auto run_all = [&](const std::vector<Run>& runs, const std::string& label) {
+    std::vector<Row> rows(runs.size());
+    parallel_sweep(
+        runs.size(), study_solver,
+        [&](ImpactSimulator& solver, std::size_t i) {
+          const Run& r = runs[i];
+          rows[i] = simulate(solver, paper, r.v, r.z, r.rod, r.e, r.h);
+        },
+        {.label = label});
+    for (const Row& row : rows)
+      if (!row.failure.empty()) std::cerr << "  " << row.failure << "\n";
+    return rows;
+  };
+  const std::vector<Row> e_sweep = run_all(e_runs, "omega_n e sweep"), h_sweep = run_all(h_runs, "omega_n h sweep");
 
   const Parameters params{{"rods", "steel, duralumin-c (Tables 1-3, data/assumptions.csv)"},
                           {"solver", "cvode adams rtol 1e-8 atol 1e-12, events located"},
