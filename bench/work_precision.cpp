@@ -210,6 +210,8 @@ int run_work_precision(const WorkPrecisionConfig& c) {
   const std::vector<double> rk4_steps{1e-5, 3e-6, 1e-6, 3e-7};
 
   const std::vector<SolverSpec> solvers{
+      {"hertzdash-dopri5-regularized", false, true,
+       [](double t) { return make_hertzdash_solver(IntegratorKind::dopri5_regularized, t); }},
       {"hertzdash-dopri5", false, true, [](double t) { return make_hertzdash_solver(IntegratorKind::dopri5, t); }},
       {"hertzdash-cvode", false, true, [](double t) { return make_hertzdash_solver(IntegratorKind::cvode, t); }},
       {"hertzdash-rk4", false, false, [](double t) { return make_hertzdash_solver(IntegratorKind::rk4, t); }},

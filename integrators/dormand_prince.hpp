@@ -36,6 +36,8 @@
 // step of half the remaining distance or less goes first. With these the global error
 // is proportional to the tolerance (local extrapolation: local error O(tol^{6/5}) per
 // step times O(tol^{-1/5}) steps), where without them it was tens of times larger.
+// A system that is smooth at its restarts and events (options.singular_points =
+// false) needs none of (i)-(iii), and every step is then an ordinary one.
 //
 // Events: after each accepted step, a g_i that went from > 0 to <= 0 is located on
 // the dense output (Illinois regula falsi on theta -> g_i(t + theta h, y(theta)):
@@ -64,6 +66,12 @@ struct DormandPrinceOptions {
   double atol = 1e-12;       ///< absolute tolerance (state units), > 0
   double max_step = 0.0;     ///< largest step [s]; 0 means no limit
   long max_steps = 1000000;  ///< accepted plus rejected steps before giving up
+  /// The right-hand side may be singular where an event restarts it or lands a step
+  /// (a sqrt(t - t_on) force): check those steps by step doubling (see "Singular
+  /// points"). false for a system smooth there (e.g. the contact in regularising
+  /// variables, model/regularized_contact.hpp): every step is then controlled by
+  /// the embedded estimate alone.
+  bool singular_points = true;
 };
 
 namespace detail {
@@ -94,22 +102,26 @@ struct DormandPrinceStep {
 };
 
 /// One step of size h from (t, y) with k1 = f(t, y) given: fills k2..k7 and y1 (6 evaluations).
+/// Each stage point is summed as y + (h a_j1) k1 + ... + (h a_j,j-1) k_j-1, left to
+/// right, so the stage just computed enters with one product and one sum: the
+/// stages form a chain of dependent evaluations, and this keeps it short.
 template <OdeSystem S>
 void dormand_prince_step(const S& sys, double t, const typename S::State& y, double h,
                          DormandPrinceStep<typename S::State>& w) {
   using T = DormandPrinceTableau;
   typename S::State z;
-  z = y + h * (T::a21 * w.k1);
+  z = y + (h * T::a21) * w.k1;
   sys.rhs(t + T::c2 * h, z, w.k2);
-  z = y + h * (T::a31 * w.k1 + T::a32 * w.k2);
+  z = y + (h * T::a31) * w.k1 + (h * T::a32) * w.k2;
   sys.rhs(t + T::c3 * h, z, w.k3);
-  z = y + h * (T::a41 * w.k1 + T::a42 * w.k2 + T::a43 * w.k3);
+  z = y + (h * T::a41) * w.k1 + (h * T::a42) * w.k2 + (h * T::a43) * w.k3;
   sys.rhs(t + T::c4 * h, z, w.k4);
-  z = y + h * (T::a51 * w.k1 + T::a52 * w.k2 + T::a53 * w.k3 + T::a54 * w.k4);
+  z = y + (h * T::a51) * w.k1 + (h * T::a52) * w.k2 + (h * T::a53) * w.k3 + (h * T::a54) * w.k4;
   sys.rhs(t + T::c5 * h, z, w.k5);
-  z = y + h * (T::a61 * w.k1 + T::a62 * w.k2 + T::a63 * w.k3 + T::a64 * w.k4 + T::a65 * w.k5);
+  z = y + (h * T::a61) * w.k1 + (h * T::a62) * w.k2 + (h * T::a63) * w.k3 + (h * T::a64) * w.k4 +
+      (h * T::a65) * w.k5;
   sys.rhs(t + h, z, w.k6);
-  w.y1 = y + h * (T::b1 * w.k1 + T::b3 * w.k3 + T::b4 * w.k4 + T::b5 * w.k5 + T::b6 * w.k6);
+  w.y1 = y + (h * T::b1) * w.k1 + (h * T::b3) * w.k3 + (h * T::b4) * w.k4 + (h * T::b5) * w.k5 + (h * T::b6) * w.k6;
   sys.rhs(t + h, w.y1, w.k7);
 }
 
@@ -189,8 +201,8 @@ class DormandPrinceRun {
       // error by a factor 37 when t = t_restart, 5 when h = 4 (t - t_restart), and
       // 1.1 when h = t - t_restart. So the first step after a restart is checked by step
       // doubling, and the following ones are no longer than the time since the restart.
-      const bool near_restart = t_ == t_restart_;
-      if (!near_restart) h = std::min(h, t_ - t_restart_);
+      const bool near_restart = opt_.singular_points && t_ == t_restart_;
+      if (opt_.singular_points && !near_restart) h = std::min(h, t_ - t_restart_);
       const double err = near_restart ? doubling_error(h) : embedded_error(h);
       if (!(err <= 1.0)) {
         if (!std::isfinite(err)) throw std::runtime_error("integrate_dormand_prince: non-finite error estimate");
@@ -332,6 +344,16 @@ class DormandPrinceRun {
   /// doubling; while the check fails, an ordinary step of half the distance or less
   /// (checked by its embedded estimate, reliable that far from t_star) goes first.
   void land(double t_star, bool to_end) {
+    if (!opt_.singular_points) {
+      // Smooth at t_star: one ordinary step, shortened while its estimate fails.
+      for (;;) {
+        const double d = t_star - t_;
+        if (d <= 0) return;
+        double h = d;
+        for (int k = 0; k < 60 && !(embedded_error(h) <= 1.0); ++k) h *= 0.5;
+        advance(w_, h == d ? (to_end ? t_end_ : t_star) : t_ + h);
+      }
+    }
     for (int tries = 0;; ++tries) {
       const double d = t_star - t_;
       if (d <= 0) return;

@@ -12,6 +12,7 @@ const char* to_string(IntegratorKind k) {
     case IntegratorKind::rk4: return "rk4";
     case IntegratorKind::cvode: return "cvode";
     case IntegratorKind::dopri5: return "dopri5";
+    case IntegratorKind::dopri5_regularized: return "dopri5-regularized";
   }
   return "?";
 }
@@ -21,10 +22,14 @@ void validate(const SolverSettings& s) {
     require_positive("--rtol", s.cvode.rtol, "-");
     require_positive("--atol", s.cvode.atol, "m, m/s");
     require_non_negative("--max-step", s.cvode.max_step, "s");
-  } else if (s.integrator == IntegratorKind::dopri5) {
+  } else if (s.integrator == IntegratorKind::dopri5 || s.integrator == IntegratorKind::dopri5_regularized) {
     require_positive("--rtol", s.dopri5.rtol, "-");
     require_positive("--atol", s.dopri5.atol, "m, m/s");
     require_non_negative("--max-step", s.dopri5.max_step, "s");
+    // The regularised contact steps in tau (dt = 2 x^{1/2} dtau), not in time.
+    if (s.integrator == IntegratorKind::dopri5_regularized && s.dopri5.max_step != 0)
+      throw InvalidParameter("--max-step", fmt::format("{}", s.dopri5.max_step),
+                             "0 (no limit) with dopri5-regularized, whose steps are in tau, not in time");
   } else {
     require_positive("--dt", s.fixed_step.dt, "s");
   }
@@ -65,7 +70,7 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
     p.emplace_back("rtol", num(solver.cvode.rtol));
     p.emplace_back("atol", num(solver.cvode.atol));
     if (solver.cvode.max_step > 0) p.emplace_back("max_step_s", num(solver.cvode.max_step));
-  } else if (solver.integrator == IntegratorKind::dopri5) {
+  } else if (solver.integrator == IntegratorKind::dopri5 || solver.integrator == IntegratorKind::dopri5_regularized) {
     p.emplace_back("rtol", num(solver.dopri5.rtol));
     p.emplace_back("atol", num(solver.dopri5.atol));
     if (solver.dopri5.max_step > 0) p.emplace_back("max_step_s", num(solver.dopri5.max_step));
