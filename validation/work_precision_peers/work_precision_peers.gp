@@ -35,10 +35,10 @@ do for [kind in 'pdf png'] {
   set output out.'/work_precision_peers.'.kind
   set multiplot layout 2,2
 
-  set key bottom left
+  set key bottom right
   set xlabel 'wall time per impact [{/Symbol m}s]'
   set ylabel '|e_{eff} - e_{ref}|'
-  set xrange [*:*]
+  set xrange [1:1e4]  # room on the right for the key, below and right of every curve
   set title '(a) contact phase, steel, h = 20 mm'
   plot for [i in '1 2 3 4 5 6 8'] contact using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i title word(solvers, i+0)
