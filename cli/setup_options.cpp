@@ -60,7 +60,7 @@ DropTestSetup SetupOptions::resolve(const PaperParameters& paper) const {
 }
 
 void SolverOptions::add_to(CLI::App& app) {
-  app.add_option("--integrator", integrator_, "euler, rk4, cvode, dopri5 or dopri5-regularized")->capture_default_str();
+  app.add_option("--integrator", integrator_, "euler, rk4, cvode, dopri5, dopri5-regularized or cvode-regularized")->capture_default_str();
   app.add_option("--dt", dt_s_, "Fixed step [s] for euler and rk4")->capture_default_str();
   app.add_flag("--no-event-location", no_event_location_,
                "euler/rk4: handle events at the end of the step that crosses them (convergence studies)");
@@ -73,10 +73,11 @@ void SolverOptions::add_to(CLI::App& app) {
 SolverSettings SolverOptions::resolve() const {
   static const std::map<std::string, IntegratorKind> kinds{
       {"euler", IntegratorKind::euler}, {"rk4", IntegratorKind::rk4}, {"cvode", IntegratorKind::cvode},
-      {"dopri5", IntegratorKind::dopri5}, {"dopri5-regularized", IntegratorKind::dopri5_regularized}};
+      {"dopri5", IntegratorKind::dopri5}, {"dopri5-regularized", IntegratorKind::dopri5_regularized},
+      {"cvode-regularized", IntegratorKind::cvode_regularized}};
   SolverSettings s;
   const auto k = kinds.find(integrator_);
-  if (k == kinds.end()) throw InvalidParameter("--integrator", integrator_, "one of: euler, rk4, cvode, dopri5, dopri5-regularized");
+  if (k == kinds.end()) throw InvalidParameter("--integrator", integrator_, "one of: euler, rk4, cvode, dopri5, dopri5-regularized, cvode-regularized");
   s.integrator = k->second;
   s.fixed_step.dt = dt_s_;
   s.fixed_step.locate_events = !no_event_location_;

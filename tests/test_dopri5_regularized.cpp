@@ -72,42 +72,6 @@ TEST_CASE("dopri5-regularized: undamped Hertz drop, onset in closed form and e_e
   }
 }
 
-TEST_CASE("dopri5-regularized: undamped Hertz contact against the closed forms, error proportional to tolerance",
-          "[dopri5][regularized]") {
-  // No gravity, contact from onset at v0: X = (5 m v0^2/4K)^{2/5}, F = K X^{3/2},
-  // t_c = (4/5) B(2/5, 1/2) X / v0 and e = 1 exactly (model/hertz.hpp). X and F are
-  // read at the steps landed on v = 0 and dF/dtau = 0, t_c at the separation landed
-  // on. In regularising variables the contact is polynomial (K u^3), so the embedded
-  // estimate is reliable everywhere, and with local extrapolation the global error is
-  // proportional to the tolerance (local error tol^{6/5} per step, tol^{-1/5} steps):
-  // each within 10 tol, and the largest of the four with exponent 1 +- 0.3 over four
-  // decades (the run at 1e-6 has about thirty steps, still short of the asymptote:
-  // about 1.1 is measured).
-  DropTestSetup setup = steel_drop();
-  setup.gravity_mps2 = 0.0;
-  setup.impact_velocity_mps = 0.626;
-  const UndampedHertzImpact exact = undamped_hertz_impact(hertz_stiffness(setup), setup.mass_kg, 0.626);
-  std::printf("dopri5-regularized undamped Hertz: tol, |e-1|, rel err X, rel err F, rel err t_c, rhs evaluations\n");
-  std::vector<double> tols{1e-6, 1e-8, 1e-10}, errors;
-  for (double tol : tols) {
-    ImpactSimulator sim(dopri5(IntegratorKind::dopri5_regularized, tol));
-    const ImpactSummary s = sim.run<Undamped>(setup);
-    REQUIRE(s.separated);
-    const double ee = std::abs(s.e_effective - 1), ex = std::abs(s.max_deformation_m / exact.max_deformation_m - 1),
-                 ef = std::abs(s.peak_force_N / exact.peak_force_N - 1),
-                 et = std::abs(s.contact_time_s / exact.contact_time_s - 1);
-    std::printf("  %.0e  %.3e  %.3e  %.3e  %.3e  %ld\n", tol, ee, ex, ef, et, s.work.rhs_evaluations);
-    CHECK(ee <= 10 * tol);
-    CHECK(ex <= 10 * tol);
-    CHECK(ef <= 10 * tol);
-    CHECK(et <= 10 * tol);
-    errors.push_back(std::max({ee, ex, ef, et}));
-  }
-  const double k = std::log10(errors.front() / errors.back()) / std::log10(tols.front() / tols.back());
-  std::printf("  observed exponent of error against tolerance: %.3f\n", k);
-  CHECK(k == Approx(1.0).margin(0.3));
-}
-
 TEST_CASE("dopri5-regularized: the paper's law and DEM agree with dopri5 in the physical variables",
           "[dopri5][regularized]") {
   // Two integrations of the same drop in different variables (and, for the fall,
@@ -161,4 +125,39 @@ TEST_CASE("RootPolynomialLaw: force_of_root(u, v) equals force(u^2, v) for every
   });
   // Hertz, the paper's law, Kelvin-Voigt and the Hunt-Crossley family declare it.
   CHECK(declared >= 4);
+}
+
+TEST_CASE("cvode-regularized: undamped Hertz contact against the closed forms, error proportional to tolerance",
+          "[cvode][regularized]") {
+  // The closed forms of the dopri5 case (tests/test_dormand_prince.cpp), no gravity.
+  // In the physical variables CVODE's Adams method restarts at order one on the
+  // x^{3/2} singularity and its error does not follow the tolerance; in u = x^{1/2}
+  // the right-hand side is the polynomial K u^3 and it does. A multistep method under
+  // local error control, without local extrapolation, accumulates its local errors
+  // over its hundred-odd steps: global error C tol with C of order ten (5 to 10 is
+  // measured). Each within 100 tol, and the exponent 1 +- 0.2.
+  DropTestSetup setup = steel_drop();
+  setup.gravity_mps2 = 0.0;
+  setup.impact_velocity_mps = 0.626;
+  const UndampedHertzImpact exact = undamped_hertz_impact(hertz_stiffness(setup), setup.mass_kg, 0.626);
+  std::vector<double> tols{1e-6, 1e-8, 1e-10}, errors;
+  std::printf("cvode-regularized undamped Hertz: tol, |e-1|, rel err X, rel err F, rel err t_c, rhs evaluations\n");
+  for (double tol : tols) {
+    SolverSettings settings;
+    settings.integrator = IntegratorKind::cvode_regularized;
+    settings.cvode.rtol = tol;
+    settings.cvode.atol = tol * 1e-4;
+    ImpactSimulator sim(settings);
+    const ImpactSummary s = sim.run<Undamped>(setup);
+    REQUIRE(s.separated);
+    const double ee = std::abs(s.e_effective - 1), ex = std::abs(s.max_deformation_m / exact.max_deformation_m - 1),
+                 ef = std::abs(s.peak_force_N / exact.peak_force_N - 1),
+                 et = std::abs(s.contact_time_s / exact.contact_time_s - 1);
+    std::printf("  %.0e  %.3e  %.3e  %.3e  %.3e  %ld\n", tol, ee, ex, ef, et, s.work.rhs_evaluations);
+    errors.push_back(std::max({ee, ex, ef, et}));
+    CHECK(errors.back() <= 100 * tol);
+  }
+  const double k = std::log10(errors.front() / errors.back()) / std::log10(tols.front() / tols.back());
+  std::printf("  observed exponent of error against tolerance: %.3f\n", k);
+  CHECK(k == Approx(1.0).margin(0.2));
 }

@@ -13,15 +13,20 @@ const char* to_string(IntegratorKind k) {
     case IntegratorKind::cvode: return "cvode";
     case IntegratorKind::dopri5: return "dopri5";
     case IntegratorKind::dopri5_regularized: return "dopri5-regularized";
+    case IntegratorKind::cvode_regularized: return "cvode-regularized";
   }
   return "?";
 }
 
 void validate(const SolverSettings& s) {
-  if (s.integrator == IntegratorKind::cvode) {
+  if (s.integrator == IntegratorKind::cvode || s.integrator == IntegratorKind::cvode_regularized) {
     require_positive("--rtol", s.cvode.rtol, "-");
     require_positive("--atol", s.cvode.atol, "m, m/s");
     require_non_negative("--max-step", s.cvode.max_step, "s");
+    // The regularised contact steps in tau (dt = 2 x^{1/2} dtau), not in time.
+    if (s.integrator == IntegratorKind::cvode_regularized && s.cvode.max_step != 0)
+      throw InvalidParameter("--max-step", fmt::format("{}", s.cvode.max_step),
+                             "0 (no limit) with cvode-regularized, whose steps are in tau, not in time");
   } else if (s.integrator == IntegratorKind::dopri5 || s.integrator == IntegratorKind::dopri5_regularized) {
     require_positive("--rtol", s.dopri5.rtol, "-");
     require_positive("--atol", s.dopri5.atol, "m, m/s");
@@ -65,7 +70,7 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
   p.emplace_back("gravity_mps2", num(setup.gravity_mps2));
   p.emplace_back("no_tension", setup.no_tension ? "true" : "false");
   p.emplace_back("integrator", to_string(solver.integrator));
-  if (solver.integrator == IntegratorKind::cvode) {
+  if (solver.integrator == IntegratorKind::cvode || solver.integrator == IntegratorKind::cvode_regularized) {
     p.emplace_back("cvode_method", to_string(solver.cvode.method));
     p.emplace_back("rtol", num(solver.cvode.rtol));
     p.emplace_back("atol", num(solver.cvode.atol));

@@ -22,16 +22,22 @@
 
 namespace hertzdash {
 
-/// dopri5_regularized ("dopri5-regularized"): the fall in closed form and the contact
-/// in regularising variables with dopri5 (validation/common/regularized_impact.hpp);
-/// the fastest path. With the tension clamp it runs dopri5 in the physical variables.
-enum class IntegratorKind { euler, rk4, cvode, dopri5, dopri5_regularized };
+/// dopri5_regularized ("dopri5-regularized"), cvode_regularized ("cvode-regularized"):
+/// the fall in closed form and the contact in regularising variables
+/// (validation/common/regularized_impact.hpp) with dopri5 (the fastest path) or CVODE.
+/// With the tension clamp they run dopri5 or CVODE in the physical variables.
+enum class IntegratorKind { euler, rk4, cvode, dopri5, dopri5_regularized, cvode_regularized };
+
+/// True for the kinds that integrate the contact in regularising variables.
+inline bool is_regularized(IntegratorKind k) {
+  return k == IntegratorKind::dopri5_regularized || k == IntegratorKind::cvode_regularized;
+}
 const char* to_string(IntegratorKind k);
 
 struct SolverSettings {
   IntegratorKind integrator = IntegratorKind::cvode;
   FixedStepOptions fixed_step;  ///< euler, rk4
-  CvodeOptions cvode;           ///< cvode
+  CvodeOptions cvode;           ///< cvode and cvode_regularized
   DormandPrinceOptions dopri5;  ///< dopri5 and dopri5_regularized (adaptive Dormand-Prince 5(4), events landed on)
 };
 
@@ -77,6 +83,7 @@ class ImpactSimulator {
  private:
   SolverSettings settings_;
   std::unique_ptr<CvodeIntegrator> cvode_;
+  std::unique_ptr<CvodeIntegrator> cvode_regularized_;  ///< the regularised contact's size (3 components)
 };
 
 /// The inputs of a run as name = value pairs (units in the names), for headers and JSON.
@@ -130,9 +137,21 @@ class ImpactObserver {
 
 template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
-  if (settings_.integrator == IntegratorKind::dopri5_regularized && !setup.no_tension) {
+  if (is_regularized(settings_.integrator) && !setup.no_tension) {
     ImpactSummary s;
-    run_regularized_impact<Law>(setup, settings_.dopri5, s, trace);
+    if (settings_.integrator == IntegratorKind::dopri5_regularized) {
+      const DormandPrinceOptions opt = dopri5_options_for<Law>(settings_.dopri5);
+      run_regularized_impact<Law>(
+          setup, [&](auto& sys, auto& y, double t0, double t1, auto& obs) { return integrate_dormand_prince(sys, y, t0, t1, opt, obs); },
+          s, trace);
+    } else {
+      using Contact = detail::ContactUntil<Law>;
+      if (!cvode_regularized_)
+        cvode_regularized_ = std::make_unique<CvodeIntegrator>(Contact::dimension, Contact::event_count, settings_.cvode);
+      run_regularized_impact<Law>(
+          setup, [&](auto& sys, auto& y, double t0, double t1, auto& obs) { return cvode_regularized_->integrate(sys, y, t0, t1, obs); },
+          s, trace);
+    }
     return s;
   }
   const DropTestModel model(setup);
@@ -156,6 +175,7 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<Trace
       s.work = integrate_fixed_step<ClassicalRk4>(sys, y, 0.0, t_end, settings_.fixed_step, observer);
       break;
     case IntegratorKind::cvode:
+    case IntegratorKind::cvode_regularized:  // with the tension clamp (see above)
       if (!cvode_) cvode_ = std::make_unique<CvodeIntegrator>(DropTest<Law>::dimension, DropTest<Law>::event_count, settings_.cvode);
       s.work = cvode_->integrate(sys, y, 0.0, t_end, observer);
       break;

@@ -1,6 +1,7 @@
 #pragma once
 // One drop test the fast way: the free fall in closed form, then the contact in
-// regularising variables (model/regularized_contact.hpp) with Dormand-Prince 5(4).
+// regularising variables (model/regularized_contact.hpp) with an adaptive integrator
+// (Dormand-Prince 5(4) for dopri5-regularized, CVODE for cvode-regularized).
 //
 // Why: in the physical variables the contact force grows like sqrt(t - t_on) after
 // onset and (damped laws) vanishes like sqrt(t_s - t) before separation, so an
@@ -9,8 +10,9 @@
 // variables u = x^{1/2}, dt/dtau = 2u the contact is smooth through onset and
 // separation for every law of the form x^{1/2} * (polynomial in x, x') that declares
 // it (RootPolynomialLaw), so the embedded estimate is reliable everywhere and the
-// steps stay long (options.singular_points = false; for other laws the
-// singular-point checks of dopri5 stay on). The fall needs no integration at all: from
+// steps stay long (dopri5_options_for: singular_points = false; for other laws the
+// singular-point checks of dopri5 stay on), and CVODE's error follows its tolerance
+// where in the physical variables it does not. The fall needs no integration at all: from
 // rest at x = -h under gravity g, contact begins at t_on = v0/g with v0 = sqrt(2 g h)
 // (approach_speed), exactly.
 //
@@ -22,6 +24,8 @@
 // Not for the tension clamp (no_tension: contact ends where F reaches zero, an event
 // this system does not have); ImpactSimulator uses the physical variables there.
 // Tolerances: rtol as given; atol applies to u [m^{1/2}], v [m/s] and t [s] alike.
+// The integrator is a callable integrate(system, y, tau0, tau1, observer) ->
+// IntegrationStats over the system ContactUntil<Law> below.
 #include "integrators/dormand_prince.hpp"
 #include "model/drop_test.hpp"
 #include "model/drop_test_setup.hpp"
@@ -82,11 +86,19 @@ class RegularizedImpactObserver {
 
 }  // namespace detail
 
+/// dopri5's options for the regularised contact of `Law`: no singular-point checks
+/// if the law declares its force polynomial in u (RootPolynomialLaw).
+template <DampingLaw Law>
+DormandPrinceOptions dopri5_options_for(DormandPrinceOptions options) {
+  options.singular_points = !RootPolynomialLaw<Law>;
+  return options;
+}
+
 /// The impact of a validated set-up without the tension clamp (see above): fills the
 /// fields of `s` an ImpactSimulator run fills. Summary = ImpactSummary, Sample =
 /// TraceSample (templates only to keep this header below impact_simulator.hpp).
-template <DampingLaw Law, class Summary, class Sample>
-void run_regularized_impact(const DropTestSetup& setup, const DormandPrinceOptions& options, Summary& s,
+template <DampingLaw Law, class Summary, class Sample, class Integrate>
+void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, Summary& s,
                             std::vector<Sample>* trace) {
   const double K = hertz_stiffness(setup);
   const double v0 = approach_speed(setup);  // [m/s], exact for the fall from rest
@@ -105,11 +117,7 @@ void run_regularized_impact(const DropTestSetup& setup, const DormandPrinceOptio
   // only has to lie beyond them: 1e7 tau scales T/(2 X*^{1/2}), T = X*/v0.
   const double X = std::pow(setup.mass_kg * v0 * v0 / K, 0.4);
   const double tau_end = 1e7 * (X / v0) / (2.0 * std::sqrt(X));
-  // Smooth through onset and separation only for a law that declares the form (e.g.
-  // DEM's x^{1/4} dashpot is u^{1/2} in u): else the singular-point checks stay on.
-  DormandPrinceOptions opt = options;
-  opt.singular_points = !RootPolynomialLaw<Law>;
-  s.work = integrate_dormand_prince(sys, y, 0.0, tau_end, opt, observer);
+  s.work = integrate(sys, y, 0.0, tau_end, observer);
   if (s.separated) {
     s.contact_time_s = s.t_separation_s - s.t_onset_s;
     s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;

@@ -37,7 +37,8 @@ inline long min_steps_per_contact(IntegratorKind integrator, bool locate_events)
     case IntegratorKind::rk4: return locate_events ? min_steps_per_contact_rk4_located : min_steps_per_contact_rk4_unlocated;
     case IntegratorKind::cvode:
     case IntegratorKind::dopri5:
-    case IntegratorKind::dopri5_regularized: return 0;
+    case IntegratorKind::dopri5_regularized:
+    case IntegratorKind::cvode_regularized: return 0;
   }
   return 0;
 }
