@@ -108,16 +108,20 @@ TEST_CASE("dopri5: undamped Hertz impact against the closed forms, error proport
   // error stays proportional to the tolerance: within 10 tol, exponent 1 +- 0.2.
   // dopri5-regularized integrates the contact in u = x^{1/2}, where the right-hand side
   // is the polynomial K u^3 (model/regularized_contact.hpp): there the embedded
-  // estimate is reliable everywhere, with the same bounds and no checks.
+  // estimate is reliable everywhere, with the same bounds and no checks; and so is the
+  // order-8 extrapolation method there (gbs8-regularized).
   const DropTestSetup setup = steel_contact_setup(0.0);
   const UndampedHertzImpact exact = undamped_hertz_impact(hertz_stiffness(setup), setup.mass_kg,
                                                           *setup.impact_velocity_mps);
-  const IntegratorKind kind = GENERATE(IntegratorKind::dopri5, IntegratorKind::dopri5_regularized);
+  const IntegratorKind kind =
+      GENERATE(IntegratorKind::dopri5, IntegratorKind::dopri5_regularized, IntegratorKind::gbs8_regularized);
   std::vector<double> tols{1e-6, 1e-8, 1e-10}, errors;
   std::printf("%s undamped Hertz: tol, |e-1|, rel err X, rel err F, rel err t_c, rhs evaluations\n", to_string(kind));
   for (double tol : tols) {
     SolverSettings settings = dopri5(tol);
     settings.integrator = kind;
+    settings.gbs8.rtol = settings.dopri5.rtol;
+    settings.gbs8.atol = settings.dopri5.atol;
     ImpactSimulator sim(settings);
     const ImpactSummary s = sim.run<Undamped>(setup);
     REQUIRE(s.separated);

@@ -14,6 +14,7 @@ const char* to_string(IntegratorKind k) {
     case IntegratorKind::dopri5: return "dopri5";
     case IntegratorKind::dopri5_regularized: return "dopri5-regularized";
     case IntegratorKind::cvode_regularized: return "cvode-regularized";
+    case IntegratorKind::gbs8_regularized: return "gbs8-regularized";
   }
   return "?";
 }
@@ -35,6 +36,12 @@ void validate(const SolverSettings& s) {
     if (s.integrator == IntegratorKind::dopri5_regularized && s.dopri5.max_step != 0)
       throw InvalidParameter("--max-step", fmt::format("{}", s.dopri5.max_step),
                              "0 (no limit) with dopri5-regularized, whose steps are in tau, not in time");
+  } else if (s.integrator == IntegratorKind::gbs8_regularized) {
+    require_positive("--rtol", s.gbs8.rtol, "-");
+    require_positive("--atol", s.gbs8.atol, "m, m/s");
+    if (s.gbs8.max_step != 0)
+      throw InvalidParameter("--max-step", fmt::format("{}", s.gbs8.max_step),
+                             "0 (no limit) with gbs8-regularized, whose steps are in tau, not in time");
   } else {
     require_positive("--dt", s.fixed_step.dt, "s");
   }
@@ -79,6 +86,9 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
     p.emplace_back("rtol", num(solver.dopri5.rtol));
     p.emplace_back("atol", num(solver.dopri5.atol));
     if (solver.dopri5.max_step > 0) p.emplace_back("max_step_s", num(solver.dopri5.max_step));
+  } else if (solver.integrator == IntegratorKind::gbs8_regularized) {
+    p.emplace_back("rtol", num(solver.gbs8.rtol));
+    p.emplace_back("atol", num(solver.gbs8.atol));
   } else {
     p.emplace_back("dt_s", num(solver.fixed_step.dt));
     p.emplace_back("locate_events", solver.fixed_step.locate_events ? "true" : "false");

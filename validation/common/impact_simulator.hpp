@@ -5,6 +5,7 @@
 #include "integrators/cvode_integrator.hpp"
 #include "integrators/dormand_prince.hpp"
 #include "integrators/explicit_euler.hpp"
+#include "integrators/extrapolation.hpp"
 #include "integrators/fixed_step.hpp"
 #include "integrators/rk4.hpp"
 #include "model/damping/registry.hpp"
@@ -22,15 +23,19 @@
 
 namespace hertzdash {
 
-/// dopri5_regularized ("dopri5-regularized"), cvode_regularized ("cvode-regularized"):
-/// the fall in closed form and the contact in regularising variables
-/// (validation/common/regularized_impact.hpp) with dopri5 (the fastest path) or CVODE.
-/// With the tension clamp they run dopri5 or CVODE in the physical variables.
-enum class IntegratorKind { euler, rk4, cvode, dopri5, dopri5_regularized, cvode_regularized };
+/// dopri5_regularized ("dopri5-regularized"), cvode_regularized ("cvode-regularized"),
+/// gbs8_regularized ("gbs8-regularized"): the fall in closed form and the contact in
+/// regularising variables (validation/common/regularized_impact.hpp) with dopri5, CVODE
+/// or the order-8 extrapolation method (integrators/extrapolation.hpp; the fastest
+/// path). With the tension clamp they run dopri5 (for gbs8: with its tolerances) or
+/// CVODE in the physical variables; gbs8 needs a smooth contact, so for a law that does
+/// not declare RootPolynomialLaw it runs dopri5-regularized with its checks on.
+enum class IntegratorKind { euler, rk4, cvode, dopri5, dopri5_regularized, cvode_regularized, gbs8_regularized };
 
 /// True for the kinds that integrate the contact in regularising variables.
 inline bool is_regularized(IntegratorKind k) {
-  return k == IntegratorKind::dopri5_regularized || k == IntegratorKind::cvode_regularized;
+  return k == IntegratorKind::dopri5_regularized || k == IntegratorKind::cvode_regularized ||
+         k == IntegratorKind::gbs8_regularized;
 }
 const char* to_string(IntegratorKind k);
 
@@ -39,6 +44,15 @@ struct SolverSettings {
   FixedStepOptions fixed_step;  ///< euler, rk4
   CvodeOptions cvode;           ///< cvode and cvode_regularized
   DormandPrinceOptions dopri5;  ///< dopri5 and dopri5_regularized (adaptive Dormand-Prince 5(4), events landed on)
+  ExtrapolationOptions gbs8;    ///< gbs8_regularized (Gragg-Bulirsch-Stoer order 8, events landed on)
+
+  /// dopri5's options with gbs8's tolerances, for gbs8_regularized's fall-backs.
+  DormandPrinceOptions dopri5_with_gbs8_tolerances() const {
+    DormandPrinceOptions o;
+    o.rtol = gbs8.rtol;
+    o.atol = gbs8.atol;
+    return o;
+  }
 };
 
 /// Throws InvalidParameter for a non-positive step or tolerance.
@@ -139,8 +153,13 @@ template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
   if (is_regularized(settings_.integrator) && !setup.no_tension) {
     ImpactSummary s;
-    if (settings_.integrator == IntegratorKind::dopri5_regularized) {
-      const DormandPrinceOptions opt = dopri5_options_for<Law>(settings_.dopri5);
+    if (settings_.integrator == IntegratorKind::gbs8_regularized && RootPolynomialLaw<Law>) {
+      run_regularized_impact<Law>(
+          setup, [&](auto& sys, auto& y, double t0, double t1, auto& obs) { return integrate_extrapolation(sys, y, t0, t1, settings_.gbs8, obs); },
+          s, trace);
+    } else if (settings_.integrator != IntegratorKind::cvode_regularized) {
+      const DormandPrinceOptions opt = dopri5_options_for<Law>(
+          settings_.integrator == IntegratorKind::gbs8_regularized ? settings_.dopri5_with_gbs8_tolerances() : settings_.dopri5);
       run_regularized_impact<Law>(
           setup, [&](auto& sys, auto& y, double t0, double t1, auto& obs) { return integrate_dormand_prince(sys, y, t0, t1, opt, obs); },
           s, trace);
@@ -182,6 +201,9 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<Trace
     case IntegratorKind::dopri5:
     case IntegratorKind::dopri5_regularized:  // with the tension clamp (see above)
       s.work = integrate_dormand_prince(sys, y, 0.0, t_end, settings_.dopri5, observer);
+      break;
+    case IntegratorKind::gbs8_regularized:  // with the tension clamp (see above)
+      s.work = integrate_dormand_prince(sys, y, 0.0, t_end, settings_.dopri5_with_gbs8_tolerances(), observer);
       break;
   }
   if (s.separated) {

@@ -38,7 +38,8 @@ inline long min_steps_per_contact(IntegratorKind integrator, bool locate_events)
     case IntegratorKind::cvode:
     case IntegratorKind::dopri5:
     case IntegratorKind::dopri5_regularized:
-    case IntegratorKind::cvode_regularized: return 0;
+    case IntegratorKind::cvode_regularized:
+    case IntegratorKind::gbs8_regularized: return 0;
   }
   return 0;
 }

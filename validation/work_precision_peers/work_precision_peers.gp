@@ -21,8 +21,9 @@ set style line 26 lc rgb '#555555' lw 1.6 dt 2 pt 8 ps 0.55   # cvode-fresh
 set style line 27 lc rgb '#999999' lw 1.0 dt 3                # error = tolerance
 set style line 28 lc rgb '#16a085' lw 2.0 dt 1 pt 11 ps 0.6   # hertzdash-dopri5-regularized
 set style line 29 lc rgb '#d35400' lw 1.6 dt 1 pt 13 ps 0.6   # hertzdash-cvode-regularized
+set style line 30 lc rgb '#000000' lw 2.2 dt 1 pt 15 ps 0.6   # hertzdash-gbs8-regularized
 
-solvers = 'hertzdash-dopri5 hertzdash-cvode hertzdash-rk4 odeint-dopri5 gsl-rk8pd cvode-fresh 27 hertzdash-dopri5-regularized hertzdash-cvode-regularized'
+solvers = 'hertzdash-dopri5 hertzdash-cvode hertzdash-rk4 odeint-dopri5 gsl-rk8pd cvode-fresh 27 hertzdash-dopri5-regularized hertzdash-cvode-regularized hertzdash-gbs8-regularized'
 pick(s, c) = (strcol(1) eq s) ? column(c) : NaN
 
 set logscale xy
@@ -41,21 +42,21 @@ do for [kind in 'pdf png'] {
   set ylabel '|e_{eff} - e_{ref}|'
   set xrange [1:1e4]  # room on the right for the key, below and right of every curve
   set title '(a) contact phase, steel, h = 20 mm'
-  plot for [i in '1 2 3 4 5 6 8 9'] contact using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
+  plot for [i in '10 8 1 2 3 4 5 6 9'] contact using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i title word(solvers, i+0)
   set title '(b) full drop: free fall, contact, separation'
-  plot for [i in '1 2 3 4 5 6 8 9'] drop using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
+  plot for [i in '10 8 1 2 3 4 5 6 9'] drop using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i title word(solvers, i+0)
 
   set xlabel 'tolerance (rtol; atol = 10^{-4} rtol)'
   set xrange [1e-11:1e-3]
   set key top left
   set title '(c) contact phase: error against tolerance'
-  plot for [i in '8 1 9 2 4 5 6'] contact using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
+  plot for [i in '10 8 1 9 2 4 5 6'] contact using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i title word(solvers, i+0), \
        x with lines ls 27 title 'error = tolerance'
   set title '(d) full drop: error against tolerance'
-  plot for [i in '8 1 9 2 4 5 6'] drop using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
+  plot for [i in '10 8 1 9 2 4 5 6'] drop using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i title word(solvers, i+0), \
        x with lines ls 27 title 'error = tolerance'
   unset multiplot
