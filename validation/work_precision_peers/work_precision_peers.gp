@@ -19,8 +19,8 @@ set style line 24 lc rgb '#e67e22' lw 1.6 dt 2 pt 6 ps 0.55   # odeint-dopri5
 set style line 25 lc rgb '#c0392b' lw 1.6 dt 2 pt 4 ps 0.5    # gsl-rk8pd
 set style line 26 lc rgb '#555555' lw 1.6 dt 2 pt 8 ps 0.55   # cvode-fresh
 set style line 27 lc rgb '#999999' lw 1.0 dt 3                # error = tolerance
-set style line 28 lc rgb '#16a085' lw 2.0 dt 1 pt 11 ps 0.6   # hertzdash-dopri5-regularized
-set style line 29 lc rgb '#d35400' lw 1.6 dt 1 pt 13 ps 0.6   # hertzdash-cvode-regularized
+set style line 28 lc rgb '#5dade2' lw 2.0 dt 1 pt 11 ps 0.6   # hertzdash-dopri5-regularized
+set style line 29 lc rgb '#bb8fce' lw 1.6 dt 1 pt 13 ps 0.6   # hertzdash-cvode-regularized
 set style line 30 lc rgb '#000000' lw 2.2 dt 1 pt 15 ps 0.6   # hertzdash-gbs8-regularized
 
 solvers = 'hertzdash-dopri5 hertzdash-cvode hertzdash-rk4 odeint-dopri5 gsl-rk8pd cvode-fresh 27 hertzdash-dopri5-regularized hertzdash-cvode-regularized hertzdash-gbs8-regularized'
@@ -29,7 +29,7 @@ pick(s, c) = (strcol(1) eq s) ? column(c) : NaN
 set logscale xy
 set format x '10^{%T}'
 set format y '10^{%T}'
-set yrange [1e-11:1e-2]
+set yrange [1e-12:1e-2]
 
 do for [kind in 'pdf png'] {
   if (kind eq 'pdf') { set terminal pdfcairo size 7in,5.6in font 'Helvetica,9' enhanced }
