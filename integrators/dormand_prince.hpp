@@ -48,7 +48,7 @@
 // changes inside a step.
 //
 // No allocation: all state is fixed-size (Eigen::Matrix<double, N, 1>) on the stack.
-#include "integrators/fixed_step.hpp"  // detail::illinois_root
+#include "integrators/event_landing.hpp"
 #include "integrators/ode_system.hpp"
 
 #include <algorithm>
@@ -56,7 +56,6 @@
 #include <bit>
 #include <cstdint>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace hertzdash {
@@ -291,51 +290,20 @@ class DormandPrinceRun {
   bool accept(const Step& ws, double h, bool to_end) {
     Events g_end;
     sys_.events(t_ + h, ws.y1, g_end);
-    bool any = false;
-    for (int i = 0; i < S::event_count; ++i) any |= (g_[i] > 0 && g_end[i] <= 0);
-    if (!any) {
+    if (!any_event_crossed(g_, g_end)) {
       advance(ws, to_end ? t_end_ : t_ + h);
       g_ = g_end;
       return false;
     }
-    // Locate every crossing on the dense output (no evaluations); land on the earliest.
+    // Locate every crossing on the dense output (no evaluations); land on the earliest
+    // and fire the events there.
     dense_.build(y_, h, ws);
-    const double theta_tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t_), h) / h;
-    std::array<double, S::event_count> theta;
-    double theta_event = 1.0;
-    for (int i = 0; i < S::event_count; ++i) {
-      theta[i] = 2.0;  // no crossing
-      if (!(g_[i] > 0 && g_end[i] <= 0)) continue;
-      auto phi = [&](double th) {
-        Events gt;
-        sys_.events(t_ + th * h, dense_.at(th), gt);
-        return gt[i];
-      };
-      theta[i] = illinois_root(phi, 0.0, g_[i], 1.0, g_end[i], theta_tol);
-      theta_event = std::min(theta_event, theta[i]);
-    }
+    const auto crossings = locate_event_crossings(sys_, t_, h, g_, g_end, dense_);
     const Events g_start = g_;
     const double t_start = t_;
-    land(t_ + theta_event * h, to_end && theta_event == 1.0);
-    // Fire, in index order, the events located at the landing point and any other
-    // that has already crossed there.
-    sys_.events(t_, y_, g_);
-    bool restart_needed = false;
-    for (int i = 0; i < S::event_count; ++i) {
-      const bool located_here = t_start + theta[i] * h <= t_ + theta_tol * h;
-      if (!(g_start[i] > 0 && (located_here || g_[i] <= 0))) continue;
-      const EventAction action = sys_.handle_event(i, t_, y_);
-      ++stats_.events;
-      observer_.on_event(i, t_, y_, action);
-      if (action == EventAction::stop) {
-        stats_.t_final = t_;
-        stats_.stopped_by_event = true;
-        return true;
-      }
-      restart_needed |= action == EventAction::restart;
-      g_[i] = std::min(g_[i], 0.0);  // fired: it must rise above zero before it can fire again
-    }
-    if (restart_needed) restart();
+    land(t_ + crossings.earliest * h, to_end && crossings.earliest == 1.0);
+    if (fire_landed_events(sys_, t_, y_, g_, g_start, t_start, h, crossings, stats_, observer_) == EventAction::restart)
+      restart();
     return true;
   }
 

@@ -33,13 +33,12 @@
 //
 // No allocation: all state is fixed-size on the stack.
 #include "integrators/dormand_prince.hpp"  // weighted_rms, the first-step heuristic
-#include "integrators/fixed_step.hpp"      // detail::illinois_root
+#include "integrators/event_landing.hpp"
 #include "integrators/ode_system.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace hertzdash {
@@ -149,32 +148,18 @@ class ExtrapolationRun {
     ++stats_.rhs_evaluations;
     Events g_end;
     sys_.events(t_ + H, y1_, g_end);
-    bool any = false;
-    for (int i = 0; i < S::event_count; ++i) any |= (g_[i] > 0 && g_end[i] <= 0);
-    if (!any) {
+    if (!any_event_crossed(g_, g_end)) {
       advance(to_end ? t_end_ : t_ + H, f1);
       g_ = g_end;
       return;
     }
     const HermiteCubic<State> dense{y_, y1_, H * f_, H * f1};
-    const double theta_tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t_), H) / H;
-    std::array<double, S::event_count> theta;
-    double theta_event = 1.0;
-    for (int i = 0; i < S::event_count; ++i) {
-      theta[i] = 2.0;  // no crossing
-      if (!(g_[i] > 0 && g_end[i] <= 0)) continue;
-      auto phi = [&](double s) {
-        Events gs;
-        sys_.events(t_ + s * H, dense.at(s), gs);
-        return gs[i];
-      };
-      theta[i] = illinois_root(phi, 0.0, g_[i], 1.0, g_end[i], theta_tol);
-      theta_event = std::min(theta_event, theta[i]);
-    }
-    const double t_start = t_, t_star = t_ + theta_event * H;
+    const auto crossings = locate_event_crossings(sys_, t_, H, g_, g_end, dense);
+    const double t_start = t_;
     const Events g_start = g_;
-    land(t_star, to_end && theta_event == 1.0);
-    fire_events(g_start, t_start, H, theta, theta_tol);
+    land(t_ + crossings.earliest * H, to_end && crossings.earliest == 1.0);
+    if (fire_landed_events(sys_, t_, y_, g_, g_start, t_start, H, crossings, stats_, observer_) == EventAction::restart)
+      restart();
   }
 
   /// Reach t_star exactly: steps of at most the remaining distance, error controlled.
@@ -196,29 +181,6 @@ class ExtrapolationRun {
       advance(last ? (to_end ? t_end_ : t_star) : t_ + H, f1);
       if (last) return;
     }
-  }
-
-  /// Handle, in index order, the events located at the landing point and any other
-  /// that has already crossed there; restart if one asks for it.
-  void fire_events(const Events& g_start, double t_start, double H, const std::array<double, S::event_count>& theta,
-                   double theta_tol) {
-    sys_.events(t_, y_, g_);
-    bool restart_needed = false;
-    for (int i = 0; i < S::event_count; ++i) {
-      const bool located_here = t_start + theta[i] * H <= t_ + theta_tol * H;
-      if (!(g_start[i] > 0 && (located_here || g_[i] <= 0))) continue;
-      const EventAction action = sys_.handle_event(i, t_, y_);
-      ++stats_.events;
-      observer_.on_event(i, t_, y_, action);
-      if (action == EventAction::stop) {
-        stats_.t_final = t_;
-        stats_.stopped_by_event = true;
-        return;
-      }
-      restart_needed |= action == EventAction::restart;
-      g_[i] = std::min(g_[i], 0.0);  // fired: it must rise above zero before it fires again
-    }
-    if (restart_needed) restart();
   }
 
   /// (Re)start at (t_, y_): f there and a first step from the Hairer-Norsett-Wanner
