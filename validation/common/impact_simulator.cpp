@@ -20,30 +20,24 @@ const char* to_string(IntegratorKind k) {
 }
 
 void validate(const SolverSettings& s) {
-  if (s.integrator == IntegratorKind::cvode || s.integrator == IntegratorKind::cvode_regularized) {
-    require_positive("--rtol", s.cvode.rtol, "-");
-    require_positive("--atol", s.cvode.atol, "m, m/s");
-    require_non_negative("--max-step", s.cvode.max_step, "s");
-    // The regularised contact steps in tau (dt = 2 x^{1/2} dtau), not in time.
-    if (s.integrator == IntegratorKind::cvode_regularized && s.cvode.max_step != 0)
-      throw InvalidParameter("--max-step", fmt::format("{}", s.cvode.max_step),
-                             "0 (no limit) with cvode-regularized, whose steps are in tau, not in time");
-  } else if (s.integrator == IntegratorKind::dopri5 || s.integrator == IntegratorKind::dopri5_regularized) {
-    require_positive("--rtol", s.dopri5.rtol, "-");
-    require_positive("--atol", s.dopri5.atol, "m, m/s");
-    require_non_negative("--max-step", s.dopri5.max_step, "s");
-    // The regularised contact steps in tau (dt = 2 x^{1/2} dtau), not in time.
-    if (s.integrator == IntegratorKind::dopri5_regularized && s.dopri5.max_step != 0)
-      throw InvalidParameter("--max-step", fmt::format("{}", s.dopri5.max_step),
-                             "0 (no limit) with dopri5-regularized, whose steps are in tau, not in time");
-  } else if (s.integrator == IntegratorKind::gbs8_regularized) {
-    require_positive("--rtol", s.gbs8.rtol, "-");
-    require_positive("--atol", s.gbs8.atol, "m, m/s");
-    if (s.gbs8.max_step != 0)
-      throw InvalidParameter("--max-step", fmt::format("{}", s.gbs8.max_step),
-                             "0 (no limit) with gbs8-regularized, whose steps are in tau, not in time");
-  } else {
-    require_positive("--dt", s.fixed_step.dt, "s");
+  // Tolerances of an adaptive integrator; a regularised path steps in tau
+  // (dt = 2 x^{1/2} dtau), not in time, so it takes no largest step.
+  auto adaptive = [&](double rtol, double atol, double max_step) {
+    require_positive("--rtol", rtol, "-");
+    require_positive("--atol", atol, "m, m/s");
+    require_non_negative("--max-step", max_step, "s");
+    if (is_regularized(s.integrator) && max_step != 0)
+      throw InvalidParameter("--max-step", fmt::format("{}", max_step),
+                             fmt::format("0 (no limit) with {}, whose steps are in tau, not in time", to_string(s.integrator)));
+  };
+  switch (s.integrator) {
+    case IntegratorKind::cvode:
+    case IntegratorKind::cvode_regularized: adaptive(s.cvode.rtol, s.cvode.atol, s.cvode.max_step); break;
+    case IntegratorKind::dopri5:
+    case IntegratorKind::dopri5_regularized: adaptive(s.dopri5.rtol, s.dopri5.atol, s.dopri5.max_step); break;
+    case IntegratorKind::gbs8_regularized: adaptive(s.gbs8.rtol, s.gbs8.atol, s.gbs8.max_step); break;
+    case IntegratorKind::euler:
+    case IntegratorKind::rk4: require_positive("--dt", s.fixed_step.dt, "s"); break;
   }
 }
 
