@@ -60,7 +60,7 @@ DropTestSetup SetupOptions::resolve(const PaperParameters& paper) const {
 }
 
 void SolverOptions::add_to(CLI::App& app) {
-  app.add_option("--integrator", integrator_, "euler, rk4, cvode or dopri5")->capture_default_str();
+  app.add_option("--integrator", integrator_, "euler, rk4, cvode, dopri5, dopri5-regularized, cvode-regularized or gbs8-regularized")->capture_default_str();
   app.add_option("--dt", dt_s_, "Fixed step [s] for euler and rk4")->capture_default_str();
   app.add_flag("--no-event-location", no_event_location_,
                "euler/rk4: handle events at the end of the step that crosses them (convergence studies)");
@@ -73,10 +73,11 @@ void SolverOptions::add_to(CLI::App& app) {
 SolverSettings SolverOptions::resolve() const {
   static const std::map<std::string, IntegratorKind> kinds{
       {"euler", IntegratorKind::euler}, {"rk4", IntegratorKind::rk4}, {"cvode", IntegratorKind::cvode},
-      {"dopri5", IntegratorKind::dopri5}};
+      {"dopri5", IntegratorKind::dopri5}, {"dopri5-regularized", IntegratorKind::dopri5_regularized},
+      {"cvode-regularized", IntegratorKind::cvode_regularized}, {"gbs8-regularized", IntegratorKind::gbs8_regularized}};
   SolverSettings s;
   const auto k = kinds.find(integrator_);
-  if (k == kinds.end()) throw InvalidParameter("--integrator", integrator_, "one of: euler, rk4, cvode, dopri5");
+  if (k == kinds.end()) throw InvalidParameter("--integrator", integrator_, "one of: euler, rk4, cvode, dopri5, dopri5-regularized, cvode-regularized, gbs8-regularized");
   s.integrator = k->second;
   s.fixed_step.dt = dt_s_;
   s.fixed_step.locate_events = !no_event_location_;
@@ -86,6 +87,9 @@ SolverSettings SolverOptions::resolve() const {
   s.dopri5.rtol = rtol_;
   s.dopri5.atol = atol_;
   s.dopri5.max_step = max_step_s_;
+  s.gbs8.rtol = rtol_;
+  s.gbs8.atol = atol_;
+  s.gbs8.max_step = max_step_s_;
   if (cvode_method_ == "adams") s.cvode.method = CvodeMethod::adams;
   else if (cvode_method_ == "bdf") s.cvode.method = CvodeMethod::bdf;
   else throw InvalidParameter("--cvode-method", cvode_method_, "one of: adams, bdf");

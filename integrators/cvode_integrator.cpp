@@ -6,6 +6,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -47,6 +48,7 @@ struct CvodeIntegrator::Impl {
   SUNLinearSolver LS = nullptr;
   SUNNonlinearSolver NLS = nullptr;
   void* mem = nullptr;
+  double stop_time = NAN;  ///< the stop time set since the last restart (NAN: none)
   int dimension = 0;
   int event_count = 0;
   std::vector<int> roots;
@@ -108,11 +110,15 @@ void CvodeIntegrator::restart(double t, const double* y) {
   double* yv = N_VGetArrayPointer(d.y);
   for (int i = 0; i < d.dimension; ++i) yv[i] = y[i];
   check(CVodeReInit(d.mem, t, d.y), "CVodeReInit");
+  d.stop_time = NAN;
 }
 
 int CvodeIntegrator::step(double t_end, double& t, double* y) {
   Impl& d = *impl_;
-  check(CVodeSetStopTime(d.mem, t_end), "CVodeSetStopTime");
+  if (!(d.stop_time == t_end)) {  // once per restart, not every step
+    check(CVodeSetStopTime(d.mem, t_end), "CVodeSetStopTime");
+    d.stop_time = t_end;
+  }
   realtype t_reached = t;
   const int flag = CVode(d.mem, t_end, d.y, &t_reached, CV_ONE_STEP);
   check(flag, "CVode");

@@ -36,6 +36,8 @@
 // step of half the remaining distance or less goes first. With these the global error
 // is proportional to the tolerance (local extrapolation: local error O(tol^{6/5}) per
 // step times O(tol^{-1/5}) steps), where without them it was tens of times larger.
+// A system that is smooth at its restarts and events (options.singular_points =
+// false) needs none of (i)-(iii), and every step is then an ordinary one.
 //
 // Events: after each accepted step, a g_i that went from > 0 to <= 0 is located on
 // the dense output (Illinois regula falsi on theta -> g_i(t + theta h, y(theta)):
@@ -46,7 +48,7 @@
 // changes inside a step.
 //
 // No allocation: all state is fixed-size (Eigen::Matrix<double, N, 1>) on the stack.
-#include "integrators/fixed_step.hpp"  // detail::illinois_root
+#include "integrators/event_landing.hpp"
 #include "integrators/ode_system.hpp"
 
 #include <algorithm>
@@ -54,7 +56,6 @@
 #include <bit>
 #include <cstdint>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace hertzdash {
@@ -64,6 +65,12 @@ struct DormandPrinceOptions {
   double atol = 1e-12;       ///< absolute tolerance (state units), > 0
   double max_step = 0.0;     ///< largest step [s]; 0 means no limit
   long max_steps = 1000000;  ///< accepted plus rejected steps before giving up
+  /// The right-hand side may be singular where an event restarts it or lands a step
+  /// (a sqrt(t - t_on) force): check those steps by step doubling (see "Singular
+  /// points"). false for a system smooth there (e.g. the contact in regularising
+  /// variables, model/regularized_contact.hpp): every step is then controlled by
+  /// the embedded estimate alone.
+  bool singular_points = true;
 };
 
 namespace detail {
@@ -94,22 +101,26 @@ struct DormandPrinceStep {
 };
 
 /// One step of size h from (t, y) with k1 = f(t, y) given: fills k2..k7 and y1 (6 evaluations).
+/// Each stage point is summed as y + (h a_j1) k1 + ... + (h a_j,j-1) k_j-1, left to
+/// right, so the stage just computed enters with one product and one sum: the
+/// stages form a chain of dependent evaluations, and this keeps it short.
 template <OdeSystem S>
 void dormand_prince_step(const S& sys, double t, const typename S::State& y, double h,
                          DormandPrinceStep<typename S::State>& w) {
   using T = DormandPrinceTableau;
   typename S::State z;
-  z = y + h * (T::a21 * w.k1);
+  z = y + (h * T::a21) * w.k1;
   sys.rhs(t + T::c2 * h, z, w.k2);
-  z = y + h * (T::a31 * w.k1 + T::a32 * w.k2);
+  z = y + (h * T::a31) * w.k1 + (h * T::a32) * w.k2;
   sys.rhs(t + T::c3 * h, z, w.k3);
-  z = y + h * (T::a41 * w.k1 + T::a42 * w.k2 + T::a43 * w.k3);
+  z = y + (h * T::a41) * w.k1 + (h * T::a42) * w.k2 + (h * T::a43) * w.k3;
   sys.rhs(t + T::c4 * h, z, w.k4);
-  z = y + h * (T::a51 * w.k1 + T::a52 * w.k2 + T::a53 * w.k3 + T::a54 * w.k4);
+  z = y + (h * T::a51) * w.k1 + (h * T::a52) * w.k2 + (h * T::a53) * w.k3 + (h * T::a54) * w.k4;
   sys.rhs(t + T::c5 * h, z, w.k5);
-  z = y + h * (T::a61 * w.k1 + T::a62 * w.k2 + T::a63 * w.k3 + T::a64 * w.k4 + T::a65 * w.k5);
+  z = y + (h * T::a61) * w.k1 + (h * T::a62) * w.k2 + (h * T::a63) * w.k3 + (h * T::a64) * w.k4 +
+      (h * T::a65) * w.k5;
   sys.rhs(t + h, z, w.k6);
-  w.y1 = y + h * (T::b1 * w.k1 + T::b3 * w.k3 + T::b4 * w.k4 + T::b5 * w.k5 + T::b6 * w.k6);
+  w.y1 = y + (h * T::b1) * w.k1 + (h * T::b3) * w.k3 + (h * T::b4) * w.k4 + (h * T::b5) * w.k5 + (h * T::b6) * w.k6;
   sys.rhs(t + h, w.y1, w.k7);
 }
 
@@ -189,8 +200,8 @@ class DormandPrinceRun {
       // error by a factor 37 when t = t_restart, 5 when h = 4 (t - t_restart), and
       // 1.1 when h = t - t_restart. So the first step after a restart is checked by step
       // doubling, and the following ones are no longer than the time since the restart.
-      const bool near_restart = t_ == t_restart_;
-      if (!near_restart) h = std::min(h, t_ - t_restart_);
+      const bool near_restart = opt_.singular_points && t_ == t_restart_;
+      if (opt_.singular_points && !near_restart) h = std::min(h, t_ - t_restart_);
       const double err = near_restart ? doubling_error(h) : embedded_error(h);
       if (!(err <= 1.0)) {
         if (!std::isfinite(err)) throw std::runtime_error("integrate_dormand_prince: non-finite error estimate");
@@ -279,51 +290,20 @@ class DormandPrinceRun {
   bool accept(const Step& ws, double h, bool to_end) {
     Events g_end;
     sys_.events(t_ + h, ws.y1, g_end);
-    bool any = false;
-    for (int i = 0; i < S::event_count; ++i) any |= (g_[i] > 0 && g_end[i] <= 0);
-    if (!any) {
+    if (!any_event_crossed(g_, g_end)) {
       advance(ws, to_end ? t_end_ : t_ + h);
       g_ = g_end;
       return false;
     }
-    // Locate every crossing on the dense output (no evaluations); land on the earliest.
+    // Locate every crossing on the dense output (no evaluations); land on the earliest
+    // and fire the events there.
     dense_.build(y_, h, ws);
-    const double theta_tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t_), h) / h;
-    std::array<double, S::event_count> theta;
-    double theta_event = 1.0;
-    for (int i = 0; i < S::event_count; ++i) {
-      theta[i] = 2.0;  // no crossing
-      if (!(g_[i] > 0 && g_end[i] <= 0)) continue;
-      auto phi = [&](double th) {
-        Events gt;
-        sys_.events(t_ + th * h, dense_.at(th), gt);
-        return gt[i];
-      };
-      theta[i] = illinois_root(phi, 0.0, g_[i], 1.0, g_end[i], theta_tol);
-      theta_event = std::min(theta_event, theta[i]);
-    }
+    const auto crossings = locate_event_crossings(sys_, t_, h, g_, g_end, dense_);
     const Events g_start = g_;
     const double t_start = t_;
-    land(t_ + theta_event * h, to_end && theta_event == 1.0);
-    // Fire, in index order, the events located at the landing point and any other
-    // that has already crossed there.
-    sys_.events(t_, y_, g_);
-    bool restart_needed = false;
-    for (int i = 0; i < S::event_count; ++i) {
-      const bool located_here = t_start + theta[i] * h <= t_ + theta_tol * h;
-      if (!(g_start[i] > 0 && (located_here || g_[i] <= 0))) continue;
-      const EventAction action = sys_.handle_event(i, t_, y_);
-      ++stats_.events;
-      observer_.on_event(i, t_, y_, action);
-      if (action == EventAction::stop) {
-        stats_.t_final = t_;
-        stats_.stopped_by_event = true;
-        return true;
-      }
-      restart_needed |= action == EventAction::restart;
-      g_[i] = std::min(g_[i], 0.0);  // fired: it must rise above zero before it can fire again
-    }
-    if (restart_needed) restart();
+    land(t_ + crossings.earliest * h, to_end && crossings.earliest == 1.0);
+    if (fire_landed_events(sys_, t_, y_, g_, g_start, t_start, h, crossings, stats_, observer_) == EventAction::restart)
+      restart();
     return true;
   }
 
@@ -332,6 +312,16 @@ class DormandPrinceRun {
   /// doubling; while the check fails, an ordinary step of half the distance or less
   /// (checked by its embedded estimate, reliable that far from t_star) goes first.
   void land(double t_star, bool to_end) {
+    if (!opt_.singular_points) {
+      // Smooth at t_star: one ordinary step, shortened while its estimate fails.
+      for (;;) {
+        const double d = t_star - t_;
+        if (d <= 0) return;
+        double h = d;
+        for (int k = 0; k < 60 && !(embedded_error(h) <= 1.0); ++k) h *= 0.5;
+        advance(w_, h == d ? (to_end ? t_end_ : t_star) : t_ + h);
+      }
+    }
     for (int tries = 0;; ++tries) {
       const double d = t_star - t_;
       if (d <= 0) return;

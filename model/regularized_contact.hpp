@@ -23,9 +23,12 @@
 // State (u [m^{1/2}], v [m/s], t [s]); tau [s/m^{1/2}]. Events (decreasing through 0):
 //   0 separation: g = u (stop)
 //   1 max_compression: g = v (observation)
-//   2 peak_force: g = dF/dtau by a central difference with step 1e-3 of the
-//     contact's tau scale (the same argument as in DropTest: the root moves by
-//     O(1e-6) of the scale, the peak force by O(1e-12) relative)
+//   2 peak_force: g = dF/dtau = F_u u' + F_v v' from the state's partials, forward
+//     differences with relative steps 1e-6 (3 force evaluations per call: the
+//     events are evaluated after every step). Their O(1e-6) relative truncation
+//     moves the root by O(1e-6) of the tau scale and, F being stationary there, the
+//     peak force by O(1e-12) relative. A difference along tau instead is exactly zero
+//     over a span at the undamped turning point, where a root finder meets a flat zero.
 //   3 observation time: g = t_obs - t, if an observation time is set (observation)
 #include "integrators/ode_system.hpp"  // the OdeSystem vocabulary only (EventAction); no integrator
 #include "model/damping/damping_law.hpp"
@@ -57,30 +60,31 @@ class RegularizedContact {
   /// after onset [s] at which event 3 fires.
   RegularizedContact(const ImpactConditions& c, const DampingSettings& s, double gravity_mps2,
                      std::optional<double> t_obs_s = std::nullopt)
-      : law_(c, s), mass_kg_(c.mass_kg), gravity_mps2_(gravity_mps2), t_obs_s_(t_obs_s), v0_mps_(c.v0_mps) {
-    // tau scale of the contact: T / (2 X*^{1/2}), T = X*/v0, X* = (m v0^2 / K)^{2/5}.
-    const double X = std::pow(c.mass_kg * c.v0_mps * c.v0_mps / c.K, 0.4);
-    fd_step_ = 1e-3 * (X / c.v0_mps) / (2.0 * std::sqrt(X));
+      : law_(c, s), inverse_mass_(1.0 / c.mass_kg), gravity_mps2_(gravity_mps2), t_obs_s_(t_obs_s), v0_mps_(c.v0_mps) {
+    // Scales of the impact for the difference steps: u* = X*^{1/2}, X* = (m v0^2 / K)^{2/5}, and v0.
+    u_scale_ = std::pow(c.mass_kg * c.v0_mps * c.v0_mps / c.K, 0.2);
   }
 
   /// Onset: u = 0, v = v0, t = 0.
   State initial_state() const { return State{0.0, v0_mps_, 0.0}; }
 
   const Law& law() const { return law_; }
-  double force(const State& y) const { return law_.force(y[0] * y[0], y[1]); }
+  double force(const State& y) const { return force_at(y[0], y[1]); }
 
   void rhs(double, const State& y, State& dy) const {
     dy[0] = y[1];
-    dy[1] = 2.0 * y[0] * (gravity_mps2_ - force(y) / mass_kg_);
+    dy[1] = 2.0 * y[0] * (gravity_mps2_ - force(y) * inverse_mass_);
     dy[2] = 2.0 * y[0];
   }
 
-  void events(double tau, const State& y, Events& g) const {
-    State dy;
-    rhs(tau, y, dy);
-    const double d = fd_step_;
-    const double dF = (force(State(y + d * dy)) - force(State(y - d * dy))) / (2 * d);
-    g = {y[0], y[1], dF, t_obs_s_ ? *t_obs_s_ - y[2] : 1.0};
+  void events(double, const State& y, Events& g) const {
+    const double u = std::max(y[0], 0.0), v = y[1];
+    const double du = 1e-6 * std::max(u, 1e-6 * u_scale_), dv = 1e-6 * v0_mps_;
+    const double F = force_at(u, v);
+    const double F_u = (force_at(u + du, v) - F) / du;
+    const double F_v = (force_at(u, v + dv) - F) / dv;
+    const double dvdtau = 2.0 * u * (gravity_mps2_ - F * inverse_mass_);
+    g = {y[0], y[1], F_u * v + F_v * dvdtau, t_obs_s_ ? *t_obs_s_ - y[2] : 1.0};
   }
 
   EventAction handle_event(int which, double, const State&) const {
@@ -88,11 +92,19 @@ class RegularizedContact {
   }
 
  private:
+  /// The force at (u, v) [N]: the law's polynomial in u if it declares one
+  /// (RootPolynomialLaw; smooth through u = 0), else force(u^2, v).
+  double force_at(double u, double v) const {
+    if constexpr (RootPolynomialLaw<Law>) return law_.force_of_root(u, v);
+    else return law_.force(u * u, v);
+  }
+
   Law law_;
-  double mass_kg_, gravity_mps2_;
+  double inverse_mass_;  ///< 1/m [1/kg]: a product in the right-hand side, not a division
+  double gravity_mps2_;
   std::optional<double> t_obs_s_;
   double v0_mps_;
-  double fd_step_;  ///< central-difference step in tau for dF/dtau [s/m^{1/2}]
+  double u_scale_;  ///< X*^{1/2} [m^{1/2}], for the difference step in u
 };
 
 }  // namespace hertzdash

@@ -12,21 +12,32 @@ const char* to_string(IntegratorKind k) {
     case IntegratorKind::rk4: return "rk4";
     case IntegratorKind::cvode: return "cvode";
     case IntegratorKind::dopri5: return "dopri5";
+    case IntegratorKind::dopri5_regularized: return "dopri5-regularized";
+    case IntegratorKind::cvode_regularized: return "cvode-regularized";
+    case IntegratorKind::gbs8_regularized: return "gbs8-regularized";
   }
   return "?";
 }
 
 void validate(const SolverSettings& s) {
-  if (s.integrator == IntegratorKind::cvode) {
-    require_positive("--rtol", s.cvode.rtol, "-");
-    require_positive("--atol", s.cvode.atol, "m, m/s");
-    require_non_negative("--max-step", s.cvode.max_step, "s");
-  } else if (s.integrator == IntegratorKind::dopri5) {
-    require_positive("--rtol", s.dopri5.rtol, "-");
-    require_positive("--atol", s.dopri5.atol, "m, m/s");
-    require_non_negative("--max-step", s.dopri5.max_step, "s");
-  } else {
-    require_positive("--dt", s.fixed_step.dt, "s");
+  // Tolerances of an adaptive integrator; a regularised path steps in tau
+  // (dt = 2 x^{1/2} dtau), not in time, so it takes no largest step.
+  auto adaptive = [&](double rtol, double atol, double max_step) {
+    require_positive("--rtol", rtol, "-");
+    require_positive("--atol", atol, "m, m/s");
+    require_non_negative("--max-step", max_step, "s");
+    if (is_regularized(s.integrator) && max_step != 0)
+      throw InvalidParameter("--max-step", fmt::format("{}", max_step),
+                             fmt::format("0 (no limit) with {}, whose steps are in tau, not in time", to_string(s.integrator)));
+  };
+  switch (s.integrator) {
+    case IntegratorKind::cvode:
+    case IntegratorKind::cvode_regularized: adaptive(s.cvode.rtol, s.cvode.atol, s.cvode.max_step); break;
+    case IntegratorKind::dopri5:
+    case IntegratorKind::dopri5_regularized: adaptive(s.dopri5.rtol, s.dopri5.atol, s.dopri5.max_step); break;
+    case IntegratorKind::gbs8_regularized: adaptive(s.gbs8.rtol, s.gbs8.atol, s.gbs8.max_step); break;
+    case IntegratorKind::euler:
+    case IntegratorKind::rk4: require_positive("--dt", s.fixed_step.dt, "s"); break;
   }
 }
 
@@ -60,15 +71,18 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
   p.emplace_back("gravity_mps2", num(setup.gravity_mps2));
   p.emplace_back("no_tension", setup.no_tension ? "true" : "false");
   p.emplace_back("integrator", to_string(solver.integrator));
-  if (solver.integrator == IntegratorKind::cvode) {
+  if (solver.integrator == IntegratorKind::cvode || solver.integrator == IntegratorKind::cvode_regularized) {
     p.emplace_back("cvode_method", to_string(solver.cvode.method));
     p.emplace_back("rtol", num(solver.cvode.rtol));
     p.emplace_back("atol", num(solver.cvode.atol));
     if (solver.cvode.max_step > 0) p.emplace_back("max_step_s", num(solver.cvode.max_step));
-  } else if (solver.integrator == IntegratorKind::dopri5) {
+  } else if (solver.integrator == IntegratorKind::dopri5 || solver.integrator == IntegratorKind::dopri5_regularized) {
     p.emplace_back("rtol", num(solver.dopri5.rtol));
     p.emplace_back("atol", num(solver.dopri5.atol));
     if (solver.dopri5.max_step > 0) p.emplace_back("max_step_s", num(solver.dopri5.max_step));
+  } else if (solver.integrator == IntegratorKind::gbs8_regularized) {
+    p.emplace_back("rtol", num(solver.gbs8.rtol));
+    p.emplace_back("atol", num(solver.gbs8.atol));
   } else {
     p.emplace_back("dt_s", num(solver.fixed_step.dt));
     p.emplace_back("locate_events", solver.fixed_step.locate_events ? "true" : "false");

@@ -5,12 +5,14 @@
 #include "integrators/cvode_integrator.hpp"
 #include "integrators/dormand_prince.hpp"
 #include "integrators/explicit_euler.hpp"
+#include "integrators/extrapolation.hpp"
 #include "integrators/fixed_step.hpp"
 #include "integrators/rk4.hpp"
 #include "model/damping/registry.hpp"
 #include "model/drop_test.hpp"
 #include "model/hertz.hpp"
 #include "validation/common/provenance.hpp"
+#include "validation/common/regularized_impact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,14 +23,36 @@
 
 namespace hertzdash {
 
-enum class IntegratorKind { euler, rk4, cvode, dopri5 };
+/// dopri5_regularized ("dopri5-regularized"), cvode_regularized ("cvode-regularized"),
+/// gbs8_regularized ("gbs8-regularized"): the fall in closed form and the contact in
+/// regularising variables (validation/common/regularized_impact.hpp) with dopri5, CVODE
+/// or the order-8 extrapolation method (integrators/extrapolation.hpp; the fastest
+/// path). With the tension clamp they run dopri5 (for gbs8: with its tolerances) or
+/// CVODE in the physical variables; gbs8 needs a smooth contact, so for a law that does
+/// not declare RootPolynomialLaw it runs dopri5-regularized with its checks on.
+enum class IntegratorKind { euler, rk4, cvode, dopri5, dopri5_regularized, cvode_regularized, gbs8_regularized };
+
+/// True for the kinds that integrate the contact in regularising variables.
+inline bool is_regularized(IntegratorKind k) {
+  return k == IntegratorKind::dopri5_regularized || k == IntegratorKind::cvode_regularized ||
+         k == IntegratorKind::gbs8_regularized;
+}
 const char* to_string(IntegratorKind k);
 
 struct SolverSettings {
   IntegratorKind integrator = IntegratorKind::cvode;
   FixedStepOptions fixed_step;  ///< euler, rk4
-  CvodeOptions cvode;           ///< cvode
-  DormandPrinceOptions dopri5;  ///< dopri5 (adaptive Dormand-Prince 5(4), events landed on)
+  CvodeOptions cvode;           ///< cvode and cvode_regularized
+  DormandPrinceOptions dopri5;  ///< dopri5 and dopri5_regularized (adaptive Dormand-Prince 5(4), events landed on)
+  ExtrapolationOptions gbs8;    ///< gbs8_regularized (Gragg-Bulirsch-Stoer order 8, events landed on)
+
+  /// dopri5's options with gbs8's tolerances, for gbs8_regularized's fall-backs.
+  DormandPrinceOptions dopri5_with_gbs8_tolerances() const {
+    DormandPrinceOptions o;
+    o.rtol = gbs8.rtol;
+    o.atol = gbs8.atol;
+    return o;
+  }
 };
 
 /// Throws InvalidParameter for a non-positive step or tolerance.
@@ -73,6 +97,7 @@ class ImpactSimulator {
  private:
   SolverSettings settings_;
   std::unique_ptr<CvodeIntegrator> cvode_;
+  std::unique_ptr<CvodeIntegrator> cvode_regularized_;  ///< the regularised contact's size (3 components)
 };
 
 /// The inputs of a run as name = value pairs (units in the names), for headers and JSON.
@@ -126,6 +151,28 @@ class ImpactObserver {
 
 template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
+  if (is_regularized(settings_.integrator) && !setup.no_tension) {
+    ImpactSummary s;
+    if (settings_.integrator == IntegratorKind::gbs8_regularized && RootPolynomialLaw<Law>) {
+      run_regularized_impact<Law>(
+          setup, [&](auto& sys, auto& y, double t0, double t1, auto& obs) { return integrate_extrapolation(sys, y, t0, t1, settings_.gbs8, obs); },
+          s, trace);
+    } else if (settings_.integrator != IntegratorKind::cvode_regularized) {
+      const DormandPrinceOptions opt = dopri5_options_for<Law>(
+          settings_.integrator == IntegratorKind::gbs8_regularized ? settings_.dopri5_with_gbs8_tolerances() : settings_.dopri5);
+      run_regularized_impact<Law>(
+          setup, [&](auto& sys, auto& y, double t0, double t1, auto& obs) { return integrate_dormand_prince(sys, y, t0, t1, opt, obs); },
+          s, trace);
+    } else {
+      using Contact = detail::ContactUntil<Law>;
+      if (!cvode_regularized_)
+        cvode_regularized_ = std::make_unique<CvodeIntegrator>(Contact::dimension, Contact::event_count, settings_.cvode);
+      run_regularized_impact<Law>(
+          setup, [&](auto& sys, auto& y, double t0, double t1, auto& obs) { return cvode_regularized_->integrate(sys, y, t0, t1, obs); },
+          s, trace);
+    }
+    return s;
+  }
   const DropTestModel model(setup);
   DropTest<Law> sys(model);
   ImpactSummary s;
@@ -147,11 +194,16 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<Trace
       s.work = integrate_fixed_step<ClassicalRk4>(sys, y, 0.0, t_end, settings_.fixed_step, observer);
       break;
     case IntegratorKind::cvode:
+    case IntegratorKind::cvode_regularized:  // with the tension clamp (see above)
       if (!cvode_) cvode_ = std::make_unique<CvodeIntegrator>(DropTest<Law>::dimension, DropTest<Law>::event_count, settings_.cvode);
       s.work = cvode_->integrate(sys, y, 0.0, t_end, observer);
       break;
     case IntegratorKind::dopri5:
+    case IntegratorKind::dopri5_regularized:  // with the tension clamp (see above)
       s.work = integrate_dormand_prince(sys, y, 0.0, t_end, settings_.dopri5, observer);
+      break;
+    case IntegratorKind::gbs8_regularized:  // with the tension clamp (see above)
+      s.work = integrate_dormand_prince(sys, y, 0.0, t_end, settings_.dopri5_with_gbs8_tolerances(), observer);
       break;
   }
   if (s.separated) {

@@ -36,7 +36,10 @@ inline long min_steps_per_contact(IntegratorKind integrator, bool locate_events)
     case IntegratorKind::euler: return min_steps_per_contact_euler;
     case IntegratorKind::rk4: return locate_events ? min_steps_per_contact_rk4_located : min_steps_per_contact_rk4_unlocated;
     case IntegratorKind::cvode:
-    case IntegratorKind::dopri5: return 0;
+    case IntegratorKind::dopri5:
+    case IntegratorKind::dopri5_regularized:
+    case IntegratorKind::cvode_regularized:
+    case IntegratorKind::gbs8_regularized: return 0;
   }
   return 0;
 }

@@ -76,6 +76,8 @@ class HongoPaper {
         tau_(2.0 * zeta_ / omega_n_) {}
 
   double force(double x, double xdot) const noexcept { return K_ * std::sqrt(x) * (x + tau_ * xdot); }
+  /// The same at u = x^{1/2}: K u (u^2 + tau xdot) [N] (RootPolynomialLaw)
+  double force_of_root(double u, double xdot) const noexcept { return K_ * u * (u * u + tau_ * xdot); }
 
   std::vector<NamedValue> coefficients() const {
     return {{"zeta", zeta_}, {"omega_n_rad_per_s", omega_n_}, {"c_e_coefficient_N_s_per_m_1_5", K_ * tau_}};

@@ -38,6 +38,8 @@ class KelvinVoigt {
         c_(2.0 * zeta_ * std::sqrt(k_ * c.mass_kg)) {}
 
   double force(double x, double xdot) const noexcept { return k_ * x + c_ * xdot; }
+  /// The same at u = x^{1/2}: k u^2 + c xdot [N] (RootPolynomialLaw)
+  double force_of_root(double u, double xdot) const noexcept { return k_ * u * u + c_ * xdot; }
 
   std::vector<NamedValue> coefficients() const {
     return {{"k_N_per_m", k_}, {"zeta", zeta_}, {"c_N_s_per_m", c_}};

@@ -1,0 +1,127 @@
+#pragma once
+// One drop test the fast way: the free fall in closed form, then the contact in
+// regularising variables (model/regularized_contact.hpp) with an adaptive integrator
+// (Dormand-Prince 5(4) for dopri5-regularized, CVODE for cvode-regularized).
+//
+// Why: in the physical variables the contact force grows like sqrt(t - t_on) after
+// onset and (damped laws) vanishes like sqrt(t_s - t) before separation, so an
+// adaptive method must shrink its steps there and cannot trust its error estimate
+// (integrators/dormand_prince.hpp checks those steps by step doubling). In the
+// variables u = x^{1/2}, dt/dtau = 2u the contact is smooth through onset and
+// separation for every law of the form x^{1/2} * (polynomial in x, x') that declares
+// it (RootPolynomialLaw), so the embedded estimate is reliable everywhere and the
+// steps stay long (dopri5_options_for: singular_points = false; for other laws the
+// singular-point checks of dopri5 stay on), and CVODE's error follows its tolerance
+// where in the physical variables it does not. The fall needs no integration at all: from
+// rest at x = -h under gravity g, contact begins at t_on = v0/g with v0 = sqrt(2 g h)
+// (approach_speed), exactly.
+//
+// The summary is the same as ImpactSimulator's physical-variable run, to within the
+// tolerance: onset from the closed form, separation (u = 0 decreasing, v < 0) and the
+// peak force and largest deformation from steps landed on the events
+// dF/dtau = 0 and v = 0. The run ends at separation, or, if the rod comes to rest on
+// the ball, 20 undamped contact times after onset (as the physical run).
+// Not for the tension clamp (no_tension: contact ends where F reaches zero, an event
+// this system does not have); ImpactSimulator uses the physical variables there.
+// Tolerances: rtol as given; atol applies to u [m^{1/2}], v [m/s] and t [s] alike.
+// The integrator is a callable integrate(system, y, tau0, tau1, observer) ->
+// IntegrationStats over the system ContactUntil<Law> below.
+#include "integrators/dormand_prince.hpp"
+#include "model/drop_test.hpp"
+#include "model/drop_test_setup.hpp"
+#include "model/hertz.hpp"
+#include "model/regularized_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace hertzdash {
+
+namespace detail {
+
+/// The regularised contact, stopped at its observation time (the end of a contact
+/// that never separates) as well as at separation.
+template <DampingLaw Law>
+struct ContactUntil : RegularizedContact<Law> {
+  using RegularizedContact<Law>::RegularizedContact;
+  EventAction handle_event(int which, double tau, const typename RegularizedContact<Law>::State& y) const {
+    if (which == observation_time_event) return EventAction::stop;
+    return RegularizedContact<Law>::handle_event(which, tau, y);
+  }
+};
+
+/// Builds the summary (and the optional trace, physical variables) from the steps.
+template <DampingLaw Law, class Summary, class Sample>
+class RegularizedImpactObserver {
+  using State = typename RegularizedContact<Law>::State;
+
+ public:
+  RegularizedImpactObserver(const ContactUntil<Law>& sys, const DropTestSetup& setup, double t_onset_s, Summary& s,
+                            std::vector<Sample>* trace)
+      : sys_(sys), setup_(setup), t_onset_s_(t_onset_s), s_(s), trace_(trace) {}
+
+  void on_step(double, const State& y) {
+    const double F = sys_.force(y), x = y[0] * y[0];
+    s_.peak_force_N = std::max(s_.peak_force_N, F);
+    s_.max_deformation_m = std::max(s_.max_deformation_m, x);
+    if (trace_)
+      trace_->push_back({t_onset_s_ + y[2], x, y[1], F, setup_.gravity_mps2 - F / setup_.mass_kg, x + setup_.height_m,
+                         y[1]});
+  }
+  void on_event(int which, double, const State& y, EventAction) {
+    if (which != separation_event) return;
+    s_.separated = true;
+    s_.t_separation_s = t_onset_s_ + y[2];
+    s_.rebound_velocity_mps = std::max(-y[1], 0.0);
+  }
+
+ private:
+  const ContactUntil<Law>& sys_;
+  const DropTestSetup& setup_;
+  double t_onset_s_;
+  Summary& s_;
+  std::vector<Sample>* trace_;
+};
+
+}  // namespace detail
+
+/// dopri5's options for the regularised contact of `Law`: no singular-point checks
+/// if the law declares its force polynomial in u (RootPolynomialLaw).
+template <DampingLaw Law>
+DormandPrinceOptions dopri5_options_for(DormandPrinceOptions options) {
+  options.singular_points = !RootPolynomialLaw<Law>;
+  return options;
+}
+
+/// The impact of a validated set-up without the tension clamp (see above): fills the
+/// fields of `s` an ImpactSimulator run fills. Summary = ImpactSummary, Sample =
+/// TraceSample (templates only to keep this header below impact_simulator.hpp).
+template <DampingLaw Law, class Summary, class Sample, class Integrate>
+void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, Summary& s,
+                            std::vector<Sample>* trace) {
+  const double K = hertz_stiffness(setup);
+  const double v0 = approach_speed(setup);  // [m/s], exact for the fall from rest
+  const double t_onset_s = setup.impact_velocity_mps ? 0.0 : v0 / setup.gravity_mps2;
+  const double contact_s = undamped_hertz_impact(K, setup.mass_kg, v0).contact_time_s;
+  const ImpactConditions c{K, setup.mass_kg, v0, setup.restitution};
+  detail::ContactUntil<Law> sys(c, setup.damping, setup.gravity_mps2, 20.0 * contact_s);
+
+  s.K = K;
+  s.t_onset_s = t_onset_s;
+  s.impact_velocity_mps = v0;
+  s.law_coefficients = sys.law().coefficients();
+  detail::RegularizedImpactObserver<Law, Summary, Sample> observer(sys, setup, t_onset_s, s, trace);
+  auto y = sys.initial_state();
+  // tau is bounded by the events (t reaches 20 contact times, or separation); the end
+  // only has to lie beyond them: 1e7 tau scales T/(2 X*^{1/2}), T = X*/v0.
+  const double X = std::pow(setup.mass_kg * v0 * v0 / K, 0.4);
+  const double tau_end = 1e7 * (X / v0) / (2.0 * std::sqrt(X));
+  s.work = integrate(sys, y, 0.0, tau_end, observer);
+  if (s.separated) {
+    s.contact_time_s = s.t_separation_s - s.t_onset_s;
+    s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;
+  }
+}
+
+}  // namespace hertzdash
