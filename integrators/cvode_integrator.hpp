@@ -107,13 +107,9 @@ IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double
     bool restart_needed = false;
     for (int i = 0; i < S::event_count; ++i) {
       if (found[i] == 0) continue;
-      const EventAction action = sys.handle_event(i, t, y);
-      ++total.events;
-      observer.on_event(i, t, y, action);
+      const EventAction action = fire_event(sys, i, t, y, total, observer);
       if (action == EventAction::stop) {
-        total += work_since_restart();
-        total.t_final = t;
-        total.stopped_by_event = true;
+        total.add_work(work_since_restart());
         return total;
       }
       restart_needed |= action == EventAction::restart;
@@ -123,13 +119,12 @@ IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double
     // with "root found at and very near t" on the next call; a restart lets its root
     // finder treat such a g as inactive until it moves off zero instead.
     if (restart_needed || detail::any_event_vanishes(sys, t, y)) {
-      total += work_since_restart();
+      total.add_work(work_since_restart());
       restart(t, y.data());
     }
   }
-  total += work_since_restart();
+  total.add_work(work_since_restart());
   total.t_final = t;
-  total.stopped_by_event = false;
   return total;
 }
 

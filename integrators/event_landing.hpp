@@ -69,14 +69,8 @@ EventAction fire_landed_events(S& sys, double t, const typename S::State& y, typ
   for (int i = 0; i < S::event_count; ++i) {
     const bool located_here = t_start + c.theta[i] * h <= t + c.theta_tol * h;
     if (!(g_start[i] > 0 && (located_here || g[i] <= 0))) continue;
-    const EventAction action = sys.handle_event(i, t, y);
-    ++stats.events;
-    observer.on_event(i, t, y, action);
-    if (action == EventAction::stop) {
-      stats.t_final = t;
-      stats.stopped_by_event = true;
-      return EventAction::stop;
-    }
+    const EventAction action = fire_event(sys, i, t, y, stats, observer);
+    if (action == EventAction::stop) return EventAction::stop;
     if (action == EventAction::restart) result = EventAction::restart;
     g[i] = std::min(g[i], 0.0);
   }

@@ -101,14 +101,8 @@ IntegrationStats integrate_fixed_step(S& sys, typename S::State& y, double t0, d
       bool restart = false;
       for (int i = 0; i < S::event_count; ++i) {
         if (!(g[i] > 0 && g_new[i] <= 0)) continue;
-        const EventAction action = sys.handle_event(i, t, y);
-        ++stats.events;
-        observer.on_event(i, t, y, action);
-        if (action == EventAction::stop) {
-          stats.t_final = t;
-          stats.stopped_by_event = true;
-          return stats;
-        }
+        const EventAction action = fire_event(sys, i, t, y, stats, observer);
+        if (action == EventAction::stop) return stats;
         restart |= action == EventAction::restart;
       }
       if (restart) sys.events(t, y, g_new);  // the system changed mode: new event functions

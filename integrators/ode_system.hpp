@@ -54,14 +54,26 @@ struct IntegrationStats {
   double t_final = 0.0;      ///< time reached [s]
   bool stopped_by_event = false;
 
-  IntegrationStats& operator+=(const IntegrationStats& o) {
+  /// Add the steps and evaluations of another piece of the same integration.
+  void add_work(const IntegrationStats& o) {
     steps += o.steps;
     rhs_evaluations += o.rhs_evaluations;
-    events += o.events;
-    t_final = o.t_final;
-    stopped_by_event = o.stopped_by_event;
-    return *this;
   }
 };
+
+/// Let the system handle event i at (t, y), tell the observer, and count it; on `stop`
+/// record that the integration ended there. Every integrator fires events through this.
+template <OdeSystem S, class Observer>
+EventAction fire_event(S& sys, int i, double t, const typename S::State& y, IntegrationStats& stats,
+                       Observer& observer) {
+  const EventAction action = sys.handle_event(i, t, y);
+  ++stats.events;
+  observer.on_event(i, t, y, action);
+  if (action == EventAction::stop) {
+    stats.t_final = t;
+    stats.stopped_by_event = true;
+  }
+  return action;
+}
 
 }  // namespace hertzdash
