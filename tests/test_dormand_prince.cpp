@@ -11,6 +11,8 @@
 #include "validation/common/parallel_sweep.hpp"
 #include "undamped_hertz_errors.hpp"
 
+#include "harmonic_oscillator.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <atomic>
@@ -42,17 +44,7 @@ namespace {
 
 using namespace hertzdash;
 
-/// q' = p, p' = -q from (q, p) = (1, 0): q = cos t, p = -sin t. One event, g = q,
-/// which first falls through zero at t = pi/2 (where p = -1); it stops the run.
-struct Oscillator {
-  static constexpr int dimension = 2;
-  static constexpr int event_count = 1;
-  using State = Eigen::Matrix<double, 2, 1>;
-  using Events = std::array<double, 1>;
-  void rhs(double, const State& y, State& dy) const { dy << y[1], -y[0]; }
-  void events(double, const State& y, Events& g) const { g[0] = y[0]; }
-  EventAction handle_event(int, double, const State&) { return EventAction::stop; }
-};
+using Oscillator = test::HarmonicOscillator;  // stops at t = pi/2
 
 /// log10(e1/e2) / log10(t1/t2): the observed exponent of error against tolerance.
 double observed_exponent(double e1, double e2, double t1, double t2) { return std::log10(e1 / e2) / std::log10(t1 / t2); }

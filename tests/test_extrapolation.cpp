@@ -8,6 +8,8 @@
 #include "model/paper_parameters.hpp"
 #include "validation/common/impact_simulator.hpp"
 
+#include "harmonic_oscillator.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -20,17 +22,7 @@ namespace {
 
 using namespace hertzdash;
 
-/// q' = p, p' = -q from (1, 0): q = cos t, p = -sin t; no events.
-struct Rotation {
-  static constexpr int dimension = 2;
-  static constexpr int event_count = 1;
-  using State = Eigen::Matrix<double, 2, 1>;
-  using Events = std::array<double, 1>;
-  void rhs(double, const State& y, State& dy) const { dy << y[1], -y[0]; }
-  void events(double, const State& y, Events& g) const { g[0] = stop_at_quarter ? y[0] : 1.0; }
-  EventAction handle_event(int, double, const State&) { return EventAction::stop; }
-  bool stop_at_quarter = false;
-};
+using Rotation = test::HarmonicOscillator;
 
 }  // namespace
 
@@ -78,7 +70,6 @@ TEST_CASE("gbs8: the event q = 0 landed on, the landed state on the exact soluti
   std::printf("gbs8 rotation event: tol, |t* - pi/2|, its bound, landed-state error, rhs evaluations\n");
   for (double tol : {1e-6, 1e-8, 1e-10}) {
     Rotation sys;
-    sys.stop_at_quarter = true;
     Rotation::State y(1.0, 0.0);
     StepTimes steps;
     const IntegrationStats st = integrate_extrapolation(sys, y, 0.0, 10.0, ExtrapolationOptions{tol, tol}, steps);
