@@ -58,8 +58,9 @@ EventCrossings<S::event_count> locate_event_crossings(const S& sys, double t, do
 /// At the landing point (t, y) of a step that began at t_start with event values
 /// g_start and length h: fires, in index order, the events located there and any other
 /// that has already crossed, updating g (the event values at (t, y), on return with
-/// the fired ones clamped to <= 0 so they must rise again before they fire again),
-/// stats and the observer. Returns the strongest action: stop, restart, or continue.
+/// the fired ones clamped to <= 0 so they must rise again before they fire again; after
+/// a restart, the system's new event functions at (t, y)), stats and the observer.
+/// Returns the strongest action: stop, restart, or continue.
 template <OdeSystem S, class Observer, int N = S::event_count>
 EventAction fire_landed_events(S& sys, double t, const typename S::State& y, typename S::Events& g,
                                const typename S::Events& g_start, double t_start, double h,
@@ -74,6 +75,7 @@ EventAction fire_landed_events(S& sys, double t, const typename S::State& y, typ
     if (action == EventAction::restart) result = EventAction::restart;
     g[i] = std::min(g[i], 0.0);
   }
+  if (result == EventAction::restart) sys.events(t, y, g);  // the system changed mode
   return result;
 }
 
