@@ -5,6 +5,8 @@
 // makes the effective restitution equal the target (GSL Brent root finder).
 #include "cli/command.hpp"
 #include "cli/setup_options.hpp"
+#include "model/invalid_parameter.hpp"
+#include "model/omega_n_variant.hpp"
 #include "validation/common/calibrate_restitution.hpp"
 
 #include <fmt/format.h>
@@ -40,6 +42,11 @@ Command add_restitution_command(CLI::App& app) {
   return {sub, [opt]() {
             const std::string& law = opt->setup.damping();
             const DropTestSetup setup = contact_phase_setup(opt->setup.resolve(load_paper_parameters()));
+            if (is_iterated(setup.damping.omega_n)) {
+              throw InvalidParameter("--omega-n", to_string(setup.damping.omega_n),
+                                     "a closed-form variant for `restitution`: paper, impact-energy, rebound-energy or "
+                                     "as-printed (the iterated variants need `simulate`)");
+            }
             const SolverSettings solver = opt->solver.resolve();
             ImpactSimulator simulator(solver);
 

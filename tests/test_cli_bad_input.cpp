@@ -66,6 +66,16 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
   }
 }
 
+TEST_CASE("CLI restitution: an iterated --omega-n exits 2 naming the option and the valid variants", "[cli]") {
+  for (const char* variant : {"self-consistent", "contact-time"}) {
+    const auto r = run_cli(std::string("restitution --omega-n ") + variant);
+    INFO("hertzdash restitution --omega-n " << variant << "\n  stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--omega-n") != std::string::npos);
+    CHECK(r.err.find("paper, impact-energy, rebound-energy or as-printed") != std::string::npos);
+  }
+}
+
 TEST_CASE("CLI: an option value that is not a number exits 2 naming the option", "[cli]") {
   const auto r = run_cli("simulate --mass heavy");
   CHECK(r.exit_code == 2);
