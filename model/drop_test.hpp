@@ -91,7 +91,9 @@ class DropTest {
       return;
     }
     const double x = std::max(y[0], 0.0), v = y[1];
-    const double a = model_.gravity_mps2 - contact_force(y) / model_.mass_kg;
+    const double F_law = law_->force(x, v);  // unclamped
+    const double F = model_.setup.no_tension ? std::max(F_law, 0.0) : F_law;
+    const double a = model_.gravity_mps2 - F / model_.mass_kg;
     const double dx = 1e-6 * std::max(x, 1e-6 * x_scale_m_), dv = 1e-6 * v_scale_mps_;
     const double x_lo = std::max(x - dx, 0.0);
     const double F_x = (force_at(x + dx, v) - force_at(x_lo, v)) / (x + dx - x_lo);
@@ -100,8 +102,7 @@ class DropTest {
     // A peak force is positive: where F <= 0, g2 = -1 (no root). Heavily damped
     // Hunt-Crossley laws reach 1 + chi x' = 0 to roundoff, where F and dF/dt are
     // identically zero and CVODE's root finder would stop on a flat zero.
-    const double F = force_at(x, v);
-    g = {y[0], y[1], F > 0 ? dFdt : -1.0, model_.setup.no_tension ? law_->force(std::max(y[0], 0.0), y[1]) : 1.0};
+    g = {y[0], y[1], F > 0 ? dFdt : -1.0, model_.setup.no_tension ? F_law : 1.0};
   }
 
   EventAction handle_event(int which, double, const State& y) {
