@@ -66,17 +66,6 @@ class CvodeIntegrator {
   CvodeCallbacks callbacks_;
 };
 
-namespace detail {
-template <OdeSystem S>
-bool any_event_vanishes(const S& sys, double t, const typename S::State& y) {
-  typename S::Events g;
-  sys.events(t, y, g);
-  for (double gi : g)
-    if (gi == 0.0) return true;
-  return false;
-}
-}  // namespace detail
-
 template <OdeSystem S, IntegrationObserver<typename S::State> Observer>
 IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double t0, double t_end,
                                             Observer& observer) {
@@ -114,11 +103,7 @@ IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double
       }
       restart_needed |= action == EventAction::restart;
     }
-    // An event function that is exactly zero at the root (a flat g, e.g. a difference
-    // quotient that vanishes over more than CVODE's resolution) would make CVODE stop
-    // with "root found at and very near t" on the next call; a restart lets its root
-    // finder treat such a g as inactive until it moves off zero instead.
-    if (restart_needed || detail::any_event_vanishes(sys, t, y)) {
+    if (restart_needed) {
       total.add_work(work_since_restart());
       restart(t, y.data());
     }
