@@ -14,8 +14,8 @@
 //   du/dtau = v
 //   dv/dtau = 2u (g - F(u^2, v)/m)
 //   dt/dtau = 2u
-// For every law of the form x^{1/2} * (polynomial in x, x') -- Hertz, the paper's
-// law, the Hunt-Crossley family -- F(u^2, v) is a polynomial in (u, v) for u >= 0,
+// For every law whose force is a polynomial in (x^{1/2}, x') -- Hertz, the paper's
+// law, the Hunt-Crossley family, Kelvin-Voigt -- F(u^2, v) is a polynomial in (u, v),
 // so this system is smooth on the whole contact, onset (u = 0, v = v0) and
 // separation (u = 0 again, v < 0) included. Uniform steps in tau are steps in t
 // graded like (t - t_on)^{1/2} near onset and separation.

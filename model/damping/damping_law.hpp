@@ -61,8 +61,8 @@ concept DampingLaw = requires(const L& law, const ImpactConditions& c, const Dam
   { law.coefficients() } -> std::same_as<std::vector<NamedValue>>;
 };
 
-/// Optional for a law: a force that is x^{1/2} times a polynomial in (x, xdot) -- Hertz,
-/// the paper's law, the Hunt-Crossley family, Kelvin-Voigt -- declares it by offering
+/// Optional for a law: a force that is a polynomial in (x^{1/2}, xdot) -- Hertz, the
+/// paper's law, the Hunt-Crossley family, Kelvin-Voigt -- declares it by offering
 /// `force_of_root(u, xdot)` = force(u^2, xdot) for u = x^{1/2} >= 0, written as that
 /// polynomial in u (no square root). Its smooth continuation to u < 0 is what makes
 /// the contact in regularising variables (model/regularized_contact.hpp) smooth

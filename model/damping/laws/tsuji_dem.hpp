@@ -3,7 +3,6 @@
 #include "model/damping/damping_law.hpp"
 
 #include <cmath>
-#include <numbers>
 
 namespace hertzdash {
 
@@ -54,11 +53,8 @@ class TsujiDem {
 
   std::vector<NamedValue> coefficients() const { return {{"beta", beta_}, {"c_N_s_per_m_1_25", c_}}; }
 
-  /// beta = ln e / sqrt(ln^2 e + pi^2) in (-1, 0]
-  static double beta_from_restitution(double e) {
-    const double L = std::log(e);
-    return L / std::sqrt(L * L + std::numbers::pi * std::numbers::pi);
-  }
+  /// beta = ln e / sqrt(ln^2 e + pi^2) in (-1, 0]: minus the exact linear-oscillator zeta.
+  static double beta_from_restitution(double e) { return -zeta_from_restitution(e, ZetaForm::exact); }
 
  private:
   double K_;
