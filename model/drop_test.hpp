@@ -122,7 +122,7 @@ class DropTest {
     const double v0 = y[1];
     law_.emplace(ImpactConditions{model_.K, model_.mass_kg, v0, model_.setup.restitution}, model_.setup.damping);
     // Scales of the impact: X* = (m v0^2 / K)^{2/5} and v0.
-    x_scale_m_ = std::pow(model_.mass_kg * v0 * v0 / model_.K, 0.4);
+    x_scale_m_ = hertz_impact_scale_m(model_.K, model_.mass_kg, v0);
     v_scale_mps_ = v0;
   }
 

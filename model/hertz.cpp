@@ -14,6 +14,10 @@ double hertz_stiffness(double sphere_radius_m, const Material& sphere, const Mat
   return 4.0 * std::sqrt(sphere_radius_m) / 3.0 / (compliance(sphere) + compliance(flat));
 }
 
+double hertz_impact_scale_m(double K, double mass_kg, double v0_mps) {
+  return std::pow(mass_kg * v0_mps * v0_mps / K, 0.4);
+}
+
 UndampedHertzImpact undamped_hertz_impact(double K, double mass_kg, double v0_mps) {
   // Energy: (1/2) m v^2 + (2/5) K x^{5/2} = (1/2) m v0^2. Time to X:
   //   t = int_0^X dx / sqrt(v0^2 - (4K/5m) x^{5/2}) = (X/v0) int_0^1 ds / sqrt(1 - s^{5/2})

@@ -15,6 +15,10 @@ struct Material {
 /// A rigid body (E = +inf) contributes nothing to the compliance sum.
 double hertz_stiffness(double sphere_radius_m, const Material& sphere, const Material& flat);
 
+/// Deformation scale of a Hertz impact of mass m [kg] at speed v0 [m/s]:
+/// X* = (m v0^2 / K)^{2/5} [m], the only length that m, K and v0 form.
+double hertz_impact_scale_m(double K, double mass_kg, double v0_mps);
+
 /// Closed forms of the undamped Hertz impact (no gravity) at approach speed v0 [m/s]
 /// for a mass m [kg]; energy balance (1/2) m v0^2 = (2/5) K X^{5/2} gives the
 /// maximum deformation, and the half-period integral gives the contact time.

@@ -32,6 +32,7 @@
 //   3 observation time: g = t_obs - t, if an observation time is set (observation)
 #include "integrators/ode_system.hpp"  // the OdeSystem vocabulary only (EventAction); no integrator
 #include "model/damping/damping_law.hpp"
+#include "model/hertz.hpp"
 
 #include <Eigen/Core>
 
@@ -62,7 +63,7 @@ class RegularizedContact {
                      std::optional<double> t_obs_s = std::nullopt)
       : law_(c, s), inverse_mass_(1.0 / c.mass_kg), gravity_mps2_(gravity_mps2), t_obs_s_(t_obs_s), v0_mps_(c.v0_mps) {
     // Scales of the impact for the difference steps: u* = X*^{1/2}, X* = (m v0^2 / K)^{2/5}, and v0.
-    u_scale_ = std::pow(c.mass_kg * c.v0_mps * c.v0_mps / c.K, 0.2);
+    u_scale_ = std::sqrt(hertz_impact_scale_m(c.K, c.mass_kg, c.v0_mps));
   }
 
   /// Onset: u = 0, v = v0, t = 0.

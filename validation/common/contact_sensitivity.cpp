@@ -1,5 +1,7 @@
 #include "validation/common/contact_sensitivity.hpp"
 
+#include "model/hertz.hpp"
+
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
@@ -144,8 +146,8 @@ ContactPhaseSensitivities contact_phase_sensitivities(const ContactPhaseParamete
   int direction[3] = {-1, -1, -1};
   check(CVodeSetRootDirection(c.mem, direction), "CVodeSetRootDirection");
 
-  // Long enough for any separation: 20 contact-time scales X*/v0, X* = (m v0^2/K)^{2/5}.
-  const double t_end = 20.0 * 2.94 * std::pow(p.mass_kg * p.v0_mps * p.v0_mps / p.K, 0.4) / p.v0_mps;
+  // Long enough for any separation: 20 undamped contact times.
+  const double t_end = 20.0 * undamped_hertz_impact(p.K, p.mass_kg, p.v0_mps).contact_time_s;
   ContactPhaseSensitivities out;
   bool peak_seen = false, max_seen = false;
   double t = 0.0;

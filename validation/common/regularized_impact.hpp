@@ -115,7 +115,7 @@ void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, S
   auto y = sys.initial_state();
   // tau is bounded by the events (t reaches 20 contact times, or separation); the end
   // only has to lie beyond them: 1e7 tau scales T/(2 X*^{1/2}), T = X*/v0.
-  const double X = std::pow(setup.mass_kg * v0 * v0 / K, 0.4);
+  const double X = hertz_impact_scale_m(K, setup.mass_kg, v0);
   const double tau_end = 1e7 * (X / v0) / (2.0 * std::sqrt(X));
   s.work = integrate(sys, y, 0.0, tau_end, observer);
   if (s.separated) {

@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
   // CVODE at rtol 1e-10, atol 1e-10 of the smaller state scale (X* and v0).
   SolverSettings solver;
   solver.cvode.rtol = 1e-10;
-  solver.cvode.atol = 1e-10 * std::min(std::pow(contact.mass_kg * v0 * v0 / K, 0.4), v0);
+  solver.cvode.atol = 1e-10 * std::min(hertz_impact_scale_m(K, contact.mass_kg, v0), v0);
   ImpactSimulator simulator(solver);
 
   // e grid: 0.05, 0.06, ..., 1 (reduced: 0.05, 0.10, ..., 1).

@@ -1,6 +1,7 @@
 #pragma once
 // Linear Kelvin-Voigt contact: a linear spring and a linear dashpot in parallel.
 #include "model/damping/damping_law.hpp"
+#include "model/hertz.hpp"
 
 #include <cmath>
 
@@ -47,7 +48,7 @@ class KelvinVoigt {
 
   /// k [N/m] matched to the Hertz contact's undamped maximum deformation at v0.
   static double linear_stiffness(const ImpactConditions& c) {
-    const double X = std::pow(5.0 * c.mass_kg * c.v0_mps * c.v0_mps / (4.0 * c.K), 0.4);
+    const double X = undamped_hertz_impact(c.K, c.mass_kg, c.v0_mps).max_deformation_m;
     return c.mass_kg * c.v0_mps * c.v0_mps / (X * X);
   }
 
