@@ -6,9 +6,7 @@
 
 namespace hertzdash {
 
-namespace {
 double compliance(const Material& m) { return std::isinf(m.E_Pa) ? 0.0 : (1.0 - m.nu * m.nu) / m.E_Pa; }
-}  // namespace
 
 double hertz_stiffness(double sphere_radius_m, const Material& sphere, const Material& flat) {
   return 4.0 * std::sqrt(sphere_radius_m) / 3.0 / (compliance(sphere) + compliance(flat));

@@ -9,6 +9,10 @@ struct Material {
   double nu;    ///< Poisson ratio [-], in (-1, 0.5)
 };
 
+/// A body's share of the compliance sum of eq. (3): (1 - nu^2)/E [1/Pa]; 0 for a rigid
+/// body (E = +inf).
+double compliance(const Material& m);
+
 /// Hertz stiffness of a sphere of radius R on a flat, eq. (3):
 ///   K = (4 sqrt(R) / 3) * ((1 - nu_s^2)/E_s + (1 - nu_w^2)/E_w)^{-1}   [N/m^{3/2}]
 /// so that the elastic contact force is K x^{3/2} for a deformation x [m].

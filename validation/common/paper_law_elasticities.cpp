@@ -1,5 +1,6 @@
 #include "validation/common/paper_law_elasticities.hpp"
 
+#include "model/hertz.hpp"
 #include "model/damping/laws/hongo_paper.hpp"
 #include "model/invalid_parameter.hpp"
 
@@ -46,8 +47,7 @@ PaperLawElasticities paper_law_elasticities(const DropTestSetup& s, const Contac
       contact_phase_sensitivities({K, tau, s.mass_kg, v0, s.gravity_mps2}, options);
 
   // d ln q_j / d ln p_k, q = (K, tau, m, v0), p = (E_b, nu_b, e, m, h, R).
-  const double cb = (1 - s.ball.nu * s.ball.nu) / s.ball.E_Pa;
-  const double cr = std::isinf(s.rod.E_Pa) ? 0.0 : (1 - s.rod.nu * s.rod.nu) / s.rod.E_Pa;
+  const double cb = compliance(s.ball), cr = compliance(s.rod);
   const double C = cb + cr;
   const double L = std::log(1.0 / e), pi2 = std::numbers::pi * std::numbers::pi;
   const double dlnzeta_dlne = s.damping.zeta_form == ZetaForm::paper ? -1.0 / L : -pi2 / (L * (pi2 + L * L));

@@ -221,8 +221,7 @@ int main(int argc, char** argv) try {
     const double X_estimate = paper_peak_deformation(K, setup.mass_kg, v0, e_in);
     macros.add("pnStiffnessE" + t, 1e-8 * K, "{:.3f}");
     // Share of the nylon in the compliance sum of eq. (3), (1 - nu_s^2)/E_s over the sum.
-    const double nylon_compliance = (1 - setup.ball.nu * setup.ball.nu) / setup.ball.E_Pa;
-    const double rod_compliance = (1 - setup.rod.nu * setup.rod.nu) / setup.rod.E_Pa;
+    const double nylon_compliance = compliance(setup.ball), rod_compliance = compliance(setup.rod);
     macros.add("pnNylonComplianceSharePercent" + t, 100 * nylon_compliance / (nylon_compliance + rod_compliance), "{:.1f}");
     macros.add("pnOmegaN" + t, hertz_natural_frequency(K, setup.mass_kg, X_estimate), "{:.0f}");
     macros.add("pnPeakDeformationEstimateUM" + t, 1e6 * X_estimate, "{:.1f}");
