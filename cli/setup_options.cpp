@@ -3,7 +3,6 @@
 #include "model/damping/registry.hpp"
 #include "model/invalid_parameter.hpp"
 
-#include <map>
 
 namespace hertzdash::cli {
 
@@ -60,7 +59,7 @@ DropTestSetup SetupOptions::resolve(const PaperParameters& paper) const {
 }
 
 void SolverOptions::add_to(CLI::App& app) {
-  app.add_option("--integrator", integrator_, "euler, rk4, cvode, dopri5, dopri5-regularized, cvode-regularized or gbs8-regularized")->capture_default_str();
+  app.add_option("--integrator", integrator_, "One of: " + integrator_names())->capture_default_str();
   app.add_option("--dt", dt_s_, "Fixed step [s] for euler and rk4")->capture_default_str();
   app.add_flag("--no-event-location", no_event_location_,
                "euler/rk4: handle events at the end of the step that crosses them (convergence studies)");
@@ -71,14 +70,8 @@ void SolverOptions::add_to(CLI::App& app) {
 }
 
 SolverSettings SolverOptions::resolve() const {
-  static const std::map<std::string, IntegratorKind> kinds{
-      {"euler", IntegratorKind::euler}, {"rk4", IntegratorKind::rk4}, {"cvode", IntegratorKind::cvode},
-      {"dopri5", IntegratorKind::dopri5}, {"dopri5-regularized", IntegratorKind::dopri5_regularized},
-      {"cvode-regularized", IntegratorKind::cvode_regularized}, {"gbs8-regularized", IntegratorKind::gbs8_regularized}};
   SolverSettings s;
-  const auto k = kinds.find(integrator_);
-  if (k == kinds.end()) throw InvalidParameter("--integrator", integrator_, "one of: euler, rk4, cvode, dopri5, dopri5-regularized, cvode-regularized, gbs8-regularized");
-  s.integrator = k->second;
+  s.integrator = parse_integrator(integrator_);
   s.fixed_step.dt = dt_s_;
   s.fixed_step.locate_events = !no_event_location_;
   s.cvode.rtol = rtol_;

@@ -19,6 +19,18 @@ const char* to_string(IntegratorKind k) {
   return "?";
 }
 
+std::string integrator_names() {
+  std::string names;
+  for (IntegratorKind k : all_integrator_kinds) names += (names.empty() ? "" : ", ") + std::string(to_string(k));
+  return names;
+}
+
+IntegratorKind parse_integrator(std::string_view name, const std::string& option) {
+  for (IntegratorKind k : all_integrator_kinds)
+    if (name == to_string(k)) return k;
+  throw InvalidParameter(option, std::string(name), "one of: " + integrator_names());
+}
+
 void validate(const SolverSettings& s) {
   // Tolerances of an adaptive integrator; a regularised path steps in tau
   // (dt = 2 x^{1/2} dtau), not in time, so it takes no largest step.

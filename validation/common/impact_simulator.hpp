@@ -31,6 +31,14 @@ namespace hertzdash {
 /// CVODE in the physical variables; gbs8 needs a smooth contact, so for a law that does
 /// not declare RootPolynomialLaw it runs dopri5-regularized with its checks on.
 enum class IntegratorKind { euler, rk4, cvode, dopri5, dopri5_regularized, cvode_regularized, gbs8_regularized };
+inline constexpr IntegratorKind all_integrator_kinds[] = {
+    IntegratorKind::euler,  IntegratorKind::rk4,           IntegratorKind::cvode,           IntegratorKind::dopri5,
+    IntegratorKind::dopri5_regularized, IntegratorKind::cvode_regularized, IntegratorKind::gbs8_regularized};
+
+/// The CLI spellings of every integrator, comma-separated ("euler, rk4, ...").
+std::string integrator_names();
+/// The integrator spelled `name`; throws InvalidParameter(option, name, "one of: ...").
+IntegratorKind parse_integrator(std::string_view name, const std::string& option = "--integrator");
 
 /// True for the kinds that integrate the contact in regularising variables.
 inline bool is_regularized(IntegratorKind k) {
