@@ -70,32 +70,25 @@ const FigureRod figure_rods[] = {{"steel", "Steel"}, {"duralumin-c", "DurC"}};
 constexpr double drop_height_m = 0.020;  // Figs. 5 and 6: h = 20 mm
 
 // ---------------------------------------------------------------------------
-// The paper's dashpot with its natural frequency exactly as printed, for item 2.
-// Evaluated in SI units: the printed forms are dimensionally inconsistent, so their
-// values depend on the unit system and exist only to show what the misprint does.
-enum class PrintedForm {
-  eq9,   ///< w = sqrt(4K/(5m)) Xmax^{1/2}: the radical closes before X^{1/2}
-  eq12,  ///< w = sqrt((4K/(5m)) * 5 m v0^2 (1+e^2)/(8K)): the exponent 1/5 is missing
-};
-
-template <PrintedForm Form>
-class HongoAsPrinted {
+// The paper's dashpot with eq. (12) exactly as printed (the exponent 1/5 missing), for
+// item 2: w = sqrt((4K/(5m)) * 5 m v0^2 (1+e^2)/(8K)). Evaluated in SI units: the printed
+// form is dimensionally inconsistent, so its value depends on the unit system and exists
+// only to show what the misprint does. (Eq. 9 as printed is the model's
+// OmegaNVariant::as_printed.)
+class HongoAsPrintedEq12 {
  public:
-  static constexpr LawInfo info{Form == PrintedForm::eq9 ? "hongo-as-printed-eq9" : "hongo-as-printed-eq12",
-                                "Hongo et al., eqs. (9) and (12) as printed (SI units)",
+  static constexpr LawInfo info{"hongo-as-printed-eq12", "Hongo et al., eq. (12) as printed (SI units)",
                                 "F = K x^{3/2} + (2 K x^{1/2} zeta / omega_printed) xdot",
-                                "zeta by eq. (6); omega_printed as printed",
-                                "none: dimensionally inconsistent",
+                                "zeta by eq. (6); omega_printed as printed", "none: dimensionally inconsistent",
                                 true};
 
-  HongoAsPrinted(const ImpactConditions& c, const DampingSettings& s)
+  HongoAsPrintedEq12(const ImpactConditions& c, const DampingSettings& s)
       : K_(c.K), tau_(2.0 * zeta_from_restitution(c.restitution, s.zeta_form) / printed_omega(c)) {}
 
-  /// eq. (10): Xmax^{5/2} = 5 m v0^2 (1+e^2)/(8K); the two printed forms of w.
+  /// eq. (10): Xmax^{5/2} = 5 m v0^2 (1+e^2)/(8K), inserted without the exponent 1/5.
   static double printed_omega(const ImpactConditions& c) {
     const double X = paper_peak_deformation(c.K, c.mass_kg, c.v0_mps, c.restitution);
-    const double scale = 4.0 * c.K / (5.0 * c.mass_kg);
-    return Form == PrintedForm::eq9 ? std::sqrt(scale) * std::sqrt(X) : std::sqrt(scale * std::pow(X, 2.5));
+    return std::sqrt(4.0 * c.K / (5.0 * c.mass_kg) * std::pow(X, 2.5));
   }
 
   double force(double x, double xdot) const noexcept { return K_ * std::sqrt(x) * (x + tau_ * xdot); }
@@ -171,11 +164,11 @@ int main(int argc, char** argv) try {
     const double K = hertz_stiffness(setup), v0 = approach_speed(setup);
     const UndampedHertzImpact undamped = undamped_hertz_impact(K, setup.mass_kg, v0);
     const double X = paper_peak_deformation(K, setup.mass_kg, v0, 1.0);
-    const double w_printed_m = std::sqrt(4.0 * K / (5.0 * setup.mass_kg)) * std::sqrt(X);
+    const double w_printed_m = as_printed_natural_frequency(K, setup.mass_kg, X);
     // The same printed formula in the consistent millimetre-kilogram-second system:
     // force in kg mm/s^2 = 1e-3 N, so K [kg mm s^-2 / mm^{3/2}] = 1e3 (1e-3)^{3/2} K [SI].
     const double K_mm = K * 1e3 * std::pow(1e-3, 1.5), X_mm = 1e3 * X;
-    const double w_printed_mm = std::sqrt(4.0 * K_mm / (5.0 * setup.mass_kg)) * std::sqrt(X_mm);
+    const double w_printed_mm = as_printed_natural_frequency(K_mm, setup.mass_kg, X_mm);
     const double T = undamped.contact_time_s;
     macros.add(fmt::format("pnHalfPeriodRatioPrintedSI{}", rod.tag), std::numbers::pi / w_printed_m / T, "{:.2f}");
     macros.add(fmt::format("pnHalfPeriodRatioPrintedMM{}", rod.tag), std::numbers::pi / w_printed_mm / T, "{:.2f}");
@@ -200,8 +193,10 @@ int main(int argc, char** argv) try {
 
     const ImpactSummary corrected = simulator.run<HongoPaper>(setup);
     const ImpactSummary exact = simulator.run<HongoPaper>(exact_zeta);
-    const ImpactSummary printed9 = simulator.run<HongoAsPrinted<PrintedForm::eq9>>(setup);
-    const ImpactSummary printed12 = simulator.run<HongoAsPrinted<PrintedForm::eq12>>(setup);
+    DropTestSetup printed9_setup = setup;
+    printed9_setup.damping.omega_n = OmegaNVariant::as_printed;
+    const ImpactSummary printed9 = simulator.run<HongoPaper>(printed9_setup);
+    const ImpactSummary printed12 = simulator.run<HongoAsPrintedEq12>(setup);
     const auto c_e = [](const ImpactSummary& s) {
       for (const NamedValue& v : s.law_coefficients)
         if (std::string(v.name) == "c_e_coefficient_N_s_per_m_1_5") return v.value;
