@@ -48,9 +48,9 @@ bench: build
 	@start=$$(date +%s%N); \
 	validation/run_studies.sh $(BUILD) $(BUILD)/figures-timing > /dev/null; \
 	ms=$$(( ($$(date +%s%N) - start) / 1000000 )); \
-	$(BUILD)/bench/hertzdash_bench --out $(FIGURES) --generated paper/generated --readme README.md \
+	$(BUILD)/bench/work_precision_peers --full --out $(FIGURES) --generated paper/generated --readme README.md \
 	  --figures-ms $$ms
-	gnuplot -d -c validation/work_precision_peers/work_precision_peers.gp $(FIGURES)
+	gnuplot -d -c bench/work_precision_peers/work_precision_peers.gp $(FIGURES)
 
 clean:
 	rm -rf $(BUILD)

@@ -13,7 +13,7 @@
 #include "model/damping/laws/hongo_paper.hpp"
 #include "model/drop_test.hpp"
 #include "model/drop_test_setup.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <cmath>
 

@@ -20,11 +20,11 @@
 #include "bench/impact_solvers.hpp"
 #include "integrators/dormand_prince.hpp"
 #include "model/damping/laws/hongo_paper.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/atomic_file.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/latex_macros.hpp"
-#include "validation/common/parallel_sweep.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_writer.hpp"
+#include "io/latex_macros.hpp"
+#include "simulation/parallel_sweep.hpp"
 
 #include <fmt/format.h>
 

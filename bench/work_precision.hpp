@@ -1,8 +1,7 @@
 #pragma once
 // The work-precision comparison of hertzdash's integrators against Boost.Odeint,
-// GSL and naive CVODE, and the parallel-sweep throughput. Shared by `make bench`
-// (bench/bench_main.cpp, full repeats) and the study
-// validation/work_precision_peers (fewer repeats, run by `make figures`).
+// GSL and naive CVODE, and the parallel-sweep throughput, run by the program
+// bench/work_precision_peers: with full repeats for `make bench`, briefly for `make figures`.
 #include <filesystem>
 
 namespace hertzdash::bench {

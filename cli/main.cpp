@@ -2,7 +2,7 @@
 // Exit codes: 0 success, 2 invalid input (the message names the parameter and
 // its valid range), 1 any other failure. No output file is left half-written.
 #include "cli/command.hpp"
-#include "model/csv_table.hpp"
+#include "io/csv_table.hpp"
 #include "model/invalid_parameter.hpp"
 
 #include <iostream>

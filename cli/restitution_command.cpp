@@ -7,7 +7,7 @@
 #include "cli/setup_options.hpp"
 #include "model/invalid_parameter.hpp"
 #include "model/omega_n_variant.hpp"
-#include "validation/common/calibrate_restitution.hpp"
+#include "simulation/calibrate_restitution.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -3,8 +3,8 @@
 // defaults with overrides), the damping law, and the solver. Parsing only: the
 // values are validated by the library (validate()), which names the option.
 #include "model/drop_test_setup.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -1,9 +1,9 @@
 // `hertzdash simulate`: one drop test of the paper's set-up, any law, any integrator.
 #include "cli/command.hpp"
 #include "cli/setup_options.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/omega_n_fixed_point.hpp"
-#include "validation/common/step_resolution.hpp"
+#include "io/csv_writer.hpp"
+#include "simulation/omega_n_fixed_point.hpp"
+#include "simulation/step_resolution.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

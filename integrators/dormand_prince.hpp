@@ -49,7 +49,7 @@
 //
 // No allocation: all state is fixed-size (Eigen::Matrix<double, N, 1>) on the stack.
 #include "integrators/event_landing.hpp"
-#include "integrators/ode_system.hpp"
+#include "ode/ode_system.hpp"
 
 #include <algorithm>
 #include <array>

@@ -9,7 +9,7 @@
 // right-hand-side evaluation); the integrator then re-takes the step to end exactly
 // on the earliest crossing and calls fire_landed_events there.
 #include "integrators/fixed_step.hpp"  // detail::illinois_root
-#include "integrators/ode_system.hpp"
+#include "ode/ode_system.hpp"
 
 #include <algorithm>
 #include <array>

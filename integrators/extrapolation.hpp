@@ -34,7 +34,7 @@
 // No allocation: all state is fixed-size on the stack.
 #include "integrators/dormand_prince.hpp"  // weighted_rms, the first-step heuristic
 #include "integrators/event_landing.hpp"
-#include "integrators/ode_system.hpp"
+#include "ode/ode_system.hpp"
 
 #include <algorithm>
 #include <array>

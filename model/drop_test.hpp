@@ -23,7 +23,7 @@
 //   3 force_zero: with the tension clamp, g = F (separation where the force
 //     reaches zero, stop); else inactive
 // At onset the law's coefficients are fixed from that impact's approach speed.
-#include "integrators/ode_system.hpp"  // the OdeSystem vocabulary only (EventAction); no integrator
+#include "ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 #include "model/damping/damping_law.hpp"
 #include "model/drop_test_setup.hpp"
 

@@ -4,9 +4,9 @@
 // rigid-wall, gravity-free contact set-up with a prescribed K, m and v0.
 #include "example_law.hpp"
 #include "model/damping/registry.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/calibrate_restitution.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "simulation/calibrate_restitution.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <algorithm>
 #include <cmath>

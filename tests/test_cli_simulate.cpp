@@ -2,7 +2,7 @@
 // inputs actually used; the trace is the contact phase under a provenance header;
 // the README's example prints what the README says it prints.
 #include "cli_runner.hpp"
-#include "model/csv_table.hpp"
+#include "io/csv_table.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -2,11 +2,11 @@
 // the regularised contact system, CVODE on the undamped law without gravity (the
 // peak force coincides with maximum compression there), and the simulate warning.
 #include "model/hertz.hpp"
-#include "model/paper_parameters.hpp"
+#include "simulation/paper_parameters.hpp"
 #include "model/regularized_contact.hpp"
 #include "model/undamped_hertz_trajectory.hpp"
-#include "validation/common/impact_simulator.hpp"
-#include "validation/common/step_resolution.hpp"
+#include "simulation/impact_simulator.hpp"
+#include "simulation/step_resolution.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

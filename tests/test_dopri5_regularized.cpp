@@ -1,4 +1,4 @@
-// The fast path dopri5-regularized (validation/common/regularized_impact.hpp): the
+// The fast path dopri5-regularized (simulation/regularized_impact.hpp): the
 // free fall in closed form, the contact in regularising variables u = x^{1/2},
 // dt/dtau = 2u (model/regularized_contact.hpp) with Dormand-Prince 5(4), and the
 // laws' declarations force_of_root(u, v) = force(u^2, v) (RootPolynomialLaw) it
@@ -8,8 +8,8 @@
 #include "model/damping/laws/undamped.hpp"
 #include "model/damping/registry.hpp"
 #include "model/hertz.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "simulation/impact_simulator.hpp"
 #include "undamped_hertz_errors.hpp"
 
 #include <catch2/catch.hpp>

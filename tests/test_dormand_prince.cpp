@@ -6,9 +6,9 @@
 #include "model/damping/laws/undamped.hpp"
 #include "model/drop_test.hpp"
 #include "model/hertz.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/impact_simulator.hpp"
-#include "validation/common/parallel_sweep.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "simulation/impact_simulator.hpp"
+#include "simulation/parallel_sweep.hpp"
 #include "undamped_hertz_errors.hpp"
 
 #include "harmonic_oscillator.hpp"

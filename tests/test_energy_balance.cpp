@@ -1,6 +1,6 @@
 // Energy identities of the drop test.
-#include "model/paper_parameters.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

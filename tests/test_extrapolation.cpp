@@ -5,8 +5,8 @@
 #include "model/damping/laws/hongo_paper.hpp"
 #include "model/damping/laws/undamped.hpp"
 #include "model/hertz.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include "harmonic_oscillator.hpp"
 

@@ -1,9 +1,10 @@
 // The figure pipeline end to end, on a reduced run: validation/run_studies.sh runs every
 // study program and every gnuplot script into a scratch directory, and every file that
-// each study's manifest validation/<study>/outputs.txt declares must exist, be non-empty
-// and, for a CSV, carry exactly its declared columns and at least one data row.
+// each study's manifest <layer>/<study>/outputs.txt (layer validation or bench) declares
+// must exist, be non-empty and, for a CSV, carry exactly its declared columns and at
+// least one data row.
 // The physics behind the figures is tested elsewhere; this checks the plumbing.
-#include "model/csv_table.hpp"
+#include "io/csv_table.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -65,7 +66,10 @@ TEST_CASE("run_studies.sh --reduced produces every file the study manifests decl
   REQUIRE(status == 0);
 
   int studies = 0, files = 0;
-  for (const auto& dir : fs::directory_iterator(source / "validation")) {
+  std::vector<fs::directory_entry> study_dirs;  // <layer>/<study>/ for layers validation and bench
+  for (const char* layer : {"validation", "bench"})
+    for (const auto& dir : fs::directory_iterator(source / layer)) study_dirs.push_back(dir);
+  for (const auto& dir : study_dirs) {
     const std::string study = dir.path().filename().string();
     if (!dir.is_directory() || !fs::exists(dir.path() / (study + ".cpp"))) continue;
     INFO("study " << study);

@@ -1,7 +1,7 @@
 // Table 2's printed damping ratios follow from eq. (6), and both zeta forms
 // satisfy their defining relations.
-#include "model/csv_table.hpp"
-#include "model/paper_parameters.hpp"
+#include "io/csv_table.hpp"
+#include "simulation/paper_parameters.hpp"
 #include "model/restitution.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 // The tension clamp (--no-tension): the contact force never pulls, and contact ends
 // where the force reaches zero.
-#include "model/paper_parameters.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -11,8 +11,8 @@
 // is also checked against an independent quadrature of the same integral.
 #include "model/hertz.hpp"
 #include "undamped_hertz_errors.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 #include <gsl/gsl_integration.h>

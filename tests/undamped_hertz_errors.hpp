@@ -2,7 +2,7 @@
 // Relative errors of an undamped Hertz impact against its closed forms (model/hertz.hpp),
 // shared by the integrator tests that check them.
 #include "model/hertz.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Regenerate every figure: run each study program, then draw each figure.
 #   validation/run_studies.sh BUILD_DIR OUT_DIR [--reduced]
-# Study programs are BUILD_DIR/validation/<study> (from validation/<study>/<study>.cpp);
+# Study programs are BUILD_DIR/<layer>/<study> (from <layer>/<study>/<study>.cpp, layer
+# validation or bench: the work-precision study lives with the peers it times);
 # each writes CSV into OUT_DIR and LaTeX fragments into OUT_DIR/../generated. Then every
-# gnuplot script validation/<study>/<figure>.gp is run as
+# gnuplot script <layer>/<study>/<figure>.gp is run as
 #   gnuplot -d -c <figure>.gp OUT_DIR
 # and writes OUT_DIR/<figure>.pdf and OUT_DIR/<figure>.png from OUT_DIR/<figure>*.csv,
-# so restyling a plot never re-runs a simulation. validation/<study>/outputs.txt lists
+# so restyling a plot never re-runs a simulation. <layer>/<study>/outputs.txt lists
 # what each study must produce (checked by tests/test_figures_pipeline.cpp on a
 # --reduced run). Every run records its mode (full or reduced), wall time, the date and the machine in
 # OUT_DIR/../generated/run_studies.tex for the paper and the README.
@@ -23,14 +24,15 @@ for arg in "$@"; do
   esac
 done
 here=$(cd "$(dirname "$0")" && pwd)
+root=$(dirname "$here")
 mkdir -p "$out"
 generated=$(cd "$out/.." && pwd)/generated
 mkdir -p "$generated"
 start=$(date +%s.%N)
-for dir in "$here"/*/; do
+for dir in "$root"/validation/*/ "$root"/bench/*/; do
   study=$(basename "$dir")
   [ -f "$dir/$study.cpp" ] || continue
-  program="$build/validation/$study"
+  program="$build/$(basename "$(dirname "$dir")")/$study"
   if [ ! -x "$program" ]; then
     echo "run_studies.sh: $program is missing: build first (cmake --build $build)" >&2
     exit 1
@@ -38,7 +40,7 @@ for dir in "$here"/*/; do
   echo "== study $study"
   "$program" --out "$out" --generated "$generated" "$@"
 done
-for gp in "$here"/*/*.gp; do
+for gp in "$root"/validation/*/*.gp "$root"/bench/*/*.gp; do
   [ -e "$gp" ] || continue
   echo "== figure $(basename "$gp" .gp)"
   gnuplot -d -c "$gp" "$out"

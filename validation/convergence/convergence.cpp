@@ -8,7 +8,7 @@
 // CVODE Adams and BDF (against tolerance), and RK4 in regularising variables
 // (model/regularized_contact.hpp), the remedy this study arrives at.
 //
-// The problem (validation/convergence/convergence_runs.hpp): the paper's steel rod
+// The problem (simulation/convergence_runs.hpp): the paper's steel rod
 // meeting the nylon hemisphere at v0 = sqrt(2 g h), h = 20 mm, gravity off during
 // the contact, starting in flight a fraction of a step before onset. Two laws:
 //   - `none` (undamped Hertz, F = K x^{3/2}): exact references in closed form
@@ -54,12 +54,12 @@
 // time, more slowly for the peak force and the maximum deformation, with scatter
 // from its order and step selection. RK4 in the regularising variables u = x^{1/2},
 // dt/dtau = 2u, where every law of this family is polynomial, recovers order 4.
-#include "validation/common/atomic_file.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/latex_macros.hpp"
-#include "validation/common/step_resolution.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_writer.hpp"
+#include "io/latex_macros.hpp"
+#include "simulation/step_resolution.hpp"
 #include "validation/common/study_args.hpp"
-#include "validation/convergence/convergence_runs.hpp"
+#include "simulation/convergence_runs.hpp"
 
 #include <fmt/format.h>
 
@@ -307,7 +307,7 @@ int main(int argc, char** argv) {
   print_table("undamped Hertz ('none')", hertz);
   print_table("paper's ('hongo')", paper);
 
-  // The simulate warning's thresholds (validation/common/step_resolution.hpp) must be
+  // The simulate warning's thresholds (simulation/step_resolution.hpp) must be
   // what this sweep finds; say so loudly if they drift apart.
   std::cout << fmt::format("\nSteps per contact for every error <= {:g} (both laws; the sweep doubles N):\n", target_error);
   for (const auto& [integrator, location, constant] :

@@ -4,7 +4,7 @@
 // Every registered law (model/damping/registry.hpp) turns an input coefficient of
 // restitution e into damping coefficients by its own approximation. What a law
 // really returns is its effective restitution, the rebound over the approach speed
-// of the contact alone: rigid flat, no gravity (validation/common/calibrate_restitution.hpp).
+// of the contact alone: rigid flat, no gravity (simulation/calibrate_restitution.hpp).
 // All our laws build their coefficients from (e, v0, K, m) only, so by dimensional
 // analysis (tests/test_damping_law_restitution.cpp) e_effective is a function of e
 // alone; the map is taken at the paper's steel case (h = 20 mm), and holds for any
@@ -32,13 +32,13 @@
 // Prints the table.
 #include "model/damping/registry.hpp"
 #include "model/invalid_parameter.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/atomic_file.hpp"
-#include "validation/common/calibrate_restitution.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/parallel_sweep.hpp"
-#include "validation/common/impact_simulator.hpp"
-#include "validation/common/latex_macros.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "io/atomic_file.hpp"
+#include "simulation/calibrate_restitution.hpp"
+#include "io/csv_writer.hpp"
+#include "simulation/parallel_sweep.hpp"
+#include "simulation/impact_simulator.hpp"
+#include "io/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -15,12 +15,12 @@
 // Writes: OUT/height_sweep.csv (plotted by height_sweep.gp),
 // GENERATED/height_sweep.tex (macros \sweep...).
 #include "model/damping/laws/hongo_paper.hpp"
-#include "model/paper_parameters.hpp"
+#include "simulation/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/impact_simulator.hpp"
-#include "validation/common/latex_macros.hpp"
-#include "validation/common/parallel_sweep.hpp"
+#include "io/csv_writer.hpp"
+#include "simulation/impact_simulator.hpp"
+#include "io/latex_macros.hpp"
+#include "simulation/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -22,11 +22,11 @@
 // GENERATED/paper_figures.tex (macros \figs...).
 #include "model/damping/laws/hongo_paper.hpp"
 #include "model/damping/laws/undamped.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/impact_history.hpp"
-#include "validation/common/latex_macros.hpp"
-#include "validation/common/measured_trace.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "io/csv_writer.hpp"
+#include "simulation/impact_history.hpp"
+#include "io/latex_macros.hpp"
+#include "io/measured_trace.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

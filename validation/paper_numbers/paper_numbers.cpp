@@ -35,13 +35,13 @@
 // All impacts: CVODE (Adams, rtol 1e-8, atol 1e-12 m), the paper's tension-allowing
 // force law, g acting throughout, free fall from rest.
 #include "model/damping/laws/hongo_paper.hpp"
-#include "model/csv_table.hpp"
+#include "io/csv_table.hpp"
 #include "model/hertz.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/atomic_file.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/impact_simulator.hpp"
-#include "validation/common/latex_macros.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_writer.hpp"
+#include "simulation/impact_simulator.hpp"
+#include "io/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -18,12 +18,12 @@
 // Writes: OUT/rods_h20.csv (plotted by rods_h20.gp), GENERATED/rods_h20_table.tex,
 // GENERATED/rods_h20.tex (macros \rods...).
 #include "model/damping/laws/hongo_paper.hpp"
-#include "model/paper_parameters.hpp"
+#include "simulation/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
-#include "validation/common/atomic_file.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/impact_simulator.hpp"
-#include "validation/common/latex_macros.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_writer.hpp"
+#include "simulation/impact_simulator.hpp"
+#include "io/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -27,12 +27,12 @@
 //   ../generated/sensitivity_omega_n.tex        \sens... macros for the paper
 //   ../generated/sensitivity_omega_n_table.tex  the h = 20 mm comparison table
 #include "model/damping/laws/hongo_paper.hpp"
-#include "model/paper_parameters.hpp"
-#include "validation/common/atomic_file.hpp"
-#include "validation/common/csv_writer.hpp"
-#include "validation/common/latex_macros.hpp"
-#include "validation/common/omega_n_fixed_point.hpp"
-#include "validation/common/parallel_sweep.hpp"
+#include "simulation/paper_parameters.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_writer.hpp"
+#include "io/latex_macros.hpp"
+#include "simulation/omega_n_fixed_point.hpp"
+#include "simulation/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

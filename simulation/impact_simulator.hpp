@@ -11,8 +11,8 @@
 #include "model/damping/registry.hpp"
 #include "model/drop_test.hpp"
 #include "model/hertz.hpp"
-#include "validation/common/provenance.hpp"
-#include "validation/common/regularized_impact.hpp"
+#include "io/provenance.hpp"
+#include "simulation/regularized_impact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +25,7 @@ namespace hertzdash {
 
 /// dopri5_regularized ("dopri5-regularized"), cvode_regularized ("cvode-regularized"),
 /// gbs8_regularized ("gbs8-regularized"): the fall in closed form and the contact in
-/// regularising variables (validation/common/regularized_impact.hpp) with dopri5, CVODE
+/// regularising variables (simulation/regularized_impact.hpp) with dopri5, CVODE
 /// or the order-8 extrapolation method (integrators/extrapolation.hpp; the fastest
 /// path). With the tension clamp they run dopri5 (for gbs8: with its tolerances) or
 /// CVODE in the physical variables; gbs8 needs a smooth contact, so for a law that does

@@ -15,7 +15,7 @@
 // Euler is first order with an error of about 6/N, so it needs thousands of steps;
 // RK4 with located events is of order 1.5 to 2.5 but with small constants; RK4
 // without event location knows the contact time only to a step (error ~ 1/(2N)).
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <optional>
 

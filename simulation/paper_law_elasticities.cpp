@@ -1,4 +1,4 @@
-#include "validation/common/paper_law_elasticities.hpp"
+#include "simulation/paper_law_elasticities.hpp"
 
 #include "model/hertz.hpp"
 #include "model/damping/laws/hongo_paper.hpp"

@@ -1,4 +1,4 @@
-#include "validation/common/provenance.hpp"
+#include "io/provenance.hpp"
 
 namespace hertzdash {
 

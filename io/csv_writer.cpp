@@ -1,6 +1,6 @@
-#include "validation/common/csv_writer.hpp"
+#include "io/csv_writer.hpp"
 
-#include "validation/common/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 #include <fmt/format.h>
 

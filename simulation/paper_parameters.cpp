@@ -1,6 +1,6 @@
-#include "model/paper_parameters.hpp"
+#include "simulation/paper_parameters.hpp"
 
-#include "model/csv_table.hpp"
+#include "io/csv_table.hpp"
 #include "model/invalid_parameter.hpp"
 
 #include <cstdlib>

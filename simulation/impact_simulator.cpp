@@ -1,4 +1,4 @@
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include "model/invalid_parameter.hpp"
 

@@ -1,4 +1,4 @@
-#include "validation/common/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 #include <cstdio>
 #include <fstream>

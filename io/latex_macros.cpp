@@ -1,6 +1,6 @@
-#include "validation/common/latex_macros.hpp"
+#include "io/latex_macros.hpp"
 
-#include "validation/common/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 #include <fmt/format.h>
 

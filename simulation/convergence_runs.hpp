@@ -23,10 +23,10 @@
 #include "integrators/rk4.hpp"
 #include "model/damping/registry.hpp"
 #include "model/drop_test.hpp"
-#include "model/paper_parameters.hpp"
+#include "simulation/paper_parameters.hpp"
 #include "model/regularized_contact.hpp"
 #include "model/undamped_hertz_trajectory.hpp"
-#include "validation/common/impact_simulator.hpp"
+#include "simulation/impact_simulator.hpp"
 
 #include <algorithm>
 #include <array>

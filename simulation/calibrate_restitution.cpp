@@ -1,4 +1,4 @@
-#include "validation/common/calibrate_restitution.hpp"
+#include "simulation/calibrate_restitution.hpp"
 
 #include "model/invalid_parameter.hpp"
 

@@ -6,7 +6,7 @@
 # Bottom: |e_eff error| against the tolerance for the adaptive solvers, with error = tolerance.
 out = ARG1
 here = system('dirname '.ARG0)
-load here.'/../style.gnuplot'
+load here.'/../../validation/style.gnuplot'
 contact = out.'/work_precision_peers.csv'
 drop = out.'/work_precision_peers_drop.csv'
 

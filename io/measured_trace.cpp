@@ -1,6 +1,6 @@
-#include "validation/common/measured_trace.hpp"
+#include "io/measured_trace.hpp"
 
-#include "model/csv_table.hpp"
+#include "io/csv_table.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "validation/common/omega_n_fixed_point.hpp"
+#include "simulation/omega_n_fixed_point.hpp"
 
 #include "model/damping/laws/hongo_paper.hpp"
 

@@ -1,4 +1,4 @@
-#include "validation/common/contact_sensitivity.hpp"
+#include "simulation/contact_sensitivity.hpp"
 
 #include "model/hertz.hpp"
 

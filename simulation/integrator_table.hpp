@@ -1,0 +1,247 @@
+#pragma once
+// The integrator table: one row per integrator, read by the simulator (which integrator
+// runs a given impact, and how it is called), the settings' validation, the run
+// description, the step-resolution advice, the CLI (spellings, help) and the benchmark.
+//
+// Adding an integrator: write it in integrators/ (it knows only ode/), add its
+// enumerator to IntegratorKind (simulation/solver_settings.hpp) and one row here: a
+// struct with its traits and a static integrate() that calls it, listed in
+// IntegratorTable. Nothing else changes.
+//
+// A row's integrate(sys, y, t0, t1, settings, workspace, observer) integrates any
+// OdeSystem: the drop test in physical variables (model/drop_test.hpp) for rows with
+// Variables::physical, the contact in regularising variables
+// (model/regularized_contact.hpp, simulation/regularized_impact.hpp) for
+// Variables::regularized.
+#include "integrators/cvode_integrator.hpp"
+#include "integrators/dormand_prince.hpp"
+#include "integrators/explicit_euler.hpp"
+#include "integrators/extrapolation.hpp"
+#include "integrators/fixed_step.hpp"
+#include "integrators/rk4.hpp"
+#include "ode/ode_system.hpp"
+#include "simulation/solver_settings.hpp"
+
+#include <array>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+namespace hertzdash {
+
+enum class StepControl {
+  fixed_step,  ///< reads dt_s and locate_events
+  adaptive,    ///< reads rtol, atol and (physical variables only) max_step_s
+};
+
+enum class Variables {
+  physical,     ///< the whole drop in (x, x'), model/drop_test.hpp
+  regularized,  ///< the fall in closed form, the contact in u = x^{1/2} (simulation/regularized_impact.hpp)
+};
+
+/// What the table says of one integrator.
+struct IntegratorTraits {
+  IntegratorKind kind;
+  std::string_view name;  ///< the CLI spelling
+  StepControl step_control;
+  Variables variables;
+  bool reads_cvode_method = false;  ///< takes --cvode-method
+  /// Runs only laws whose force is a polynomial in x^{1/2} (RootPolynomialLaw); others
+  /// run `fallback_for_other_laws`.
+  bool needs_root_polynomial = false;
+  IntegratorKind fallback_for_other_laws = kind;
+  /// What runs with the tension clamp (contact ends where the force reaches zero, an
+  /// event the regularised contact does not have): the same method in physical variables.
+  IntegratorKind fallback_with_tension_clamp = kind;
+  /// Steps per contact time a fixed-step method needs for the step-resolution target
+  /// (simulation/step_resolution.hpp), with and without event location; 0 if adaptive.
+  long min_steps_per_contact_located = 0, min_steps_per_contact_unlocated = 0;
+};
+
+/// The CVODE integrators of a simulator, one per system size, created on first use and
+/// reused for every later impact (CVodeReInit), so a sweep pays the set-up once.
+class IntegratorWorkspace {
+ public:
+  template <OdeSystem S>
+  CvodeIntegrator& cvode(const CvodeOptions& options) {
+    for (const Entry& e : cvode_)
+      if (e.dimension == S::dimension && e.event_count == S::event_count) return *e.integrator;
+    cvode_.push_back({S::dimension, S::event_count,
+                      std::make_unique<CvodeIntegrator>(S::dimension, S::event_count, options)});
+    return *cvode_.back().integrator;
+  }
+
+ private:
+  struct Entry {
+    int dimension, event_count;
+    std::unique_ptr<CvodeIntegrator> integrator;
+  };
+  std::vector<Entry> cvode_;
+};
+
+/// A system that is smooth where its events restart or land a step (the regularised
+/// contact of a RootPolynomialLaw) declares `static constexpr bool smooth_at_events = true`;
+/// dopri5 then trusts its embedded error estimate there.
+template <class S>
+constexpr bool smooth_at_events() {
+  if constexpr (requires { S::smooth_at_events; }) return S::smooth_at_events;
+  else return false;
+}
+
+namespace integrator_rows {
+
+inline FixedStepOptions fixed_step_options(const SolverSettings& s) { return {s.dt_s, s.locate_events}; }
+
+struct Euler {
+  static constexpr IntegratorTraits traits{.kind = IntegratorKind::euler, .name = "euler",
+                                           .step_control = StepControl::fixed_step, .variables = Variables::physical,
+                                           .min_steps_per_contact_located = 10240,
+                                           .min_steps_per_contact_unlocated = 10240};
+  template <OdeSystem S, class Observer>
+  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
+                                    IntegratorWorkspace&, Observer& observer) {
+    return integrate_fixed_step<ExplicitEuler>(sys, y, t0, t1, fixed_step_options(s), observer);
+  }
+};
+
+struct Rk4 {
+  static constexpr IntegratorTraits traits{.kind = IntegratorKind::rk4, .name = "rk4",
+                                           .step_control = StepControl::fixed_step, .variables = Variables::physical,
+                                           .min_steps_per_contact_located = 10,
+                                           .min_steps_per_contact_unlocated = 1280};
+  template <OdeSystem S, class Observer>
+  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
+                                    IntegratorWorkspace&, Observer& observer) {
+    return integrate_fixed_step<ClassicalRk4>(sys, y, t0, t1, fixed_step_options(s), observer);
+  }
+};
+
+/// How the CVODE rows call it: SUNDIALS CVODE (Adams or BDF) with its root finder,
+/// memory reused across impacts.
+struct CallCvode {
+  template <OdeSystem S, class Observer>
+  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
+                                    IntegratorWorkspace& w, Observer& observer) {
+    CvodeOptions o;
+    o.method = s.cvode_method;
+    o.rtol = s.rtol;
+    o.atol = s.atol;
+    o.max_step = s.max_step_s;
+    return w.cvode<S>(o).integrate(sys, y, t0, t1, observer);
+  }
+};
+
+/// How the dopri5 rows call it: adaptive Dormand-Prince 5(4) with events landed on, with
+/// singular-point checks unless the system is smooth at its events.
+struct CallDopri5 {
+  template <OdeSystem S, class Observer>
+  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
+                                    IntegratorWorkspace&, Observer& observer) {
+    DormandPrinceOptions o;
+    o.rtol = s.rtol;
+    o.atol = s.atol;
+    o.max_step = s.max_step_s;
+    o.singular_points = !smooth_at_events<S>();
+    return integrate_dormand_prince(sys, y, t0, t1, o, observer);
+  }
+};
+
+struct Cvode : CallCvode {
+  static constexpr IntegratorTraits traits{.kind = IntegratorKind::cvode, .name = "cvode",
+                                           .step_control = StepControl::adaptive, .variables = Variables::physical,
+                                           .reads_cvode_method = true};
+};
+
+struct Dopri5 : CallDopri5 {
+  static constexpr IntegratorTraits traits{.kind = IntegratorKind::dopri5, .name = "dopri5",
+                                           .step_control = StepControl::adaptive, .variables = Variables::physical};
+};
+
+struct Dopri5Regularized : CallDopri5 {
+  static constexpr IntegratorTraits traits{.kind = IntegratorKind::dopri5_regularized, .name = "dopri5-regularized",
+                                           .step_control = StepControl::adaptive,
+                                           .variables = Variables::regularized,
+                                           .fallback_with_tension_clamp = IntegratorKind::dopri5};
+};
+
+struct CvodeRegularized : CallCvode {
+  static constexpr IntegratorTraits traits{.kind = IntegratorKind::cvode_regularized, .name = "cvode-regularized",
+                                           .step_control = StepControl::adaptive,
+                                           .variables = Variables::regularized, .reads_cvode_method = true,
+                                           .fallback_with_tension_clamp = IntegratorKind::cvode};
+};
+
+/// Gragg-Bulirsch-Stoer extrapolation of order 8 on the regularised contact: the fastest
+/// path, for laws smooth through onset and separation in u = x^{1/2}.
+struct Gbs8Regularized {
+  static constexpr IntegratorTraits traits{.kind = IntegratorKind::gbs8_regularized, .name = "gbs8-regularized",
+                                           .step_control = StepControl::adaptive,
+                                           .variables = Variables::regularized,
+                                           .needs_root_polynomial = true,
+                                           .fallback_for_other_laws = IntegratorKind::dopri5_regularized,
+                                           .fallback_with_tension_clamp = IntegratorKind::dopri5};
+  template <OdeSystem S, class Observer>
+  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
+                                    IntegratorWorkspace&, Observer& observer) {
+    ExtrapolationOptions o;
+    o.rtol = s.rtol;
+    o.atol = s.atol;
+    return integrate_extrapolation(sys, y, t0, t1, o, observer);
+  }
+};
+
+}  // namespace integrator_rows
+
+/// The table, in the order of IntegratorKind.
+using IntegratorTable = std::tuple<
+    integrator_rows::Euler,
+    integrator_rows::Rk4,
+    integrator_rows::Cvode,
+    integrator_rows::Dopri5,
+    integrator_rows::Dopri5Regularized,
+    integrator_rows::CvodeRegularized,
+    integrator_rows::Gbs8Regularized>;
+
+/// Every integrator, in table order.
+inline constexpr auto all_integrator_kinds = []<class... Row>(std::type_identity<std::tuple<Row...>>) {
+  return std::array<IntegratorKind, sizeof...(Row)>{Row::traits.kind...};
+}(std::type_identity<IntegratorTable>{});
+
+/// The row of `kind`.
+constexpr const IntegratorTraits& integrator_traits(IntegratorKind kind) {
+  constexpr auto table = []<class... Row>(std::type_identity<std::tuple<Row...>>) {
+    return std::array<IntegratorTraits, sizeof...(Row)>{Row::traits...};
+  }(std::type_identity<IntegratorTable>{});
+  return table[static_cast<std::size_t>(kind)];
+}
+static_assert([] {
+  for (std::size_t i = 0; i < all_integrator_kinds.size(); ++i)
+    if (static_cast<std::size_t>(all_integrator_kinds[i]) != i) return false;
+  return true;
+}(), "IntegratorTable lists the rows in the order of IntegratorKind");
+
+/// Call f(std::type_identity<Row>{}) with the row of `kind`, so the caller can
+/// instantiate its code for that integrator.
+template <class F>
+void with_integrator_row(IntegratorKind kind, F&& f) {
+  [&]<class... Row>(std::type_identity<std::tuple<Row...>>) {
+    ((kind == Row::traits.kind && (f(std::type_identity<Row>{}), true)) || ...);
+  }(std::type_identity<IntegratorTable>{});
+}
+
+const char* to_string(IntegratorKind k);
+/// The CLI spellings of every integrator, comma-separated ("euler, rk4, ...").
+std::string integrator_names();
+/// The integrator spelled `name`; throws InvalidParameter(option, name, "one of: ...").
+IntegratorKind parse_integrator(std::string_view name, const std::string& option = "--integrator");
+
+/// Which integrator runs an impact asked of `asked`: the row's fall-backs applied for the
+/// tension clamp and for a law that is not a RootPolynomialLaw. `why` (if given) receives
+/// the reason when it differs from `asked`, empty otherwise.
+IntegratorKind integrator_used(IntegratorKind asked, bool tension_clamp, bool root_polynomial_law,
+                               std::string* why = nullptr);
+
+}  // namespace hertzdash

@@ -1,0 +1,29 @@
+#pragma once
+// How to integrate: which integrator, and the settings that apply to it. One set of
+// settings serves every integrator; the integrator table (simulation/integrator_table.hpp)
+// says which of them each integrator reads, and turns them into its options.
+#include "integrators/cvode_integrator.hpp"
+
+namespace hertzdash {
+
+/// The integrators, one per row of the integrator table (same order).
+enum class IntegratorKind { euler, rk4, cvode, dopri5, dopri5_regularized, cvode_regularized, gbs8_regularized };
+
+struct SolverSettings {
+  IntegratorKind integrator = IntegratorKind::cvode;
+  // Fixed-step integrators (euler, rk4):
+  double dt_s = 1e-6;          ///< the step [s], > 0
+  bool locate_events = true;   ///< cut steps at located event crossings (false: at the step's end)
+  // Adaptive integrators (cvode, dopri5, the regularised paths):
+  double rtol = 1e-8;          ///< relative tolerance, > 0
+  double atol = 1e-12;         ///< absolute tolerance (state units: m, m/s; m^{1/2}, m/s, s regularised), > 0
+  double max_step_s = 0;       ///< largest step [s], physical variables only; 0: no limit
+  CvodeMethod cvode_method = CvodeMethod::adams;  ///< cvode, cvode-regularized
+};
+
+/// Throws InvalidParameter, naming the option, for a setting the chosen integrator reads
+/// that is out of range: a non-positive step or tolerance, a negative largest step, or a
+/// largest step for a regularised path (whose steps are in tau, not in time).
+void validate(const SolverSettings& s);
+
+}  // namespace hertzdash
