@@ -99,7 +99,7 @@ class CvodeFresh final : public ImpactSolver {
       if (flag != CV_ROOT_RETURN) throw std::runtime_error("CVODE peer: no crossing before the end time");
       if (sys.in_contact()) break;
       // Onset: calibrate the law, restart in contact mode.
-      sys.handle_event(contact_event, t, DropTest<HongoPaper>::State{yv[0], yv[1]});
+      sys.handle_event(event_index(DropTestEvent::contact), t, DropTest<HongoPaper>::State{yv[0], yv[1]});
       v_impact = yv[1];
       long n = 0;
       check(CVodeGetNumRhsEvals(c.mem, &n), "CVodeGetNumRhsEvals");

@@ -68,7 +68,7 @@ class GslRk8pd final : public ImpactSolver {
     if (!sys.in_contact()) {
       const double fall_s = impact.fall_time_s;
       to_crossing(ode, ctx, y, t, 1e-3 * fall_s, 10 * fall_s, +1);
-      sys.handle_event(contact_event, t, DropTest<HongoPaper>::State{y[0], y[1]});
+      sys.handle_event(event_index(DropTestEvent::contact), t, DropTest<HongoPaper>::State{y[0], y[1]});
     }
     const double v_impact = y[1];
     to_crossing(ode, ctx, y, t, 1e-3 * contact_scale_s, t + 20 * contact_scale_s, -1);

@@ -25,11 +25,9 @@ std::unique_ptr<ImpactSolver> make_hertzdash_solver(IntegratorKind kind, double 
   SolverSettings s;
   s.integrator = kind;
   const Tolerances tol = tolerances_for(tol_or_dt);
-  s.cvode.rtol = s.dopri5.rtol = tol.rtol;
-  s.cvode.atol = s.dopri5.atol = tol.atol;
-  s.gbs8.rtol = tol.rtol;
-  s.gbs8.atol = tol.atol;
-  s.fixed_step.dt = tol_or_dt;
+  s.rtol = tol.rtol;
+  s.atol = tol.atol;
+  s.dt_s = tol_or_dt;
   validate(s);
   return std::make_unique<HertzdashSolver>(s);
 }

@@ -57,7 +57,7 @@ struct PeerImpact {
   PeerImpact& operator=(const PeerImpact&) = delete;
 
   DropTestModel model;
-  DropTest<HongoPaper> sys;      ///< refers to `model`
+  DropTest<HongoPaper> sys;      ///< the system (holds a copy of `model`)
   DropTest<HongoPaper>::State y0;
   double contact_time_s;         ///< undamped Hertz contact time at the approach speed [s]
   double fall_time_s;            ///< free fall from rest to contact [s] (0 if starting at onset)

@@ -46,7 +46,7 @@ class OdeintDopri5 final : public ImpactSolver {
     if (!sys.in_contact()) {
       // Free fall until x rises through zero.
       y = integrate_to_crossing(rhs, y, t, 1e-3 * impact.fall_time_s, +1);
-      sys.handle_event(contact_event, t, DropTest<HongoPaper>::State{y[0], y[1]});
+      sys.handle_event(event_index(DropTestEvent::contact), t, DropTest<HongoPaper>::State{y[0], y[1]});
     }
     const double v_impact = y[1];
     y = integrate_to_crossing(rhs, y, t, 1e-3 * contact_scale_s, -1);

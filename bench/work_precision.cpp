@@ -348,8 +348,8 @@ int run_work_precision(const WorkPrecisionConfig& c) {
     SolverSettings settings;
     settings.integrator = IntegratorKind::gbs8_regularized;
     const Tolerances tol = tolerances_for(1e-8);
-    settings.gbs8.rtol = tol.rtol;
-    settings.gbs8.atol = tol.atol;
+    settings.rtol = tol.rtol;
+    settings.atol = tol.atol;
     const long n = c.sweep_impacts, side = static_cast<long>(std::sqrt(static_cast<double>(n)));
     std::vector<double> e(static_cast<std::size_t>(n));
     auto body = [&](ImpactSimulator& sim, std::size_t i) {

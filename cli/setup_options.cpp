@@ -72,19 +72,13 @@ void SolverOptions::add_to(CLI::App& app) {
 SolverSettings SolverOptions::resolve() const {
   SolverSettings s;
   s.integrator = parse_integrator(integrator_);
-  s.fixed_step.dt = dt_s_;
-  s.fixed_step.locate_events = !no_event_location_;
-  s.cvode.rtol = rtol_;
-  s.cvode.atol = atol_;
-  s.cvode.max_step = max_step_s_;
-  s.dopri5.rtol = rtol_;
-  s.dopri5.atol = atol_;
-  s.dopri5.max_step = max_step_s_;
-  s.gbs8.rtol = rtol_;
-  s.gbs8.atol = atol_;
-  s.gbs8.max_step = max_step_s_;
-  if (cvode_method_ == "adams") s.cvode.method = CvodeMethod::adams;
-  else if (cvode_method_ == "bdf") s.cvode.method = CvodeMethod::bdf;
+  s.dt_s = dt_s_;
+  s.locate_events = !no_event_location_;
+  s.rtol = rtol_;
+  s.atol = atol_;
+  s.max_step_s = max_step_s_;
+  if (cvode_method_ == "adams") s.cvode_method = CvodeMethod::adams;
+  else if (cvode_method_ == "bdf") s.cvode_method = CvodeMethod::bdf;
   else throw InvalidParameter("--cvode-method", cvode_method_, "one of: adams, bdf");
   validate(s);
   return s;

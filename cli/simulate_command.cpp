@@ -2,7 +2,7 @@
 #include "cli/command.hpp"
 #include "cli/setup_options.hpp"
 #include "io/csv_writer.hpp"
-#include "simulation/omega_n_fixed_point.hpp"
+#include "simulation/impact_simulator.hpp"
 #include "simulation/step_resolution.hpp"
 
 #include <fmt/format.h>
@@ -33,13 +33,7 @@ nlohmann::ordered_json json_value(const std::string& text) {
   return text;
 }
 
-// For an iterated --omega-n variant: how its fixed point was found.
-struct FixedPointReport {
-  bool iterated = false;
-  OmegaNFixedPoint result;
-};
-
-nlohmann::ordered_json to_json(const ImpactSummary& s, const Parameters& inputs, const FixedPointReport& fp) {
+nlohmann::ordered_json to_json(const ImpactSummary& s, const Parameters& inputs) {
   nlohmann::ordered_json j;
   j["e_effective"] = s.e_effective;
   j["peak_force_N"] = s.peak_force_N;
@@ -53,11 +47,12 @@ nlohmann::ordered_json to_json(const ImpactSummary& s, const Parameters& inputs,
   j["steps"] = s.work.steps;
   j["rhs_evaluations"] = s.work.rhs_evaluations;
   j["events"] = s.work.events;
-  if (fp.iterated) {
-    j["omega_n_fixed_point"] = {{"iterations", fp.result.iterations},
-                                {"converged", fp.result.converged},
-                                {"relative_change", fp.result.relative_change},
-                                {"contraction", fp.result.contraction}};
+  j["integrator_used"] = to_string(s.integrator_used);
+  if (const auto& it = s.omega_n_iteration) {
+    j["omega_n_fixed_point"] = {{"iterations", it->iterations},
+                                {"converged", it->converged},
+                                {"relative_change", it->relative_change},
+                                {"contraction", it->contraction}};
   }
   nlohmann::ordered_json in;
   for (const auto& [name, value] : inputs) in[name] = json_value(value);
@@ -66,9 +61,9 @@ nlohmann::ordered_json to_json(const ImpactSummary& s, const Parameters& inputs,
   return j;
 }
 
-void print_text(const ImpactSummary& s, std::string_view law, IntegratorKind integrator,
-                const FixedPointReport& fp) {
-  std::cout << fmt::format("hertzdash simulate: damping law '{}', integrator {}\n", law, to_string(integrator));
+void print_text(const ImpactSummary& s, std::string_view law, IntegratorKind integrator) {
+  std::cout << fmt::format("hertzdash simulate: damping law '{}', integrator {}{}\n", law, to_string(integrator),
+                           s.integrator_used == integrator ? "" : fmt::format(" (ran {})", to_string(s.integrator_used)));
   auto line = [](std::string_view name, double value) { std::cout << fmt::format("  {:<30} {:.6g}\n", name, value); };
   line("impact_velocity_mps", s.impact_velocity_mps);
   line("rebound_velocity_mps", s.rebound_velocity_mps);
@@ -79,10 +74,10 @@ void print_text(const ImpactSummary& s, std::string_view law, IntegratorKind int
   line("K_N_per_m_1_5", s.K);
   for (const NamedValue& c : s.law_coefficients) line(c.name, c.value);
   std::cout << fmt::format("  {:<30} {} steps, {} rhs evaluations\n", "work", s.work.steps, s.work.rhs_evaluations);
-  if (fp.iterated)
+  if (const auto& it = s.omega_n_iteration)
     std::cout << fmt::format("  {:<30} {} iterations, {} (last relative change {:.3g}, contraction {:.3g})\n",
-                             "omega_n_fixed_point", fp.result.iterations, fp.result.converged ? "converged" : "NOT converged",
-                             fp.result.relative_change, fp.result.contraction);
+                             "omega_n_fixed_point", it->iterations, it->converged ? "converged" : "NOT converged",
+                             it->relative_change, it->contraction);
   if (!s.separated) std::cout << "  note: the rod did not separate (it came to rest on the ball)\n";
 }
 
@@ -104,22 +99,16 @@ Command add_simulate_command(CLI::App& app) {
 
             ImpactSimulator simulator(solver);
             std::vector<TraceSample> trace;
-            std::vector<TraceSample>* trace_ptr = opt->trace_path.empty() ? nullptr : &trace;
-            FixedPointReport fp;
-            ImpactSummary s;
-            if (is_iterated(setup.damping.omega_n)) {  // only reachable with the paper's law (resolve checks)
-              fp.iterated = true;
-              fp.result = run_paper_law(simulator, setup, {}, trace_ptr);
-              s = fp.result.summary;
-              if (!fp.result.converged) {  // nothing written: there is no impact to report
-                std::cerr << fmt::format("hertzdash: the {} omega_n fixed-point iteration failed after {} "
-                                         "iterations: {}\n",
-                                         to_string(setup.damping.omega_n), fp.result.iterations, fp.result.failure);
-                return 1;
-              }
-            } else {
-              s = simulator.run(setup, opt->setup.damping(), trace_ptr);
+            const ImpactSummary s = simulator.run(setup, opt->setup.damping(), opt->trace_path.empty() ? nullptr : &trace);
+            if (s.omega_n_iteration && !s.omega_n_iteration->converged) {  // nothing written: no impact to report
+              std::cerr << fmt::format("hertzdash: the {} omega_n fixed-point iteration failed after {} iterations: {}\n",
+                                       to_string(setup.damping.omega_n), s.omega_n_iteration->iterations,
+                                       s.omega_n_iteration->failure);
+              return 1;
             }
+            if (!s.integrator_fallback.empty())
+              std::cerr << fmt::format("hertzdash: note: --integrator {} fell back to {}: {}\n", to_string(solver.integrator),
+                                       to_string(s.integrator_used), s.integrator_fallback);
 
             if (!opt->trace_path.empty()) {
               CsvWriter csv("hertzdash simulate: contact-phase time series (x = deformation, force compressive "
@@ -135,12 +124,12 @@ Command add_simulate_command(CLI::App& app) {
                   "hertzdash: warning: the fixed step resolved the contact with only {:.0f} steps (contact time {:.6g} s, "
                   "--dt {:.6g} s); the convergence study needs at least {} steps per contact with {} ({}) for errors "
                   "below {:g} % (README, Convergence)\n",
-                  r->steps_per_contact, s.contact_time_s, solver.fixed_step.dt, r->required, to_string(solver.integrator),
-                  solver.fixed_step.locate_events ? "events located" : "--no-event-location",
+                  r->steps_per_contact, s.contact_time_s, solver.dt_s, r->required, to_string(solver.integrator),
+                  solver.locate_events ? "events located" : "--no-event-location",
                   100 * step_resolution_target_error);
             }
-            if (opt->json) std::cout << to_json(s, inputs, fp).dump(2) << "\n";
-            else print_text(s, opt->setup.damping(), solver.integrator, fp);
+            if (opt->json) std::cout << to_json(s, inputs).dump(2) << "\n";
+            else print_text(s, opt->setup.damping(), solver.integrator);
             return 0;
           }};
 }

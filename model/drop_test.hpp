@@ -46,7 +46,8 @@ struct DropTestModel {
   double gravity_mps2;
 };
 
-enum DropTestEvent : int { contact_event = 0, max_compression_event = 1, peak_force_event = 2, force_zero_event = 3 };
+/// The drop test's events, in event order (event_index gives the integrators' index).
+enum class DropTestEvent : int { contact, max_compression, peak_force, force_zero };
 
 /// The system integrators see: the model plus the per-run workspace (mode, the
 /// law calibrated for the current impact).
@@ -58,7 +59,7 @@ class DropTest {
   using State = Eigen::Matrix<double, 2, 1>;
   using Events = std::array<double, event_count>;
 
-  explicit DropTest(const DropTestModel& model) : model_(model) {}
+  explicit DropTest(const DropTestModel& model) : model_(model) {}  ///< keeps a copy
 
   /// Initial state: released from rest at height h, or (with an impact velocity)
   /// at contact onset, already calibrated for that impact.
@@ -106,11 +107,11 @@ class DropTest {
   }
 
   EventAction handle_event(int which, double, const State& y) {
-    if (which == contact_event && !law_) {
+    if (which == event_index(DropTestEvent::contact) && !law_) {
       begin_contact(y);
       return EventAction::restart;
     }
-    if (which == contact_event || which == force_zero_event) {
+    if (which == event_index(DropTestEvent::contact) || which == event_index(DropTestEvent::force_zero)) {
       law_.reset();
       return EventAction::stop;
     }
@@ -132,7 +133,7 @@ class DropTest {
     return model_.setup.no_tension ? std::max(F, 0.0) : F;
   }
 
-  const DropTestModel& model_;
+  DropTestModel model_;
   std::optional<Law> law_;
   double x_scale_m_ = 0.0, v_scale_mps_ = 0.0;  ///< per impact, for difference steps
 };

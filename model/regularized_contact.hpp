@@ -42,12 +42,8 @@
 
 namespace hertzdash {
 
-enum RegularizedContactEvent : int {
-  separation_event = 0,
-  regularized_max_compression_event = 1,
-  regularized_peak_force_event = 2,
-  observation_time_event = 3
-};
+/// The regularised contact's events, in event order (event_index gives the integrators' index).
+enum class RegularizedContactEvent : int { separation, max_compression, peak_force, observation_time };
 
 template <DampingLaw Law>
 class RegularizedContact {
@@ -56,6 +52,8 @@ class RegularizedContact {
   static constexpr int event_count = 4;
   using State = Eigen::Matrix<double, 3, 1>;
   using Events = std::array<double, event_count>;
+  /// Smooth through onset and separation (u = 0) when the law's force is a polynomial in u.
+  static constexpr bool smooth_at_events = RootPolynomialLaw<Law>;
 
   /// The contact of an impact at approach speed c.v0_mps; t_obs_s: optional time
   /// after onset [s] at which event 3 fires.
@@ -89,7 +87,7 @@ class RegularizedContact {
   }
 
   EventAction handle_event(int which, double, const State&) const {
-    return which == separation_event ? EventAction::stop : EventAction::continue_integration;
+    return which == event_index(RegularizedContactEvent::separation) ? EventAction::stop : EventAction::continue_integration;
   }
 
  private:

@@ -12,6 +12,7 @@
 #include <array>
 #include <concepts>
 #include <cstddef>
+#include <type_traits>
 
 namespace hertzdash {
 
@@ -32,6 +33,13 @@ concept OdeSystem = requires(S& s, const S& cs, double t, const typename S::Stat
   cs.events(t, y, g);
   { s.handle_event(0, t, y) } -> std::same_as<EventAction>;
 };
+
+/// The index of an event named by a system's scoped enum (its enumerators in event order).
+template <class E>
+  requires std::is_enum_v<E>
+constexpr int event_index(E e) {
+  return static_cast<int>(e);
+}
 
 /// Receives every accepted step and every fired event (after the system handled it).
 template <class O, class State>

@@ -232,11 +232,11 @@ template <class System> struct RegularizedObserver {
     q.max_deformation_m = std::max(q.max_deformation_m, y[0] * y[0]);
   }
   void on_event(int which, double, const typename System::State& y, EventAction) {
-    if (which == separation_event) {
+    if (which == event_index(RegularizedContactEvent::separation)) {
       q.e_effective = -y[1] / v0;
       q.contact_time_s = y[2];
     }
-    if (which == observation_time_event) q.at_t_star = {y[0] * y[0], y[1]};
+    if (which == event_index(RegularizedContactEvent::observation_time)) q.at_t_star = {y[0] * y[0], y[1]};
   }
 };
 

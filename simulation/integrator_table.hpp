@@ -210,12 +210,14 @@ inline constexpr auto all_integrator_kinds = []<class... Row>(std::type_identity
   return std::array<IntegratorKind, sizeof...(Row)>{Row::traits.kind...};
 }(std::type_identity<IntegratorTable>{});
 
+/// Every row's traits, in table order.
+inline constexpr auto all_integrator_traits = []<class... Row>(std::type_identity<std::tuple<Row...>>) {
+  return std::array<IntegratorTraits, sizeof...(Row)>{Row::traits...};
+}(std::type_identity<IntegratorTable>{});
+
 /// The row of `kind`.
 constexpr const IntegratorTraits& integrator_traits(IntegratorKind kind) {
-  constexpr auto table = []<class... Row>(std::type_identity<std::tuple<Row...>>) {
-    return std::array<IntegratorTraits, sizeof...(Row)>{Row::traits...};
-  }(std::type_identity<IntegratorTable>{});
-  return table[static_cast<std::size_t>(kind)];
+  return all_integrator_traits[static_cast<std::size_t>(kind)];
 }
 static_assert([] {
   for (std::size_t i = 0; i < all_integrator_kinds.size(); ++i)

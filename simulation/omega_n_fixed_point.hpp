@@ -24,15 +24,11 @@ struct OmegaNFixedPointOptions {
   int max_iterations = 200;
 };
 
-struct OmegaNFixedPoint {
+/// The iteration's outcome (OmegaNIteration: iterations, converged, ...) and what it found.
+struct OmegaNFixedPoint : OmegaNIteration {
   ImpactSummary summary;          ///< the impact simulated with the final omega_n
   double omega_n_rad_per_s = 0;   ///< the fixed point (last iterate)
-  int iterations = 0;             ///< simulations run
-  bool converged = false;
-  double relative_change = 0;     ///< |w_k - w_{k-1}| / w_k at the last iteration
-  double contraction = 0;         ///< last observed |dG| / |dw| (< 1 for a contraction)
   std::vector<double> history;    ///< w_0 (eq. 11) ... w_k
-  std::string failure;            ///< why it stopped unconverged (empty if converged)
 };
 
 /// G(w) of the variant for an impact simulated with omega_n = w (summary of that run).
@@ -47,7 +43,7 @@ OmegaNFixedPoint solve_omega_n_fixed_point(ImpactSimulator& simulator, DropTestS
 
 /// Runs the paper's law with any omega_n variant: the closed forms directly, the iterated ones
 /// through solve_omega_n_fixed_point (whose outcome is returned; for a closed form
-/// iterations = 1, converged = true).
+/// iterations = 1, converged = true). ImpactSimulator::run(setup, "hongo") calls this.
 OmegaNFixedPoint run_paper_law(ImpactSimulator& simulator, const DropTestSetup& setup,
                                const OmegaNFixedPointOptions& options = {},
                                std::vector<TraceSample>* trace = nullptr);

@@ -1,7 +1,8 @@
 #pragma once
 // One drop test the fast way: the free fall in closed form, then the contact in
-// regularising variables (model/regularized_contact.hpp) with an adaptive integrator
-// (Dormand-Prince 5(4) for dopri5-regularized, CVODE for cvode-regularized).
+// regularising variables (model/regularized_contact.hpp) with any integrator of the
+// table whose row has Variables::regularized (dopri5-regularized, cvode-regularized,
+// gbs8-regularized).
 //
 // Why: in the physical variables the contact force grows like sqrt(t - t_on) after
 // onset and (damped laws) vanishes like sqrt(t_s - t) before separation, so an
@@ -10,8 +11,8 @@
 // variables u = x^{1/2}, dt/dtau = 2u the contact is smooth through onset and
 // separation for every law of the form x^{1/2} * (polynomial in x, x') that declares
 // it (RootPolynomialLaw), so the embedded estimate is reliable everywhere and the
-// steps stay long (dopri5_options_for: singular_points = false; for other laws the
-// singular-point checks of dopri5 stay on), and CVODE's error follows its tolerance
+// steps stay long (the system declares smooth_at_events, so dopri5 drops its
+// singular-point checks; for other laws they stay on), and CVODE's error follows its tolerance
 // where in the physical variables it does not. The fall needs no integration at all: from
 // rest at x = -h under gravity g, contact begins at t_on = v0/g with v0 = sqrt(2 g h)
 // (approach_speed), exactly.
@@ -22,15 +23,14 @@
 // dF/dtau = 0 and v = 0. The run ends at separation, or, if the rod comes to rest on
 // the ball, 20 undamped contact times after onset (as the physical run).
 // Not for the tension clamp (no_tension: contact ends where F reaches zero, an event
-// this system does not have); ImpactSimulator uses the physical variables there.
+// this system does not have); the integrator table falls back to the physical variables there.
 // Tolerances: rtol as given; atol applies to u [m^{1/2}], v [m/s] and t [s] alike.
 // The integrator is a callable integrate(system, y, tau0, tau1, observer) ->
 // IntegrationStats over the system ContactUntil<Law> below.
-#include "integrators/dormand_prince.hpp"
-#include "model/drop_test.hpp"
 #include "model/drop_test_setup.hpp"
 #include "model/hertz.hpp"
 #include "model/regularized_contact.hpp"
+#include "simulation/impact_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,60 +46,50 @@ template <DampingLaw Law>
 struct ContactUntil : RegularizedContact<Law> {
   using RegularizedContact<Law>::RegularizedContact;
   EventAction handle_event(int which, double tau, const typename RegularizedContact<Law>::State& y) const {
-    if (which == observation_time_event) return EventAction::stop;
+    if (which == event_index(RegularizedContactEvent::observation_time)) return EventAction::stop;
     return RegularizedContact<Law>::handle_event(which, tau, y);
   }
 };
 
 /// Builds the summary (and the optional trace, physical variables) from the steps.
-template <DampingLaw Law, class Summary, class Sample>
+template <DampingLaw Law>
 class RegularizedImpactObserver {
   using State = typename RegularizedContact<Law>::State;
 
  public:
-  RegularizedImpactObserver(const ContactUntil<Law>& sys, const DropTestSetup& setup, double t_onset_s, Summary& s,
-                            std::vector<Sample>* trace)
-      : sys_(sys), setup_(setup), t_onset_s_(t_onset_s), s_(s), trace_(trace) {}
+  RegularizedImpactObserver(const ContactUntil<Law>& sys, const DropTestSetup& setup, double t_onset_s,
+                            ImpactSummary& s, std::vector<TraceSample>* trace)
+      : sys_(&sys), gravity_mps2_(setup.gravity_mps2), mass_kg_(setup.mass_kg), height_m_(setup.height_m),
+        t_onset_s_(t_onset_s), s_(&s), trace_(trace) {}
 
   void on_step(double, const State& y) {
-    const double F = sys_.force(y), x = y[0] * y[0];
-    s_.peak_force_N = std::max(s_.peak_force_N, F);
-    s_.max_deformation_m = std::max(s_.max_deformation_m, x);
-    if (trace_)
-      trace_->push_back({t_onset_s_ + y[2], x, y[1], F, setup_.gravity_mps2 - F / setup_.mass_kg, x + setup_.height_m,
-                         y[1]});
+    const double F = sys_->force(y), x = y[0] * y[0];
+    s_->peak_force_N = std::max(s_->peak_force_N, F);
+    s_->max_deformation_m = std::max(s_->max_deformation_m, x);
+    if (trace_) trace_->push_back({t_onset_s_ + y[2], x, y[1], F, gravity_mps2_ - F / mass_kg_, x + height_m_, y[1]});
   }
   void on_event(int which, double, const State& y, EventAction) {
-    if (which != separation_event) return;
-    s_.separated = true;
-    s_.t_separation_s = t_onset_s_ + y[2];
-    s_.rebound_velocity_mps = std::max(-y[1], 0.0);
+    if (which != event_index(RegularizedContactEvent::separation)) return;
+    s_->separated = true;
+    s_->t_separation_s = t_onset_s_ + y[2];
+    s_->rebound_velocity_mps = std::max(-y[1], 0.0);
   }
 
  private:
-  const ContactUntil<Law>& sys_;
-  const DropTestSetup& setup_;
+  const ContactUntil<Law>* sys_;
+  double gravity_mps2_, mass_kg_, height_m_;
   double t_onset_s_;
-  Summary& s_;
-  std::vector<Sample>* trace_;
+  ImpactSummary* s_;
+  std::vector<TraceSample>* trace_;
 };
 
 }  // namespace detail
 
-/// dopri5's options for the regularised contact of `Law`: no singular-point checks
-/// if the law declares its force polynomial in u (RootPolynomialLaw).
-template <DampingLaw Law>
-DormandPrinceOptions dopri5_options_for(DormandPrinceOptions options) {
-  options.singular_points = !RootPolynomialLaw<Law>;
-  return options;
-}
-
 /// The impact of a validated set-up without the tension clamp (see above): fills the
-/// fields of `s` an ImpactSimulator run fills. Summary = ImpactSummary, Sample =
-/// TraceSample (templates only to keep this header below impact_simulator.hpp).
-template <DampingLaw Law, class Summary, class Sample, class Integrate>
-void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, Summary& s,
-                            std::vector<Sample>* trace) {
+/// fields of `s` that describe the impact and the work.
+template <DampingLaw Law, class Integrate>
+void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, ImpactSummary& s,
+                            std::vector<TraceSample>* trace) {
   const double K = hertz_stiffness(setup);
   const double v0 = approach_speed(setup);  // [m/s], exact for the fall from rest
   const double t_onset_s = setup.impact_velocity_mps ? 0.0 : v0 / setup.gravity_mps2;
@@ -111,7 +101,7 @@ void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, S
   s.t_onset_s = t_onset_s;
   s.impact_velocity_mps = v0;
   s.law_coefficients = sys.law().coefficients();
-  detail::RegularizedImpactObserver<Law, Summary, Sample> observer(sys, setup, t_onset_s, s, trace);
+  detail::RegularizedImpactObserver<Law> observer(sys, setup, t_onset_s, s, trace);
   auto y = sys.initial_state();
   // tau is bounded by the events (t reaches 20 contact times, or separation); the end
   // only has to lie beyond them: 1e7 tau scales T/(2 X*^{1/2}), T = X*/v0.

@@ -57,8 +57,8 @@ inline ContactScales paper_steel_contact() {
 /// few hundred steps of one contact the global error in e_effective stays below ~1e-8.
 inline SolverSettings accurate_solver(double K, double mass_kg, double v0_mps) {
   SolverSettings s;
-  s.cvode.rtol = 1e-10;
-  s.cvode.atol = 1e-10 * std::min(std::pow(mass_kg * v0_mps * v0_mps / K, 0.4), v0_mps);
+  s.rtol = 1e-10;
+  s.atol = 1e-10 * std::min(std::pow(mass_kg * v0_mps * v0_mps / K, 0.4), v0_mps);
   return s;
 }
 

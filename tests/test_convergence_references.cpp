@@ -104,15 +104,15 @@ TEST_CASE("Under-resolved fixed-step contacts are reported with their step count
   s.separated = true;
   s.contact_time_s = 1e-3;
   SolverSettings solver;
-  solver.fixed_step.dt = 1e-5;  // 100 steps per contact
+  solver.dt_s = 1e-5;  // 100 steps per contact
   solver.integrator = IntegratorKind::euler;
   const auto r = under_resolved_contact(s, solver);
   REQUIRE(r);
   CHECK(r->steps_per_contact == Approx(100.0));
-  CHECK(r->required == min_steps_per_contact_euler);
-  solver.integrator = IntegratorKind::rk4;  // located: 100 >= min_steps_per_contact_rk4_located
+  CHECK(r->required == min_steps_per_contact(IntegratorKind::euler, true));
+  solver.integrator = IntegratorKind::rk4;  // located: 100 >= min_steps_per_contact(rk4, true)
   CHECK_FALSE(under_resolved_contact(s, solver));
-  solver.fixed_step.locate_events = false;
+  solver.locate_events = false;
   CHECK(under_resolved_contact(s, solver));
   solver.integrator = IntegratorKind::cvode;
   CHECK_FALSE(under_resolved_contact(s, solver));
@@ -123,13 +123,13 @@ TEST_CASE("hertzdash simulate warns on stderr when a fixed step under-resolves t
   // contact, so about a thousand steps: fewer than Euler needs, enough for RK4.
   SolverSettings solver;
   solver.integrator = IntegratorKind::euler;
-  solver.fixed_step.dt = 1e-6;
+  solver.dt_s = 1e-6;
   ImpactSimulator sim(solver);
   const ImpactSummary s = sim.run(paper_setup(load_paper_parameters(), "steel", 0.02), "hongo");
-  const std::string steps = fmt::format("only {:.0f} steps", s.contact_time_s / solver.fixed_step.dt);
+  const std::string steps = fmt::format("only {:.0f} steps", s.contact_time_s / solver.dt_s);
   const std::string euler = run_and_capture_stderr("--integrator euler");
   CHECK_THAT(euler, Catch::Contains("warning") && Catch::Contains(steps) &&
-                        Catch::Contains(std::to_string(min_steps_per_contact_euler)));
+                        Catch::Contains(std::to_string(min_steps_per_contact(IntegratorKind::euler, true))));
   CHECK(run_and_capture_stderr("--integrator rk4").empty());
   CHECK(run_and_capture_stderr("--integrator cvode").empty());
 }

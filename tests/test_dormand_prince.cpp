@@ -60,8 +60,8 @@ DropTestSetup steel_contact_setup(double gravity_mps2) {
 SolverSettings dopri5(double tol) {
   SolverSettings s;
   s.integrator = IntegratorKind::dopri5;
-  s.dopri5.rtol = tol;
-  s.dopri5.atol = tol * 1e-4;  // 1e-4 m ~ the peak deformation: x and xdot both relative
+  s.rtol = tol;
+  s.atol = tol * 1e-4;  // 1e-4 m ~ the peak deformation: x and xdot both relative
   return s;
 }
 
@@ -113,8 +113,6 @@ TEST_CASE("dopri5: undamped Hertz impact against the closed forms, error proport
   for (double tol : tols) {
     SolverSettings settings = dopri5(tol);
     settings.integrator = kind;
-    settings.gbs8.rtol = settings.dopri5.rtol;
-    settings.gbs8.atol = settings.dopri5.atol;
     ImpactSimulator sim(settings);
     const ImpactSummary s = sim.run<Undamped>(setup);
     REQUIRE(s.separated);
@@ -136,8 +134,8 @@ TEST_CASE("dopri5: the paper's law converges to the same restitution as CVODE at
   const DropTestSetup setup = steel_contact_setup(9.80665);
   ImpactSimulator dp(dopri5(1e-11));
   SolverSettings cv;
-  cv.cvode.rtol = 1e-11;
-  cv.cvode.atol = 1e-15;
+  cv.rtol = 1e-11;
+  cv.atol = 1e-15;
   ImpactSimulator cvode(cv);
   const double e_dp = dp.run<HongoPaper>(setup).e_effective, e_cv = cvode.run<HongoPaper>(setup).e_effective;
   std::printf("paper's law e_eff: dopri5 %.12f, cvode %.12f\n", e_dp, e_cv);
@@ -175,8 +173,8 @@ TEST_CASE("cvode: an event function exactly zero at a root no longer stops the r
   const double e_ref = ref.run<HongoPaper>(setup).e_effective;
   for (double rtol : {1e-4, 1e-6}) {
     SolverSettings s;
-    s.cvode.rtol = rtol;
-    s.cvode.atol = rtol * 1e-4;
+    s.rtol = rtol;
+    s.atol = rtol * 1e-4;
     ImpactSimulator sim(s);
     ImpactSummary r;
     REQUIRE_NOTHROW(r = sim.run<HongoPaper>(setup));

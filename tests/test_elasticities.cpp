@@ -41,8 +41,8 @@ Outputs simulate(ImpactSimulator& sim, const DropTestSetup& s) {
 
 TEST_CASE("CVODES elasticities agree with central differences of the full simulation", "[elasticities]") {
   SolverSettings solver;
-  solver.cvode.rtol = 1e-12;
-  solver.cvode.atol = 1e-16;
+  solver.rtol = 1e-12;
+  solver.atol = 1e-16;
   ImpactSimulator sim(solver);
   const double d = 1e-3;
   const double tol = 2e-6;

@@ -20,7 +20,7 @@ TEST_CASE("Every integrator fires onset, maximum compression and separation, and
   for (IntegratorKind kind : {IntegratorKind::euler, IntegratorKind::rk4, IntegratorKind::cvode, IntegratorKind::dopri5}) {
     SolverSettings solver;
     solver.integrator = kind;
-    solver.fixed_step.dt = 1e-7;
+    solver.dt_s = 1e-7;
     const ImpactSummary r = ImpactSimulator(solver).run(s, "kelvin-voigt");
     INFO("integrator " << to_string(kind));
     CHECK(r.separated);

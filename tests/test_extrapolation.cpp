@@ -94,11 +94,11 @@ TEST_CASE("gbs8-regularized: the paper's law agrees with dopri5 in the physical 
   validate(setup);
   SolverSettings fast, physical;
   fast.integrator = IntegratorKind::gbs8_regularized;
-  fast.gbs8.rtol = 1e-11;
-  fast.gbs8.atol = 1e-15;
+  fast.rtol = 1e-11;
+  fast.atol = 1e-15;
   physical.integrator = IntegratorKind::dopri5;
-  physical.dopri5.rtol = 1e-11;
-  physical.dopri5.atol = 1e-15;
+  physical.rtol = 1e-11;
+  physical.atol = 1e-15;
   ImpactSimulator a_sim(fast), b_sim(physical);
   const ImpactSummary a = a_sim.run<HongoPaper>(setup), b = b_sim.run<HongoPaper>(setup);
   std::printf("paper's law: e_eff gbs8-regularized %.12f, dopri5 %.12f\n", a.e_effective, b.e_effective);

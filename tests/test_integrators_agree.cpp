@@ -34,8 +34,8 @@ void check_close(const ImpactSummary& r, const ImpactSummary& ref, double rel) {
 
 TEST_CASE("Paper's steel case: Euler, RK4 and CVODE agree within their errors", "[integrators][paper]") {
   SolverSettings cvode;
-  cvode.cvode.rtol = 1e-12;
-  cvode.cvode.atol = 1e-16;
+  cvode.rtol = 1e-12;
+  cvode.atol = 1e-16;
   const ImpactSummary ref = steel_case(cvode);
   REQUIRE(ref.separated);
   // Free fall is exact for any consistent method: v0 = sqrt(2 g h).
@@ -43,19 +43,19 @@ TEST_CASE("Paper's steel case: Euler, RK4 and CVODE agree within their errors", 
 
   SECTION("CVODE BDF") {
     SolverSettings bdf = cvode;
-    bdf.cvode.method = CvodeMethod::bdf;
+    bdf.cvode_method = CvodeMethod::bdf;
     check_close(steel_case(bdf), ref, 1e-8);
   }
   SECTION("RK4") {
     SolverSettings rk4;
     rk4.integrator = IntegratorKind::rk4;
-    rk4.fixed_step.dt = 1e-6;
+    rk4.dt_s = 1e-6;
     check_close(steel_case(rk4), ref, 1e-5);
   }
   SECTION("Euler") {
     SolverSettings euler;
     euler.integrator = IntegratorKind::euler;
-    euler.fixed_step.dt = 1e-7;
+    euler.dt_s = 1e-7;
     check_close(steel_case(euler), ref, 1e-3);
   }
 }

@@ -147,7 +147,7 @@ TEST_CASE("without damping the iterated variants reduce to the undamped Hertz cl
   // but leaves room for the event tolerance.
   SolverSettings solver;
   solver.integrator = IntegratorKind::rk4;
-  solver.fixed_step.dt = 1e-7;
+  solver.dt_s = 1e-7;
   ImpactSimulator sim(solver);
   DropTestSetup s = steel_20mm();
   s.restitution = 1.0;

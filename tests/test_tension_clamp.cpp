@@ -18,8 +18,8 @@ TEST_CASE("Tension clamp: force never negative, contact ends at zero force", "[c
   DropTestSetup s = paper_setup(load_paper_parameters(), "steel", 0.02);
   s.restitution = 0.3;  // strong damping: a long pulling phase
   SolverSettings solver;
-  solver.cvode.rtol = 1e-10;
-  solver.cvode.atol = 1e-15;
+  solver.rtol = 1e-10;
+  solver.atol = 1e-15;
   ImpactSimulator sim(solver);
 
   std::vector<TraceSample> allowed_trace, clamped_trace;

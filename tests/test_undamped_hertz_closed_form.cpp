@@ -77,12 +77,12 @@ TEST_CASE("Undamped Hertz impact: CVODE matches the closed forms", "[hertz][cvod
   // finder to near roundoff. Bound: N rtol with N the run's own step count.
   for (CvodeMethod method : {CvodeMethod::adams, CvodeMethod::bdf}) {
     SolverSettings solver;
-    solver.cvode.method = method;
-    solver.cvode.rtol = 1e-10;
-    solver.cvode.atol = 1e-15;
+    solver.cvode_method = method;
+    solver.rtol = 1e-10;
+    solver.atol = 1e-15;
     long steps = 0;
     const UndampedHertzErrors err = relative_errors(solver, &steps);
-    const double bound = static_cast<double>(steps) * solver.cvode.rtol;
+    const double bound = static_cast<double>(steps) * solver.rtol;
     INFO("method " << to_string(method) << ", " << steps << " steps, bound " << bound);
     check_all_below(err, bound);
   }
@@ -99,7 +99,7 @@ TEST_CASE("Undamped Hertz impact: RK4 with located events matches the closed for
   // ~3e-9 (F carries 3/2 of X's relative error). Bound: 1e-8.
   SolverSettings solver;
   solver.integrator = IntegratorKind::rk4;
-  solver.fixed_step.dt = contact_time_s() / 1000;
+  solver.dt_s = contact_time_s() / 1000;
   const UndampedHertzErrors err = relative_errors(solver);
   check_all_below(err, 1e-8);
 }
@@ -112,7 +112,7 @@ TEST_CASE("Undamped Hertz impact: explicit Euler with located events matches the
   // (2.5e-5 and 1.5 times that). Bound: 1e-4 for every quantity.
   SolverSettings solver;
   solver.integrator = IntegratorKind::euler;
-  solver.fixed_step.dt = contact_time_s() / 1e5;
+  solver.dt_s = contact_time_s() / 1e5;
   const UndampedHertzErrors err = relative_errors(solver);
   check_all_below(err, 1e-4);
 }

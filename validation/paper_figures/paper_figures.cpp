@@ -65,7 +65,7 @@ void write_figure(const FigureSpec& fig, const PaperParameters& paper, const Stu
   // 2000 steps per undamped contact time it is ~1e-7 of the peak, far below a pixel.
   const double tc_ref = undamped_hertz_impact(hertz_stiffness(setup), setup.mass_kg, approach_speed(setup)).contact_time_s;
   SolverSettings solver;
-  solver.cvode.max_step = tc_ref / (args.reduced ? 200.0 : 2000.0);
+  solver.max_step_s = tc_ref / (args.reduced ? 200.0 : 2000.0);
   validate(solver);
   ImpactSimulator sim(solver);
 

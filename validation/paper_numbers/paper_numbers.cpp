@@ -140,11 +140,11 @@ int main(int argc, char** argv) try {
 
   Parameters header{{"drop_height_m", fmt::format("{}", drop_height_m)},
                     {"integrator", "cvode"},
-                    {"rtol", fmt::format("{}", solver.cvode.rtol)},
-                    {"atol", fmt::format("{}", solver.cvode.atol)}};
+                    {"rtol", fmt::format("{}", solver.rtol)},
+                    {"atol", fmt::format("{}", solver.atol)}};
   LatexMacros macros("Numbers for the article's 'Differences from the original' (validation/paper_numbers)", header);
   macros.add("pnDropHeightMM", 1e3 * drop_height_m, "{:.0f}");
-  macros.add("pnReferenceRtolExponent", std::log10(solver.cvode.rtol), "{:.0f}");
+  macros.add("pnReferenceRtolExponent", std::log10(solver.rtol), "{:.0f}");
   // Free fall from h: v0 = sqrt(2 g h), the same for every rod.
   macros.add("pnImpactSpeed", approach_speed(paper_setup(paper, figure_rods[0].name, drop_height_m)), "{:.3f}");
 

@@ -1,0 +1,59 @@
+#include "simulation/integrator_table.hpp"
+
+#include "model/invalid_parameter.hpp"
+
+#include <fmt/format.h>
+
+namespace hertzdash {
+
+const char* to_string(IntegratorKind k) { return integrator_traits(k).name.data(); }
+
+std::string integrator_names() {
+  std::string names;
+  for (IntegratorKind k : all_integrator_kinds) names += (names.empty() ? "" : ", ") + std::string(to_string(k));
+  return names;
+}
+
+IntegratorKind parse_integrator(std::string_view name, const std::string& option) {
+  for (IntegratorKind k : all_integrator_kinds)
+    if (name == to_string(k)) return k;
+  throw InvalidParameter(option, std::string(name), "one of: " + integrator_names());
+}
+
+IntegratorKind integrator_used(IntegratorKind asked, bool tension_clamp, bool root_polynomial_law, std::string* why) {
+  IntegratorKind k = asked;
+  std::string reason;
+  if (tension_clamp && integrator_traits(k).fallback_with_tension_clamp != k) {
+    k = integrator_traits(k).fallback_with_tension_clamp;
+    reason = fmt::format("{} integrates the contact in regularising variables, which have no event for the tension "
+                         "clamp (--no-tension ends contact where the force reaches zero); {} runs in the physical "
+                         "variables instead",
+                         to_string(asked), to_string(k));
+  }
+  if (!root_polynomial_law && integrator_traits(k).needs_root_polynomial) {
+    const IntegratorKind from = k;
+    k = integrator_traits(k).fallback_for_other_laws;
+    reason = fmt::format("{} needs a law whose force is a polynomial in x^(1/2) (one that declares force_of_root); "
+                         "this law does not, so {} runs instead, with its singular-point checks",
+                         to_string(from), to_string(k));
+  }
+  if (why) *why = reason;
+  return k;
+}
+
+void validate(const SolverSettings& s) {
+  const IntegratorTraits& row = integrator_traits(s.integrator);
+  if (row.step_control == StepControl::fixed_step) {
+    require_positive("--dt", s.dt_s, "s");
+    return;
+  }
+  require_positive("--rtol", s.rtol, "-");
+  require_positive("--atol", s.atol, "m, m/s");
+  require_non_negative("--max-step", s.max_step_s, "s");
+  // A regularised path steps in tau (dt = 2 x^{1/2} dtau), not in time: no largest step.
+  if (row.variables == Variables::regularized && s.max_step_s != 0)
+    throw InvalidParameter("--max-step", fmt::format("{}", s.max_step_s),
+                           fmt::format("0 (no limit) with {}, whose steps are in tau, not in time", row.name));
+}
+
+}  // namespace hertzdash
