@@ -44,8 +44,6 @@ class CvodeIntegrator {
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
-  const CvodeOptions& options() const { return options_; }
-
   /// Integrate `sys` from (t0, y) towards t_end; y is updated in place.
   template <OdeSystem S, IntegrationObserver<typename S::State> Observer>
   IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t_end, Observer& observer);

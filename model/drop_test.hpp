@@ -26,6 +26,7 @@
 #include "ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 #include "model/damping/damping_law.hpp"
 #include "model/drop_test_setup.hpp"
+#include "model/force_rate.hpp"
 
 #include <Eigen/Core>
 
@@ -99,7 +100,7 @@ class DropTest {
     const double x_lo = std::max(x - dx, 0.0);
     const double F_x = (force_at(x + dx, v) - force_at(x_lo, v)) / (x + dx - x_lo);
     const double F_v = (force_at(x, v + dv) - force_at(x, v - dv)) / (2 * dv);
-    const double dFdt = F_x * v + F_v * a;
+    const double dFdt = force_rate(F_x, F_v, v, a);
     // A peak force is positive: where F <= 0, g2 = -1 (no root). Heavily damped
     // Hunt-Crossley laws reach 1 + chi x' = 0 to roundoff, where F and dF/dt are
     // identically zero and CVODE's root finder would stop on a flat zero.

@@ -32,6 +32,7 @@
 //   3 observation time: g = t_obs - t, if an observation time is set (observation)
 #include "ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 #include "model/damping/damping_law.hpp"
+#include "model/force_rate.hpp"
 #include "model/hertz.hpp"
 
 #include <Eigen/Core>
@@ -83,7 +84,7 @@ class RegularizedContact {
     const double F_u = (force_at(u + du, v) - F) / du;
     const double F_v = (force_at(u, v + dv) - F) / dv;
     const double dvdtau = 2.0 * u * (gravity_mps2_ - F * inverse_mass_);
-    g = {y[0], y[1], F_u * v + F_v * dvdtau, t_obs_s_ ? *t_obs_s_ - y[2] : 1.0};
+    g = {y[0], y[1], force_rate(F_u, F_v, v, dvdtau), t_obs_s_ ? *t_obs_s_ - y[2] : 1.0};
   }
 
   EventAction handle_event(int which, double, const State&) const {

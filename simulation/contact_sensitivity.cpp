@@ -1,5 +1,7 @@
 #include "simulation/contact_sensitivity.hpp"
 
+#include "model/damping/laws/hongo_paper.hpp"
+#include "model/force_rate.hpp"
 #include "model/hertz.hpp"
 
 #include <cvodes/cvodes.h>
@@ -25,22 +27,32 @@ template <class T> T* check_ptr(T* p, const char* call) {
   return p;
 }
 
-/// The contact-phase model: force, acceleration and their partial derivatives.
+/// The contact-phase model: the paper's force and its partial derivatives, all from the
+/// law (HongoPaper::gradient_of_root at u = x^{1/2}), and the acceleration.
 struct ContactModel {
   ContactPhaseParameters p;
-  double force(double x, double v) const { return p.K * std::sqrt(std::max(x, 0.0)) * (x + p.tau_s * v); }
+  HongoPaper::Gradient gradient(double x, double v) const {
+    return HongoPaper::gradient_of_root(p.K, p.tau_s, std::sqrt(std::max(x, 0.0)), v);
+  }
+  double force(double x, double v) const { return gradient(x, v).F; }
   double accel(double x, double v) const { return p.gravity_mps2 - force(x, v) / p.mass_kg; }
-  /// dF/dx * s_x, with its x -> 0 limit (see the header): K (3/2 x^{1/2} s_x + tau v s_x / (2 x^{1/2})).
+  /// dF/dx * s_x = F_u s_x / (2u), with its x -> 0 limit 0 (see the header).
   double force_x_times(double x, double v, double s_x) const {
     if (x <= 0) return 0.0;
-    const double r = std::sqrt(x);
-    return p.K * (1.5 * r * s_x + p.tau_s * v * s_x / (2.0 * r));
+    const double u = std::sqrt(x);
+    return gradient(x, v).F_u * s_x / (2.0 * u);
   }
-  double force_v(double x) const { return p.K * std::sqrt(std::max(x, 0.0)) * p.tau_s; }
+  double force_v(double x, double v) const { return gradient(x, v).F_xdot; }
   /// Explicit partial derivatives dF/dq (F does not depend on m or v0 explicitly).
   ContactGradient force_q(double x, double v) const {
-    const double r = std::sqrt(std::max(x, 0.0));
-    return {r * (x + p.tau_s * v), p.K * r * v, 0.0, 0.0};
+    const HongoPaper::Gradient G = gradient(x, v);
+    return {G.F_K, G.F_tau, 0.0, 0.0};
+  }
+  /// The peak-force event: dF/dtau / (2K) = x^{1/2} dF/dt / K (model/force_rate.hpp), finite at x = 0.
+  double peak_force_event(double x, double v) const {
+    const HongoPaper::Gradient G = gradient(x, v);
+    const double u = std::sqrt(std::max(x, 0.0));
+    return force_rate(G.F_u, G.F_xdot, v, 2.0 * u * (p.gravity_mps2 - G.F / p.mass_kg)) / (2.0 * p.K);
   }
 };
 
@@ -67,7 +79,7 @@ int sensitivity_rhs(int ns, realtype, N_Vector y, N_Vector, N_Vector* yS, N_Vect
     ds[0] = s[1];
     double explicit_term = -Fq[i] / M;
     if (i == q_mass) explicit_term = F / (M * M);  // d(-F/m)/dm
-    ds[1] = -(m.force_x_times(x, v, s[0]) + m.force_v(x) * s[1]) / M + explicit_term;
+    ds[1] = -(m.force_x_times(x, v, s[0]) + m.force_v(x, v) * s[1]) / M + explicit_term;
   }
   return 0;
 }
@@ -75,10 +87,10 @@ int sensitivity_rhs(int ns, realtype, N_Vector y, N_Vector, N_Vector* yS, N_Vect
 int roots(realtype, N_Vector y, realtype* g, void* user) {
   const auto& m = *static_cast<const ContactModel*>(user);
   const double* Y = N_VGetArrayPointer(y);
-  const double x = Y[0], v = Y[1], tau = m.p.tau_s;
-  g[0] = x;                                                          // separation
-  g[1] = v;                                                          // max compression
-  g[2] = (1.5 * x + 0.5 * tau * v) * v + tau * std::max(x, 0.0) * m.accel(x, v);  // x^{1/2} dF/dt / K
+  const double x = Y[0], v = Y[1];
+  g[0] = x;                            // separation
+  g[1] = v;                            // max compression
+  g[2] = m.peak_force_event(x, v);     // x^{1/2} dF/dt / K
   return 0;
 }
 
@@ -166,7 +178,7 @@ ContactPhaseSensitivities contact_phase_sensitivities(const ContactPhaseParamete
       out.peak_force_N = model.force(x, v);
       const ContactGradient Fq = model.force_q(x, v);
       for (int i = 0; i < Ns; ++i)
-        out.d_peak_force[i] = model.force_x_times(x, v, s(i, 0)) + model.force_v(x) * s(i, 1) + Fq[i];
+        out.d_peak_force[i] = model.force_x_times(x, v, s(i, 0)) + model.force_v(x, v) * s(i, 1) + Fq[i];
     }
     if (found[1] && !max_seen) {
       max_seen = true;

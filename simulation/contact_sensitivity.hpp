@@ -22,7 +22,9 @@
 //                             term vanishes because dF/dt = 0 there)
 //   max compression, v = 0:   dX/dq = s_x                                   (likewise)
 // Roots are located by CVODES on g0 = x, g1 = v and g2 = x^{1/2} dF/dt / K
-//   = (3/2 x + tau v / 2) v + tau x v'   (same roots as dF/dt for x > 0, finite at x = 0).
+//   = (3/2 x + tau v / 2) v + tau x v'   (same roots as dF/dt for x > 0, finite at x = 0),
+// computed as dF/dtau / (2K) by model/force_rate.hpp. The force and every partial
+// derivative come from the paper's law itself (HongoPaper::gradient_of_root).
 // Every SUNDIALS return code is checked (std::runtime_error naming the call and flag).
 #include <array>
 

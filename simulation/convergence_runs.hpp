@@ -108,7 +108,7 @@ inline std::array<double, quantity_count> relative_errors(const ConvergenceProbl
 ///
 /// HOOK for closed-form references: this is the one place to add them. The
 /// undamped law is exact here. The Hunt-Crossley family F = K x^{3/2}(1 + chi x')
-/// (issue 4) has a first integral m v dv/(1 + chi v) = -K x^{3/2} dx, which gives
+/// has a first integral m v dv/(1 + chi v) = -K x^{3/2} dx, which gives
 /// the maximum deformation and the restitution in closed form; add an
 /// `if constexpr (std::is_same_v<Law, ...>)` branch returning them, with the
 /// quantities that have no closed form (contact time, state at t*) taken from

@@ -41,8 +41,7 @@ PaperLawElasticities paper_law_elasticities(const DropTestSetup& s, const Contac
   const double v0 = approach_speed(s);
   const double e = s.restitution;
   const ImpactConditions c{K, s.mass_kg, v0, e};
-  const double zeta = zeta_from_restitution(e, s.damping.zeta_form);
-  const double tau = 2.0 * zeta / paper_law_natural_frequency(c, s.damping);
+  const double tau = HongoPaper(c, s.damping).time_constant_s();
   const ContactPhaseSensitivities r =
       contact_phase_sensitivities({K, tau, s.mass_kg, v0, s.gravity_mps2}, options);
 

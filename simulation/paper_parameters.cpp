@@ -4,6 +4,9 @@
 #include "model/invalid_parameter.hpp"
 
 #include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <system_error>
 
 namespace hertzdash {
 
@@ -17,8 +20,21 @@ const RodData& PaperParameters::rod(const std::string& name) const {
 }
 
 std::filesystem::path default_data_dir() {
+  namespace fs = std::filesystem;
   if (const char* env = std::getenv("HERTZDASH_DATA_DIR"); env && *env) return env;
-  return HERTZDASH_DATA_DIR;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  for (fs::path dir = exe.parent_path(); !ec && !dir.empty(); dir = dir.parent_path()) {
+    const fs::path data = dir / data_dir_below_prefix;
+    if (fs::is_regular_file(data / "table1_dimensions.csv")) {
+      const fs::path real = fs::canonical(data, ec);  // the source tree's data/ behind a build tree's link
+      return ec ? data : real;
+    }
+    if (dir == dir.root_path()) break;
+  }
+  throw std::runtime_error(std::string("the data tables (table1_dimensions.csv, ...) are not in ") +
+                           data_dir_below_prefix + " beside or above the program " + exe.string() +
+                           "; set HERTZDASH_DATA_DIR to the directory that holds them (the source tree's data/)");
 }
 
 PaperParameters load_paper_parameters(const std::filesystem::path& dir) {

@@ -37,7 +37,14 @@ struct PaperParameters {
   const RodData& rod(const std::string& name) const;  ///< throws InvalidParameter("--rod", ...)
 };
 
-/// The directory of the data tables: $HERTZDASH_DATA_DIR if set, else the source tree's data/.
+/// Where the data tables sit below an installation prefix or a build tree.
+inline constexpr const char* data_dir_below_prefix = "share/hertzdash/data";
+
+/// The directory of the data tables, found at run time: $HERTZDASH_DATA_DIR if set, else
+/// share/hertzdash/data in the running program's directory or the nearest one above it
+/// (PREFIX/bin/hertzdash finds PREFIX/share/hertzdash/data; in a build tree,
+/// build/share/hertzdash/data links to the source tree's data/). Throws std::runtime_error
+/// saying how to set it if neither holds the tables.
 std::filesystem::path default_data_dir();
 
 /// Read the tables; throws DataError naming the file, line and column of any defect.

@@ -22,17 +22,22 @@ inline std::string slurp(const std::filesystem::path& p) {
   return ss.str();
 }
 
-/// Run `hertzdash <args>` through the shell (args are passed verbatim), optionally
+/// Run `program <args>` through the shell (args are passed verbatim), optionally
 /// with environment assignments prefixed (e.g. "HERTZDASH_DATA_DIR=/tmp/x").
-inline CliResult run_cli(const std::string& args, const std::string& env = "") {
+inline CliResult run_cli_program(const std::string& program, const std::string& args, const std::string& env = "") {
   const auto dir = std::filesystem::temp_directory_path() / ("hertzdash_cli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  const std::string cmd = env + " " + HERTZDASH_BIN + " " + args + " >" + (dir / "out").string() + " 2>" +
+  const std::string cmd = env + " " + program + " " + args + " >" + (dir / "out").string() + " 2>" +
                           (dir / "err").string();
   const int status = std::system(cmd.c_str());
   CliResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out"), slurp(dir / "err")};
   std::filesystem::remove_all(dir);
   return r;
+}
+
+/// Run `build/hertzdash <args>` (see run_cli_program).
+inline CliResult run_cli(const std::string& args, const std::string& env = "") {
+  return run_cli_program(HERTZDASH_BIN, args, env);
 }
 
 }  // namespace hertzdash::test

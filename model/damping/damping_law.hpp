@@ -1,5 +1,6 @@
 #pragma once
-// The one extension point: a damping law.
+// The physics extension point: a damping law (the numerical one, an integrator, is a
+// row of simulation/integrator_table.hpp).
 //
 // A law is a small class in its own header under model/damping/laws/, listed
 // once in model/damping/registry.hpp. It carries

@@ -37,8 +37,6 @@ class HertzProportionalDashpot {
     return {{"chi_s_per_m", chi_}, {"damping_coefficient_N_s_per_m_2_5", K_ * chi_}};
   }
 
-  double chi_s_per_m() const { return chi_; }
-
  private:
   double K_;    ///< Hertz stiffness [N/m^{3/2}]
   double chi_;  ///< hysteresis damping factor [s/m]

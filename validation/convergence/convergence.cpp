@@ -316,7 +316,7 @@ int main(int argc, char** argv) {
         std::tuple{"rk4", "located", min_steps_per_contact(IntegratorKind::rk4, true)},
         std::tuple{"rk4", "unlocated", min_steps_per_contact(IntegratorKind::rk4, false)}}) {
     const long found = steps_needed_both(hertz, paper, integrator, location);
-    std::cout << fmt::format("  {:6} {:10} {:>6} (step_resolution.hpp: {}){}\n", integrator, location,
+    std::cout << fmt::format("  {:6} {:10} {:>6} (integrator table: {}){}\n", integrator, location,
                              found < 0 ? std::string("> sweep") : std::to_string(found), constant,
                              !args.reduced && found != constant ? "  <-- MISMATCH: update step_resolution.hpp" : "");
   }

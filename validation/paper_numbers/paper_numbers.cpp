@@ -3,7 +3,8 @@
 // What it reproduces and why
 // --------------------------
 // Hongo et al. print two equations wrongly, leave several parameters unstated and
-// print one table entry that contradicts its neighbour (NOTES.md). The article lists
+// print one table entry that contradicts its neighbour (the article's section
+// "Differences from the original", paper/sections/differences.tex). The article lists
 // each erratum with how the correction was established, and each unstated parameter
 // with the value chosen and how much the results depend on it. This program computes
 // every number those two tables quote, for the two configurations of Figs. 5 and 6
@@ -281,8 +282,8 @@ int main(int argc, char** argv) try {
   // -------------------------------------------------------------------------
   // 5. Unstated parameters. For each: the value assumed (data/assumptions.csv) and
   //    the ends of the range a reader could defend: the nylon modulus over the
-  //    catalogue range of Table 3; Poisson ratios over the typical ranges of
-  //    NOTES.md (steel 0.28-0.30 with 0.30 assumed, so only 0.28 is tried;
+  //    catalogue range of Table 3; Poisson ratios over the typical handbook ranges
+  //    (data/assumptions.csv; steel 0.28-0.30 with 0.30 assumed, so only 0.28 is tried;
   //    duralumin: a +-0.01 probe around the handbook 0.33); g = 9.8.
   const BallData& ball = paper.ball;
   std::vector<UnstatedParameter> unstated{

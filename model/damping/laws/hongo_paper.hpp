@@ -7,7 +7,7 @@
 namespace hertzdash {
 
 /// Natural frequency of the Hertz contact at amplitude X [rad/s], eqs. (7)-(9) corrected
-/// (NOTES.md erratum): (1/2) m (X w)^2 = (2/5) K X^{5/2}  =>  w = sqrt((4K/(5m)) X^{1/2}).
+/// (erratum; paper/sections/differences.tex): (1/2) m (X w)^2 = (2/5) K X^{5/2}  =>  w = sqrt((4K/(5m)) X^{1/2}).
 inline double hertz_natural_frequency(double K, double mass_kg, double amplitude_m) {
   return std::sqrt(4.0 * K / (5.0 * mass_kg) * std::sqrt(amplitude_m));
 }
@@ -78,6 +78,22 @@ class HongoPaper {
   double force(double x, double xdot) const noexcept { return K_ * std::sqrt(x) * (x + tau_ * xdot); }
   /// The same at u = x^{1/2}: K u (u^2 + tau xdot) [N] (RootPolynomialLaw)
   double force_of_root(double u, double xdot) const noexcept { return K_ * u * (u * u + tau_ * xdot); }
+
+  /// tau = 2 zeta / omega_n [s], so that c_e = K tau x^{1/2} (eq. 5): the law's one
+  /// coefficient besides K.
+  double time_constant_s() const noexcept { return tau_; }
+
+  /// The force at u = x^{1/2} >= 0 for given (K, tau) and its partial derivatives, for
+  /// forward sensitivities (simulation/contact_sensitivity.cpp):
+  ///   F = K u (u^2 + tau xdot),   F_u = K (3u^2 + tau xdot),   F_xdot = K tau u,
+  ///   F_K = u (u^2 + tau xdot),   F_tau = K u xdot.
+  struct Gradient {
+    double F, F_u, F_xdot, F_K, F_tau;
+  };
+  static Gradient gradient_of_root(double K, double tau_s, double u, double xdot) noexcept {
+    const double spring_and_dashpot = u * (u * u + tau_s * xdot);
+    return {K * spring_and_dashpot, K * (3.0 * u * u + tau_s * xdot), K * tau_s * u, spring_and_dashpot, K * u * xdot};
+  }
 
   std::vector<NamedValue> coefficients() const {
     return {{"zeta", zeta_}, {"omega_n_rad_per_s", omega_n_}, {"c_e_coefficient_N_s_per_m_1_5", K_ * tau_}};
