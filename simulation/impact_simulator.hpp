@@ -3,6 +3,13 @@
 // trajectory and events -> summary. The integrator is one setting, so comparing
 // integrators on the same model is one flag; which integrator actually runs (after
 // the table's fall-backs) is reported in the summary.
+//
+// Other systems fit the same pattern: the integrator rows integrate any OdeSystem of any
+// size, and IntegratorWorkspace keeps one CVODE memory per system size. A new body model
+// (an elastic rod with many degrees of freedom, a hemisphere on a load cell) is a system
+// in model/ plus a run_..._impact beside physical_impact.hpp that builds it and observes
+// it into a summary; a sequence of impacts is a system whose separation event restarts
+// instead of stopping, observed impact by impact.
 #include "model/damping/registry.hpp"
 #include "model/drop_test_setup.hpp"
 #include "io/provenance.hpp"
@@ -57,6 +64,10 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<Trace
     if constexpr (Row::traits.variables == Variables::regularized) run_regularized_impact<Law>(setup, integrate, s, trace);
     else run_physical_impact<Law>(setup, integrate, s, trace);
   });
+  if (s.separated) {
+    s.contact_time_s = s.t_separation_s - s.t_onset_s;
+    s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;
+  }
   return s;
 }
 

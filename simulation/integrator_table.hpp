@@ -93,30 +93,29 @@ constexpr bool smooth_at_events() {
 
 namespace integrator_rows {
 
-inline FixedStepOptions fixed_step_options(const SolverSettings& s) { return {s.dt_s, s.locate_events}; }
+/// How the fixed-step rows call them: Method (explicit Euler, classical RK4) with events
+/// located by regula falsi or handled at the end of the crossing step.
+template <class Method>
+struct CallFixedStep {
+  template <OdeSystem S, class Observer>
+  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
+                                    IntegratorWorkspace&, Observer& observer) {
+    return integrate_fixed_step<Method>(sys, y, t0, t1, FixedStepOptions{s.dt_s, s.locate_events}, observer);
+  }
+};
 
-struct Euler {
+struct Euler : CallFixedStep<ExplicitEuler> {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::euler, .name = "euler",
                                            .step_control = StepControl::fixed_step, .variables = Variables::physical,
                                            .min_steps_per_contact_located = 10240,
                                            .min_steps_per_contact_unlocated = 10240};
-  template <OdeSystem S, class Observer>
-  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
-                                    IntegratorWorkspace&, Observer& observer) {
-    return integrate_fixed_step<ExplicitEuler>(sys, y, t0, t1, fixed_step_options(s), observer);
-  }
 };
 
-struct Rk4 {
+struct Rk4 : CallFixedStep<ClassicalRk4> {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::rk4, .name = "rk4",
                                            .step_control = StepControl::fixed_step, .variables = Variables::physical,
                                            .min_steps_per_contact_located = 10,
                                            .min_steps_per_contact_unlocated = 1280};
-  template <OdeSystem S, class Observer>
-  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
-                                    IntegratorWorkspace&, Observer& observer) {
-    return integrate_fixed_step<ClassicalRk4>(sys, y, t0, t1, fixed_step_options(s), observer);
-  }
 };
 
 /// How the CVODE rows call it: SUNDIALS CVODE (Adams or BDF) with its root finder,

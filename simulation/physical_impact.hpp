@@ -62,7 +62,7 @@ class ImpactObserver {
 }  // namespace detail
 
 /// The drop test of a validated set-up in the physical variables: fills the fields of `s`
-/// that describe the impact and the work.
+/// that describe the impact and the work (the caller derives contact time and e_effective).
 template <DampingLaw Law, class Integrate>
 void run_physical_impact(const DropTestSetup& setup, Integrate&& integrate, ImpactSummary& s,
                          std::vector<TraceSample>* trace) {
@@ -77,10 +77,6 @@ void run_physical_impact(const DropTestSetup& setup, Integrate&& integrate, Impa
   const double fall_s = setup.impact_velocity_mps ? 0.0 : v0 / setup.gravity_mps2;
   const double t_end = fall_s + 20.0 * undamped_hertz_impact(model.K, model.mass_kg, v0).contact_time_s;
   s.work = integrate(sys, y, 0.0, t_end, observer);
-  if (s.separated) {
-    s.contact_time_s = s.t_separation_s - s.t_onset_s;
-    s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;
-  }
 }
 
 }  // namespace hertzdash

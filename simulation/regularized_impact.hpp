@@ -86,7 +86,8 @@ class RegularizedImpactObserver {
 }  // namespace detail
 
 /// The impact of a validated set-up without the tension clamp (see above): fills the
-/// fields of `s` that describe the impact and the work.
+/// fields of `s` that describe the impact and the work (the caller derives contact time
+/// and e_effective).
 template <DampingLaw Law, class Integrate>
 void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, ImpactSummary& s,
                             std::vector<TraceSample>* trace) {
@@ -108,10 +109,6 @@ void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, I
   const double X = hertz_impact_scale_m(K, setup.mass_kg, v0);
   const double tau_end = 1e7 * (X / v0) / (2.0 * std::sqrt(X));
   s.work = integrate(sys, y, 0.0, tau_end, observer);
-  if (s.separated) {
-    s.contact_time_s = s.t_separation_s - s.t_onset_s;
-    s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;
-  }
 }
 
 }  // namespace hertzdash

@@ -36,6 +36,39 @@ TEST_CASE("CLI simulate --json: fields, units and inputs", "[cli]") {
   CHECK(in["damping"].get<std::string>() == "hongo");
 }
 
+TEST_CASE("CLI simulate --json names the integrator that ran, and stderr says why it fell back", "[cli]") {
+  // The integrator table's fall-backs: gbs8-regularized integrates the contact in u = x^{1/2},
+  // which has no event for the tension clamp, so with --no-tension dopri5 runs in the
+  // physical variables; gbs8 needs a law declaring force_of_root, which tsuji-dem (x^{1/4}
+  // dashpot) does not, so dopri5-regularized runs. A run that fell back must be the very
+  // run of the integrator it names: the same result and the same work, to the last bit.
+  struct Case {
+    std::string options, used, same_as;
+  };
+  for (const Case& c : {Case{"--integrator gbs8-regularized --no-tension", "dopri5", "--integrator dopri5 --no-tension"},
+                        Case{"--integrator gbs8-regularized --damping tsuji-dem", "dopri5-regularized",
+                             "--integrator dopri5-regularized --damping tsuji-dem"},
+                        Case{"--integrator cvode-regularized --no-tension", "cvode", "--integrator cvode --no-tension"},
+                        Case{"--integrator gbs8-regularized", "gbs8-regularized", ""}}) {
+    INFO(c.options);
+    const auto r = run_cli("simulate --json " + c.options);
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["integrator_used"].get<std::string>() == c.used);
+    if (c.same_as.empty()) {
+      CHECK(j["inputs"]["integrator"].get<std::string>() == c.used);
+      CHECK(r.err.find("fell back") == std::string::npos);
+      continue;
+    }
+    CHECK(r.err.find("fell back to " + c.used + ":") != std::string::npos);
+    const auto same = nlohmann::json::parse(run_cli("simulate --json " + c.same_as).out);
+    CHECK(same["integrator_used"].get<std::string>() == c.used);
+    CHECK(j["e_effective"].get<double>() == same["e_effective"].get<double>());
+    CHECK(j["peak_force_N"].get<double>() == same["peak_force_N"].get<double>());
+    CHECK(j["rhs_evaluations"].get<long>() == same["rhs_evaluations"].get<long>());
+  }
+}
+
 TEST_CASE("CLI simulate --trace: contact phase under a provenance header", "[cli]") {
   const auto path = std::filesystem::temp_directory_path() / ("hertzdash_trace_" + std::to_string(::getpid()) + ".csv");
   const auto r = run_cli("simulate --json --trace " + path.string());
