@@ -63,7 +63,7 @@ struct PeerImpact {
   double fall_time_s;            ///< free fall from rest to contact [s] (0 if starting at onset)
 };
 
-/// hertzdash's ImpactSimulator with `kind`; for rk4 `tol_or_dt` is the step [s].
+/// hertzdash's ImpactSimulator with `kind`; for a fixed-step integrator `tol_or_dt` is the step [s].
 std::unique_ptr<ImpactSolver> make_hertzdash_solver(IntegratorKind kind, double tol_or_dt);
 /// Boost.Odeint runge_kutta_dopri5, dense output, bisection on the dense output for the events.
 std::unique_ptr<ImpactSolver> make_odeint_dopri5(double tol);

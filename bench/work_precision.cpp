@@ -207,22 +207,17 @@ int run_work_precision(const WorkPrecisionConfig& c) {
 
   std::vector<double> tolerances;
   for (int k = 0; k <= 12; k += c.half_decades ? 1 : 2) tolerances.push_back(std::pow(10.0, -4.0 - 0.5 * k));
-  const std::vector<double> rk4_steps{1e-5, 3e-6, 1e-6, 3e-7};
+  const std::vector<double> fixed_steps{1e-5, 3e-6, 1e-6, 3e-7};
 
-  const std::vector<SolverSpec> solvers{
-      {"hertzdash-gbs8-regularized", false, true,
-       [](double t) { return make_hertzdash_solver(IntegratorKind::gbs8_regularized, t); }},
-      {"hertzdash-dopri5-regularized", false, true,
-       [](double t) { return make_hertzdash_solver(IntegratorKind::dopri5_regularized, t); }},
-      {"hertzdash-dopri5", false, true, [](double t) { return make_hertzdash_solver(IntegratorKind::dopri5, t); }},
-      {"hertzdash-cvode", false, true, [](double t) { return make_hertzdash_solver(IntegratorKind::cvode, t); }},
-      {"hertzdash-cvode-regularized", false, true,
-       [](double t) { return make_hertzdash_solver(IntegratorKind::cvode_regularized, t); }},
-      {"hertzdash-rk4", false, false, [](double t) { return make_hertzdash_solver(IntegratorKind::rk4, t); }},
-      {"odeint-dopri5", true, true, make_odeint_dopri5},
-      {"gsl-rk8pd", true, true, make_gsl_rk8pd},
-      {"cvode-fresh", true, true, make_cvode_fresh},
-  };
+  // Every row of the integrator table (tolerances for the adaptive ones, steps for the
+  // fixed-step ones), then the peers.
+  std::vector<SolverSpec> solvers;
+  for (const IntegratorTraits& row : all_integrator_traits)
+    solvers.push_back({"hertzdash-" + std::string(row.name), false, row.step_control == StepControl::adaptive,
+                       [kind = row.kind](double t) { return make_hertzdash_solver(kind, t); }});
+  solvers.push_back({"odeint-dopri5", true, true, make_odeint_dopri5});
+  solvers.push_back({"gsl-rk8pd", true, true, make_gsl_rk8pd});
+  solvers.push_back({"cvode-fresh", true, true, make_cvode_fresh});
 
   const std::string machine = machine_name();
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
@@ -257,7 +252,7 @@ int run_work_precision(const WorkPrecisionConfig& c) {
     std::vector<Point> points;
     fmt::print("{:<18} {:>9} {:>12} {:>10} {:>12}\n", "solver", "tol/dt", "|error|", "rhs evals", "us/impact");
     for (const SolverSpec& s : solvers) {
-      for (double tol : s.adaptive ? tolerances : rk4_steps) {
+      for (double tol : s.adaptive ? tolerances : fixed_steps) {
         if (!s.adaptive && w.name == "drop" && tol < 1e-6) continue;  // minutes of fixed steps through the fall
         auto solver = s.make(tol);
         const ImpactResult r = solver->run(w.setup);
@@ -269,7 +264,7 @@ int run_work_precision(const WorkPrecisionConfig& c) {
     }
 
     CsvWriter csv(fmt::format("Work precision of hertzdash's integrators and peer libraries, workload '{}' (steel, "
-                              "h = 20 mm); tolerance is the step [s] for hertzdash-rk4; rtol = tolerance, atol = "
+                              "h = 20 mm); tolerance is the step [s] for hertzdash-euler and hertzdash-rk4; rtol = tolerance, atol = "
                               "1e-4 tolerance; us_per_impact is the median of {} repeats on {} ({} cores)",
                               w.name, c.repeats, machine, cores),
                   {{"workload", w.name}, {"e_reference", fmt::format("{:.17g}", e_ref)},

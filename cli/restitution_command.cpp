@@ -49,6 +49,11 @@ Command add_restitution_command(CLI::App& app) {
             }
             const SolverSettings solver = opt->solver.resolve();
             ImpactSimulator simulator(solver);
+            std::string fallback;
+            const IntegratorKind used = integrator_used(solver, setup, law, &fallback);
+            if (!fallback.empty())
+              std::cerr << fmt::format("hertzdash: note: --integrator {} fell back to {}: {}\n", to_string(solver.integrator),
+                                       to_string(used), fallback);
 
             nlohmann::ordered_json j;
             j["damping"] = law;
@@ -64,6 +69,7 @@ Command add_restitution_command(CLI::App& app) {
               j["e_input"] = setup.restitution;
               j["e_effective"] = simulator.run(setup, law).e_effective;
             }
+            j["integrator_used"] = to_string(used);
             j["git_revision"] = git_revision();
             if (opt->json) {
               std::cout << j.dump(2) << "\n";
@@ -74,6 +80,8 @@ Command add_restitution_command(CLI::App& app) {
               if (opt->target_opt->count()) std::cout << fmt::format("  e_target     {:.6g}\n", opt->target);
               std::cout << fmt::format("  e_input      {:.6g}\n", j["e_input"].get<double>());
               std::cout << fmt::format("  e_effective  {:.6g}\n", j["e_effective"].get<double>());
+              if (used != solver.integrator)
+                std::cout << fmt::format("  integrator   {} (ran {})\n", to_string(solver.integrator), to_string(used));
             }
             return 0;
           }};

@@ -59,14 +59,21 @@ DropTestSetup SetupOptions::resolve(const PaperParameters& paper) const {
 }
 
 void SolverOptions::add_to(CLI::App& app) {
+  // Which integrators read which setting: the integrator table.
+  const std::string fixed = integrator_names([](const IntegratorTraits& r) { return r.step_control == StepControl::fixed_step; });
+  const std::string adaptive = integrator_names([](const IntegratorTraits& r) { return r.step_control == StepControl::adaptive; });
+  const std::string timed = integrator_names([](const IntegratorTraits& r) {
+    return r.step_control == StepControl::adaptive && r.variables == Variables::physical;
+  });
+  const std::string cvode = integrator_names([](const IntegratorTraits& r) { return r.reads_cvode_method; });
   app.add_option("--integrator", integrator_, "One of: " + integrator_names())->capture_default_str();
-  app.add_option("--dt", dt_s_, "Fixed step [s] for euler and rk4")->capture_default_str();
+  app.add_option("--dt", dt_s_, "Fixed step [s] (" + fixed + ")")->capture_default_str();
   app.add_flag("--no-event-location", no_event_location_,
-               "euler/rk4: handle events at the end of the step that crosses them (convergence studies)");
-  app.add_option("--rtol", rtol_, "CVODE and dopri5 relative tolerance")->capture_default_str();
-  app.add_option("--atol", atol_, "CVODE and dopri5 absolute tolerance [m, m/s]")->capture_default_str();
-  app.add_option("--cvode-method", cvode_method_, "CVODE method: adams or bdf")->capture_default_str();
-  app.add_option("--max-step", max_step_s_, "CVODE and dopri5 largest step [s]; 0 = no limit")->capture_default_str();
+               "Handle events at the end of the step that crosses them (" + fixed + "; convergence studies)");
+  app.add_option("--rtol", rtol_, "Relative tolerance (" + adaptive + ")")->capture_default_str();
+  app.add_option("--atol", atol_, "Absolute tolerance [m, m/s] (" + adaptive + ")")->capture_default_str();
+  app.add_option("--cvode-method", cvode_method_, "CVODE method: adams or bdf (" + cvode + ")")->capture_default_str();
+  app.add_option("--max-step", max_step_s_, "Largest step [s]; 0 = no limit (" + timed + ")")->capture_default_str();
 }
 
 SolverSettings SolverOptions::resolve() const {

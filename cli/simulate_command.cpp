@@ -100,20 +100,16 @@ Command add_simulate_command(CLI::App& app) {
             ImpactSimulator simulator(solver);
             std::vector<TraceSample> trace;
             const ImpactSummary s = simulator.run(setup, opt->setup.damping(), opt->trace_path.empty() ? nullptr : &trace);
-            if (s.omega_n_iteration && !s.omega_n_iteration->converged) {  // nothing written: no impact to report
-              std::cerr << fmt::format("hertzdash: the {} omega_n fixed-point iteration failed after {} iterations: {}\n",
-                                       to_string(setup.damping.omega_n), s.omega_n_iteration->iterations,
-                                       s.omega_n_iteration->failure);
-              return 1;
-            }
             if (!s.integrator_fallback.empty())
               std::cerr << fmt::format("hertzdash: note: --integrator {} fell back to {}: {}\n", to_string(solver.integrator),
                                        to_string(s.integrator_used), s.integrator_fallback);
 
             if (!opt->trace_path.empty()) {
+              Parameters header = inputs;
+              header.emplace_back("integrator_used", to_string(s.integrator_used));
               CsvWriter csv("hertzdash simulate: contact-phase time series (x = deformation, force compressive "
                             "positive, accel/velocity of the rod downward positive)",
-                            inputs, trace_columns());
+                            header, trace_columns());
               for (const TraceSample& r : trace)
                 csv.add_row({r.t_s, r.x_m, r.xdot_mps, r.force_N, r.accel_mps2, r.rod_displacement_m,
                              r.rod_velocity_mps});

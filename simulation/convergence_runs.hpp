@@ -224,19 +224,19 @@ Measurement measure_cvode(const ConvergenceProblem& p, CvodeMethod method, doubl
 namespace detail {
 
 template <class System> struct RegularizedObserver {
-  const System& sys;
+  const System* sys;
   double v0;
-  ImpactQuantities& q;
+  ImpactQuantities* q;
   void on_step(double, const typename System::State& y) {
-    q.peak_force_N = std::max(q.peak_force_N, sys.force(y));
-    q.max_deformation_m = std::max(q.max_deformation_m, y[0] * y[0]);
+    q->peak_force_N = std::max(q->peak_force_N, sys->force(y));
+    q->max_deformation_m = std::max(q->max_deformation_m, y[0] * y[0]);
   }
   void on_event(int which, double, const typename System::State& y, EventAction) {
     if (which == event_index(RegularizedContactEvent::separation)) {
-      q.e_effective = -y[1] / v0;
-      q.contact_time_s = y[2];
+      q->e_effective = -y[1] / v0;
+      q->contact_time_s = y[2];
     }
-    if (which == event_index(RegularizedContactEvent::observation_time)) q.at_t_star = {y[0] * y[0], y[1]};
+    if (which == event_index(RegularizedContactEvent::observation_time)) q->at_t_star = {y[0] * y[0], y[1]};
   }
 };
 
@@ -268,7 +268,7 @@ Measurement measure_regularized(const ConvergenceProblem& p, double dtau, double
   IntegrationStats stats;
   m.cpu_time_s = detail::cpu_time_per_call(min_timing_s, [&] {
     m.q = ImpactQuantities{};
-    detail::RegularizedObserver<System> observer{sys, p.v0_mps, m.q};
+    detail::RegularizedObserver<System> observer{&sys, p.v0_mps, &m.q};
     auto y = sys.initial_state();
     stats = integrate_fixed_step<Method>(sys, y, 0.0, 1e6 * dtau, FixedStepOptions{dtau, true}, observer);
   });

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 namespace hertzdash {
 
 std::vector<std::string> trace_columns() {
@@ -22,12 +24,24 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view 
                                          "to the paper's law; --damping is {})",
                                          HongoPaper::info.name, law));
     OmegaNFixedPoint r = run_paper_law(*this, setup, {}, trace);
+    if (!r.converged)
+      throw std::runtime_error(fmt::format("the {} omega_n fixed-point iteration failed after {} iterations: {}",
+                                           to_string(setup.damping.omega_n), r.iterations, r.failure));
     r.summary.omega_n_iteration = static_cast<const OmegaNIteration&>(r);
     return r.summary;
   }
   ImpactSummary s;
   with_damping_law(law, [&]<class Law>(std::type_identity<Law>) { s = run<Law>(setup, trace); });
   return s;
+}
+
+IntegratorKind integrator_used(const SolverSettings& solver, const DropTestSetup& setup, std::string_view law,
+                               std::string* why) {
+  IntegratorKind used = solver.integrator;
+  with_damping_law(law, [&]<class Law>(std::type_identity<Law>) {
+    used = integrator_used(solver.integrator, setup.no_tension, RootPolynomialLaw<Law>, why);
+  });
+  return used;
 }
 
 Parameters describe_run(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver) {

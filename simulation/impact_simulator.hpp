@@ -30,12 +30,12 @@ namespace hertzdash {
 class ImpactSimulator {
  public:
   explicit ImpactSimulator(const SolverSettings& settings);  ///< validates the settings
-  const SolverSettings& settings() const { return settings_; }
 
   /// Run the drop test with the registered law `law` (validated set-up required). The
   /// iterated omega_n variants of the paper's law run to their fixed point
   /// (simulation/omega_n_fixed_point.hpp), reported in summary.omega_n_iteration; they
-  /// need law = the paper's (else InvalidParameter("--omega-n", ...)).
+  /// need law = the paper's (else InvalidParameter("--omega-n", ...)), and an iteration
+  /// that does not converge throws std::runtime_error saying why (the impact is undefined).
   ImpactSummary run(const DropTestSetup& setup, std::string_view law, std::vector<TraceSample>* trace = nullptr);
 
   /// The same for a law known at compile time: the force inlines into the integrator.
@@ -47,6 +47,11 @@ class ImpactSimulator {
   SolverSettings settings_;
   IntegratorWorkspace workspace_;
 };
+
+/// The integrator that runs the registered law `law` on `setup` when `solver` asks for
+/// solver.integrator: the table's fall-backs (see integrator_used above; `why` likewise).
+IntegratorKind integrator_used(const SolverSettings& solver, const DropTestSetup& setup, std::string_view law,
+                               std::string* why = nullptr);
 
 /// The inputs of a run as name = value pairs (units in the names), for headers and JSON:
 /// the set-up, the law, the integrator asked for and the settings it reads.

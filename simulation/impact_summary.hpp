@@ -33,7 +33,7 @@ struct ImpactSummary {
   bool separated = false;              ///< false if the rod came to rest on the ball
   IntegrationStats work;               ///< steps and right-hand-side evaluations, whole run
   std::vector<NamedValue> law_coefficients;
-  IntegratorKind integrator_used = IntegratorKind::cvode;  ///< differs from the one asked for after a fall-back
+  IntegratorKind integrator_used = IntegratorKind::cvode;  ///< set by ImpactSimulator::run: the one asked for, or its fall-back
   std::string integrator_fallback;     ///< why it fell back (empty if it did not)
   std::optional<OmegaNIteration> omega_n_iteration;  ///< iterated omega_n variants only
 };

@@ -8,9 +8,10 @@ namespace hertzdash {
 
 const char* to_string(IntegratorKind k) { return integrator_traits(k).name.data(); }
 
-std::string integrator_names() {
+std::string integrator_names(bool (*which)(const IntegratorTraits&)) {
   std::string names;
-  for (IntegratorKind k : all_integrator_kinds) names += (names.empty() ? "" : ", ") + std::string(to_string(k));
+  for (const IntegratorTraits& row : all_integrator_traits)
+    if (!which || which(row)) names += (names.empty() ? "" : ", ") + std::string(row.name);
   return names;
 }
 

@@ -223,6 +223,21 @@ static_assert([] {
     if (static_cast<std::size_t>(all_integrator_kinds[i]) != i) return false;
   return true;
 }(), "IntegratorTable lists the rows in the order of IntegratorKind");
+static_assert([] {
+  for (const IntegratorTraits& row : all_integrator_traits) {
+    const IntegratorTraits& clamp = all_integrator_traits[static_cast<std::size_t>(row.fallback_with_tension_clamp)];
+    const IntegratorTraits& other = all_integrator_traits[static_cast<std::size_t>(row.fallback_for_other_laws)];
+    // The tension clamp needs the physical variables (their force-zero event); a
+    // physical row runs itself.
+    if (clamp.variables != Variables::physical) return false;
+    if (row.variables == Variables::physical && row.fallback_with_tension_clamp != row.kind) return false;
+    // A row that needs a root-polynomial law falls back to one that does not, and only then.
+    if (row.needs_root_polynomial == (row.fallback_for_other_laws == row.kind) || other.needs_root_polynomial)
+      return false;
+  }
+  return true;
+}(), "every fall-back of the integrator table ends on a row that runs: physical variables under the tension "
+     "clamp, any law otherwise");
 
 /// Call f(std::type_identity<Row>{}) with the row of `kind`, so the caller can
 /// instantiate its code for that integrator.
@@ -234,8 +249,9 @@ void with_integrator_row(IntegratorKind kind, F&& f) {
 }
 
 const char* to_string(IntegratorKind k);
-/// The CLI spellings of every integrator, comma-separated ("euler, rk4, ...").
-std::string integrator_names();
+/// The CLI spellings of every integrator (or of those whose row satisfies `which`),
+/// comma-separated ("euler, rk4, ...").
+std::string integrator_names(bool (*which)(const IntegratorTraits&) = nullptr);
 /// The integrator spelled `name`; throws InvalidParameter(option, name, "one of: ...").
 IntegratorKind parse_integrator(std::string_view name, const std::string& option = "--integrator");
 

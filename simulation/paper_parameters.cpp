@@ -24,16 +24,19 @@ std::filesystem::path default_data_dir() {
   if (const char* env = std::getenv("HERTZDASH_DATA_DIR"); env && *env) return env;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  for (fs::path dir = exe.parent_path(); !ec && !dir.empty(); dir = dir.parent_path()) {
+  // PREFIX/bin/hertzdash and build/<layer>/<program> look one level up, build/hertzdash
+  // in its own directory; no further, so no other installation's tables are picked up.
+  for (const fs::path& dir : {exe.parent_path(), exe.parent_path().parent_path()}) {
+    if (ec) break;
     const fs::path data = dir / data_dir_below_prefix;
     if (fs::is_regular_file(data / "table1_dimensions.csv")) {
       const fs::path real = fs::canonical(data, ec);  // the source tree's data/ behind a build tree's link
       return ec ? data : real;
     }
-    if (dir == dir.root_path()) break;
   }
   throw std::runtime_error(std::string("the data tables (table1_dimensions.csv, ...) are not in ") +
-                           data_dir_below_prefix + " beside or above the program " + exe.string() +
+                           data_dir_below_prefix + " in the directory of the program " + exe.string() +
+                           " or the one above it" +
                            "; set HERTZDASH_DATA_DIR to the directory that holds them (the source tree's data/)");
 }
 

@@ -41,7 +41,7 @@ struct PaperParameters {
 inline constexpr const char* data_dir_below_prefix = "share/hertzdash/data";
 
 /// The directory of the data tables, found at run time: $HERTZDASH_DATA_DIR if set, else
-/// share/hertzdash/data in the running program's directory or the nearest one above it
+/// share/hertzdash/data in the running program's directory or the one above it
 /// (PREFIX/bin/hertzdash finds PREFIX/share/hertzdash/data; in a build tree,
 /// build/share/hertzdash/data links to the source tree's data/). Throws std::runtime_error
 /// saying how to set it if neither holds the tables.

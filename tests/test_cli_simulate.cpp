@@ -69,6 +69,18 @@ TEST_CASE("CLI simulate --json names the integrator that ran, and stderr says wh
   }
 }
 
+TEST_CASE("CLI restitution names the integrator that ran", "[cli]") {
+  // The same table fall-back as simulate: the tension clamp sends gbs8-regularized to dopri5.
+  const auto r = run_cli("restitution --json --integrator gbs8-regularized --no-tension");
+  REQUIRE(r.exit_code == 0);
+  CHECK(nlohmann::json::parse(r.out)["integrator_used"].get<std::string>() == "dopri5");
+  CHECK(r.err.find("fell back to dopri5:") != std::string::npos);
+  const auto plain = run_cli("restitution --json --integrator gbs8-regularized");
+  REQUIRE(plain.exit_code == 0);
+  CHECK(nlohmann::json::parse(plain.out)["integrator_used"].get<std::string>() == "gbs8-regularized");
+  CHECK(plain.err.empty());
+}
+
 TEST_CASE("CLI simulate --trace: contact phase under a provenance header", "[cli]") {
   const auto path = std::filesystem::temp_directory_path() / ("hertzdash_trace_" + std::to_string(::getpid()) + ".csv");
   const auto r = run_cli("simulate --json --trace " + path.string());

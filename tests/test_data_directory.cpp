@@ -1,5 +1,5 @@
 // The data tables are found at run time, not through a path compiled into the program:
-// $HERTZDASH_DATA_DIR if set, else share/hertzdash/data beside or above the program
+// $HERTZDASH_DATA_DIR if set, else share/hertzdash/data in the program's directory or the one above it
 // (simulation/paper_parameters.hpp). Checked on copies of build/hertzdash laid out as an
 // installation would be (PREFIX/bin/hertzdash with PREFIX/share/hertzdash/data), so the
 // program cannot be finding the source tree by a remembered path.

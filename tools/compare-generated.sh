@@ -6,7 +6,8 @@
 # the provenance header, which names the git revision) and without the columns and
 # macros that are wall times (machine- and load-dependent): cpu_time_s, us_per_impact,
 # the \perf... and \runStudies... macros, and the whole work_precision_peers_table.tex (a
-# table of timings). The git revision itself is ignored. Prints one
+# table of timings). The git revision itself is ignored, and so is the order of a CSV's
+# rows (compared sorted). Prints one
 # line per file that differs and exits 1 if any does; a refactoring that should leave
 # every result alone must print nothing.
 set -euo pipefail
@@ -21,7 +22,7 @@ numbers() {
       grep -v '^#' "$f" | awk -F, '
         NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = ($i != "cpu_time_s" && $i != "us_per_impact") }
         { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ","; print line }' |
-        grep -v '^git_revision,' ;;
+        grep -v '^git_revision,' | { IFS= read -r header; printf '%s\n' "$header"; LC_ALL=C sort; } ;;
     *)
       grep -v '^%' "$f" | grep -v -e '\\perf' -e '\\runStudies' -e 'git_revision' -e 'GitRevision' || true ;;
   esac

@@ -307,8 +307,9 @@ int main(int argc, char** argv) {
   print_table("undamped Hertz ('none')", hertz);
   print_table("paper's ('hongo')", paper);
 
-  // The simulate warning's thresholds (simulation/step_resolution.hpp) must be
-  // what this sweep finds; say so loudly if they drift apart.
+  // The simulate warning's thresholds (the rows' min_steps_per_contact_* in
+  // simulation/integrator_table.hpp) must be what this sweep finds; say so loudly if
+  // they drift apart.
   std::cout << fmt::format("\nSteps per contact for every error <= {:g} (both laws; the sweep doubles N):\n", target_error);
   for (const auto& [integrator, location, constant] :
        {std::tuple{"euler", "located", min_steps_per_contact(IntegratorKind::euler, true)},
@@ -318,7 +319,7 @@ int main(int argc, char** argv) {
     const long found = steps_needed_both(hertz, paper, integrator, location);
     std::cout << fmt::format("  {:6} {:10} {:>6} (integrator table: {}){}\n", integrator, location,
                              found < 0 ? std::string("> sweep") : std::to_string(found), constant,
-                             !args.reduced && found != constant ? "  <-- MISMATCH: update step_resolution.hpp" : "");
+                             !args.reduced && found != constant ? "  <-- MISMATCH: update simulation/integrator_table.hpp" : "");
   }
 
   // The set-up as `hertzdash simulate` describes it, without the entries the sweep varies.
