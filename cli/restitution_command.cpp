@@ -49,11 +49,7 @@ Command add_restitution_command(CLI::App& app) {
             }
             const SolverSettings solver = opt->solver.resolve();
             ImpactSimulator simulator(solver);
-            std::string fallback;
-            const IntegratorKind used = integrator_used(solver, setup, law, &fallback);
-            if (!fallback.empty())
-              std::cerr << fmt::format("hertzdash: note: --integrator {} fell back to {}: {}\n", to_string(solver.integrator),
-                                       to_string(used), fallback);
+            const IntegratorKind used = report_integrator_used(solver, setup, law);
 
             nlohmann::ordered_json j;
             j["damping"] = law;

@@ -3,6 +3,9 @@
 #include "model/damping/registry.hpp"
 #include "model/invalid_parameter.hpp"
 
+#include <fmt/format.h>
+
+#include <iostream>
 
 namespace hertzdash::cli {
 
@@ -56,6 +59,15 @@ DropTestSetup SetupOptions::resolve(const PaperParameters& paper) const {
                            "given only with --damping " + std::string(HongoPaper::info.name) +
                                " (the omega_n assumption belongs to the paper's law; --damping is " + damping_ + ")");
   return s;
+}
+
+IntegratorKind report_integrator_used(const SolverSettings& solver, const DropTestSetup& setup, const std::string& law) {
+  std::string why;
+  const IntegratorKind used = integrator_used(solver, setup, law, &why);
+  if (used != solver.integrator)
+    std::cerr << fmt::format("hertzdash: note: --integrator {} fell back to {}: {}\n", to_string(solver.integrator),
+                             to_string(used), why);
+  return used;
 }
 
 void SolverOptions::add_to(CLI::App& app) {

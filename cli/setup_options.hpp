@@ -36,6 +36,10 @@ class SetupOptions {
 };
 
 /// --integrator, --dt, --no-event-location, --rtol, --atol, --cvode-method, --max-step.
+/// The integrator that runs `law` on `setup` (the integrator table's fall-backs); when it is
+/// not the one asked for, says so and why on stderr.
+IntegratorKind report_integrator_used(const SolverSettings& solver, const DropTestSetup& setup, const std::string& law);
+
 class SolverOptions {
  public:
   void add_to(CLI::App& app);

@@ -99,10 +99,8 @@ Command add_simulate_command(CLI::App& app) {
 
             ImpactSimulator simulator(solver);
             std::vector<TraceSample> trace;
+            report_integrator_used(solver, setup, opt->setup.damping());
             const ImpactSummary s = simulator.run(setup, opt->setup.damping(), opt->trace_path.empty() ? nullptr : &trace);
-            if (!s.integrator_fallback.empty())
-              std::cerr << fmt::format("hertzdash: note: --integrator {} fell back to {}: {}\n", to_string(solver.integrator),
-                                       to_string(s.integrator_used), s.integrator_fallback);
 
             if (!opt->trace_path.empty()) {
               Parameters header = inputs;

@@ -60,8 +60,7 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
 template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
   ImpactSummary s;
-  s.integrator_used = integrator_used(settings_.integrator, setup.no_tension, RootPolynomialLaw<Law>,
-                                      &s.integrator_fallback);
+  s.integrator_used = integrator_used(settings_.integrator, setup.no_tension, RootPolynomialLaw<Law>);
   with_integrator_row(s.integrator_used, [&]<class Row>(std::type_identity<Row>) {
     auto integrate = [&](auto& sys, auto& y, double t0, double t1, auto& observer) {
       return Row::integrate(sys, y, t0, t1, settings_, workspace_, observer);

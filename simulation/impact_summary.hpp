@@ -34,7 +34,6 @@ struct ImpactSummary {
   IntegrationStats work;               ///< steps and right-hand-side evaluations, whole run
   std::vector<NamedValue> law_coefficients;
   IntegratorKind integrator_used = IntegratorKind::cvode;  ///< set by ImpactSimulator::run: the one asked for, or its fall-back
-  std::string integrator_fallback;     ///< why it fell back (empty if it did not)
   std::optional<OmegaNIteration> omega_n_iteration;  ///< iterated omega_n variants only
 };
 
