@@ -36,18 +36,13 @@ struct ContactModel {
   }
   double force(double x, double v) const { return gradient(x, v).F; }
   double accel(double x, double v) const { return p.gravity_mps2 - force(x, v) / p.mass_kg; }
-  /// dF/dx * s_x = F_u s_x / (2u), with its x -> 0 limit 0 (see the header).
-  double force_x_times(double x, double v, double s_x) const {
+  /// dF/dx * s_x = F_u s_x / (2u) for the gradient G at x, with its x -> 0 limit 0 (see the header).
+  static double force_x_times(const HongoPaper::Gradient& G, double x, double s_x) {
     if (x <= 0) return 0.0;
-    const double u = std::sqrt(x);
-    return gradient(x, v).F_u * s_x / (2.0 * u);
+    return G.F_u * s_x / (2.0 * std::sqrt(x));
   }
-  double force_v(double x, double v) const { return gradient(x, v).F_xdot; }
   /// Explicit partial derivatives dF/dq (F does not depend on m or v0 explicitly).
-  ContactGradient force_q(double x, double v) const {
-    const HongoPaper::Gradient G = gradient(x, v);
-    return {G.F_K, G.F_tau, 0.0, 0.0};
-  }
+  static ContactGradient force_q(const HongoPaper::Gradient& G) { return {G.F_K, G.F_tau, 0.0, 0.0}; }
   /// The peak-force event: dF/dtau / (2K) = x^{1/2} dF/dt / K (model/force_rate.hpp), finite at x = 0.
   double peak_force_event(double x, double v) const {
     const HongoPaper::Gradient G = gradient(x, v);
@@ -71,15 +66,15 @@ int sensitivity_rhs(int ns, realtype, N_Vector y, N_Vector, N_Vector* yS, N_Vect
   const auto& m = *static_cast<const ContactModel*>(user);
   const double* Y = N_VGetArrayPointer(y);
   const double x = Y[0], v = Y[1], M = m.p.mass_kg;
-  const ContactGradient Fq = m.force_q(x, v);
-  const double F = m.force(x, v);
+  const HongoPaper::Gradient G = m.gradient(x, v);
+  const ContactGradient Fq = ContactModel::force_q(G);
   for (int i = 0; i < ns; ++i) {
     const double* s = N_VGetArrayPointer(yS[i]);
     double* ds = N_VGetArrayPointer(ySdot[i]);
     ds[0] = s[1];
     double explicit_term = -Fq[i] / M;
-    if (i == q_mass) explicit_term = F / (M * M);  // d(-F/m)/dm
-    ds[1] = -(m.force_x_times(x, v, s[0]) + m.force_v(x, v) * s[1]) / M + explicit_term;
+    if (i == q_mass) explicit_term = G.F / (M * M);  // d(-F/m)/dm
+    ds[1] = -(ContactModel::force_x_times(G, x, s[0]) + G.F_xdot * s[1]) / M + explicit_term;
   }
   return 0;
 }
@@ -175,10 +170,11 @@ ContactPhaseSensitivities contact_phase_sensitivities(const ContactPhaseParamete
     auto s = [&](int i, int k) { return N_VGetArrayPointer(c.yS[i])[k]; };
     if (found[2] && !peak_seen) {  // the first (compressive) force maximum
       peak_seen = true;
-      out.peak_force_N = model.force(x, v);
-      const ContactGradient Fq = model.force_q(x, v);
+      const HongoPaper::Gradient G = model.gradient(x, v);
+      const ContactGradient Fq = ContactModel::force_q(G);
+      out.peak_force_N = G.F;
       for (int i = 0; i < Ns; ++i)
-        out.d_peak_force[i] = model.force_x_times(x, v, s(i, 0)) + model.force_v(x, v) * s(i, 1) + Fq[i];
+        out.d_peak_force[i] = ContactModel::force_x_times(G, x, s(i, 0)) + G.F_xdot * s(i, 1) + Fq[i];
     }
     if (found[1] && !max_seen) {
       max_seen = true;
