@@ -1,7 +1,7 @@
 // hertzdash's own integrators as benchmark solvers: the library path, ImpactSimulator.
 #include "bench/impact_solvers.hpp"
 
-#include "model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
 
 namespace hertzdash::bench {
 

@@ -10,10 +10,10 @@
 //
 // Every solver reports the effective restitution (rebound over approach speed at
 // separation, x = 0 decreasing) and the right-hand-side evaluations it spent.
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/drop_test.hpp"
-#include "model/drop_test_setup.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/drop_test.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <cmath>
 

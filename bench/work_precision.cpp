@@ -18,13 +18,13 @@
 #include "bench/work_precision.hpp"
 
 #include "bench/impact_solvers.hpp"
-#include "integrators/dormand_prince.hpp"
-#include "model/damping/laws/hongo_paper.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "io/atomic_file.hpp"
-#include "io/csv_writer.hpp"
-#include "io/latex_macros.hpp"
-#include "simulation/parallel_sweep.hpp"
+#include "hertzdash/integrators/dormand_prince.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/simulation/parallel_sweep.hpp"
 
 #include <fmt/format.h>
 

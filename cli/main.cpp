@@ -2,14 +2,17 @@
 // Exit codes: 0 success, 2 invalid input (the message names the parameter and
 // its valid range), 1 any other failure. No output file is left half-written.
 #include "cli/command.hpp"
-#include "io/csv_table.hpp"
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/provenance.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <iostream>
 #include <vector>
 
 int main(int argc, char** argv) {
   CLI::App app{"hertzdash: Hertz spring + nonlinear dashpot impact models (Hongo et al.)"};
+  app.set_version_flag("--version", std::string("hertzdash ") + hertzdash::version() + " (git " +
+                                         hertzdash::git_revision() + ")");
   app.require_subcommand(1);
   const std::vector<hertzdash::cli::Command> commands{
       hertzdash::cli::add_simulate_command(app),
@@ -22,6 +25,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "hertzdash: " << e.what() << "\n";

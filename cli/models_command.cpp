@@ -1,10 +1,10 @@
 // `hertzdash models`: every registered damping law with its citation, formula,
 // coefficients, validity and whether its force is continuous at contact onset.
 #include "cli/command.hpp"
-#include "model/damping/registry.hpp"
+#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/simulation/run_reports.hpp"
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include <iostream>
 #include <memory>
@@ -17,15 +17,7 @@ Command add_models_command(CLI::App& app) {
   sub->add_flag("--json", *json, "Print the list as a JSON array");
   return {sub, [json]() {
             if (*json) {
-              nlohmann::ordered_json list = nlohmann::ordered_json::array();
-              for (const LawInfo& l : registered_laws())
-                list.push_back({{"name", l.name},
-                                {"citation", l.citation},
-                                {"formula", l.formula},
-                                {"coefficients", l.coefficients},
-                                {"validity", l.validity},
-                                {"force_continuous_at_onset", l.force_continuous_at_onset}});
-              std::cout << list.dump(2) << "\n";
+              std::cout << registered_laws_json().dump(2) << "\n";
               return 0;
             }
             for (const LawInfo& l : registered_laws()) {

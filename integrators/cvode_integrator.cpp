@@ -1,4 +1,4 @@
-#include "integrators/cvode_integrator.hpp"
+#include "hertzdash/integrators/cvode_integrator.hpp"
 
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>

@@ -12,7 +12,7 @@
 // One CvodeIntegrator owns its SUNContext, vectors and solver memory; integrate()
 // may be called any number of times and reuses them (CVodeReInit), so a sweep
 // over many impacts pays for the set-up once. Not thread-safe: one per thread.
-#include "ode/ode_system.hpp"
+#include "hertzdash/ode/ode_system.hpp"
 
 #include <memory>
 #include <string>

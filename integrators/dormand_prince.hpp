@@ -48,8 +48,8 @@
 // changes inside a step.
 //
 // No allocation: all state is fixed-size (Eigen::Matrix<double, N, 1>) on the stack.
-#include "integrators/event_landing.hpp"
-#include "ode/ode_system.hpp"
+#include "hertzdash/integrators/event_landing.hpp"
+#include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
 #include <array>

@@ -8,8 +8,8 @@
 // `at(theta)`, theta in [0, 1] across the step [t, t + h], by Illinois regula falsi (no
 // right-hand-side evaluation); the integrator then re-takes the step to end exactly
 // on the earliest crossing and calls fire_landed_events there.
-#include "integrators/fixed_step.hpp"  // detail::illinois_root
-#include "ode/ode_system.hpp"
+#include "hertzdash/integrators/fixed_step.hpp"  // detail::illinois_root
+#include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
 #include <array>

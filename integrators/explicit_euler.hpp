@@ -1,6 +1,6 @@
 #pragma once
 // Explicit Euler: y_{n+1} = y_n + h f(t_n, y_n). Order 1, one evaluation per step.
-#include "ode/ode_system.hpp"
+#include "hertzdash/ode/ode_system.hpp"
 
 namespace hertzdash {
 

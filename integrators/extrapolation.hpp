@@ -32,9 +32,9 @@
 // enters squared.
 //
 // No allocation: all state is fixed-size on the stack.
-#include "integrators/dormand_prince.hpp"  // weighted_rms, the first-step heuristic
-#include "integrators/event_landing.hpp"
-#include "ode/ode_system.hpp"
+#include "hertzdash/integrators/dormand_prince.hpp"  // weighted_rms, the first-step heuristic
+#include "hertzdash/integrators/event_landing.hpp"
+#include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
 #include <array>

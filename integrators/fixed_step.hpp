@@ -9,7 +9,7 @@
 // right-hand-side evaluations. With location off, events are handled at the end
 // of the step in which the sign change is seen; convergence studies use this to
 // show what an unlocated kink costs.
-#include "ode/ode_system.hpp"
+#include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 //   k1 = f(t, y), k2 = f(t + h/2, y + h k1/2), k3 = f(t + h/2, y + h k2/2),
 //   k4 = f(t + h, y + h k3),  y_{n+1} = y + h (k1 + 2 k2 + 2 k3 + k4) / 6.
 // Order 4 for a right-hand side with four continuous derivatives.
-#include "ode/ode_system.hpp"
+#include "hertzdash/ode/ode_system.hpp"
 
 namespace hertzdash {
 

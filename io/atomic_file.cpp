@@ -1,4 +1,4 @@
-#include "io/atomic_file.hpp"
+#include "hertzdash/io/atomic_file.hpp"
 
 #include <cstdio>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "io/csv_table.hpp"
+#include "hertzdash/io/csv_table.hpp"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,6 +1,6 @@
-#include "io/csv_writer.hpp"
+#include "hertzdash/io/csv_writer.hpp"
 
-#include "io/atomic_file.hpp"
+#include "hertzdash/io/atomic_file.hpp"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // A CSV file under a provenance header, built in memory and saved atomically.
-#include "io/provenance.hpp"
+#include "hertzdash/io/provenance.hpp"
 
 #include <filesystem>
 #include <string>

@@ -1,6 +1,6 @@
-#include "io/latex_macros.hpp"
+#include "hertzdash/io/latex_macros.hpp"
 
-#include "io/atomic_file.hpp"
+#include "hertzdash/io/atomic_file.hpp"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Numbers for the paper: a study writes paper/generated/<study>.tex holding
 // \newcommand definitions, and the paper \input's it. No hand-typed results.
-#include "io/provenance.hpp"
+#include "hertzdash/io/provenance.hpp"
 
 #include <filesystem>
 #include <string>

@@ -1,6 +1,6 @@
-#include "io/measured_trace.hpp"
+#include "hertzdash/io/measured_trace.hpp"
 
-#include "io/csv_table.hpp"
+#include "hertzdash/io/csv_table.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,8 @@
-#include "io/provenance.hpp"
+#include "hertzdash/io/provenance.hpp"
 
 namespace hertzdash {
+
+const char* version() { return HERTZDASH_VERSION; }
 
 std::string provenance_header(const std::string& what, const Parameters& parameters) {
   std::string h = "# " + what + "\n# generator: hertzdash " HERTZDASH_VERSION "\n# git_revision: ";

@@ -6,6 +6,9 @@
 
 namespace hertzdash {
 
+/// The version of hertzdash (the CMake project's version).
+const char* version();
+
 /// `git describe --always --dirty` of the source tree at build time ("unknown" outside git).
 const char* git_revision();
 

@@ -23,10 +23,10 @@
 //   3 force_zero: with the tension clamp, g = F (separation where the force
 //     reaches zero, stop); else inactive
 // At onset the law's coefficients are fixed from that impact's approach speed.
-#include "ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
-#include "model/damping/damping_law.hpp"
-#include "model/drop_test_setup.hpp"
-#include "model/force_rate.hpp"
+#include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
+#include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/model/force_rate.hpp"
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
-#include "model/drop_test_setup.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
 
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The physical set-up of one drop test (Fig. 4 of the paper), validated.
-#include "model/damping/damping_law.hpp"
-#include "model/hertz.hpp"
+#include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <optional>
 

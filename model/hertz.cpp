@@ -1,4 +1,4 @@
-#include "model/hertz.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <gsl/gsl_sf_gamma.h>
 

@@ -1,4 +1,4 @@
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
 

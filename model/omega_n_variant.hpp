@@ -2,7 +2,7 @@
 // How the paper's law picks the natural frequency omega_n of the Hertz contact,
 // eqs. (7)-(11) of Hongo et al. The paper's choice (eq. 11) is one modelling
 // assumption among several; the sensitivity study compares them.
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <array>
 #include <string>

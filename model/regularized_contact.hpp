@@ -30,10 +30,10 @@
 //     peak force by O(1e-12) relative. A difference along tau instead is exactly zero
 //     over a span at the undamped turning point, where a root finder meets a flat zero.
 //   3 observation time: g = t_obs - t, if an observation time is set (observation)
-#include "ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
-#include "model/damping/damping_law.hpp"
-#include "model/force_rate.hpp"
-#include "model/hertz.hpp"
+#include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
+#include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/force_rate.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <Eigen/Core>
 

@@ -1,4 +1,4 @@
-#include "model/restitution.hpp"
+#include "hertzdash/model/restitution.hpp"
 
 #include <cmath>
 #include <numbers>

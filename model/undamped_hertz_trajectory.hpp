@@ -10,7 +10,7 @@
 // bisection, which is monotone and converges to the last bit of s = x/X in 64 halvings.
 // Used as the exact reference of the convergence study; checked there and in the tests
 // against t(X) = tc/2 of undamped_hertz_impact().
-#include "model/hertz.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <gsl/gsl_sf_gamma.h>
 

@@ -1,6 +1,6 @@
-#include "simulation/calibrate_restitution.hpp"
+#include "hertzdash/simulation/calibrate_restitution.hpp"
 
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
 #include <gsl/gsl_errno.h>

@@ -7,8 +7,8 @@
 // the flight. Laws whose e_effective differs from their input e can be compared
 // at equal ACTUAL restitution by calibration: solve e_effective(e_input) = target
 // for e_input with GSL's Brent root finder (gsl_root_fsolver_brent) on (0, 1].
-#include "model/drop_test_setup.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <string_view>
 

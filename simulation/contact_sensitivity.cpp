@@ -1,8 +1,8 @@
-#include "simulation/contact_sensitivity.hpp"
+#include "hertzdash/simulation/contact_sensitivity.hpp"
 
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/force_rate.hpp"
-#include "model/hertz.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/force_rate.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>

@@ -17,16 +17,16 @@
 // by integrating a second time with t_end = t_gap + t*: every integrator shortens
 // its last step (or sets CVODE's stop time) to land on t_end, so reading the state
 // adds no interpolation error.
-#include "integrators/cvode_integrator.hpp"
-#include "integrators/explicit_euler.hpp"
-#include "integrators/fixed_step.hpp"
-#include "integrators/rk4.hpp"
-#include "model/damping/registry.hpp"
-#include "model/drop_test.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "model/regularized_contact.hpp"
-#include "model/undamped_hertz_trajectory.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/integrators/cvode_integrator.hpp"
+#include "hertzdash/integrators/explicit_euler.hpp"
+#include "hertzdash/integrators/fixed_step.hpp"
+#include "hertzdash/integrators/rk4.hpp"
+#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/model/drop_test.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/model/regularized_contact.hpp"
+#include "hertzdash/model/undamped_hertz_trajectory.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <algorithm>
 #include <array>

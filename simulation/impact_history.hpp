@@ -7,7 +7,7 @@
 //                     plotting resolution: O(dt^2 max|x''|)).
 //   tau > tc:         free flight after separation: x = x_s + v_s s + g s^2 / 2   (exact)
 // x is the deformation = rod displacement since contact onset, downward positive.
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <algorithm>
 #include <stdexcept>

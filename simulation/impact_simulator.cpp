@@ -1,8 +1,8 @@
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/invalid_parameter.hpp"
-#include "simulation/omega_n_fixed_point.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/omega_n_fixed_point.hpp"
 
 #include <fmt/format.h>
 

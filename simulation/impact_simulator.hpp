@@ -10,14 +10,14 @@
 // in model/ plus a run_..._impact beside physical_impact.hpp that builds it and observes
 // it into a summary; a sequence of impacts is a system whose separation event restarts
 // instead of stopping, observed impact by impact.
-#include "model/damping/registry.hpp"
-#include "model/drop_test_setup.hpp"
-#include "io/provenance.hpp"
-#include "simulation/impact_summary.hpp"
-#include "simulation/integrator_table.hpp"
-#include "simulation/physical_impact.hpp"
-#include "simulation/regularized_impact.hpp"
-#include "simulation/solver_settings.hpp"
+#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/io/provenance.hpp"
+#include "hertzdash/simulation/impact_summary.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
+#include "hertzdash/simulation/physical_impact.hpp"
+#include "hertzdash/simulation/regularized_impact.hpp"
+#include "hertzdash/simulation/solver_settings.hpp"
 
 #include <string_view>
 #include <type_traits>
@@ -56,6 +56,18 @@ IntegratorKind integrator_used(const SolverSettings& solver, const DropTestSetup
 /// The inputs of a run as name = value pairs (units in the names), for headers and JSON:
 /// the set-up, the law, the integrator asked for and the settings it reads.
 Parameters describe_run(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver);
+
+/// One impact with a law known at compile time, for instance a law of your own that no
+/// registry knows (it needs only the DampingLaw concept, model/damping/damping_law.hpp):
+///   const ImpactSummary s = simulate<MyLaw>(setup, {.integrator = IntegratorKind::gbs8_regularized});
+/// Validates the set-up (InvalidParameter). A sweep keeps one ImpactSimulator instead.
+template <DampingLaw Law>
+ImpactSummary simulate(const DropTestSetup& setup, const SolverSettings& settings = {},
+                       std::vector<TraceSample>* trace = nullptr) {
+  validate(setup);
+  ImpactSimulator simulator(settings);
+  return simulator.run<Law>(setup, trace);
+}
 
 template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {

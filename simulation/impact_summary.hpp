@@ -1,9 +1,9 @@
 #pragma once
 // What one impact produces: the summary every run reports, and the samples of the
 // contact phase a run records on request.
-#include "model/damping/damping_law.hpp"
-#include "ode/ode_system.hpp"
-#include "simulation/solver_settings.hpp"
+#include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/ode/ode_system.hpp"
+#include "hertzdash/simulation/solver_settings.hpp"
 
 #include <optional>
 #include <string>

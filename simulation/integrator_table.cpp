@@ -1,6 +1,6 @@
-#include "simulation/integrator_table.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
 
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
 

@@ -13,14 +13,14 @@
 // Variables::physical, the contact in regularising variables
 // (model/regularized_contact.hpp, simulation/regularized_impact.hpp) for
 // Variables::regularized.
-#include "integrators/cvode_integrator.hpp"
-#include "integrators/dormand_prince.hpp"
-#include "integrators/explicit_euler.hpp"
-#include "integrators/extrapolation.hpp"
-#include "integrators/fixed_step.hpp"
-#include "integrators/rk4.hpp"
-#include "ode/ode_system.hpp"
-#include "simulation/solver_settings.hpp"
+#include "hertzdash/integrators/cvode_integrator.hpp"
+#include "hertzdash/integrators/dormand_prince.hpp"
+#include "hertzdash/integrators/explicit_euler.hpp"
+#include "hertzdash/integrators/extrapolation.hpp"
+#include "hertzdash/integrators/fixed_step.hpp"
+#include "hertzdash/integrators/rk4.hpp"
+#include "hertzdash/ode/ode_system.hpp"
+#include "hertzdash/simulation/solver_settings.hpp"
 
 #include <array>
 #include <memory>

@@ -1,6 +1,6 @@
-#include "simulation/omega_n_fixed_point.hpp"
+#include "hertzdash/simulation/omega_n_fixed_point.hpp"
 
-#include "model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -12,7 +12,7 @@
 // for every w at which the rod still separates (strong damping lengthens the
 // contact without bound: the tensile dashpot force holds the rod), so the iterates
 // drift into impacts without separation and the iteration reports failure.
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <string>
 #include <vector>

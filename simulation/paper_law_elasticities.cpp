@@ -1,8 +1,8 @@
-#include "simulation/paper_law_elasticities.hpp"
+#include "hertzdash/simulation/paper_law_elasticities.hpp"
 
-#include "model/hertz.hpp"
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <cmath>
 #include <numbers>

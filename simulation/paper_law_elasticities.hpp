@@ -18,8 +18,8 @@
 //             (eq. 6, L = ln(1/e)) or -pi^2/(L (pi^2 + L^2)) (exact relation).
 // Outputs y: e_effective = v_r / v0, peak force, contact time.
 // Only the paper's omega_n assumption (eq. 11), free fall from h, no tension clamp.
-#include "model/drop_test_setup.hpp"
-#include "simulation/contact_sensitivity.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/simulation/contact_sensitivity.hpp"
 
 #include <array>
 #include <string_view>

@@ -1,12 +1,15 @@
-#include "simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
 
-#include "io/csv_table.hpp"
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+
+#include <dlfcn.h>
 
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace hertzdash {
 
@@ -19,24 +22,43 @@ const RodData& PaperParameters::rod(const std::string& name) const {
   throw InvalidParameter("--rod", name, "one of: " + names);
 }
 
+namespace {
+
+// The file this code was loaded from: the shared library libhertzdash_simulation.so (or,
+// linked statically, the program).
+std::filesystem::path this_library() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&default_data_dir), &info) == 0 || !info.dli_fname) return {};
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::canonical(info.dli_fname, ec);
+  return ec ? std::filesystem::path{} : p;
+}
+
+}  // namespace
+
 std::filesystem::path default_data_dir() {
   namespace fs = std::filesystem;
   if (const char* env = std::getenv("HERTZDASH_DATA_DIR"); env && *env) return env;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  // PREFIX/bin/hertzdash and build/<layer>/<program> look one level up, build/hertzdash
-  // in its own directory; no further, so no other installation's tables are picked up.
-  for (const fs::path& dir : {exe.parent_path(), exe.parent_path().parent_path()}) {
-    if (ec) break;
+  const fs::path lib = this_library();
+  // PREFIX/lib/libhertzdash_simulation.so, PREFIX/bin/hertzdash and build/<layer>/<file> look
+  // one level up, build/hertzdash in its own directory; no further, so no other
+  // installation's tables are picked up.
+  std::vector<fs::path> dirs;
+  for (const fs::path& file : {lib, ec ? fs::path{} : exe})
+    if (!file.empty()) dirs.insert(dirs.end(), {file.parent_path(), file.parent_path().parent_path()});
+  for (const fs::path& dir : dirs) {
     const fs::path data = dir / data_dir_below_prefix;
     if (fs::is_regular_file(data / "table1_dimensions.csv")) {
-      const fs::path real = fs::canonical(data, ec);  // the source tree's data/ behind a build tree's link
-      return ec ? data : real;
+      std::error_code real_ec;
+      const fs::path real = fs::canonical(data, real_ec);  // the source tree's data/ behind a build tree's link
+      return real_ec ? data : real;
     }
   }
   throw std::runtime_error(std::string("the data tables (table1_dimensions.csv, ...) are not in ") +
-                           data_dir_below_prefix + " in the directory of the program " + exe.string() +
-                           " or the one above it" +
+                           data_dir_below_prefix + " in the directory of the hertzdash library " + lib.string() +
+                           " or of the program " + exe.string() + ", or the one above either" +
                            "; set HERTZDASH_DATA_DIR to the directory that holds them (the source tree's data/)");
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The paper's Tables 1-3 and the stated assumptions, read from data/*.csv.
-#include "model/drop_test_setup.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
 
 #include <filesystem>
 #include <string>
@@ -41,10 +41,11 @@ struct PaperParameters {
 inline constexpr const char* data_dir_below_prefix = "share/hertzdash/data";
 
 /// The directory of the data tables, found at run time: $HERTZDASH_DATA_DIR if set, else
-/// share/hertzdash/data in the running program's directory or the one above it
-/// (PREFIX/bin/hertzdash finds PREFIX/share/hertzdash/data; in a build tree,
-/// build/share/hertzdash/data links to the source tree's data/). Throws std::runtime_error
-/// saying how to set it if neither holds the tables.
+/// share/hertzdash/data in the directory of the hertzdash library, or of the running
+/// program, or the one above either (PREFIX/lib/libhertzdash_simulation.so and
+/// PREFIX/bin/hertzdash find PREFIX/share/hertzdash/data, and so does a program of yours
+/// linked to an installed hertzdash; in a build tree, build/share/hertzdash/data links to the
+/// source tree's data/). Throws std::runtime_error saying how to set it if none holds the tables.
 std::filesystem::path default_data_dir();
 
 /// Read the tables; throws DataError naming the file, line and column of any defect.

@@ -13,7 +13,7 @@
 // results for index i. While the sweep runs, a progress line is drawn on stderr if
 // stderr is a terminal (never into logs or pipes). The first exception thrown by a
 // body stops the hand-out of new chunks and is rethrown after all threads joined.
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <unistd.h>
 

@@ -7,10 +7,10 @@
 // The run ends at separation, or, if the rod comes to rest on the ball, 20 undamped
 // contact times after onset: long enough for any impact to end.
 // The integrator is a callable integrate(system, y, t0, t1, observer) -> IntegrationStats.
-#include "model/drop_test.hpp"
-#include "model/drop_test_setup.hpp"
-#include "model/hertz.hpp"
-#include "simulation/impact_summary.hpp"
+#include "hertzdash/model/drop_test.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/impact_summary.hpp"
 
 #include <algorithm>
 #include <vector>

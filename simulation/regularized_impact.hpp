@@ -27,10 +27,10 @@
 // Tolerances: rtol as given; atol applies to u [m^{1/2}], v [m/s] and t [s] alike.
 // The integrator is a callable integrate(system, y, tau0, tau1, observer) ->
 // IntegrationStats over the system ContactUntil<Law> below.
-#include "model/drop_test_setup.hpp"
-#include "model/hertz.hpp"
-#include "model/regularized_contact.hpp"
-#include "simulation/impact_summary.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/regularized_contact.hpp"
+#include "hertzdash/simulation/impact_summary.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // How to integrate: which integrator, and the settings that apply to it. One set of
 // settings serves every integrator; the integrator table (simulation/integrator_table.hpp)
 // says which of them each integrator reads, and turns them into its options.
-#include "integrators/cvode_integrator.hpp"
+#include "hertzdash/integrators/cvode_integrator.hpp"
 
 namespace hertzdash {
 

@@ -16,9 +16,9 @@
 // Euler is first order with an error of about 6/N, so it needs thousands of steps;
 // RK4 with located events is of order 1.5 to 2.5 but with small constants; RK4
 // without event location knows the contact time only to a step (error ~ 1/(2N)).
-#include "simulation/impact_summary.hpp"
-#include "simulation/integrator_table.hpp"
-#include "simulation/solver_settings.hpp"
+#include "hertzdash/simulation/impact_summary.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
+#include "hertzdash/simulation/solver_settings.hpp"
 
 #include <optional>
 

@@ -3,10 +3,10 @@
 // (every registered law plus the worked example of model/README.md), and a
 // rigid-wall, gravity-free contact set-up with a prescribed K, m and v0.
 #include "example_law.hpp"
-#include "model/damping/registry.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "simulation/calibrate_restitution.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/calibrate_restitution.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // the same standard checks as every registered law (tests/test_damping_law_standard.cpp)
 // without adding a law to the CLI; to register it, move it to model/damping/laws/ and
 // add `ExactHertzDashpot,` to RegisteredLaws in model/damping/registry.hpp.
-#include "model/damping/hertz_proportional_dashpot.hpp"
+#include "hertzdash/model/damping/hertz_proportional_dashpot.hpp"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // q = cos t, p = -sin t. One event, g = q, which first falls through zero at
 // t = pi/2 (where p = -1) and stops the run; with stop_at_quarter = false the
 // event never fires.
-#include "ode/ode_system.hpp"
+#include "hertzdash/ode/ode_system.hpp"
 
 #include <Eigen/Core>
 

@@ -3,7 +3,7 @@
 // found with one known independently of the solver.
 #include "damping_law_test_support.hpp"
 
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <catch2/catch.hpp>
 #include <gsl/gsl_sf_lambert.h>

@@ -2,7 +2,7 @@
 // citation; `hertzdash restitution` prints e_effective of the rigid-wall contact phase
 // and calibrates; bad input exits 2 naming the parameter.
 #include "cli_runner.hpp"
-#include "model/damping/registry.hpp"
+#include "hertzdash/model/damping/registry.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -2,12 +2,15 @@
 // inputs actually used; the trace is the contact phase under a provenance header;
 // the README's example prints what the README says it prints.
 #include "cli_runner.hpp"
-#include "io/csv_table.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/provenance.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <string>
+#include <vector>
 #include <unistd.h>
 
 using hertzdash::test::run_cli;
@@ -15,19 +18,24 @@ using hertzdash::test::run_cli;
 TEST_CASE("CLI simulate --json: fields, units and inputs", "[cli]") {
   const auto r = run_cli("simulate --rod steel --height 0.02 --integrator cvode --json");
   REQUIRE(r.exit_code == 0);
-  const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"e_effective", "peak_force_N", "max_deformation_m", "contact_time_s", "impact_velocity_mps",
-                          "rebound_velocity_mps", "K", "zeta", "omega_n_rad_per_s", "steps", "rhs_evaluations", "inputs",
-                          "git_revision"}) {
-    INFO(key);
-    CHECK(j.contains(key));
-  }
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  // The keys of docs/json-output.md, schema version 1, in its order.
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : j.items()) keys.push_back(key);
+  CHECK(keys == std::vector<std::string>{"schema_version", "e_effective", "peak_force_N", "max_deformation_m",
+                                         "contact_time_s", "impact_velocity_mps", "rebound_velocity_mps", "separated",
+                                         "K_N_per_m_1_5", "law_coefficients", "steps", "rhs_evaluations", "events",
+                                         "integrator_used", "inputs", "git_revision"});
+  CHECK(j["schema_version"].get<int>() == 1);
+  const auto& law = j["law_coefficients"];
+  CHECK(law.contains("zeta"));
+  CHECK(law.contains("omega_n_rad_per_s"));
   // e_effective is rebound over approach speed; v0 = sqrt(2 g h) for a free fall.
   CHECK(j["e_effective"].get<double>() ==
         Approx(j["rebound_velocity_mps"].get<double>() / j["impact_velocity_mps"].get<double>()).epsilon(1e-15));
   CHECK(j["impact_velocity_mps"].get<double>() == Approx(std::sqrt(2 * 9.80665 * 0.02)).epsilon(1e-8));
   // Table 2: steel e = 0.795 -> eq. (6) zeta = ln(1/0.795)/pi.
-  CHECK(j["zeta"].get<double>() == Approx(std::log(1 / 0.795) / M_PI).epsilon(1e-14));
+  CHECK(law["zeta"].get<double>() == Approx(std::log(1 / 0.795) / M_PI).epsilon(1e-14));
   const auto& in = j["inputs"];
   CHECK(in["mass_kg"].get<double>() == 0.778);
   CHECK(in["restitution"].get<double>() == 0.795);
@@ -113,4 +121,10 @@ TEST_CASE("CLI simulate --trace: contact phase under a provenance header", "[cli
     CHECK(t.number(i, "rod_displacement_m") == Approx(0.02 + t.number(i, "x_m")).margin(1e-15));
   }
   CHECK(peak == Approx(j["peak_force_N"].get<double>()).epsilon(1e-15));
+}
+
+TEST_CASE("CLI --version names the version and the git revision it was built from", "[cli]") {
+  const auto r = run_cli("--version");
+  CHECK(r.exit_code == 0);
+  CHECK(r.out == std::string("hertzdash ") + hertzdash::version() + " (git " + hertzdash::git_revision() + ")\n");
 }

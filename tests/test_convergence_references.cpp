@@ -1,12 +1,12 @@
 // The pieces the convergence study stands on: the undamped closed-form trajectory,
 // the regularised contact system, CVODE on the undamped law without gravity (the
 // peak force coincides with maximum compression there), and the simulate warning.
-#include "model/hertz.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "model/regularized_contact.hpp"
-#include "model/undamped_hertz_trajectory.hpp"
-#include "simulation/impact_simulator.hpp"
-#include "simulation/step_resolution.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/model/regularized_contact.hpp"
+#include "hertzdash/model/undamped_hertz_trajectory.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/step_resolution.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

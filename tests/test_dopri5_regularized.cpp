@@ -3,13 +3,13 @@
 // dt/dtau = 2u (model/regularized_contact.hpp) with Dormand-Prince 5(4), and the
 // laws' declarations force_of_root(u, v) = force(u^2, v) (RootPolynomialLaw) it
 // relies on.
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/damping/laws/tsuji_dem.hpp"
-#include "model/damping/laws/undamped.hpp"
-#include "model/damping/registry.hpp"
-#include "model/hertz.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/tsuji_dem.hpp"
+#include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 #include "undamped_hertz_errors.hpp"
 
 #include <catch2/catch.hpp>

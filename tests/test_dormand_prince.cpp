@@ -1,14 +1,14 @@
 // Adaptive Dormand-Prince 5(4) with events landed on (integrators/dormand_prince.hpp),
 // its place in ImpactSimulator and the CLI, the parallel sweep, and the CVODE
 // root-at-zero regression.
-#include "integrators/dormand_prince.hpp"
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/damping/laws/undamped.hpp"
-#include "model/drop_test.hpp"
-#include "model/hertz.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "simulation/impact_simulator.hpp"
-#include "simulation/parallel_sweep.hpp"
+#include "hertzdash/integrators/dormand_prince.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/model/drop_test.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/parallel_sweep.hpp"
 #include "undamped_hertz_errors.hpp"
 
 #include "harmonic_oscillator.hpp"

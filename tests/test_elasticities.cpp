@@ -14,9 +14,9 @@
 // Elasticities are O(1e-3..1); an absolute tolerance of 2e-6 is ~5x the budget and still
 // resolves the smallest elasticities (e_effective to E, m, R, h, which act only through
 // gravity during contact) to a few per cent of their size.
-#include "simulation/paper_parameters.hpp"
-#include "simulation/impact_simulator.hpp"
-#include "simulation/paper_law_elasticities.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper_law_elasticities.hpp"
 
 #include <catch2/catch.hpp>
 

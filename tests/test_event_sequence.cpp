@@ -1,7 +1,7 @@
 // After contact onset every integrator must judge crossings by the contact's own
 // event functions, not by the values they had in flight.
-#include "simulation/paper_parameters.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,12 +1,12 @@
 // The order-8 Gragg-Bulirsch-Stoer extrapolation method (integrators/extrapolation.hpp)
 // on closed forms: its order on a smooth problem, events landed on, and the undamped
 // Hertz impact through ImpactSimulator's gbs8-regularized path.
-#include "integrators/extrapolation.hpp"
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/damping/laws/undamped.hpp"
-#include "model/hertz.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/integrators/extrapolation.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include "harmonic_oscillator.hpp"
 

@@ -4,7 +4,7 @@
 // must exist, be non-empty and, for a CSV, carry exactly its declared columns and at
 // least one data row.
 // The physics behind the figures is tested elsewhere; this checks the plumbing.
-#include "io/csv_table.hpp"
+#include "hertzdash/io/csv_table.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // The measured-trace reader (data/measurements/README.md), exercised on SYNTHETIC
 // files written by the test itself: no measured data exists for the paper.
-#include "io/csv_table.hpp"
-#include "io/measured_trace.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/measured_trace.hpp"
 
 #include <catch2/catch.hpp>
 

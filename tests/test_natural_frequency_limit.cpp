@@ -7,8 +7,8 @@
 // the identity the article's errata argument rests on (paper/sections/differences.tex).
 // The printed eq. (9), sqrt(4K/(5m)) X^{1/2}, differs from it by the factor X^{1/4},
 // which is not dimensionless: its value changes with the unit of length.
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/hertz.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <catch2/catch.hpp>
 

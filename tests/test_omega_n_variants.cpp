@@ -6,10 +6,10 @@
 // against a re-typed copy of its formula: from omega_n = sqrt((4K/(5m)) X^{1/2})
 // (eq. 9, corrected) the amplitude is X = (5 m omega_n^2 / (4K))^2, and the
 // strain energy (2/5) K X^{5/2} must equal the energy the variant names.
-#include "model/damping/laws/hongo_paper.hpp"
-#include "model/hertz.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "simulation/omega_n_fixed_point.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/omega_n_fixed_point.hpp"
 
 #include <catch2/catch.hpp>
 

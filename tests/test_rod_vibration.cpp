@@ -1,5 +1,5 @@
 // The free-free rod frequencies of model/rod_vibration.hpp (used to check Table 3).
-#include "model/rod_vibration.hpp"
+#include "hertzdash/model/rod_vibration.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -9,10 +9,10 @@
 //   rebound speed = v0                            (e_effective = 1)
 // model/hertz.cpp evaluates these with GSL's beta function; here the contact time
 // is also checked against an independent quadrature of the same integral.
-#include "model/hertz.hpp"
+#include "hertzdash/model/hertz.hpp"
 #include "undamped_hertz_errors.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 #include <gsl/gsl_integration.h>

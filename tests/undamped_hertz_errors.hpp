@@ -1,8 +1,8 @@
 #pragma once
 // Relative errors of an undamped Hertz impact against its closed forms (model/hertz.hpp),
 // shared by the integrator tests that check them.
-#include "model/hertz.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -15,8 +15,8 @@
 //     with units in the names, for reports (never on the hot path).
 // The drop test, the CLI, the restitution maps and the standard tests all take
 // every registered law from the registry; see model/README.md.
-#include "model/omega_n_variant.hpp"
-#include "model/restitution.hpp"
+#include "hertzdash/model/omega_n_variant.hpp"
+#include "hertzdash/model/restitution.hpp"
 
 #include <concepts>
 #include <string_view>

@@ -14,7 +14,7 @@
 //    so the tension clamp (--no-tension) changes nothing;
 //  - the effective restitution depends on chi v0 alone (a Lambert-W closed form),
 //    hence on e alone, not on m, K or v0.
-#include "model/damping/damping_law.hpp"
+#include "hertzdash/model/damping/damping_law.hpp"
 
 #include <cmath>
 

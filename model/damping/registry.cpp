@@ -1,6 +1,6 @@
-#include "model/damping/registry.hpp"
+#include "hertzdash/model/damping/registry.hpp"
 
-#include "model/invalid_parameter.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 namespace hertzdash {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Helpers for studies that run every rod of Table 1: names for tables and LaTeX
 // macros, and the provenance parameters shared by all rods of a study.
-#include "simulation/paper_parameters.hpp"
-#include "simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <algorithm>
 #include <cctype>

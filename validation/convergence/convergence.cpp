@@ -54,12 +54,12 @@
 // time, more slowly for the peak force and the maximum deformation, with scatter
 // from its order and step selection. RK4 in the regularising variables u = x^{1/2},
 // dt/dtau = 2u, where every law of this family is polynomial, recovers order 4.
-#include "io/atomic_file.hpp"
-#include "io/csv_writer.hpp"
-#include "io/latex_macros.hpp"
-#include "simulation/step_resolution.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/simulation/step_resolution.hpp"
 #include "validation/common/study_args.hpp"
-#include "simulation/convergence_runs.hpp"
+#include "hertzdash/simulation/convergence_runs.hpp"
 
 #include <fmt/format.h>
 

@@ -30,15 +30,15 @@
 // GENERATED/damping_laws.tex (macros \dl...), GENERATED/damping_laws_table.tex and
 // GENERATED/damping_laws_table.md (the same table: the paper's and the README's).
 // Prints the table.
-#include "model/damping/registry.hpp"
-#include "model/invalid_parameter.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "io/atomic_file.hpp"
-#include "simulation/calibrate_restitution.hpp"
-#include "io/csv_writer.hpp"
-#include "simulation/parallel_sweep.hpp"
-#include "simulation/impact_simulator.hpp"
-#include "io/latex_macros.hpp"
+#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/simulation/calibrate_restitution.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/io/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

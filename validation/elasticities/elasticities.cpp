@@ -19,11 +19,11 @@
 // so its elasticities to E, nu, m, h, R are of the order of g t_c / v0 ~ 1e-3; peak force and
 // contact time follow the Hertz scalings K^{2/5} m^{3/5} v0^{6/5} and K^{-2/5} m^{2/5} v0^{-1/5}
 // up to the same small corrections.
-#include "simulation/paper_parameters.hpp"
-#include "io/atomic_file.hpp"
-#include "io/csv_writer.hpp"
-#include "io/latex_macros.hpp"
-#include "simulation/paper_law_elasticities.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/simulation/paper_law_elasticities.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -14,13 +14,13 @@
 //
 // Writes: OUT/height_sweep.csv (plotted by height_sweep.gp),
 // GENERATED/height_sweep.tex (macros \sweep...).
-#include "model/damping/laws/hongo_paper.hpp"
-#include "simulation/paper_parameters.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
-#include "io/csv_writer.hpp"
-#include "simulation/impact_simulator.hpp"
-#include "io/latex_macros.hpp"
-#include "simulation/parallel_sweep.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/simulation/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

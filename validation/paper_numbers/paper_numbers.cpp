@@ -35,14 +35,14 @@
 //   GENERATED/unstated_parameters_table.tex   the table of unstated parameters
 // All impacts: CVODE (Adams, rtol 1e-8, atol 1e-12 m), the paper's tension-allowing
 // force law, g acting throughout, free fall from rest.
-#include "model/damping/laws/hongo_paper.hpp"
-#include "io/csv_table.hpp"
-#include "model/hertz.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "io/atomic_file.hpp"
-#include "io/csv_writer.hpp"
-#include "simulation/impact_simulator.hpp"
-#include "io/latex_macros.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/io/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

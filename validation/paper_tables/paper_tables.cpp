@@ -15,14 +15,14 @@
 // Writes: OUT/table2.csv, OUT/table3.csv; GENERATED/table2_table.tex,
 // GENERATED/table3_table.tex (tabular fragments, booktabs) and
 // GENERATED/paper_tables.tex (macros \tabs...).
-#include "io/csv_table.hpp"
-#include "simulation/paper_parameters.hpp"
-#include "model/restitution.hpp"
-#include "model/rod_vibration.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/model/restitution.hpp"
+#include "hertzdash/model/rod_vibration.hpp"
 #include "validation/common/all_rods.hpp"
-#include "io/atomic_file.hpp"
-#include "io/csv_writer.hpp"
-#include "io/latex_macros.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

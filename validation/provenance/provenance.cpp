@@ -11,9 +11,9 @@
 //   OUT/provenance.csv            tool,version: one row per tool
 //   GENERATED/provenance.tex      \provGitRevision, \provCompiler, \provSundials,
 //                                 \provGsl, \provEigen, \provGnuplot
-#include "io/csv_writer.hpp"
-#include "io/latex_macros.hpp"
-#include "io/provenance.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/io/provenance.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 #pragma once
 // Flores: Hunt-Crossley form with chi v0 = 8(1-e)/(5e).
-#include "model/damping/hertz_proportional_dashpot.hpp"
+#include "hertzdash/model/damping/hertz_proportional_dashpot.hpp"
 
 namespace hertzdash {
 

@@ -1,6 +1,6 @@
 #pragma once
 // GharibHurmuzlu: Hunt-Crossley form with chi v0 = (1/e - 1).
-#include "model/damping/hertz_proportional_dashpot.hpp"
+#include "hertzdash/model/damping/hertz_proportional_dashpot.hpp"
 
 namespace hertzdash {
 

@@ -1,6 +1,6 @@
 #pragma once
 // HerbertMcWhannell: Hunt-Crossley form with chi v0 = 6(1-e)/((2e-1)^2+3).
-#include "model/damping/hertz_proportional_dashpot.hpp"
+#include "hertzdash/model/damping/hertz_proportional_dashpot.hpp"
 
 namespace hertzdash {
 

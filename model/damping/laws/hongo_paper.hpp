@@ -1,6 +1,6 @@
 #pragma once
 // The paper's law: Hertz spring plus an equivalent viscous dashpot, eqs. (2), (5), (6), (11), (12).
-#include "model/damping/damping_law.hpp"
+#include "hertzdash/model/damping/damping_law.hpp"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Linear Kelvin-Voigt contact: a linear spring and a linear dashpot in parallel.
-#include "model/damping/damping_law.hpp"
-#include "model/hertz.hpp"
+#include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 #pragma once
 // LankaraniNikravesh: Hunt-Crossley form with chi v0 = 3(1-e^2)/4.
-#include "model/damping/hertz_proportional_dashpot.hpp"
+#include "hertzdash/model/damping/hertz_proportional_dashpot.hpp"
 
 namespace hertzdash {
 

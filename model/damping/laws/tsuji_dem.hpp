@@ -1,6 +1,6 @@
 #pragma once
 // The DEM dashpot with x^{1/4} weighting (Tsuji et al. 1992 family).
-#include "model/damping/damping_law.hpp"
+#include "hertzdash/model/damping/damping_law.hpp"
 
 #include <cmath>
 

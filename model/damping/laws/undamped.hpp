@@ -1,6 +1,6 @@
 #pragma once
 // Undamped Hertz contact: the elastic force of eq. (3) alone.
-#include "model/damping/damping_law.hpp"
+#include "hertzdash/model/damping/damping_law.hpp"
 
 #include <cmath>
 

@@ -1,0 +1,379 @@
+// The Python module `hertzdash`: the library's front-end API (simulation/run_options.hpp,
+// simulation/run_reports.hpp) with Python keywords for the command line's options, so
+//   hertzdash.simulate(rod="steel", height=0.02, ball_E=3e9)
+// returns, as a dict, exactly what `hertzdash simulate --rod steel --height 0.02 --ball-E 3e9
+// --json` prints. Bad input raises ValueError with the command line's message (naming the
+// option and its valid range). Every call releases the GIL while it integrates;
+// simulate_many() runs its impacts on all cores.
+#include "hertzdash/io/provenance.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
+#include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/simulation/run_reports.hpp"
+#include "hertzdash/simulation/uniform_trace.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace py = pybind11;
+using namespace hertzdash;
+
+namespace {
+
+// ---- options: Python keywords -> RunOptions, through the library's option table ----
+
+std::string option_list() {
+  std::string names;
+  for (const RunOption& o : run_options()) names += (names.empty() ? "" : ", ") + python_keyword(o.name);
+  return names;
+}
+
+const RunOption& option_named(const std::string& keyword, const char* function) {
+  const RunOption* o = find_run_option(keyword);
+  if (!o || python_keyword(o->name) != keyword)
+    throw py::type_error(fmt::format("{}() got an unexpected keyword argument '{}'; options: {}", function, keyword,
+                                     option_list()));
+  return *o;
+}
+
+// Sets one option from a Python value; a value of the wrong type raises TypeError naming it.
+void set_option(RunOptions& options, const RunOption& o, py::handle value) {
+  const std::string keyword = python_keyword(o.name);
+  std::visit(
+      [&]<class T>(T RunOptions::*field) {
+        T& target = options.*field;
+        if constexpr (std::is_same_v<T, bool>) {
+          if (!py::isinstance<py::bool_>(value)) throw py::type_error(keyword + ": expected True or False");
+          target = value.cast<bool>();
+        } else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>) {
+          if (!py::isinstance<py::str>(value)) throw py::type_error(keyword + ": expected a string");
+          target = value.cast<std::string>();
+        } else {
+          if (value.is_none() && std::is_same_v<T, std::optional<double>>) {
+            target = T{};
+            return;
+          }
+          if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
+                                                    py::hasattr(value, "__float__")))
+            throw py::type_error(keyword + ": expected a number");
+          target = value.cast<double>();
+        }
+      },
+      o.field);
+}
+
+RunOptions run_options_from(const py::kwargs& kwargs, const char* function) {
+  RunOptions options;
+  for (const auto& [key, value] : kwargs) set_option(options, option_named(key.cast<std::string>(), function), value);
+  return options;
+}
+
+// ---- results: JSON reports -> Python objects ----
+
+py::object to_python(const nlohmann::ordered_json& j) {
+  switch (j.type()) {
+    case nlohmann::json::value_t::null: return py::none();
+    case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(j.get<long long>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
+    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+    case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
+    case nlohmann::json::value_t::array: {
+      py::list list;
+      for (const auto& v : j) list.append(to_python(v));
+      return list;
+    }
+    case nlohmann::json::value_t::object: {
+      py::dict dict;
+      for (const auto& [k, v] : j.items()) dict[py::str(k)] = to_python(v);
+      return dict;
+    }
+    default: throw std::logic_error("unexpected JSON value");
+  }
+}
+
+const PaperParameters& paper() {
+  static const PaperParameters p = load_paper_parameters();
+  return p;
+}
+
+// ---- the functions ----
+
+py::dict py_simulate(const py::kwargs& kwargs) {
+  const RunOptions options = run_options_from(kwargs, "simulate");
+  SimulateRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_simulate(options, paper());
+  }
+  return to_python(to_json(run));
+}
+
+py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
+  if (grid_step && !(*grid_step > 0))
+    throw InvalidParameter("grid_step", fmt::format("{}", *grid_step), "a time step > 0 [s], or None");
+  const RunOptions options = run_options_from(kwargs, "trace");
+  std::vector<TraceSample> samples;
+  {
+    py::gil_scoped_release release;
+    const SimulateRun run = run_simulate(options, paper(), true);
+    if (grid_step && !run.trace.empty()) {
+      constexpr double max_samples = 1e8;
+      const double count = (run.trace.back().t_s - run.trace.front().t_s) / *grid_step;
+      if (count > max_samples)
+        throw InvalidParameter("grid_step", fmt::format("{}", *grid_step),
+                               fmt::format("a step giving at most {:g} samples of the {:.6g} s contact", max_samples,
+                                           run.trace.back().t_s - run.trace.front().t_s));
+    }
+    samples = grid_step ? uniform_trace(run.trace, *grid_step) : run.trace;
+  }
+  const std::vector<std::string> names = trace_columns();
+  constexpr std::array<double TraceSample::*, 7> fields{&TraceSample::t_s,         &TraceSample::x_m,
+                                                        &TraceSample::xdot_mps,    &TraceSample::force_N,
+                                                        &TraceSample::accel_mps2,  &TraceSample::rod_displacement_m,
+                                                        &TraceSample::rod_velocity_mps};
+  py::dict out;
+  for (std::size_t c = 0; c < fields.size(); ++c) {
+    py::array_t<double> column(static_cast<py::ssize_t>(samples.size()));
+    auto a = column.mutable_unchecked<1>();
+    for (std::size_t i = 0; i < samples.size(); ++i) a(static_cast<py::ssize_t>(i)) = samples[i].*fields[c];
+    out[py::str(names[c])] = column;
+  }
+  return out;
+}
+
+py::dict py_restitution(const py::kwargs& kwargs) {
+  const RunOptions options = run_options_from(kwargs, "restitution");
+  RestitutionRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_restitution(options, paper());
+  }
+  return to_python(to_json(run));
+}
+
+py::dict calibrate(double target, const py::kwargs& kwargs) {
+  const RunOptions options = run_options_from(kwargs, "calibrate_restitution");
+  RestitutionRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_restitution(options, paper(), target);
+  }
+  return to_python(to_json(run));
+}
+
+py::dict py_paper_parameters() {
+  const PaperParameters& p = paper();
+  py::list rods;
+  for (const RodData& r : p.rods) {
+    py::dict d;
+    d["name"] = r.name;
+    d["diameter_m"] = r.diameter_m;
+    d["length_m"] = r.length_m;
+    d["mass_kg"] = r.mass_kg;
+    d["restitution"] = r.restitution;
+    d["zeta_printed"] = r.zeta_printed;
+    d["natural_frequency_hz"] = r.natural_frequency_hz;
+    d["E_Pa"] = r.E_Pa;
+    d["nu"] = r.nu;
+    rods.append(d);
+  }
+  py::dict ball;
+  ball["diameter_m"] = p.ball.diameter_m;
+  ball["height_m"] = p.ball.height_m;
+  ball["mass_kg"] = p.ball.mass_kg;
+  ball["E_Pa"] = p.ball.E_Pa;
+  ball["E_min_Pa"] = p.ball.E_min_Pa;
+  ball["E_max_Pa"] = p.ball.E_max_Pa;
+  ball["nu"] = p.ball.nu;
+  ball["radius_m"] = p.ball.radius_m;
+  py::dict out;
+  out["rods"] = rods;
+  out["ball"] = ball;
+  out["gravity_mps2"] = p.gravity_mps2;
+  out["data_dir"] = default_data_dir().string();
+  return out;
+}
+
+py::list py_integrators() {
+  py::list list;
+  for (const IntegratorTraits& r : all_integrator_traits) {
+    py::dict d;
+    d["name"] = std::string(r.name);
+    d["step_control"] = r.step_control == StepControl::fixed_step ? "fixed-step" : "adaptive";
+    d["variables"] = r.variables == Variables::physical ? "physical" : "regularized";
+    d["reads_cvode_method"] = r.reads_cvode_method;
+    d["needs_root_polynomial_law"] = r.needs_root_polynomial;
+    d["fallback_for_other_laws"] = to_string(r.fallback_for_other_laws);
+    d["fallback_with_tension_clamp"] = to_string(r.fallback_with_tension_clamp);
+    list.append(d);
+  }
+  return list;
+}
+
+// simulate_many: numeric set-up options may be 1-D arrays (broadcast against scalars);
+// the solver options are one setting for the whole sweep.
+constexpr std::array<const char*, 7> many_outputs{"e_effective",         "peak_force_N",         "max_deformation_m",
+                                                  "contact_time_s",      "impact_velocity_mps",  "rebound_velocity_mps",
+                                                  "separated"};
+
+py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
+  RunOptions base;
+  std::vector<std::pair<const RunOption*, py::array_t<double, py::array::c_style | py::array::forcecast>>> arrays;
+  std::size_t n = 1;
+  bool any_array = false;
+  for (const auto& [key, value] : kwargs) {
+    const RunOption& o = option_named(key.cast<std::string>(), "simulate_many");
+    const bool numeric = std::holds_alternative<double RunOptions::*>(o.field) ||
+                         std::holds_alternative<std::optional<double> RunOptions::*>(o.field);
+    const bool sequence = py::isinstance<py::array>(value) || py::isinstance<py::list>(value) ||
+                          py::isinstance<py::tuple>(value);
+    if (!sequence) {
+      set_option(base, o, value);
+      continue;
+    }
+    if (!numeric || o.group != RunOption::Group::setup)
+      throw InvalidParameter(python_keyword(o.name), "an array",
+                             "a single value (arrays are taken for the numeric set-up options only)");
+    auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
+    if (!a || a.ndim() != 1) throw InvalidParameter(python_keyword(o.name), "an array", "a 1-D array of numbers");
+    const auto len = static_cast<std::size_t>(a.shape(0));
+    if (any_array && len != n && len != 1 && n != 1)
+      throw InvalidParameter(python_keyword(o.name), fmt::format("an array of length {}", len),
+                             fmt::format("length {} like the other arrays, or 1", n));
+    if (!any_array || n == 1) n = len;
+    any_array = true;
+    arrays.emplace_back(&o, std::move(a));
+  }
+  // Resolve every point first (validation raises here, naming the option), then run.
+  const SolverSettings solver = resolve_solver(base);
+  std::vector<DropTestSetup> setups;
+  setups.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    RunOptions o = base;
+    for (const auto& [option, a] : arrays) {
+      const double v = a.shape(0) == 1 ? a.at(0) : a.at(static_cast<py::ssize_t>(i));
+      std::visit(
+          [&]<class T>(T RunOptions::*field) {
+            if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) o.*field = v;
+          },
+          option->field);
+    }
+    setups.push_back(resolve_setup(o, paper()));
+  }
+  std::vector<ImpactSummary> results(n);
+  {
+    py::gil_scoped_release release;
+    parallel_sweep(
+        n, solver, [&](ImpactSimulator& sim, std::size_t i) { results[i] = sim.run(setups[i], base.damping); },
+        {.threads = threads, .label = "hertzdash.simulate_many", .progress = false});
+  }
+  py::dict out;
+  for (const char* name : many_outputs) {
+    const std::string key = name;
+    if (key == "separated") {
+      py::array_t<bool> a(static_cast<py::ssize_t>(n));
+      for (std::size_t i = 0; i < n; ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = results[i].separated;
+      out[name] = a;
+      continue;
+    }
+    py::array_t<double> a(static_cast<py::ssize_t>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+      const ImpactSummary& s = results[i];
+      const double v = key == "e_effective"        ? s.e_effective
+                       : key == "peak_force_N"     ? s.peak_force_N
+                       : key == "max_deformation_m" ? s.max_deformation_m
+                       : key == "contact_time_s"   ? s.contact_time_s
+                       : key == "impact_velocity_mps" ? s.impact_velocity_mps
+                                                      : s.rebound_velocity_mps;
+      a.mutable_at(static_cast<py::ssize_t>(i)) = v;
+    }
+    out[name] = a;
+  }
+  return out;
+}
+
+std::string options_doc() {
+  std::string doc = "Options (keywords; each is the command line's --option, '-' written '_'):\n";
+  for (const RunOption& o : run_options()) doc += fmt::format("  {}: {}\n", python_keyword(o.name), o.help);
+  return doc;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(hertzdash, m) {
+  m.doc() =
+      "hertzdash: Hertz spring + nonlinear dashpot impact models (Hongo et al.), the library behind the "
+      "`hertzdash` program. SI units throughout; every key carries its unit (peak_force_N, contact_time_s).";
+  m.attr("__version__") = version();
+  m.attr("git_revision") = git_revision();
+  m.attr("schema_version") = json_schema_version;
+
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InvalidParameter& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const DataError& e) {
+      PyErr_SetString(PyExc_ValueError, (std::string("bad data file: ") + e.what()).c_str());
+    }
+  });
+
+  const std::string options = options_doc();
+  m.def("simulate", &py_simulate,
+        ("simulate(**options) -> dict\n\nOne drop test of the paper's set-up (a rod falling onto the nylon "
+         "hemisphere), exactly `hertzdash simulate --json`: e_effective, peak_force_N, max_deformation_m, "
+         "contact_time_s, impact_velocity_mps, rebound_velocity_mps, separated, K_N_per_m_1_5, law_coefficients, "
+         "steps, rhs_evaluations, events, integrator_used, inputs, schema_version, git_revision "
+         "(docs/json-output.md).\n\n" +
+         options)
+            .c_str());
+  m.def("trace", &py_trace, py::arg("grid_step") = py::none(),
+        ("trace(grid_step=None, **options) -> dict of NumPy arrays\n\nThe contact phase of `simulate`: t_s, x_m "
+         "(deformation), xdot_mps, force_N (compressive positive), accel_mps2, rod_displacement_m, rod_velocity_mps "
+         "(the rod's, downward positive); the columns of `hertzdash simulate --trace`. Samples at the integrator's "
+         "steps, or, with grid_step [s], on a uniform grid from contact onset (cubic Hermite interpolation of the "
+         "positions and velocities, linear of force and acceleration).\n\n" +
+         options)
+            .c_str());
+  m.def("restitution", &py_restitution,
+        ("restitution(**options) -> dict\n\nThe law's effective restitution in the rigid-wall contact phase (no "
+         "gravity), exactly `hertzdash restitution --json`.\n\n" +
+         options)
+            .c_str());
+  m.def("calibrate_restitution", &calibrate, py::arg("target"),
+        ("calibrate_restitution(target, **options) -> dict\n\nThe input e whose effective restitution is `target` "
+         "(in (0, 1]), exactly `hertzdash restitution --target-restitution TARGET --json`.\n\n" +
+         options)
+            .c_str());
+  m.def("laws", [] { return to_python(registered_laws_json()); },
+        "laws() -> list of dict\n\nThe registered damping laws: name, citation, formula, coefficients, validity, "
+        "force_continuous_at_onset (`hertzdash models --json`).");
+  m.def("paper_parameters", &py_paper_parameters,
+        "paper_parameters() -> dict\n\nThe paper's Tables 1-3 and the stated assumptions as the library reads them "
+        "(data/*.csv): rods (name, diameter_m, length_m, mass_kg, restitution, zeta_printed, natural_frequency_hz, "
+        "E_Pa, nu), ball (diameter_m, height_m, mass_kg, E_Pa, E_min_Pa, E_max_Pa, nu, radius_m), gravity_mps2, "
+        "and data_dir, the directory they were read from.");
+  m.def("integrators", &py_integrators,
+        "integrators() -> list of dict\n\nThe integrator table: name, step_control, variables, reads_cvode_method, "
+        "needs_root_polynomial_law and the fall-backs.");
+  m.def("simulate_many", &py_simulate_many, py::arg("threads") = 0,
+        ("simulate_many(threads=0, **options) -> dict of NumPy arrays\n\nMany drop tests in parallel in C++ (the "
+         "GIL released; threads=0: all cores). Numeric set-up options may be 1-D arrays of one common length "
+         "(scalars and length-1 arrays broadcast); the solver options are one setting for all. Returns arrays "
+         "e_effective, peak_force_N, max_deformation_m, contact_time_s, impact_velocity_mps, rebound_velocity_mps "
+         "and separated (bool), element i equal to simulate() of point i.\n\n" +
+         options)
+            .c_str());
+}

@@ -1,0 +1,113 @@
+#include "hertzdash/simulation/run_options.hpp"
+
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/model/omega_n_variant.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
+
+#include <algorithm>
+
+namespace hertzdash {
+
+namespace {
+
+std::vector<RunOption> make_run_options() {
+  using R = RunOptions;
+  using G = RunOption::Group;
+  // Which integrators read which setting: the integrator table.
+  const std::string fixed = integrator_names([](const IntegratorTraits& r) { return r.step_control == StepControl::fixed_step; });
+  const std::string adaptive = integrator_names([](const IntegratorTraits& r) { return r.step_control == StepControl::adaptive; });
+  const std::string timed = integrator_names([](const IntegratorTraits& r) {
+    return r.step_control == StepControl::adaptive && r.variables == Variables::physical;
+  });
+  const std::string cvode = integrator_names([](const IntegratorTraits& r) { return r.reads_cvode_method; });
+  return {
+      {"rod", &R::rod, "Rod of Tables 1-3: steel, duralumin-a, duralumin-b, duralumin-c", G::setup},
+      {"height", &R::height_m, "Drop height h [m], free fall from rest", G::setup},
+      {"impact-velocity", &R::impact_velocity_mps, "Approach speed at contact onset [m/s]; overrides --height", G::setup},
+      {"mass", &R::mass_kg, "Rod mass [kg] (default: Table 1)", G::setup},
+      {"restitution", &R::restitution, "Input coefficient of restitution e in (0,1] (default: Table 2; 1 = undamped)",
+       G::setup},
+      {"ball-E", &R::ball_E_Pa, "Hemisphere Young's modulus [Pa] (default: 2.0e9, assumed)", G::setup},
+      {"ball-nu", &R::ball_nu, "Hemisphere Poisson ratio (default: 0.40, assumed)", G::setup},
+      {"ball-radius", &R::ball_radius_m, "Hemisphere radius R [m] (default: 0.0127)", G::setup},
+      {"rod-E", &R::rod_E_Pa, "Rod Young's modulus [Pa]; inf for a rigid flat (default: Table 3)", G::setup},
+      {"rod-nu", &R::rod_nu, "Rod Poisson ratio (default: 0.30 steel, 0.33 duralumin, assumed)", G::setup},
+      {"gravity", &R::gravity_mps2, "Gravity g [m/s^2], 0 allowed (default: 9.80665)", G::setup},
+      {"no-tension", &R::no_tension, "Clamp the contact force at >= 0; contact ends where it reaches zero", G::setup},
+      {"zeta", &R::zeta, "Damping ratio from e: paper (eq. 6) or exact (linear oscillator)", G::setup},
+      {"omega-n", &R::omega_n,
+       "Natural frequency assumption of the paper's law (hongo only): paper (eq. 11, the default), impact-energy, "
+       "rebound-energy, self-consistent, contact-time (both iterated to a fixed point), as-printed (the eq. 9 erratum)",
+       G::setup},
+      {"damping", &R::damping, "Damping law (see `hertzdash models`): " + registered_law_names(), G::setup},
+      {"integrator", &R::integrator, "One of: " + integrator_names(), G::solver},
+      {"dt", &R::dt_s, "Fixed step [s] (" + fixed + ")", G::solver},
+      {"no-event-location", &R::no_event_location,
+       "Handle events at the end of the step that crosses them (" + fixed + "; convergence studies)", G::solver},
+      {"rtol", &R::rtol, "Relative tolerance (" + adaptive + ")", G::solver},
+      {"atol", &R::atol, "Absolute tolerance [m, m/s] (" + adaptive + ")", G::solver},
+      {"cvode-method", &R::cvode_method, "CVODE method: adams or bdf (" + cvode + ")", G::solver},
+      {"max-step", &R::max_step_s, "Largest step [s]; 0 = no limit (" + timed + ")", G::solver},
+  };
+}
+
+}  // namespace
+
+const std::vector<RunOption>& run_options() {
+  static const std::vector<RunOption> options = make_run_options();
+  return options;
+}
+
+std::string python_keyword(std::string_view option_name) {
+  std::string k(option_name);
+  std::replace(k.begin(), k.end(), '-', '_');
+  return k;
+}
+
+const RunOption* find_run_option(std::string_view name) {
+  for (const RunOption& o : run_options())
+    if (o.name == name || python_keyword(o.name) == name) return &o;
+  return nullptr;
+}
+
+DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
+  DropTestSetup s = paper_setup(paper, o.rod, o.height_m);
+  if (o.impact_velocity_mps) s.impact_velocity_mps = *o.impact_velocity_mps;
+  if (o.mass_kg) s.mass_kg = *o.mass_kg;
+  if (o.restitution) s.restitution = *o.restitution;
+  if (o.ball_E_Pa) s.ball.E_Pa = *o.ball_E_Pa;
+  if (o.ball_nu) s.ball.nu = *o.ball_nu;
+  if (o.ball_radius_m) s.ball_radius_m = *o.ball_radius_m;
+  if (o.rod_E_Pa) s.rod.E_Pa = *o.rod_E_Pa;
+  if (o.rod_nu) s.rod.nu = *o.rod_nu;
+  if (o.gravity_mps2) s.gravity_mps2 = *o.gravity_mps2;
+  s.no_tension = o.no_tension;
+  if (o.zeta == "paper") s.damping.zeta_form = ZetaForm::paper;
+  else if (o.zeta == "exact") s.damping.zeta_form = ZetaForm::exact;
+  else throw InvalidParameter("--zeta", o.zeta, "one of: paper, exact");
+  s.damping.omega_n = parse_omega_n_variant(o.omega_n.value_or(to_string(OmegaNVariant::paper)));
+  validate(s);
+  with_damping_law(o.damping, [](auto) {});  // rejects an unknown law before any work
+  if (o.omega_n && o.damping != HongoPaper::info.name)
+    throw InvalidParameter("--omega-n", *o.omega_n,
+                           "given only with --damping " + std::string(HongoPaper::info.name) +
+                               " (the omega_n assumption belongs to the paper's law; --damping is " + o.damping + ")");
+  return s;
+}
+
+SolverSettings resolve_solver(const RunOptions& o) {
+  SolverSettings s;
+  s.integrator = parse_integrator(o.integrator);
+  s.dt_s = o.dt_s;
+  s.locate_events = !o.no_event_location;
+  s.rtol = o.rtol;
+  s.atol = o.atol;
+  s.max_step_s = o.max_step_s;
+  if (o.cvode_method == "adams") s.cvode_method = CvodeMethod::adams;
+  else if (o.cvode_method == "bdf") s.cvode_method = CvodeMethod::bdf;
+  else throw InvalidParameter("--cvode-method", o.cvode_method, "one of: adams, bdf");
+  validate(s);
+  return s;
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,73 @@
+#pragma once
+// The options of one run, by the names users type. `hertzdash simulate --ball-E 3e9` and
+// `hertzdash.simulate(ball_E=3e9)` are read through the same table (run_options()), so the
+// command line and Python take the same options with the same defaults, and reject bad
+// values with the same message. Reading only; resolve_setup() and resolve_solver() validate.
+#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/solver_settings.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace hertzdash {
+
+/// What a user asked for: the paper's drop test of one rod, with overrides, and a solver.
+/// An unset override keeps the paper's value (Tables 1-3, data/assumptions.csv).
+struct RunOptions {
+  // The set-up.
+  std::string rod = "steel";                     ///< a rod of Tables 1-3
+  double height_m = 0.02;                        ///< drop height h [m]
+  std::optional<double> impact_velocity_mps;     ///< approach speed at onset [m/s]; overrides height_m
+  std::optional<double> mass_kg;                 ///< rod mass [kg]
+  std::optional<double> restitution;             ///< input e in (0, 1]
+  std::optional<double> ball_E_Pa, ball_nu;      ///< hemisphere modulus [Pa], Poisson ratio
+  std::optional<double> ball_radius_m;           ///< hemisphere radius [m]
+  std::optional<double> rod_E_Pa, rod_nu;        ///< rod modulus [Pa] (inf: rigid), Poisson ratio
+  std::optional<double> gravity_mps2;            ///< g [m/s^2]
+  bool no_tension = false;                       ///< clamp the contact force at >= 0
+  std::string zeta = "paper";                    ///< paper (eq. 6) or exact
+  std::optional<std::string> omega_n;            ///< the paper's law's omega_n variant (unset: paper)
+  std::string damping{default_damping_law};      ///< a registered law
+  // The solver (simulation/solver_settings.hpp).
+  std::string integrator = "cvode";
+  double dt_s = 1e-6;
+  bool no_event_location = false;
+  double rtol = 1e-8, atol = 1e-12;
+  std::string cvode_method = "adams";
+  double max_step_s = 0;
+};
+
+/// One option: its name (the command line's --name; Python's keyword, '-' read as '_'),
+/// the field it sets, and its help text (units in brackets).
+struct RunOption {
+  using Field = std::variant<double RunOptions::*, std::optional<double> RunOptions::*, std::string RunOptions::*,
+                             std::optional<std::string> RunOptions::*, bool RunOptions::*>;
+  enum class Group { setup, solver };
+  std::string name;
+  Field field;
+  std::string help;
+  Group group;
+};
+
+/// Every option, the set-up's first.
+const std::vector<RunOption>& run_options();
+
+/// The option called `name` (command-line or Python spelling), or nullptr.
+const RunOption* find_run_option(std::string_view name);
+
+/// "ball-E" -> "ball_E": the Python keyword of an option.
+std::string python_keyword(std::string_view option_name);
+
+/// The paper's set-up for the chosen rod with the given overrides; validated (throws
+/// InvalidParameter naming the option and its valid range, an unknown law included).
+DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper);
+
+/// The solver settings asked for; validated likewise.
+SolverSettings resolve_solver(const RunOptions& o);
+
+}  // namespace hertzdash

@@ -1,0 +1,122 @@
+#include "hertzdash/simulation/run_reports.hpp"
+
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/model/omega_n_variant.hpp"
+#include "hertzdash/simulation/calibrate_restitution.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace hertzdash {
+
+namespace {
+
+// Parameters are text; numbers and booleans go into JSON as such.
+nlohmann::ordered_json json_value(const std::string& text) {
+  if (text == "true" || text == "false") return text == "true";
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (!text.empty() && end == text.c_str() + text.size() && std::isfinite(v)) return v;
+  return text;
+}
+
+}  // namespace
+
+SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper, bool record_trace) {
+  SimulateRun r;
+  r.setup = resolve_setup(options, paper);
+  r.law = options.damping;
+  r.solver = resolve_solver(options);
+  r.inputs = describe_run(r.setup, r.law, r.solver);
+  integrator_used(r.solver, r.setup, r.law, &r.fallback_reason);
+  ImpactSimulator simulator(r.solver);
+  r.summary = simulator.run(r.setup, r.law, record_trace ? &r.trace : nullptr);
+  return r;
+}
+
+nlohmann::ordered_json to_json(const SimulateRun& run) {
+  const ImpactSummary& s = run.summary;
+  nlohmann::ordered_json j;
+  j["schema_version"] = json_schema_version;
+  j["e_effective"] = s.e_effective;
+  j["peak_force_N"] = s.peak_force_N;
+  j["max_deformation_m"] = s.max_deformation_m;
+  j["contact_time_s"] = s.contact_time_s;
+  j["impact_velocity_mps"] = s.impact_velocity_mps;
+  j["rebound_velocity_mps"] = s.rebound_velocity_mps;
+  j["separated"] = s.separated;
+  j["K_N_per_m_1_5"] = s.K;
+  nlohmann::ordered_json coefficients = nlohmann::ordered_json::object();
+  for (const NamedValue& c : s.law_coefficients) coefficients[c.name] = c.value;
+  j["law_coefficients"] = coefficients;
+  j["steps"] = s.work.steps;
+  j["rhs_evaluations"] = s.work.rhs_evaluations;
+  j["events"] = s.work.events;
+  j["integrator_used"] = to_string(s.integrator_used);
+  if (const auto& it = s.omega_n_iteration) {
+    j["omega_n_fixed_point"] = {{"iterations", it->iterations},
+                                {"converged", it->converged},
+                                {"relative_change", it->relative_change},
+                                {"contraction", it->contraction}};
+  }
+  nlohmann::ordered_json in;
+  for (const auto& [name, value] : run.inputs) in[name] = json_value(value);
+  j["inputs"] = in;
+  j["git_revision"] = git_revision();
+  return j;
+}
+
+RestitutionRun run_restitution(const RunOptions& options, const PaperParameters& paper, std::optional<double> e_target) {
+  RestitutionRun r;
+  r.law = options.damping;
+  r.setup = contact_phase_setup(resolve_setup(options, paper));
+  if (is_iterated(r.setup.damping.omega_n)) {
+    throw InvalidParameter("--omega-n", to_string(r.setup.damping.omega_n),
+                           "a closed-form variant for `restitution`: paper, impact-energy, rebound-energy or "
+                           "as-printed (the iterated variants need `simulate`)");
+  }
+  r.solver = resolve_solver(options);
+  ImpactSimulator simulator(r.solver);
+  r.integrator_used = integrator_used(r.solver, r.setup, r.law, &r.fallback_reason);
+  r.e_target = e_target;
+  if (e_target) {
+    const RestitutionCalibration c = calibrate_restitution(simulator, r.setup, r.law, *e_target);
+    r.e_input = c.e_input;
+    r.e_effective = c.e_effective;
+    r.iterations = c.iterations;
+  } else {
+    r.e_input = r.setup.restitution;
+    r.e_effective = simulator.run(r.setup, r.law).e_effective;
+  }
+  return r;
+}
+
+nlohmann::ordered_json to_json(const RestitutionRun& run) {
+  nlohmann::ordered_json j;
+  j["schema_version"] = json_schema_version;
+  j["damping"] = run.law;
+  j["tension"] = run.setup.no_tension ? "clamped" : "allowed";
+  j["impact_velocity_mps"] = *run.setup.impact_velocity_mps;
+  if (run.e_target) j["e_target"] = *run.e_target;
+  j["e_input"] = run.e_input;
+  j["e_effective"] = run.e_effective;
+  if (run.iterations) j["iterations"] = *run.iterations;
+  j["integrator_used"] = to_string(run.integrator_used);
+  j["git_revision"] = git_revision();
+  return j;
+}
+
+nlohmann::ordered_json registered_laws_json() {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const LawInfo& l : registered_laws())
+    list.push_back({{"name", l.name},
+                    {"citation", l.citation},
+                    {"formula", l.formula},
+                    {"coefficients", l.coefficients},
+                    {"validity", l.validity},
+                    {"force_continuous_at_onset", l.force_continuous_at_onset}});
+  return list;
+}
+
+}  // namespace hertzdash

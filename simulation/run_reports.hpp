@@ -1,0 +1,61 @@
+#pragma once
+// What `simulate` and `restitution` compute and report, for every front end: the command
+// line (cli/) prints these reports, Python (python/) returns them as dicts, so the two
+// carry the same keys and the same numbers. The JSON schema is documented in
+// docs/json-output.md; json_schema_version changes whenever a key is renamed or removed.
+#include "hertzdash/io/provenance.hpp"
+#include "hertzdash/simulation/impact_summary.hpp"
+#include "hertzdash/simulation/run_options.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hertzdash {
+
+/// Version of the JSON reports below ("schema_version"); see docs/json-output.md.
+inline constexpr int json_schema_version = 1;
+
+/// One drop test as asked for.
+struct SimulateRun {
+  DropTestSetup setup;
+  std::string law;
+  SolverSettings solver;
+  Parameters inputs;                ///< describe_run(): the inputs actually used
+  std::string fallback_reason;      ///< why summary.integrator_used differs from the one asked for, else empty
+  ImpactSummary summary;
+  std::vector<TraceSample> trace;   ///< the contact phase, if asked for
+};
+
+/// Resolve, validate and run (throws InvalidParameter for bad options).
+SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper, bool record_trace = false);
+
+/// `simulate --json`: the summary, "law_coefficients", "inputs", "schema_version", "git_revision".
+nlohmann::ordered_json to_json(const SimulateRun& run);
+
+/// A law's effective restitution in the rigid-wall contact phase (no gravity), or, given a
+/// target, the input e that makes it the target (simulation/calibrate_restitution.hpp).
+struct RestitutionRun {
+  std::string law;
+  DropTestSetup setup;                 ///< the contact phase of the set-up asked for
+  SolverSettings solver;
+  IntegratorKind integrator_used = IntegratorKind::cvode;
+  std::string fallback_reason;         ///< as in SimulateRun
+  std::optional<double> e_target;
+  double e_input = 0, e_effective = 0;
+  std::optional<int> iterations;       ///< Brent iterations of a calibration
+};
+
+/// Resolve, validate and run; the iterated omega_n variants are rejected (they need `simulate`).
+RestitutionRun run_restitution(const RunOptions& options, const PaperParameters& paper,
+                               std::optional<double> e_target = std::nullopt);
+
+/// `restitution --json`.
+nlohmann::ordered_json to_json(const RestitutionRun& run);
+
+/// `models --json`: one entry per registered law.
+nlohmann::ordered_json registered_laws_json();
+
+}  // namespace hertzdash

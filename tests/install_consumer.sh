@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The installed package, used as a user would: install the build tree into a scratch
+# prefix, build tests/install_consumer/ against it with find_package(hertzdash), run it,
+# run the installed program, and import the installed Python module. Nothing of the build
+# or source tree is on any path the consumer sees.
+# Usage: install_consumer.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$(realpath "$1"); src=$(realpath "$2")
+work="$build/install-test"
+rm -rf "$work"
+prefix="$work/prefix"
+cmake --install "$build" --prefix "$prefix" > "$work.log"
+unset HERTZDASH_DATA_DIR PYTHONPATH
+cmake -S "$src/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+cmake --build "$work/consumer" > /dev/null
+"$work/consumer/consumer"
+"$prefix/bin/hertzdash" --version
+"$prefix/bin/hertzdash" simulate --rod steel --height 0.02 --json > "$work/cli.json"
+pydir=$(find "$prefix" -name 'hertzdash.cpython-*.so' -printf '%h\n')
+PYTHONPATH="$pydir" python3 - "$work/cli.json" <<'PY'
+import json, sys
+import hertzdash
+cli = json.load(open(sys.argv[1]))
+py = hertzdash.simulate(rod="steel", height=0.02)
+assert py["e_effective"] == cli["e_effective"], (py["e_effective"], cli["e_effective"])
+print("installed python module:", hertzdash.__file__, "e_effective", py["e_effective"])
+PY
+
+# Without the tables beside it the installed program says where it looked and how to
+# point at them; HERTZDASH_DATA_DIR overrides the search.
+mv "$prefix/share/hertzdash/data" "$work/data-moved"
+if "$prefix/bin/hertzdash" simulate > "$work/no-data.out" 2> "$work/no-data.err"; then
+  echo "FAILED: the installed program ran without its data tables" >&2; exit 1
+fi
+grep -q "HERTZDASH_DATA_DIR" "$work/no-data.err" && grep -q "share/hertzdash/data" "$work/no-data.err" \
+  || { echo "FAILED: unhelpful message without the data tables:" >&2; cat "$work/no-data.err" >&2; exit 1; }
+[ ! -s "$work/no-data.out" ] || { echo "FAILED: output without the data tables" >&2; exit 1; }
+HERTZDASH_DATA_DIR="$work/data-moved" "$prefix/bin/hertzdash" simulate --json > /dev/null
+echo "install_consumer: all checks passed"

@@ -1,0 +1,190 @@
+"""The Python module `hertzdash` (python/hertzdash_module.cpp) against the program and
+against itself. It shares the program's option table and reports, so its results must
+be the program's to the last bit: JSON carries doubles with 17 significant digits and
+the trace CSV likewise, both of which read back exactly.
+
+Run by ctest (test `python_module`) with PYTHONPATH=build/python and HERTZDASH_BIN set.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import hertzdash
+
+BIN = os.environ["HERTZDASH_BIN"]
+SOURCE = os.environ["HERTZDASH_SOURCE_DIR"]
+
+
+def cli(*args):
+    r = subprocess.run([BIN, *args], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return r.stdout
+
+
+def cli_json(*args):
+    return json.loads(cli(*args, "--json"))
+
+
+@pytest.mark.parametrize("integrator", [i["name"] for i in hertzdash.integrators()])
+def test_simulate_is_the_programs_json_for_every_integrator(integrator):
+    # Fixed-step rows at their default step would warn about resolution; the dict is the
+    # same either way, so the default is kept.
+    assert hertzdash.simulate(rod="steel", height=0.02, integrator=integrator) == \
+        cli_json("simulate", "--rod", "steel", "--height", "0.02", "--integrator", integrator)
+
+
+def test_simulate_takes_every_option_as_the_program_does():
+    options = dict(rod="duralumin-c", impact_velocity=0.5, ball_E=2.9e9, ball_nu=0.35, rod_nu=0.33,
+                   restitution=0.7, no_tension=True, zeta="exact", damping="hunt-crossley",
+                   integrator="dopri5", rtol=1e-9, atol=1e-13, max_step=1e-4)
+    args = []
+    for key, value in options.items():
+        flag = "--" + key.replace("_", "-")
+        args += [flag] if value is True else [flag, repr(value) if isinstance(value, float) else str(value)]
+    assert hertzdash.simulate(**options) == cli_json("simulate", *args)
+
+
+def test_keywords_are_the_programs_options():
+    # Every Python keyword is a --option of `simulate` (its help lists them all).
+    help_text = cli("simulate", "--help")
+    doc = hertzdash.simulate.__doc__
+    for line in doc.split("Options")[1].splitlines()[1:]:
+        keyword = line.strip().split(":")[0]
+        assert "--" + keyword.replace("_", "-") in help_text, keyword
+
+
+def test_trace_is_the_programs_csv(tmp_path):
+    csv = tmp_path / "trace.csv"
+    cli("simulate", "--rod", "steel", "--height", "0.02", "--trace", str(csv))
+    lines = [line for line in csv.read_text().splitlines() if not line.startswith("#")]
+    columns = lines[0].split(",")
+    table = np.array([[float(cell) for cell in line.split(",")] for line in lines[1:]])
+    trace = hertzdash.trace(rod="steel", height=0.02)
+    assert list(trace) == columns
+    for k, name in enumerate(columns):
+        np.testing.assert_array_equal(trace[name], table[:, k], err_msg=name)
+
+
+def test_trace_on_a_uniform_grid():
+    # The grid interpolates CVODE's accepted steps (h ~ 7e-6 s ~ t_c/180 at the defaults).
+    # Reference: RK4 with a 1e-7 s step, on the same grid: its error, ~(h w)^4 with
+    # w = pi/t_c ~ 2500 rad/s, is ~4e-15 of the amplitudes. What remains is
+    #  - CVODE's global error at its default rtol 1e-8, atol 1e-12 m: ~1e-7 of x_max and
+    #    ~4e-7 of v0 (it falls with rtol: 2.5e-8 and 3e-8 at rtol 1e-10); the cubic Hermite
+    #    interpolation's own part, ~(h w)^4/384 ~ 2e-10, is far below it;
+    #  - the force, interpolated linearly: ~(h w)^2/8 ~ 4e-5 of the peak where it is smooth,
+    #    up to ~1e-3 on the steps next to onset and separation, where the paper's law's force
+    #    grows like t^{3/2} (its second derivative is unbounded).
+    # The bounds are these errors with a margin of 2-3.
+    grid = 1e-6
+    coarse = hertzdash.trace(grid_step=grid, rod="steel", height=0.02, integrator="cvode")
+    fine = hertzdash.trace(grid_step=grid, rod="steel", height=0.02, integrator="rk4", dt=1e-7)
+    t = coarse["t_s"]
+    np.testing.assert_allclose(np.diff(t), grid, rtol=1e-6)
+    assert t[0] == hertzdash.trace(rod="steel", height=0.02)["t_s"][0]  # the grid starts at contact onset
+    n = min(len(t), len(fine["t_s"]))
+    assert n > 1000
+    x_max, v0, peak = coarse["x_m"].max(), coarse["xdot_mps"][0], coarse["force_N"].max()
+    assert np.abs(coarse["x_m"][:n] - fine["x_m"][:n]).max() < 3e-7 * x_max
+    assert np.abs(coarse["xdot_mps"][:n] - fine["xdot_mps"][:n]).max() < 1e-6 * v0
+    assert np.abs(coarse["force_N"][:n] - fine["force_N"][:n]).max() < 2e-3 * peak
+
+
+def test_simulate_many_is_simulate_point_by_point():
+    heights = np.linspace(0.005, 0.05, 7)
+    e = np.array([0.6, 0.7, 0.795, 0.8, 0.9, 0.95, 1.0])
+    many = hertzdash.simulate_many(rod="duralumin-a", height=heights, restitution=e, damping="flores",
+                                   integrator="gbs8-regularized")
+    one_thread = hertzdash.simulate_many(threads=1, rod="duralumin-a", height=heights, restitution=e,
+                                         damping="flores", integrator="gbs8-regularized")
+    for i, (h, ei) in enumerate(zip(heights, e)):
+        s = hertzdash.simulate(rod="duralumin-a", height=float(h), restitution=float(ei), damping="flores",
+                               integrator="gbs8-regularized")
+        for key, values in many.items():
+            assert values[i] == s[key], (key, i)
+            assert one_thread[key][i] == s[key], (key, i)
+
+
+def test_simulate_many_broadcasts_scalars_and_length_one_arrays():
+    r = hertzdash.simulate_many(height=[0.01, 0.02, 0.03], ball_E=[2.5e9], rod="steel")
+    assert all(len(v) == 3 for v in r.values())
+    assert r["e_effective"][1] == hertzdash.simulate(height=0.02, ball_E=2.5e9)["e_effective"]
+
+
+@pytest.mark.parametrize("options, option, message", [
+    (dict(mass=-1.0), "--mass", "> 0"),
+    (dict(restitution=1.5), "--restitution", "(0, 1]"),
+    (dict(ball_nu=0.6), "--ball-nu", "(-1, 0.5)"),
+    (dict(height=math.nan), "--height", ">= 0"),
+    (dict(rod="brass"), "--rod", "steel"),
+    (dict(damping="no-such-law"), "--damping", "hongo"),
+    (dict(integrator="rk5"), "--integrator", "rk4"),
+    (dict(rtol=-1.0), "--rtol", "> 0"),
+])
+def test_bad_input_raises_the_programs_message(options, option, message):
+    with pytest.raises(ValueError) as error:
+        hertzdash.simulate(**options)
+    text = str(error.value)
+    assert option in text and message in text, text
+    args = []
+    for key, value in options.items():
+        args += ["--" + key.replace("_", "-"), str(value)]
+    r = subprocess.run([BIN, "simulate", *args], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert r.stderr == "hertzdash: " + text + "\n"
+
+
+def test_wrong_keywords_and_types_raise_type_error():
+    with pytest.raises(TypeError, match="unexpected keyword argument 'heigth'"):
+        hertzdash.simulate(heigth=0.02)
+    with pytest.raises(TypeError, match="height: expected a number"):
+        hertzdash.simulate(height="0.02")
+    with pytest.raises(TypeError, match="no_tension: expected True or False"):
+        hertzdash.simulate(no_tension=1)
+    with pytest.raises(ValueError, match="grid_step"):
+        hertzdash.trace(grid_step=0.0)
+    with pytest.raises(ValueError, match="length 3"):
+        hertzdash.simulate_many(height=[0.01, 0.02, 0.03], restitution=[0.7, 0.8])
+    with pytest.raises(ValueError, match="single value"):
+        hertzdash.simulate_many(rtol=[1e-8, 1e-9])
+
+
+def test_restitution_and_calibration_are_the_programs():
+    assert hertzdash.restitution(damping="hunt-crossley", impact_velocity=1.0) == \
+        cli_json("restitution", "--damping", "hunt-crossley", "--impact-velocity", "1")
+    cal = hertzdash.calibrate_restitution(0.795, damping="hongo")
+    assert cal == cli_json("restitution", "--damping", "hongo", "--target-restitution", "0.795")
+    # Calibrated: the law run at the input found returns the target (Brent to 1e-10 in e_input,
+    # e_effective accurate to ~1e-7 at the default tolerances).
+    assert abs(hertzdash.restitution(damping="hongo", restitution=cal["e_input"])["e_effective"] - 0.795) < 1e-6
+
+
+def test_laws_integrators_and_version():
+    assert hertzdash.laws() == cli_json("models")
+    names = [i["name"] for i in hertzdash.integrators()]
+    assert "cvode" in names and "gbs8-regularized" in names
+    assert cli("--version").strip() == f"hertzdash {hertzdash.__version__} (git {hertzdash.git_revision})"
+    assert hertzdash.simulate()["schema_version"] == hertzdash.schema_version
+
+
+def test_paper_parameters_are_the_tables():
+    p = hertzdash.paper_parameters()
+    steel = next(r for r in p["rods"] if r["name"] == "steel")
+    assert steel["mass_kg"] == 0.778 and steel["restitution"] == 0.795  # Tables 1 and 2
+    assert p["ball"]["E_min_Pa"] == 1.2e9 and p["ball"]["E_max_Pa"] == 2.9e9  # Table 3
+
+
+def test_the_fig5_example_runs_and_reports_simulate(tmp_path):
+    example = os.path.join(SOURCE, "examples", "fig5_force.py")
+    r = subprocess.run([sys.executable, example], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    assert len(lines) == 3
+    E = hertzdash.paper_parameters()["ball"]["E_Pa"]
+    s = hertzdash.simulate(rod="steel", height=0.02, ball_E=E)
+    assert f"peak force {s['peak_force_N']:.6g} N" in lines[0]
