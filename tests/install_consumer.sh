@@ -11,10 +11,21 @@ rm -rf "$work"
 prefix="$work/prefix"
 cmake --install "$build" --prefix "$prefix" > "$work.log"
 unset HERTZDASH_DATA_DIR PYTHONPATH
+# The README's C++ example: the ```cpp block after the line that names this script.
+awk '/tests\/install_consumer.sh/ {found = 1; next} found && /^```cpp$/ {inside = 1; next}
+     inside && /^```$/ {exit} inside {print}' "$src/README.md" > "$work/readme_example.cpp"
+[ -s "$work/readme_example.cpp" ] || { echo "FAILED: no C++ example found in README.md" >&2; exit 1; }
 cmake -S "$src/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+  -DCMAKE_PREFIX_PATH="$prefix" -DREADME_EXAMPLE="$work/readme_example.cpp" > /dev/null
 cmake --build "$work/consumer" > /dev/null
 "$work/consumer/consumer"
+# The README example prints the values `hertzdash simulate` reports for the same run.
+expected=$("$build/hertzdash" simulate --integrator gbs8-regularized --json |
+  python3 -c 'import json, sys; j = json.load(sys.stdin)
+print("e_effective %.6f, peak force %.1f N" % (j["e_effective"], j["peak_force_N"]))')
+got=$("$work/consumer/readme_example")
+[ "$got" = "$expected" ] || { echo "FAILED: README example printed '$got', expected '$expected'" >&2; exit 1; }
+echo "README C++ example: $got"
 "$prefix/bin/hertzdash" --version
 "$prefix/bin/hertzdash" simulate --rod steel --height 0.02 --json > "$work/cli.json"
 pydir=$(find "$prefix" -name 'hertzdash.cpython-*.so' -printf '%h\n')

@@ -188,3 +188,26 @@ def test_the_fig5_example_runs_and_reports_simulate(tmp_path):
     E = hertzdash.paper_parameters()["ball"]["E_Pa"]
     s = hertzdash.simulate(rod="steel", height=0.02, ball_E=E)
     assert f"peak force {s['peak_force_N']:.6g} N" in lines[0]
+
+
+def test_readme_python_examples_print_what_the_readme_shows():
+    # Every ```console block of the README that starts with "$ PYTHONPATH=build/python python3 -c"
+    # runs (with this interpreter and the build's module) and prints exactly what follows it.
+    prompt = "$ PYTHONPATH=build/python python3 -c "
+    lines = open(os.path.join(SOURCE, "README.md")).read().splitlines()
+    examples = 0
+    for i, line in enumerate(lines):
+        if line != "```console" or not lines[i + 1].startswith(prompt):
+            continue
+        code = lines[i + 1][len(prompt):].strip()
+        assert code[0] == code[-1] == '"', code
+        expected = []
+        for out in lines[i + 2:]:
+            if out == "```":
+                break
+            expected.append(out)
+        r = subprocess.run([sys.executable, "-c", code[1:-1]], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        assert r.stdout.splitlines() == expected, code
+        examples += 1
+    assert examples >= 1
