@@ -1,8 +1,6 @@
 #include "cli/setup_options.hpp"
 
-#include "hertzdash/simulation/integrator_table.hpp"
-
-#include <fmt/format.h>
+#include "hertzdash/simulation/run_reports.hpp"
 
 #include <iostream>
 #include <type_traits>
@@ -34,9 +32,8 @@ void add_run_options(CLI::App& app, RunOptions& options) {
 }
 
 void report_fallback(IntegratorKind asked, IntegratorKind used, const std::string& why) {
-  if (used != asked)
-    std::cerr << fmt::format("hertzdash: note: --integrator {} fell back to {}: {}\n", to_string(asked), to_string(used),
-                             why);
+  if (const std::string note = fallback_note(asked, used, why); !note.empty())
+    std::cerr << "hertzdash: note: " << note << "\n";
 }
 
 }  // namespace hertzdash::cli

@@ -2,8 +2,8 @@
 #include "cli/command.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
-#include "hertzdash/simulation/step_resolution.hpp"
 
 #include <fmt/format.h>
 
@@ -66,15 +66,7 @@ Command add_simulate_command(CLI::App& app) {
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
             report_fallback(r.solver.integrator, r.summary.integrator_used, r.fallback_reason);
             if (!opt->trace_path.empty()) write_trace(r, opt->trace_path);
-            if (const auto res = under_resolved_contact(r.summary, r.solver)) {
-              std::cerr << fmt::format(
-                  "hertzdash: warning: the fixed step resolved the contact with only {:.0f} steps (contact time {:.6g} s, "
-                  "--dt {:.6g} s); the convergence study needs at least {} steps per contact with {} ({}) for errors "
-                  "below {:g} % (README, Convergence)\n",
-                  res->steps_per_contact, r.summary.contact_time_s, r.solver.dt_s, res->required,
-                  to_string(r.solver.integrator), r.solver.locate_events ? "events located" : "--no-event-location",
-                  100 * step_resolution_target_error);
-            }
+            if (const std::string w = resolution_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";
             else print_text(r);
             return 0;

@@ -10,7 +10,9 @@ function(hertzdash_layer_library target export_name)
   else()
     target_include_directories(${target} PUBLIC
       $<BUILD_INTERFACE:${HERTZDASH_INCLUDE_DIR}> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-    set_target_properties(${target} PROPERTIES VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR})
+    # Installed, a layer finds the layers it links in its own directory.
+    set_target_properties(${target} PROPERTIES VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}
+      INSTALL_RPATH "$ORIGIN")
   endif()
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${export_name})
   set_property(GLOBAL APPEND PROPERTY HERTZDASH_LIBRARY_TARGETS ${target})

@@ -20,8 +20,10 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
-#include <map>
+#include <filesystem>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -56,18 +58,26 @@ void set_option(RunOptions& options, const RunOption& o, py::handle value) {
         if constexpr (std::is_same_v<T, bool>) {
           if (!py::isinstance<py::bool_>(value)) throw py::type_error(keyword + ": expected True or False");
           target = value.cast<bool>();
-        } else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>) {
-          if (!py::isinstance<py::str>(value)) throw py::type_error(keyword + ": expected a string");
-          target = value.cast<std::string>();
         } else {
-          if (value.is_none() && std::is_same_v<T, std::optional<double>>) {
-            target = T{};
-            return;
+          if constexpr (std::is_same_v<T, std::optional<std::string>> || std::is_same_v<T, std::optional<double>>) {
+            if (value.is_none()) {  // None: the paper's value
+              target = T{};
+              return;
+            }
           }
-          if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
-                                                    py::hasattr(value, "__float__")))
-            throw py::type_error(keyword + ": expected a number");
-          target = value.cast<double>();
+          if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>) {
+            if (!py::isinstance<py::str>(value)) throw py::type_error(keyword + ": expected a string");
+            target = value.cast<std::string>();
+          } else {
+            if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) ||
+                                                      py::isinstance<py::int_>(value) || py::hasattr(value, "__float__")))
+              throw py::type_error(keyword + ": expected a number");
+            try {
+              target = value.cast<double>();
+            } catch (const py::cast_error&) {  // an integer beyond the range of a double
+              throw InvalidParameter("--" + o.name, py::str(value).cast<std::string>(), "a number within the range of a double");
+            }
+          }
         }
       },
       o.field);
@@ -103,9 +113,27 @@ py::object to_python(const nlohmann::ordered_json& j) {
   }
 }
 
-const PaperParameters& paper() {
-  static const PaperParameters p = load_paper_parameters();
-  return p;
+// The tables, read once, and the directory they were read from.
+struct PaperData {
+  std::filesystem::path dir = default_data_dir();
+  PaperParameters tables = load_paper_parameters(dir);
+};
+
+const PaperData& paper_data() {
+  static const PaperData data;
+  return data;
+}
+
+const PaperParameters& paper() { return paper_data().tables; }
+
+// The front ends' notes and warnings (simulation/run_reports.hpp) as Python warnings.
+void warn(const std::string& message) {
+  if (!message.empty() && PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
+}
+
+void warn_about(const SimulateRun& run) {
+  warn(fallback_note(run.solver.integrator, run.summary.integrator_used, run.fallback_reason));
+  warn(resolution_warning(run));
 }
 
 // ---- the functions ----
@@ -117,19 +145,21 @@ py::dict py_simulate(const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     run = run_simulate(options, paper());
   }
+  warn_about(run);
   return to_python(to_json(run));
 }
 
 py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
-  if (grid_step && !(*grid_step > 0))
-    throw InvalidParameter("grid_step", fmt::format("{}", *grid_step), "a time step > 0 [s], or None");
+  if (grid_step && !(std::isfinite(*grid_step) && *grid_step > 0))
+    throw InvalidParameter("grid_step", fmt::format("{}", *grid_step), "a finite time step > 0 [s], or None");
   const RunOptions options = run_options_from(kwargs, "trace");
   std::vector<TraceSample> samples;
+  SimulateRun run;
   {
     py::gil_scoped_release release;
-    const SimulateRun run = run_simulate(options, paper(), true);
+    run = run_simulate(options, paper(), true);
     if (grid_step && !run.trace.empty()) {
-      constexpr double max_samples = 1e8;
+      constexpr double max_samples = 1e7;
       const double count = (run.trace.back().t_s - run.trace.front().t_s) / *grid_step;
       if (count > max_samples)
         throw InvalidParameter("grid_step", fmt::format("{}", *grid_step),
@@ -138,6 +168,7 @@ py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
     }
     samples = grid_step ? uniform_trace(run.trace, *grid_step) : run.trace;
   }
+  warn_about(run);
   const std::vector<std::string> names = trace_columns();
   constexpr std::array<double TraceSample::*, 7> fields{&TraceSample::t_s,         &TraceSample::x_m,
                                                         &TraceSample::xdot_mps,    &TraceSample::force_N,
@@ -160,6 +191,7 @@ py::dict py_restitution(const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     run = run_restitution(options, paper());
   }
+  warn(fallback_note(run.solver.integrator, run.integrator_used, run.fallback_reason));
   return to_python(to_json(run));
 }
 
@@ -170,6 +202,7 @@ py::dict calibrate(double target, const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     run = run_restitution(options, paper(), target);
   }
+  warn(fallback_note(run.solver.integrator, run.integrator_used, run.fallback_reason));
   return to_python(to_json(run));
 }
 
@@ -202,7 +235,7 @@ py::dict py_paper_parameters() {
   out["rods"] = rods;
   out["ball"] = ball;
   out["gravity_mps2"] = p.gravity_mps2;
-  out["data_dir"] = default_data_dir().string();
+  out["data_dir"] = paper_data().dir.string();
   return out;
 }
 
@@ -224,39 +257,54 @@ py::list py_integrators() {
 
 // simulate_many: numeric set-up options may be 1-D arrays (broadcast against scalars);
 // the solver options are one setting for the whole sweep.
-constexpr std::array<const char*, 7> many_outputs{"e_effective",         "peak_force_N",         "max_deformation_m",
-                                                  "contact_time_s",      "impact_velocity_mps",  "rebound_velocity_mps",
-                                                  "separated"};
+struct ManyOutput {
+  const char* name;
+  double ImpactSummary::*field;
+};
+constexpr std::array<ManyOutput, 6> many_outputs{{{"e_effective", &ImpactSummary::e_effective},
+                                                  {"peak_force_N", &ImpactSummary::peak_force_N},
+                                                  {"max_deformation_m", &ImpactSummary::max_deformation_m},
+                                                  {"contact_time_s", &ImpactSummary::contact_time_s},
+                                                  {"impact_velocity_mps", &ImpactSummary::impact_velocity_mps},
+                                                  {"rebound_velocity_mps", &ImpactSummary::rebound_velocity_mps}}};
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   RunOptions base;
-  std::vector<std::pair<const RunOption*, py::array_t<double, py::array::c_style | py::array::forcecast>>> arrays;
+  std::vector<std::pair<const RunOption*, DoubleArray>> arrays;
   std::size_t n = 1;
-  bool any_array = false;
   for (const auto& [key, value] : kwargs) {
     const RunOption& o = option_named(key.cast<std::string>(), "simulate_many");
-    const bool numeric = std::holds_alternative<double RunOptions::*>(o.field) ||
-                         std::holds_alternative<std::optional<double> RunOptions::*>(o.field);
     const bool sequence = py::isinstance<py::array>(value) || py::isinstance<py::list>(value) ||
                           py::isinstance<py::tuple>(value);
     if (!sequence) {
       set_option(base, o, value);
       continue;
     }
+    const std::string keyword = python_keyword(o.name);
+    const bool numeric = std::holds_alternative<double RunOptions::*>(o.field) ||
+                         std::holds_alternative<std::optional<double> RunOptions::*>(o.field);
     if (!numeric || o.group != RunOption::Group::setup)
-      throw InvalidParameter(python_keyword(o.name), "an array",
-                             "a single value (arrays are taken for the numeric set-up options only)");
-    auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
-    if (!a || a.ndim() != 1) throw InvalidParameter(python_keyword(o.name), "an array", "a 1-D array of numbers");
-    const auto len = static_cast<std::size_t>(a.shape(0));
-    if (any_array && len != n && len != 1 && n != 1)
-      throw InvalidParameter(python_keyword(o.name), fmt::format("an array of length {}", len),
-                             fmt::format("length {} like the other arrays, or 1", n));
-    if (!any_array || n == 1) n = len;
-    any_array = true;
-    arrays.emplace_back(&o, std::move(a));
+      throw InvalidParameter(keyword, "an array", "a single value (arrays are taken for the numeric set-up options only)");
+    const py::array given = py::array::ensure(value);
+    if (!given || std::string("iuf").find(given.dtype().kind()) == std::string::npos)
+      throw py::type_error(keyword + ": expected numbers");
+    if (given.ndim() == 0) {  // a 0-d array is a scalar
+      set_option(base, o, given.attr("item")());
+      continue;
+    }
+    if (given.ndim() != 1) throw InvalidParameter(keyword, "an array", "a 1-D array of numbers");
+    const auto len = static_cast<std::size_t>(given.shape(0));
+    if (len != 1) {
+      if (n != 1 && len != n)
+        throw InvalidParameter(keyword, fmt::format("an array of length {}", len),
+                               fmt::format("length {} like the other arrays, or 1", n));
+      n = len;
+    }
+    arrays.emplace_back(&o, DoubleArray::ensure(given));
   }
-  // Resolve every point first (validation raises here, naming the option), then run.
+  // Resolve every point first (validation raises here, naming the option and the point), then run.
   const SolverSettings solver = resolve_solver(base);
   std::vector<DropTestSetup> setups;
   setups.reserve(n);
@@ -270,37 +318,29 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
           },
           option->field);
     }
-    setups.push_back(resolve_setup(o, paper()));
+    try {
+      setups.push_back(resolve_setup(o, paper()));
+    } catch (const InvalidParameter& e) {
+      throw py::value_error(fmt::format("point {}: {}", i, e.what()));
+    }
   }
   std::vector<ImpactSummary> results(n);
   {
     py::gil_scoped_release release;
+    SweepOptions sweep{.threads = threads, .label = "hertzdash.simulate_many", .progress = false};
+    sweep.chunk = std::max<std::size_t>(1, n / (4 * sweep_threads(sweep)));  // every thread gets work
     parallel_sweep(
-        n, solver, [&](ImpactSimulator& sim, std::size_t i) { results[i] = sim.run(setups[i], base.damping); },
-        {.threads = threads, .label = "hertzdash.simulate_many", .progress = false});
+        n, solver, [&](ImpactSimulator& sim, std::size_t i) { results[i] = sim.run(setups[i], base.damping); }, sweep);
   }
   py::dict out;
-  for (const char* name : many_outputs) {
-    const std::string key = name;
-    if (key == "separated") {
-      py::array_t<bool> a(static_cast<py::ssize_t>(n));
-      for (std::size_t i = 0; i < n; ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = results[i].separated;
-      out[name] = a;
-      continue;
-    }
+  for (const ManyOutput& output : many_outputs) {
     py::array_t<double> a(static_cast<py::ssize_t>(n));
-    for (std::size_t i = 0; i < n; ++i) {
-      const ImpactSummary& s = results[i];
-      const double v = key == "e_effective"        ? s.e_effective
-                       : key == "peak_force_N"     ? s.peak_force_N
-                       : key == "max_deformation_m" ? s.max_deformation_m
-                       : key == "contact_time_s"   ? s.contact_time_s
-                       : key == "impact_velocity_mps" ? s.impact_velocity_mps
-                                                      : s.rebound_velocity_mps;
-      a.mutable_at(static_cast<py::ssize_t>(i)) = v;
-    }
-    out[name] = a;
+    for (std::size_t i = 0; i < n; ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = results[i].*output.field;
+    out[output.name] = a;
   }
+  py::array_t<bool> separated(static_cast<py::ssize_t>(n));
+  for (std::size_t i = 0; i < n; ++i) separated.mutable_at(static_cast<py::ssize_t>(i)) = results[i].separated;
+  out["separated"] = separated;
   return out;
 }
 
@@ -320,11 +360,10 @@ PYBIND11_MODULE(hertzdash, m) {
   m.attr("git_revision") = git_revision();
   m.attr("schema_version") = json_schema_version;
 
-  py::register_exception_translator([](std::exception_ptr p) {
+  // InvalidParameter is a std::invalid_argument, which pybind11 raises as ValueError.
+  py::register_local_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
-    } catch (const InvalidParameter& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const DataError& e) {
       PyErr_SetString(PyExc_ValueError, (std::string("bad data file: ") + e.what()).c_str());
     }
@@ -335,8 +374,10 @@ PYBIND11_MODULE(hertzdash, m) {
         ("simulate(**options) -> dict\n\nOne drop test of the paper's set-up (a rod falling onto the nylon "
          "hemisphere), exactly `hertzdash simulate --json`: e_effective, peak_force_N, max_deformation_m, "
          "contact_time_s, impact_velocity_mps, rebound_velocity_mps, separated, K_N_per_m_1_5, law_coefficients, "
-         "steps, rhs_evaluations, events, integrator_used, inputs, schema_version, git_revision "
-         "(docs/json-output.md).\n\n" +
+         "steps, rhs_evaluations, events, integrator_used, omega_n_fixed_point (iterated omega_n variants only), "
+         "inputs, schema_version, git_revision (docs/json-output.md). Values are SI, units in the keys. Bad "
+         "values raise ValueError with the program's message, which names the option as --option. A fall-back "
+         "of the integrator or an under-resolved fixed step is reported as a UserWarning.\n\n" +
          options)
             .c_str());
   m.def("trace", &py_trace, py::arg("grid_step") = py::none(),
@@ -373,7 +414,8 @@ PYBIND11_MODULE(hertzdash, m) {
          "GIL released; threads=0: all cores). Numeric set-up options may be 1-D arrays of one common length "
          "(scalars and length-1 arrays broadcast); the solver options are one setting for all. Returns arrays "
          "e_effective, peak_force_N, max_deformation_m, contact_time_s, impact_velocity_mps, rebound_velocity_mps "
-         "and separated (bool), element i equal to simulate() of point i.\n\n" +
+         "and separated (bool), element i equal to simulate() of point i. A bad value raises ValueError naming "
+         "the option and the point.\n\n" +
          options)
             .c_str());
 }

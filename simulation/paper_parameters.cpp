@@ -46,6 +46,9 @@ std::filesystem::path default_data_dir() {
   // one level up, build/hertzdash in its own directory; no further, so no other
   // installation's tables are picked up.
   std::vector<fs::path> dirs;
+  // An installation's library directory may be deeper (lib/x86_64-linux-gnu): the way from it
+  // to the tables is configured by CMake (HERTZDASH_LIBDIR_TO_DATADIR: ".." or "../..", to PREFIX).
+  if (!lib.empty()) dirs.push_back((lib.parent_path() / HERTZDASH_LIBDIR_TO_DATADIR).lexically_normal());
   for (const fs::path& file : {lib, ec ? fs::path{} : exe})
     if (!file.empty()) dirs.insert(dirs.end(), {file.parent_path(), file.parent_path().parent_path()});
   for (const fs::path& dir : dirs) {

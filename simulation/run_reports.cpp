@@ -4,6 +4,9 @@
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/calibrate_restitution.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/step_resolution.hpp"
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -33,6 +36,23 @@ SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper
   ImpactSimulator simulator(r.solver);
   r.summary = simulator.run(r.setup, r.law, record_trace ? &r.trace : nullptr);
   return r;
+}
+
+std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::string& why) {
+  if (used == asked) return {};
+  return fmt::format("--integrator {} fell back to {}: {}", to_string(asked), to_string(used), why);
+}
+
+std::string resolution_warning(const SimulateRun& run) {
+  const auto res = under_resolved_contact(run.summary, run.solver);
+  if (!res) return {};
+  return fmt::format(
+      "the fixed step resolved the contact with only {:.0f} steps (contact time {:.6g} s, --dt {:.6g} s); the "
+      "convergence study needs at least {} steps per contact with {} ({}) for errors below {:g} % (README, "
+      "Convergence)",
+      res->steps_per_contact, run.summary.contact_time_s, run.solver.dt_s, res->required,
+      to_string(run.solver.integrator), run.solver.locate_events ? "events located" : "--no-event-location",
+      100 * step_resolution_target_error);
 }
 
 nlohmann::ordered_json to_json(const SimulateRun& run) {

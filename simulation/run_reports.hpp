@@ -32,6 +32,15 @@ struct SimulateRun {
 /// Resolve, validate and run (throws InvalidParameter for bad options).
 SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper, bool record_trace = false);
 
+/// "--integrator X fell back to Y: why" when the integrator that ran is not the one asked
+/// for, else empty: the note every front end shows (the command line on stderr, Python as a
+/// warning).
+std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::string& why);
+
+/// The warning every front end shows when a fixed step resolved the contact with fewer steps
+/// than the convergence study asks for (simulation/step_resolution.hpp), else empty.
+std::string resolution_warning(const SimulateRun& run);
+
 /// `simulate --json`: the summary, "law_coefficients", "inputs", "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const SimulateRun& run);
 

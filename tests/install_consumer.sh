@@ -3,25 +3,35 @@
 # prefix, build tests/install_consumer/ against it with find_package(hertzdash), run it,
 # run the installed program, and import the installed Python module. Nothing of the build
 # or source tree is on any path the consumer sees.
-# Usage: install_consumer.sh BUILD_DIR SOURCE_DIR
+# Usage: install_consumer.sh BUILD_DIR SOURCE_DIR PYTHON CMAKE (the interpreter the module is
+# built for, the cmake that built the tree)
 set -euo pipefail
-build=$(realpath "$1"); src=$(realpath "$2")
+build=$(realpath "$1"); src=$(realpath "$2"); python=$3; cmake=$4
 work="$build/install-test"
 rm -rf "$work"
 prefix="$work/prefix"
-cmake --install "$build" --prefix "$prefix" > "$work.log"
+"$cmake" --install "$build" --prefix "$prefix" > "$work.log"
 unset HERTZDASH_DATA_DIR PYTHONPATH
+# Installed files find each other relative to themselves, never through the build tree.
+for f in "$prefix"/bin/hertzdash "$prefix"/lib/libhertzdash_*.so "$prefix"/lib/python3/dist-packages/hertzdash.*.so; do
+  runpath=$(readelf -d "$f" | sed -n 's/.*R\(UN\)\?PATH.*\[\(.*\)\]/\2/p')
+  case "$runpath" in
+    *"$build"*|*"$src"*) echo "FAILED: $f has run path $runpath into the build or source tree" >&2; exit 1 ;;
+    '$ORIGIN'*) ;;
+    *) echo "FAILED: $f has run path '$runpath', not relative to \$ORIGIN" >&2; exit 1 ;;
+  esac
+done
 # The README's C++ example: the ```cpp block after the line that names this script.
 awk '/tests\/install_consumer.sh/ {found = 1; next} found && /^```cpp$/ {inside = 1; next}
      inside && /^```$/ {exit} inside {print}' "$src/README.md" > "$work/readme_example.cpp"
 [ -s "$work/readme_example.cpp" ] || { echo "FAILED: no C++ example found in README.md" >&2; exit 1; }
-cmake -S "$src/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
+"$cmake" -S "$src/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" -DREADME_EXAMPLE="$work/readme_example.cpp" > /dev/null
-cmake --build "$work/consumer" > /dev/null
+"$cmake" --build "$work/consumer" > /dev/null
 "$work/consumer/consumer"
 # The README example prints the values `hertzdash simulate` reports for the same run.
 expected=$("$build/hertzdash" simulate --integrator gbs8-regularized --json |
-  python3 -c 'import json, sys; j = json.load(sys.stdin)
+  "$python" -c 'import json, sys; j = json.load(sys.stdin)
 print("e_effective %.6f, peak force %.1f N" % (j["e_effective"], j["peak_force_N"]))')
 got=$("$work/consumer/readme_example")
 [ "$got" = "$expected" ] || { echo "FAILED: README example printed '$got', expected '$expected'" >&2; exit 1; }
@@ -29,7 +39,7 @@ echo "README C++ example: $got"
 "$prefix/bin/hertzdash" --version
 "$prefix/bin/hertzdash" simulate --rod steel --height 0.02 --json > "$work/cli.json"
 pydir=$(find "$prefix" -name 'hertzdash.cpython-*.so' -printf '%h\n')
-PYTHONPATH="$pydir" python3 - "$work/cli.json" <<'PY'
+PYTHONPATH="$pydir" "$python" - "$work/cli.json" <<'PY'
 import json, sys
 import hertzdash
 cli = json.load(open(sys.argv[1]))
