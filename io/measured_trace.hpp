@@ -3,7 +3,8 @@
 // defined in data/measurements/README.md: provenance comment lines "# key: value"
 // (source, rod, height_m; optional synthetic), a header row with t_s and at least
 // one of force_N, accel_mps2, velocity_mps, displacement_m, then one row per sample.
-// No measured trace ships: the paper's were never published.
+// No measured trace ships: the paper printed its traces only as plots, and no
+// machine-readable copy exists.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -44,13 +44,13 @@ std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::
 }
 
 std::string resolution_warning(const SimulateRun& run) {
-  const auto res = under_resolved_contact(run.summary, run.solver);
+  const auto res = under_resolved_contact(run.summary, run.setup.mass_kg, run.solver);
   if (!res) return {};
   return fmt::format(
-      "the fixed step resolved the contact with only {:.0f} steps (contact time {:.6g} s, --dt {:.6g} s); the "
-      "convergence study needs at least {} steps per contact with {} ({}) for errors below {:g} % (README, "
-      "Convergence)",
-      res->steps_per_contact, run.summary.contact_time_s, run.solver.dt_s, res->required,
+      "the fixed step resolved the contact with only {:.0f} steps per undamped Hertz contact time (t_H = {:.6g} s, "
+      "--dt {:.6g} s); the convergence study needs at least {} steps per t_H with {} ({}) for errors below {:g} % "
+      "(README, Convergence)",
+      res->steps_per_contact, res->hertz_contact_time_s, run.solver.dt_s, res->required,
       to_string(run.solver.integrator), run.solver.locate_events ? "events located" : "--no-event-location",
       100 * step_resolution_target_error);
 }

@@ -100,22 +100,27 @@ TEST_CASE("Regularised contact reproduces the undamped closed forms") {
 }
 
 TEST_CASE("Under-resolved fixed-step contacts are reported with their step count") {
+  // Steps are counted per undamped Hertz contact time t_H of the run's K, m and v0
+  // (model/hertz.hpp): the unit of the convergence study's thresholds.
   ImpactSummary s;
-  s.separated = true;
-  s.contact_time_s = 1e-3;
+  s.K = 3.54e8;
+  s.impact_velocity_mps = 0.6;
+  const double m = 0.778;
+  const double t_hertz = undamped_hertz_impact(s.K, m, s.impact_velocity_mps).contact_time_s;
   SolverSettings solver;
-  solver.dt_s = 1e-5;  // 100 steps per contact
+  solver.dt_s = t_hertz / 100;  // 100 steps per t_H
   solver.integrator = IntegratorKind::euler;
-  const auto r = under_resolved_contact(s, solver);
+  const auto r = under_resolved_contact(s, m, solver);
   REQUIRE(r);
   CHECK(r->steps_per_contact == Approx(100.0));
+  CHECK(r->hertz_contact_time_s == t_hertz);
   CHECK(r->required == min_steps_per_contact(IntegratorKind::euler, true));
   solver.integrator = IntegratorKind::rk4;  // located: 100 >= min_steps_per_contact(rk4, true)
-  CHECK_FALSE(under_resolved_contact(s, solver));
+  CHECK_FALSE(under_resolved_contact(s, m, solver));
   solver.locate_events = false;
-  CHECK(under_resolved_contact(s, solver));
+  CHECK(under_resolved_contact(s, m, solver));
   solver.integrator = IntegratorKind::cvode;
-  CHECK_FALSE(under_resolved_contact(s, solver));
+  CHECK_FALSE(under_resolved_contact(s, m, solver));
 }
 
 TEST_CASE("hertzdash simulate warns on stderr when a fixed step under-resolves the contact") {
@@ -125,8 +130,10 @@ TEST_CASE("hertzdash simulate warns on stderr when a fixed step under-resolves t
   solver.integrator = IntegratorKind::euler;
   solver.dt_s = 1e-6;
   ImpactSimulator sim(solver);
-  const ImpactSummary s = sim.run(paper_setup(load_paper_parameters(), "steel", 0.02), "hongo");
-  const std::string steps = fmt::format("only {:.0f} steps", s.contact_time_s / solver.dt_s);
+  const DropTestSetup setup = paper_setup(load_paper_parameters(), "steel", 0.02);
+  const ImpactSummary s = sim.run(setup, "hongo");
+  const double t_hertz = undamped_hertz_impact(s.K, setup.mass_kg, s.impact_velocity_mps).contact_time_s;
+  const std::string steps = fmt::format("only {:.0f} steps per undamped Hertz contact time", t_hertz / solver.dt_s);
   const std::string euler = run_and_capture_stderr("--integrator euler");
   CHECK_THAT(euler, Catch::Contains("warning") && Catch::Contains(steps) &&
                         Catch::Contains(std::to_string(min_steps_per_contact(IntegratorKind::euler, true))));

@@ -95,7 +95,7 @@ TEST_CASE("traces are found by the rod and height in their header", "[measured_t
 }
 
 TEST_CASE("every trace shipped in data/measurements/ reads cleanly", "[measured_trace]") {
-  // None ships today (the paper's traces were never published); any added later must
+  // None ships today (the paper printed its traces only as plots); any added later must
   // follow the format, or the figure programs would stop on it.
   const fs::path dir = fs::path(HERTZDASH_SOURCE_DIR) / "data" / "measurements";
   REQUIRE(fs::is_directory(dir));

@@ -128,7 +128,7 @@ struct Sweep {
 
 Sweep make_sweep(bool reduced) {
   Sweep w;
-  for (long N = 10; N <= (reduced ? 320 : 10240); N *= 2) w.steps_per_contact.push_back(N);
+  for (long N = 5; N <= (reduced ? 320 : 10240); N *= 2) w.steps_per_contact.push_back(N);
   for (long N = 10; N <= (reduced ? 160 : 1280); N *= 2) w.regularized_steps.push_back(N);
   for (int k = 4; k <= (reduced ? 8 : 12); ++k) w.rtols.push_back(std::pow(10.0, -k));
   w.min_timing_s = reduced ? 0.0 : 2e-3;
@@ -347,7 +347,9 @@ int main(int argc, char** argv) {
   // Steps per contact the sweep finds for the target (both laws, both event settings for Euler).
   auto needed_text = [&](const char* integrator, const char* location) {
     const long n = steps_needed_both(hertz, paper, integrator, location);
-    return n < 0 ? fmt::format("more than {}", sweep.steps_per_contact.back()) : std::to_string(n);
+    if (n < 0) return fmt::format("more than {}", sweep.steps_per_contact.back());
+    if (n == sweep.steps_per_contact.front()) return fmt::format("at most {} (the coarsest step tested)", n);
+    return std::to_string(n);
   };
   tex.add_text("convMinStepsEuler", needed_text("euler", "located"));
   tex.add_text("convMinStepsRkFourLocated", needed_text("rk4", "located"));

@@ -21,11 +21,12 @@ in_contact(x) = x >= 0 ? 1e6*x : NaN
 # A trace marked synthetic (not a measurement) is never called measured.
 n_synthetic = 0
 do for [i=1:n_measured] { n_synthetic = n_synthetic + (csv_parameter(word(measured, i), 'synthetic') eq 'true') }
-note = n_measured == 0 ? 'model only: the measured traces of the paper were never published' \
+note = n_measured == 0 ? 'model only: the paper printed its measured traces only as plots' \
      : sprintf('%d trace(s) overlaid, of which %d SYNTHETIC, not measured', n_measured, n_synthetic)
-trace_title = n_measured == 0 ? 'Measured (none published)' \
-            : n_synthetic == n_measured ? 'SYNTHETIC trace (not a measurement)' \
+trace_title = n_synthetic == n_measured ? 'SYNTHETIC trace (not a measurement)' \
             : n_synthetic > 0 ? 'Measured or SYNTHETIC (see header)' : 'Measured'
+# The legend names the overlaid traces only if there are any.
+legend_traces = n_measured == 0 ? '' : ", 2 with lines ls 3 title trace_title"
 
 # Time tics: about four per panel whatever the contact time.
 stats data using (1e3*column('t_s')) nooutput
@@ -90,6 +91,5 @@ set xrange [0:1]
 set yrange [0:1]
 plot 2 with lines ls 1 title sprintf("Paper's model, nylon E = %.1f GPa", E_default), \
      2 with filledcurves y1=3 ls 11 title sprintf("Paper's model, nylon E = %.1f-%.1f GPa", E_min, E_max), \
-     2 with lines ls 2 title 'Undamped Hertz contact', \
-     2 with lines ls 3 title trace_title
+     2 with lines ls 2 title 'Undamped Hertz contact' @legend_traces
 unset multiplot
