@@ -13,7 +13,7 @@ struct WorkPrecisionConfig {
   int repeats = 5;                      ///< timed repeats; the median is reported
   bool half_decades = true;             ///< tolerances every half decade (else every decade)
   long sweep_impacts = 20000;           ///< impacts in the parallel-sweep throughput run
-  std::filesystem::path readme;         ///< if set, the README's generated performance block is refreshed
+  std::filesystem::path performance_page;  ///< if set, its generated performance block (docs/performance.md) is refreshed
   double figures_seconds = 0;           ///< measured wall time of `make figures` (0: not measured)
 };
 

@@ -49,7 +49,7 @@ std::string resolution_warning(const SimulateRun& run) {
   return fmt::format(
       "the fixed step resolved the contact with only {:.0f} steps per undamped Hertz contact time (t_H = {:.6g} s, "
       "--dt {:.6g} s); the convergence study needs at least {} steps per t_H with {} ({}) for errors below {:g} % "
-      "(README, Convergence)",
+      "(docs/convergence.md)",
       res->steps_per_contact, res->hertz_contact_time_s, run.solver.dt_s, res->required,
       to_string(run.solver.integrator), run.solver.locate_events ? "events located" : "--no-event-location",
       100 * step_resolution_target_error);

@@ -13,7 +13,7 @@
 // its findings beside them and flags any mismatch, and the convergence tests re-check
 // that each meets the target.
 //
-// The numbers follow the orders the study establishes (README, "Convergence"):
+// The numbers follow the orders the study establishes (docs/convergence.md):
 // Euler is first order with an error of about 6/N, so it needs thousands of steps;
 // RK4 with located events is of order 1.5 to 2.5 but with small constants; RK4
 // without event location knows the contact time only to a step (error ~ 1/(2N)).

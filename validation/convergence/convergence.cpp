@@ -37,7 +37,7 @@
 // It prints the order tables. The figures come from convergence.gp and
 // work_precision.gp.
 //
-// Results (discussed in README "Convergence" and paper/sections/convergence.tex):
+// Results (discussed in docs/convergence.md and paper/sections/convergence.tex):
 // Euler reaches order 1 everywhere. RK4 does not reach 4: with located events it
 // reaches 2.5 on the Hertz law and 1.5 on the paper's law. The reason is the force
 // at x = 0: along the motion x ~ v0 (t - t_on), so the acceleration carries a term

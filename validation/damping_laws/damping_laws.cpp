@@ -28,7 +28,7 @@
 // Writes OUT/restitution_map.csv (model, tension, e_input, e_effective),
 // OUT/hysteresis_models.csv (model, comparison, e_input, x_m, force_N),
 // GENERATED/damping_laws.tex (macros \dl...), GENERATED/damping_laws_table.tex and
-// GENERATED/damping_laws_table.md (the same table: the paper's and the README's).
+// GENERATED/damping_laws_table.md (the same table: the paper's and docs/damping-laws.md's).
 // Prints the table.
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
