@@ -10,20 +10,23 @@ do for [format in 'pdf png'] {
   reset
   load here.'/../style.gnuplot'
   load here.'/law_styles.gnuplot'
-  eval set_terminal(format, out.'/hysteresis_models', 7.0, 3.0)
+  call here.'/../output.gnuplot' out.'/hysteresis_models' format full_width_in 3.2
   laws = law_names(data)
   set multiplot
   set xlabel 'deformation x ({/Symbol m}m)'
-  set ylabel 'contact force F (kN)'
   set xrange [0:*]
-  set label 1 at graph 0.04, 0.93 left front font ',9'
+  set xtics 200
+  set mxtics 2
+  set key off
   do for [panel in 'equal_input equal_effective'] {
-    if (panel eq 'equal_input') { eval panel_a; set key off; set label 1 '(a) equal input e = 0.795' } \
-    else { eval panel_b; eval side_key; set label 1 '(b) equal e_{eff} = 0.795' }
+    if (panel eq 'equal_input') { set ylabel 'contact force F (kN)'; set title '(a) input e = 0.795'; eval two_panels_a } \
+    else { unset ylabel; set title '(b) e_{eff} = 0.795'; eval two_panels_b }
     plot for [i=1:words(laws)] data using (strcol('model') eq word(laws, i) && strcol('comparison') eq panel ? \
            1e6*column('x_m') : NaN):(1e-3*column('force_N')) with lines \
-           lw (word(laws, i) eq 'hongo' ? 2.4 : 1.3) lc rgb law_lc(word(laws, i), i) dt law_dt(word(laws, i), i) \
-           title word(laws, i)
+           lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i), i) dt law_dt(word(laws, i), i) notitle
   }
+  eval two_panels_key
+  eval key_panel
+  eval law_key
   unset multiplot
 }

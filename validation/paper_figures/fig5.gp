@@ -5,6 +5,6 @@ here = system('dirname '.ARG0)
 do for [format in 'pdf png'] {
   reset
   load here.'/../style.gnuplot'
-  call here.'/../output.gnuplot' out.'/fig5' format 7.0 7.6
-  call here.'/impact_panels.gnuplot' out.'/fig5' 'Fig. 5 reproduced: steel rod, h = 20 mm'
+  call here.'/../output.gnuplot' out.'/fig5' format full_width_in 7.4
+  call here.'/impact_panels.gnuplot' out.'/fig5' 'Fig. 5 reproduced: steel rod, h = 20 mm' 'steel'
 }

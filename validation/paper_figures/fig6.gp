@@ -5,6 +5,6 @@ here = system('dirname '.ARG0)
 do for [format in 'pdf png'] {
   reset
   load here.'/../style.gnuplot'
-  call here.'/../output.gnuplot' out.'/fig6' format 7.0 7.6
-  call here.'/impact_panels.gnuplot' out.'/fig6' 'Fig. 6 reproduced: duralumin rod C, h = 20 mm'
+  call here.'/../output.gnuplot' out.'/fig6' format full_width_in 7.4
+  call here.'/impact_panels.gnuplot' out.'/fig6' 'Fig. 6 reproduced: duralumin rod C, h = 20 mm' 'duralumin-c'
 }

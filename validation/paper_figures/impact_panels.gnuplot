@@ -1,8 +1,12 @@
 # The five panels of Figs. 5 and 6 from STEM.csv (written by validation/paper_figures):
-#   call 'impact_panels.gnuplot' STEM 'TITLE'
+#   call 'impact_panels.gnuplot' STEM 'TITLE' ROD
+# The model is drawn in the rod's colour (style.gnuplot's rod_colour), its band in its tint.
 # (a) force, (b) displacement, (c) hysteresis loop, (d) acceleration, (e) velocity vs time;
 # the sixth cell holds the legend. Measured traces STEM_measured_*.csv are overlaid if present.
+# (No straight apostrophe in the legend titles: it would hide the @legend_traces macro.)
 data = ARG1.'.csv'
+set style line 1 lc rgb rod_colour(ARG3) lw 2.0 dt 1
+set style line 11 lc rgb rod_tint(ARG3) lw 0.8 dt 1
 measured = system('ls '.ARG1.'_measured_*.csv 2>/dev/null')
 n_measured = words(measured)
 E_default = real(csv_parameter(data, 'ball_E_Pa'))/1e9
@@ -33,27 +37,39 @@ stats data using (1e3*column('t_s')) nooutput
 t_step = STATS_max > 1.5 ? 0.5 : (STATS_max > 0.8 ? 0.25 : 0.1)
 stats data using (1e6*column('displacement_max_m')) nooutput
 x_step = STATS_max > 250 ? 100 : (STATS_max > 100 ? 50 : 20)
+# Value tics: at most about five per panel, 1, 2 or 5 times a power of ten.
+nice_step(span) = (r = span/5.0, m = 10**floor(log10(r)), r/m <= 1 ? m : r/m <= 2 ? 2*m : r/m <= 5 ? 5*m : 10*m)
+stats data using 'force_max_N' nooutput
+f_step = nice_step(STATS_max)
+stats data using (1e6*column('displacement_max_m')) nooutput
+d_span = STATS_max - STATS_min
+stats data using 'accel_min_mps2' nooutput
+a_step = nice_step(-STATS_min)
 
-set multiplot layout 3,2 title ARG2."\n{/=8 (".note.')}' margins 0.13,0.97,0.08,0.92 spacing 0.15,0.10
+set multiplot layout 3,2 title ARG2."\n{/=8 (".note.')}'
 set key off
 set autoscale xfix
 set xtics t_step
 set xlabel 'Time since contact onset (ms)'
-set label 1 at graph 0.96, 0.90 right front font ',10'
+set label 1 at graph 0.96, 0.90 right front
+set rmargin 4
 
 set label 1 '(a)'
+set ytics f_step
 set ylabel 'Contact force P (N)'
 plot data using @t_ms:'force_min_N':'force_max_N' with filledcurves ls 11, \
      '' using @t_ms:'force_hertz_N' with lines ls 2, \
      '' using @t_ms:'force_N' with lines ls 1 @overlay_force
 
 set label 1 '(b)'
-set ylabel 'Displacement x ({/Symbol m}m)'
+set ytics nice_step(d_span)
+set ylabel 'Displacement ({/Symbol m}m)'
 plot data using @t_ms:(1e6*column('displacement_min_m')):(1e6*column('displacement_max_m')) with filledcurves ls 11, \
      '' using @t_ms:(1e6*column('displacement_hertz_m')) with lines ls 2, \
      '' using @t_ms:(1e6*column('displacement_m')) with lines ls 1 @overlay_displacement
 
 set label 1 '(c)'
+set ytics f_step
 set xlabel 'Displacement x ({/Symbol m}m)'
 set ylabel 'Contact force P (N)'
 set autoscale x
@@ -68,12 +84,14 @@ set xtics t_step
 set xlabel 'Time since contact onset (ms)'
 
 set label 1 '(d)' at graph 0.96, 0.10
+set ytics a_step
 set ylabel 'Rod acceleration (m/s^2)'
 plot data using @t_ms:'accel_min_mps2':'accel_max_mps2' with filledcurves ls 11, \
      '' using @t_ms:'accel_hertz_mps2' with lines ls 2, \
      '' using @t_ms:'accel_mps2' with lines ls 1 @overlay_accel
 
 set label 1 '(e)' at graph 0.96, 0.90
+set ytics 0.4
 set ylabel 'Rod velocity (m/s)'
 plot data using @t_ms:'velocity_min_mps':'velocity_max_mps' with filledcurves ls 11, \
      '' using @t_ms:'velocity_hertz_mps' with lines ls 2, \
@@ -86,10 +104,10 @@ unset tics
 unset grid
 unset xlabel
 unset ylabel
-set key at graph 0.33, 0.5 center center Left reverse box samplen 2.5 spacing 1.6 width -3 font ',8.5'
+set key at graph 0.0, 0.5 left center Left reverse nobox samplen 2.5 spacing 1.4 font ',8'
 set xrange [0:1]
 set yrange [0:1]
-plot 2 with lines ls 1 title sprintf("Paper's model, nylon E = %.1f GPa", E_default), \
-     2 with filledcurves y1=3 ls 11 title sprintf("Paper's model, nylon E = %.1f-%.1f GPa", E_min, E_max), \
+plot 2 with lines ls 1 title sprintf("Paper’s model, E_{nylon} = %.1f GPa", E_default), \
+     2 with filledcurves y1=3 ls 11 title sprintf("the same, E_{nylon} = %.1f-%.1f GPa", E_min, E_max), \
      2 with lines ls 2 title 'Undamped Hertz contact' @legend_traces
 unset multiplot
