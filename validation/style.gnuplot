@@ -40,8 +40,10 @@ two_panels_key = 'set origin 0.68, 0; set size 0.32, 1; set margins 0, 0, 0, 0'
 # a row for their legend (quad_key_row, then eval key_panel and plot the entries).
 quad_panel(k) = sprintf('set origin %g, %g; set size 0.5, 0.43', ((k - 1) % 2) * 0.5, k <= 2 ? 0.57 : 0.14)
 quad_key_row = 'set origin 0, 0.01; set size 1, 0.12; set margins 0, 0, 0, 0'
+# Panel k of n stacked full-width panels above a legend row (quad_key_row), automatic margins.
+stack_panel(k, n) = sprintf('set origin 0, %g; set size 1, %g', 0.13 + (n - k) * 0.87 / n, 0.87 / n)
 # In a key row: the entries side by side, centred.
-key_row = "set key at graph 0.5, 0.5 center center horizontal maxrows 3 width 1" 
+key_row = "set key at graph 0.03, 0.5 left center vertical maxrows 3 width -2" 
 # A legend in a panel of its own (a multiplot cell): no axes, the key centred, 8 pt.
 # Plot its entries as NaN series after `eval key_panel`.
 key_panel = "unset logscale; unset border; unset tics; unset grid; unset xlabel; unset ylabel; unset title; unset label; " . \

@@ -93,9 +93,9 @@ do for [kind in 'pdf png'] {
   eval quad_key_row
   eval key_panel
   eval key_row
-  plot NaN w lp ls 11 t '(a), (b): Euler, located', NaN w lp ls 12 t 'Euler, unlocated (on top of located)', \
+  plot NaN w lp ls 11 t '(a), (b): Euler, located', NaN w lp ls 12 t 'Euler, unlocated', \
        NaN w lp ls 13 t 'RK4, located', NaN w lp ls 14 t 'RK4, unlocated', \
-       NaN w lp ls 15 t 'RK4, regularised (mean h)', NaN ls 20 t 'reference slopes: (a) 1, 2.5, 4; (b) 1, 1.5, 4'
+       NaN w lp ls 15 t 'RK4, regularised (mean h)', NaN ls 20 t 'reference slopes (caption)'
   unset multiplot
   set output
 }

@@ -55,6 +55,7 @@ do for [format in 'pdf png'] {
   eval quad_key_row
   eval key_panel
   eval key_row
+  set key maxrows 4
   plot NaN with boxes lc rgb '#0b3c8c' fs solid 0.45 title sprintf("bars: paper’s model, E_{nylon} = %.1f GPa (one colour per rod)", E), \
        NaN with lines lc rgb '#555555' lw 1.2 title sprintf("error bars: E_{nylon} = %.1f-%.1f GPa", E_min, E_max), \
        NaN with points ls 2 pt 6 ps 1.2 title 'circles: undamped Hertz (e = 1, off scale in (d))', \

@@ -3,7 +3,6 @@
 #   gnuplot -d -c omega_n_hysteresis.gp OUT   (reads OUT/omega_n_hysteresis.csv)
 out = ARG1
 here = system('dirname '.ARG0)
-load here.'/../style.gnuplot'
 data = out.'/omega_n_hysteresis.csv'
 sel(v, r, col) = (strcol(1) eq v && strcol(2) eq r) ? column(col) : NaN
 variants = 'paper impact-energy rebound-energy self-consistent contact-time as-printed'
@@ -11,19 +10,24 @@ style(i) = i == 1 ? 1 : i + 2
 rods = 'steel duralumin-c'
 
 do for [fmt in 'pdf png'] {
-  if (fmt eq 'pdf') { set terminal pdfcairo size 3.5in,4.4in font 'Helvetica,9' } \
-  else { set terminal pngcairo size 700,880 font 'Helvetica,11' }
-  set output out.'/omega_n_hysteresis.'.fmt
-  set multiplot layout 2,1 margins 0.15,0.97,0.09,0.97 spacing 0,0.08
+  reset
+  load here.'/../style.gnuplot'
+  call here.'/../output.gnuplot' out.'/omega_n_hysteresis' fmt narrow_width_in 5.6
+  set multiplot
+  set key off
+  set ylabel 'contact force P [N]'
+  set xrange [-5:*]
   do for [k=1:2] {
-    set xlabel 'deformation x [{/Symbol m}m]'
-    set ylabel 'contact force P [N]'
-    set key top left font ',8'
-    set xrange [-5:*]
-    set label 1 sprintf('%s rod, h = 20 mm', word('Steel Duralumin-C', k)) at graph 0.97,0.08 right
+    eval stack_panel(k, 2)
+    set title sprintf('(%s) %s rod, h = 20 mm', word('a b', k), word('Steel Duralumin-C', k))
+    if (k == 2) { set xlabel 'deformation x [{/Symbol m}m]' }
+    set ytics (k == 1 ? 400 : 200)
     plot for [i=1:words(variants)] data using (1e6*$3):(sel(word(variants,i), word(rods,k), 4)) \
-           with lines ls style(i) title word(variants,i)
+           with lines ls style(i) notitle
   }
+  eval quad_key_row
+  eval key_panel
+  eval key_row
+  plot for [i=1:words(variants)] NaN with lines ls style(i) title word(variants,i)
   unset multiplot
-  unset label 1
 }
