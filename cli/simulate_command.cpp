@@ -39,6 +39,18 @@ void print_text(const SimulateRun& r) {
     std::cout << fmt::format("  {:<30} {} iterations, {} (last relative change {:.3g}, contraction {:.3g})\n",
                              "omega_n_fixed_point", it->iterations, it->converged ? "converged" : "NOT converged",
                              it->relative_change, it->contraction);
+  if (const auto& e = s.elastic_rod) {
+    std::cout << fmt::format("  elastic rod: {} elements, first longitudinal frequency {:.6g} Hz, 2L/c = {:.6g} s\n",
+                             e->elements, e->first_frequency_hz, e->wave_round_trip_s);
+    line("peak_load_cell_force_N", e->peak_load_cell_force_N);
+    line("energy_in_J", e->energy_in_J);
+    line("energy_rigid_body_out_J", e->energy_rigid_body_out_J);
+    line("energy_rod_vibration_J", e->energy_rod_vibration_J);
+    line("energy_cell_J", e->energy_cell_J);
+    line("energy_dissipated_contact_J", e->energy_dissipated_contact_J);
+    line("energy_dissipated_material_J", e->energy_dissipated_material_J);
+    line("energy_balance_error_J", e->energy_balance_error_J);
+  }
   if (!s.separated) std::cout << "  note: the rod did not separate (it came to rest on the ball)\n";
 }
 
@@ -48,8 +60,11 @@ void write_trace(const SimulateRun& r, const std::string& path) {
   CsvWriter csv("hertzdash simulate: contact-phase time series (x = deformation, force compressive "
                 "positive, accel/velocity of the rod downward positive)",
                 header, trace_columns());
-  for (const TraceSample& s : r.trace)
-    csv.add_row({s.t_s, s.x_m, s.xdot_mps, s.force_N, s.accel_mps2, s.rod_displacement_m, s.rod_velocity_mps});
+  for (const TraceSample& s : r.trace) {
+    std::vector<CsvWriter::Cell> row;
+    for (const TraceColumn& c : trace_column_table) row.emplace_back(s.*c.field);
+    csv.add_row(row);
+  }
   csv.save(path);
 }
 
@@ -66,6 +81,7 @@ Command add_simulate_command(CLI::App& app) {
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
             report_fallback(r.solver.integrator, r.summary.integrator_used, r.fallback_reason);
             if (!opt->trace_path.empty()) write_trace(r, opt->trace_path);
+            if (const std::string n = stability_note(r); !n.empty()) std::cerr << "hertzdash: note: " << n << "\n";
             if (const std::string w = resolution_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";
             else print_text(r);

@@ -2,11 +2,14 @@
 
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_band.h>
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_band.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -19,7 +22,10 @@ namespace {
 // Every SUNDIALS return code is checked; failures name the call and CVODE's flag.
 void check(int flag, const char* call) {
   if (flag < 0) {
-    throw std::runtime_error(std::string("CVODE: ") + call + " failed with " + CVodeGetReturnFlagName(flag));
+    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS: ours to free
+    const std::string text = std::string("CVODE: ") + call + " failed with " + (name ? name : "?");
+    std::free(name);
+    throw std::runtime_error(text);
   }
 }
 template <class T> T* check_ptr(T* p, const char* call) {
@@ -29,13 +35,13 @@ template <class T> T* check_ptr(T* p, const char* call) {
 
 int rhs_thunk(realtype t, N_Vector y, N_Vector dy, void* user_data) {
   auto* cb = static_cast<CvodeCallbacks*>(user_data);
-  cb->rhs(cb->system, t, N_VGetArrayPointer(y), N_VGetArrayPointer(dy));
+  cb->rhs(cb->system, cb->dimension, t, N_VGetArrayPointer(y), N_VGetArrayPointer(dy));
   return 0;
 }
 
 int events_thunk(realtype t, N_Vector y, realtype* g, void* user_data) {
   auto* cb = static_cast<CvodeCallbacks*>(user_data);
-  cb->events(cb->system, t, N_VGetArrayPointer(y), g);
+  cb->events(cb->system, cb->dimension, t, N_VGetArrayPointer(y), g);
   return 0;
 }
 
@@ -86,8 +92,14 @@ CvodeIntegrator::CvodeIntegrator(int dimension, int event_count, const CvodeOpti
     d.NLS = check_ptr(SUNNonlinSol_FixedPoint(d.y, 0, d.ctx), "SUNNonlinSol_FixedPoint");
     check(CVodeSetNonlinearSolver(d.mem, d.NLS), "CVodeSetNonlinearSolver");
   } else {
-    d.A = check_ptr(SUNDenseMatrix(dimension, dimension, d.ctx), "SUNDenseMatrix");
-    d.LS = check_ptr(SUNLinSol_Dense(d.y, d.A, d.ctx), "SUNLinSol_Dense");
+    if (options.band_half_width >= 0 && options.band_half_width < dimension - 1) {
+      const int w = options.band_half_width;
+      d.A = check_ptr(SUNBandMatrix(dimension, w, w, d.ctx), "SUNBandMatrix");
+      d.LS = check_ptr(SUNLinSol_Band(d.y, d.A, d.ctx), "SUNLinSol_Band");
+    } else {
+      d.A = check_ptr(SUNDenseMatrix(dimension, dimension, d.ctx), "SUNDenseMatrix");
+      d.LS = check_ptr(SUNLinSol_Dense(d.y, d.A, d.ctx), "SUNLinSol_Dense");
+    }
     check(CVodeSetLinearSolver(d.mem, d.LS, d.A), "CVodeSetLinearSolver");
   }
   d.direction.assign(static_cast<std::size_t>(event_count), -1);

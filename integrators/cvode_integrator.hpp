@@ -2,8 +2,9 @@
 // SUNDIALS CVODE(S) 6.4 behind the OdeSystem interface.
 //
 // Method: variable-order, variable-step Adams-Moulton (orders 1-12, fixed-point
-// corrector) or BDF (orders 1-5, Newton with a dense difference-quotient
-// Jacobian). Local error control: ||e_i|| <= rtol |y_i| + atol in the WRMS norm.
+// corrector) or BDF (orders 1-5, Newton with a difference-quotient Jacobian: dense,
+// or banded for a system that declares `static constexpr int jacobian_half_bandwidth`,
+// the largest |i - j| of a non-zero df_i/dy_j that matters for convergence). Local error control: ||e_i|| <= rtol |y_i| + atol in the WRMS norm.
 // Events: CVODE's root finding on the system's event functions with direction
 // -1 (g decreasing through zero). After an event whose action is `restart`,
 // the integrator restarts with CVodeReInit at the event point, so no step
@@ -28,13 +29,22 @@ struct CvodeOptions {
   double atol = 1e-12;         ///< absolute tolerance (state units), > 0
   double max_step = 0.0;       ///< largest step [s]; 0 means no limit
   long max_num_steps = 1000000;
+  int band_half_width = -1;    ///< BDF: banded Jacobian with this half-bandwidth; < 0: dense
 };
+
+/// The Jacobian half-bandwidth a system declares, or -1 (dense).
+template <class S>
+constexpr int jacobian_half_bandwidth() {
+  if constexpr (requires { S::jacobian_half_bandwidth; }) return S::jacobian_half_bandwidth;
+  else return -1;
+}
 
 /// Type-erased view of a system, so the CVODE callbacks are plain functions.
 struct CvodeCallbacks {
   void* system = nullptr;
-  void (*rhs)(void* system, double t, const double* y, double* dy) = nullptr;
-  void (*events)(void* system, double t, const double* y, double* g) = nullptr;
+  int dimension = 0;
+  void (*rhs)(void* system, int n, double t, const double* y, double* dy) = nullptr;
+  void (*events)(void* system, int n, double t, const double* y, double* g) = nullptr;
 };
 
 class CvodeIntegrator {
@@ -67,17 +77,18 @@ class CvodeIntegrator {
 template <OdeSystem S, IntegrationObserver<typename S::State> Observer>
 IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double t0, double t_end,
                                             Observer& observer) {
-  check_dimensions(S::dimension, S::event_count);
+  check_dimensions(static_cast<int>(y.size()), S::event_count);
   callbacks_.system = &sys;
-  callbacks_.rhs = [](void* s, double t, const double* yp, double* dy) {
-    Eigen::Map<typename S::State> out(dy);
+  callbacks_.dimension = static_cast<int>(y.size());
+  callbacks_.rhs = [](void* s, int n, double t, const double* yp, double* dy) {
+    Eigen::Map<typename S::State> out(dy, n);
     typename S::State d;
-    static_cast<const S*>(s)->rhs(t, Eigen::Map<const typename S::State>(yp), d);
+    static_cast<const S*>(s)->rhs(t, Eigen::Map<const typename S::State>(yp, n), d);
     out = d;
   };
-  callbacks_.events = [](void* s, double t, const double* yp, double* g) {
+  callbacks_.events = [](void* s, int n, double t, const double* yp, double* g) {
     typename S::Events e;
-    static_cast<const S*>(s)->events(t, Eigen::Map<const typename S::State>(yp), e);
+    static_cast<const S*>(s)->events(t, Eigen::Map<const typename S::State>(yp, n), e);
     for (int i = 0; i < S::event_count; ++i) g[i] = e[i];
   };
 

@@ -12,13 +12,8 @@
 //   0 contact: in flight g = -x (gap closes: onset, restart); in contact g = x
 //     (deformation returns to zero: separation, stop)
 //   1 max_compression: in contact g = x' (observation)
-//   2 peak_force: in contact g = dF/dt = F_x x' + F_v x'' (observation). The
-//     partial derivatives are central differences with relative steps 1e-6
-//     (truncation ~1e-12 relative); differentiating along the state's partials,
-//     not along a time shift, keeps g nonzero wherever x' or x'' is, so the root
-//     finder never meets a flat zero (at the undamped turning point F_x x' is
-//     tiny but not zero, while a time-shifted difference cancels exactly).
-//     Where F <= 0 no peak can occur and g = -1 (F is identically zero once a
+//   2 peak_force: in contact g = dF/dt = F_x x' + F_v x'' (observation), by
+//     contact_force_rate (model/force_rate.hpp). Where F <= 0 no peak can occur and g = -1 (F is identically zero once a
 //     heavily damped Hunt-Crossley law reaches 1 + chi x' = 0 to roundoff).
 //   3 force_zero: with the tension clamp, g = F (separation where the force
 //     reaches zero, stop); else inactive
@@ -96,11 +91,8 @@ class DropTest {
     const double F_law = law_->force(x, v);  // unclamped
     const double F = model_.setup.no_tension ? std::max(F_law, 0.0) : F_law;
     const double a = model_.gravity_mps2 - F / model_.mass_kg;
-    const double dx = 1e-6 * std::max(x, 1e-6 * x_scale_m_), dv = 1e-6 * v_scale_mps_;
-    const double x_lo = std::max(x - dx, 0.0);
-    const double F_x = (force_at(x + dx, v) - force_at(x_lo, v)) / (x + dx - x_lo);
-    const double F_v = (force_at(x, v + dv) - force_at(x, v - dv)) / (2 * dv);
-    const double dFdt = force_rate(F_x, F_v, v, a);
+    const double dFdt = contact_force_rate([this](double xi, double vi) { return force_at(xi, vi); }, x, v, a,
+                                           x_scale_m_, v_scale_mps_);
     // A peak force is positive: where F <= 0, g2 = -1 (no root). Heavily damped
     // Hunt-Crossley laws reach 1 + chi x' = 0 to roundoff, where F and dF/dt are
     // identically zero and CVODE's root finder would stop on a flat zero.

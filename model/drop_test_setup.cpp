@@ -2,7 +2,10 @@
 
 #include "hertzdash/model/invalid_parameter.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <string>
 
 namespace hertzdash {
 
@@ -22,6 +25,28 @@ void validate(const DropTestSetup& s) {
     throw InvalidParameter("--height", format_value(s.height_m),
                            "> 0 with --gravity > 0 when no --impact-velocity is given (the rod must reach the ball)");
   }
+  if (s.elastic_rod) {
+    if (std::isinf(s.rod.E_Pa))
+      throw InvalidParameter("--rod-E", format_value(s.rod.E_Pa),
+                             "a finite modulus [Pa] with --rod-model elastic (inf is the rigid rod: --rod-model rigid)");
+    validate(*s.elastic_rod);
+  }
+}
+
+const char* to_string(Accelerometer a) { return a == Accelerometer::top ? "top" : "bottom"; }
+
+void validate(const ElasticRodSetup& s) {
+  require_positive("rod length (Table 1)", s.length_m, "m");
+  require_positive("rod diameter (Table 1)", s.diameter_m, "m");
+  if (s.elements < 1 || s.elements > ElasticRodSetup::max_elements)
+    throw InvalidParameter("--rod-elements", std::to_string(s.elements),
+                           fmt::format("an integer in [1, {}]", ElasticRodSetup::max_elements));
+  if (!(s.rod_damping_ratio >= 0 && s.rod_damping_ratio < 1))
+    throw InvalidParameter("--rod-damping-ratio", format_value(s.rod_damping_ratio), "[0, 1)");
+  require_positive("--hemisphere-mass", s.hemisphere_mass_kg, "kg");
+  require_positive_or_infinite("--cell-stiffness", s.cell_stiffness_N_per_m, "N/m");
+  if (!(s.cell_damping_ratio >= 0 && s.cell_damping_ratio < 1))
+    throw InvalidParameter("--cell-damping-ratio", format_value(s.cell_damping_ratio), "[0, 1)");
 }
 
 double hertz_stiffness(const DropTestSetup& s) { return hertz_stiffness(s.ball_radius_m, s.ball, s.rod); }

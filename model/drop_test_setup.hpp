@@ -1,6 +1,7 @@
 #pragma once
 // The physical set-up of one drop test (Fig. 4 of the paper), validated.
 #include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/elastic_rod_setup.hpp"
 #include "hertzdash/model/hertz.hpp"
 
 #include <optional>
@@ -19,6 +20,10 @@ struct DropTestSetup {
   double gravity_mps2;       ///< g [m/s^2] >= 0, acting throughout, eq. (1)
   bool no_tension = false;   ///< clamp the contact force at >= 0; contact then ends where it reaches zero
   DampingSettings damping;
+  /// Unset: the paper's model, a rigid rod on a fixed hemisphere. Set: the elastic rod on the
+  /// hemisphere's load cell (model/elastic_drop_test.hpp); rod.E_Pa is then also the bar's
+  /// modulus and must be finite.
+  std::optional<ElasticRodSetup> elastic_rod;
 };
 
 /// Throws InvalidParameter naming the CLI option and its valid range.

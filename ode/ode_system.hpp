@@ -7,6 +7,13 @@
 // integration continues, restarts (its right-hand side changed form, so the
 // integrator must not carry information across the event) or stops.
 // Integrators know nothing else about the system.
+//
+// The state is an Eigen column vector of doubles. Its size is fixed at compile time
+// (dimension = n, State = Eigen::Matrix<double, n, 1>) or chosen per run (dimension =
+// Eigen::Dynamic, State = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, max, 1>: a runtime
+// size up to a compile-time capacity, stored inline, so a step allocates nothing). A
+// system of runtime size sizes the derivative it writes: rhs() starts with
+// dy.resize(y.size()); integrators size their work vectors from the state they are given.
 #include <Eigen/Core>
 
 #include <array>
@@ -27,7 +34,9 @@ concept OdeSystem = requires(S& s, const S& cs, double t, const typename S::Stat
                              typename S::State& dy, typename S::Events& g) {
   { S::dimension } -> std::convertible_to<int>;
   { S::event_count } -> std::convertible_to<int>;
-  requires std::same_as<typename S::State, Eigen::Matrix<double, S::dimension, 1>>;
+  requires std::same_as<typename S::State::Scalar, double>;
+  requires S::State::ColsAtCompileTime == 1 && S::State::RowsAtCompileTime == S::dimension;
+  requires S::dimension > 0 || S::State::MaxRowsAtCompileTime > 0;  // no heap-allocated states
   requires std::same_as<typename S::Events, std::array<double, S::event_count>>;
   cs.rhs(t, y, dy);
   cs.events(t, y, g);

@@ -133,6 +133,7 @@ void warn(const std::string& message) {
 
 void warn_about(const SimulateRun& run) {
   warn(fallback_note(run.solver.integrator, run.summary.integrator_used, run.fallback_reason));
+  warn(stability_note(run));
   warn(resolution_warning(run));
 }
 
@@ -169,17 +170,12 @@ py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
     samples = grid_step ? uniform_trace(run.trace, *grid_step) : run.trace;
   }
   warn_about(run);
-  const std::vector<std::string> names = trace_columns();
-  constexpr std::array<double TraceSample::*, 7> fields{&TraceSample::t_s,         &TraceSample::x_m,
-                                                        &TraceSample::xdot_mps,    &TraceSample::force_N,
-                                                        &TraceSample::accel_mps2,  &TraceSample::rod_displacement_m,
-                                                        &TraceSample::rod_velocity_mps};
   py::dict out;
-  for (std::size_t c = 0; c < fields.size(); ++c) {
+  for (const TraceColumn& c : trace_column_table) {
     py::array_t<double> column(static_cast<py::ssize_t>(samples.size()));
     auto a = column.mutable_unchecked<1>();
-    for (std::size_t i = 0; i < samples.size(); ++i) a(static_cast<py::ssize_t>(i)) = samples[i].*fields[c];
-    out[py::str(names[c])] = column;
+    for (std::size_t i = 0; i < samples.size(); ++i) a(static_cast<py::ssize_t>(i)) = samples[i].*c.field;
+    out[py::str(c.name)] = column;
   }
   return out;
 }
@@ -249,7 +245,7 @@ py::list py_integrators() {
     d["reads_cvode_method"] = r.reads_cvode_method;
     d["needs_root_polynomial_law"] = r.needs_root_polynomial;
     d["fallback_for_other_laws"] = to_string(r.fallback_for_other_laws);
-    d["fallback_with_tension_clamp"] = to_string(r.fallback_with_tension_clamp);
+    d["physical_counterpart"] = to_string(r.physical_counterpart);
     list.append(d);
   }
   return list;

@@ -11,8 +11,11 @@
 namespace hertzdash {
 
 std::vector<std::string> trace_columns() {
-  return {"t_s", "x_m", "xdot_mps", "force_N", "accel_mps2", "rod_displacement_m", "rod_velocity_mps"};
+  std::vector<std::string> names;
+  for (const TraceColumn& c : trace_column_table) names.emplace_back(c.name);
+  return names;
 }
+
 
 ImpactSimulator::ImpactSimulator(const SolverSettings& settings) : settings_(settings) { validate(settings_); }
 
@@ -39,7 +42,7 @@ IntegratorKind integrator_used(const SolverSettings& solver, const DropTestSetup
                                std::string* why) {
   IntegratorKind used = solver.integrator;
   with_damping_law(law, [&]<class Law>(std::type_identity<Law>) {
-    used = integrator_used(solver.integrator, setup.no_tension, RootPolynomialLaw<Law>, why);
+    used = integrator_used(solver.integrator, impact_needs<Law>(setup), why);
   });
   return used;
 }
@@ -60,6 +63,17 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
   if (setup.impact_velocity_mps) p.emplace_back("impact_velocity_input_mps", num(*setup.impact_velocity_mps));
   p.emplace_back("gravity_mps2", num(setup.gravity_mps2));
   p.emplace_back("no_tension", setup.no_tension ? "true" : "false");
+  p.emplace_back("rod_model", setup.elastic_rod ? "elastic" : "rigid");
+  if (const auto& e = setup.elastic_rod) {
+    p.emplace_back("rod_length_m", num(e->length_m));
+    p.emplace_back("rod_diameter_m", num(e->diameter_m));
+    p.emplace_back("rod_elements", num(e->elements));
+    p.emplace_back("rod_damping_ratio", num(e->rod_damping_ratio));
+    p.emplace_back("hemisphere_mass_kg", num(e->hemisphere_mass_kg));
+    p.emplace_back("cell_stiffness_N_per_m", num(e->cell_stiffness_N_per_m));
+    p.emplace_back("cell_damping_ratio", num(e->cell_damping_ratio));
+    p.emplace_back("accelerometer", to_string(e->accelerometer));
+  }
   p.emplace_back("integrator", to_string(solver.integrator));
   const IntegratorTraits& row = integrator_traits(solver.integrator);
   if (row.reads_cvode_method) p.emplace_back("cvode_method", to_string(solver.cvode_method));

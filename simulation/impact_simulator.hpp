@@ -5,14 +5,15 @@
 // the table's fall-backs) is reported in the summary.
 //
 // Other systems fit the same pattern: the integrator rows integrate any OdeSystem of any
-// size, and IntegratorWorkspace keeps one CVODE memory per system size. A new body model
-// (an elastic rod with many degrees of freedom, a hemisphere on a load cell) is a system
-// in model/ plus a run_..._impact beside physical_impact.hpp that builds it and observes
-// it into a summary; a sequence of impacts is a system whose separation event restarts
-// instead of stopping, observed impact by impact.
+// size, and IntegratorWorkspace keeps one CVODE memory per system size. A body model is a
+// system in model/ plus a run_..._impact beside physical_impact.hpp that builds it and
+// observes it into a summary, as the elastic rod on the load cell does
+// (model/elastic_drop_test.hpp, elastic_impact.hpp); a sequence of impacts is a system whose
+// separation event restarts instead of stopping, observed impact by impact.
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/io/provenance.hpp"
+#include "hertzdash/simulation/elastic_impact.hpp"
 #include "hertzdash/simulation/impact_summary.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/physical_impact.hpp"
@@ -48,6 +49,13 @@ class ImpactSimulator {
   IntegratorWorkspace workspace_;
 };
 
+/// What the impact of `setup` with the law `Law` asks of an integrator.
+template <DampingLaw Law>
+ImpactNeeds impact_needs(const DropTestSetup& setup) {
+  return {.tension_clamp = setup.no_tension, .elastic_rod = setup.elastic_rod.has_value(),
+          .root_polynomial_law = RootPolynomialLaw<Law>};
+}
+
 /// The integrator that runs the registered law `law` on `setup` when `solver` asks for
 /// solver.integrator: the table's fall-backs (see integrator_used above; `why` likewise).
 IntegratorKind integrator_used(const SolverSettings& solver, const DropTestSetup& setup, std::string_view law,
@@ -72,13 +80,22 @@ ImpactSummary simulate(const DropTestSetup& setup, const SolverSettings& setting
 template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
   ImpactSummary s;
-  s.integrator_used = integrator_used(settings_.integrator, setup.no_tension, RootPolynomialLaw<Law>);
+  s.integrator_used = integrator_used(settings_.integrator, impact_needs<Law>(setup));
   with_integrator_row(s.integrator_used, [&]<class Row>(std::type_identity<Row>) {
     auto integrate = [&](auto& sys, auto& y, double t0, double t1, auto& observer) {
       return Row::integrate(sys, y, t0, t1, settings_, workspace_, observer);
     };
-    if constexpr (Row::traits.variables == Variables::regularized) run_regularized_impact<Law>(setup, integrate, s, trace);
-    else run_physical_impact<Law>(setup, integrate, s, trace);
+    if constexpr (Row::traits.variables == Variables::regularized) {
+      run_regularized_impact<Law>(setup, integrate, s, trace);
+    } else if (setup.elastic_rod) {
+      auto integrate_with = [&](auto& sys, auto& y, double t0, double t1, const SolverSettings& used, auto& observer) {
+        return Row::integrate(sys, y, t0, t1, used, workspace_, observer);
+      };
+      run_elastic_impact<Law>(setup, Row::traits.kind, Row::traits.step_control == StepControl::fixed_step, settings_,
+                              integrate_with, s, trace);
+    } else {
+      run_physical_impact<Law>(setup, integrate, s, trace);
+    }
   });
   if (s.separated) {
     s.contact_time_s = s.t_separation_s - s.t_onset_s;

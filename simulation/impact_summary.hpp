@@ -5,6 +5,7 @@
 #include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,26 @@ struct OmegaNIteration {
   double relative_change = 0;   ///< |w_k - w_{k-1}| / w_k at the last iteration
   double contraction = 0;       ///< last observed |dG| / |dw| (< 1 for a contraction)
   std::string failure;          ///< why it stopped unconverged (empty if converged)
+};
+
+/// What the elastic rod (--rod-model elastic) adds to a summary. The energy account runs
+/// from contact onset to separation and closes:
+///   energy_in = rigid_body_out + rod_vibration + cell + dissipated_contact
+///               + dissipated_material + balance_error.
+struct ElasticRodReport {
+  int elements = 0;                      ///< finite elements N
+  double first_frequency_hz = 0;         ///< the discrete rod's first free-free longitudinal frequency
+  double wave_round_trip_s = 0;          ///< 2 L / c
+  double stable_step_s = 0;              ///< fixed-step integrators: the stability-limited step (0: adaptive)
+  double step_used_s = 0;                ///< fixed-step integrators: min(--dt, stable_step_s) (0: adaptive)
+  double peak_load_cell_force_N = 0;     ///< largest force the load cell measured
+  double energy_in_J = 0;                ///< (1/2) m v0^2 plus the work of gravity on the rod during contact
+  double energy_rigid_body_out_J = 0;    ///< (1/2) m v_cm^2 at separation
+  double energy_rod_vibration_J = 0;     ///< kinetic (relative to the centre of mass) plus strain, at separation
+  double energy_cell_J = 0;              ///< hemisphere and cell spring, at separation
+  double energy_dissipated_contact_J = 0;   ///< work absorbed by the contact law
+  double energy_dissipated_material_J = 0;  ///< rod material damping plus cell damping
+  double energy_balance_error_J = 0;     ///< in minus the sum of the five above
 };
 
 /// The result of one impact. Velocities are speeds (>= 0).
@@ -35,12 +56,45 @@ struct ImpactSummary {
   std::vector<NamedValue> law_coefficients;
   IntegratorKind integrator_used = IntegratorKind::cvode;  ///< set by ImpactSimulator::run: the one asked for, or its fall-back
   std::optional<OmegaNIteration> omega_n_iteration;  ///< iterated omega_n variants only
+  std::optional<ElasticRodReport> elastic_rod;       ///< --rod-model elastic only; the velocities above are the centre of mass's
 };
 
-/// One sample of the contact phase (the --trace columns).
+/// One sample of the contact phase (the --trace columns). Downward positive; for the elastic
+/// rod, "rod" means its centre of mass.
 struct TraceSample {
-  double t_s, x_m, xdot_mps, force_N, accel_mps2, rod_displacement_m, rod_velocity_mps;
+  double t_s;
+  double x_m, xdot_mps;       ///< deformation x and its rate
+  double force_N;             ///< contact force, compressive positive
+  double accel_mps2;          ///< the rod's (centre-of-mass) acceleration, g - F/m
+  double rod_displacement_m;  ///< from the release point
+  double rod_velocity_mps;
+  double load_cell_force_N;   ///< what the load cell measures beyond its preload (rigid base: force_N)
+  double accelerometer_mps2;  ///< acceleration of the accelerometer's end face (rigid rod: accel_mps2)
+  double xddot_mps2;          ///< x'' (rigid rod on a fixed hemisphere: accel_mps2); not a column
 };
+
+/// The --trace columns: name and field, in column order.
+struct TraceColumn {
+  const char* name;
+  double TraceSample::*field;
+};
+inline constexpr std::array<TraceColumn, 9> trace_column_table{{
+    {"t_s", &TraceSample::t_s},
+    {"x_m", &TraceSample::x_m},
+    {"xdot_mps", &TraceSample::xdot_mps},
+    {"force_N", &TraceSample::force_N},
+    {"accel_mps2", &TraceSample::accel_mps2},
+    {"rod_displacement_m", &TraceSample::rod_displacement_m},
+    {"rod_velocity_mps", &TraceSample::rod_velocity_mps},
+    {"load_cell_force_N", &TraceSample::load_cell_force_N},
+    {"accelerometer_mps2", &TraceSample::accelerometer_mps2},
+}};
 std::vector<std::string> trace_columns();
+
+/// A sample of the rigid model, whose instruments read the contact force and the rod's acceleration.
+inline TraceSample rigid_trace_sample(double t_s, double x_m, double xdot_mps, double force_N, double accel_mps2,
+                                      double rod_displacement_m, double rod_velocity_mps) {
+  return {t_s, x_m, xdot_mps, force_N, accel_mps2, rod_displacement_m, rod_velocity_mps, force_N, accel_mps2, accel_mps2};
+}
 
 }  // namespace hertzdash

@@ -21,17 +21,21 @@ IntegratorKind parse_integrator(std::string_view name, const std::string& option
   throw InvalidParameter(option, std::string(name), "one of: " + integrator_names());
 }
 
-IntegratorKind integrator_used(IntegratorKind asked, bool tension_clamp, bool root_polynomial_law, std::string* why) {
+IntegratorKind integrator_used(IntegratorKind asked, const ImpactNeeds& needs, std::string* why) {
   IntegratorKind k = asked;
   std::string reason;
-  if (tension_clamp && integrator_traits(k).fallback_with_tension_clamp != k) {
-    k = integrator_traits(k).fallback_with_tension_clamp;
-    reason = fmt::format("{} integrates the contact in regularising variables, which have no event for the tension "
-                         "clamp (--no-tension ends contact where the force reaches zero); {} runs in the physical "
-                         "variables instead",
-                         to_string(asked), to_string(k));
+  if ((needs.tension_clamp || needs.elastic_rod) && integrator_traits(k).physical_counterpart != k) {
+    k = integrator_traits(k).physical_counterpart;
+    reason = needs.elastic_rod
+                 ? fmt::format("{} integrates a rigid rod's contact in regularising variables; the elastic rod "
+                               "(--rod-model elastic) runs in the physical variables, so {} runs instead",
+                               to_string(asked), to_string(k))
+                 : fmt::format("{} integrates the contact in regularising variables, which have no event for the "
+                               "tension clamp (--no-tension ends contact where the force reaches zero); {} runs in "
+                               "the physical variables instead",
+                               to_string(asked), to_string(k));
   }
-  if (!root_polynomial_law && integrator_traits(k).needs_root_polynomial) {
+  if (!needs.root_polynomial_law && integrator_traits(k).needs_root_polynomial) {
     const IntegratorKind from = k;
     k = integrator_traits(k).fallback_for_other_laws;
     reason = fmt::format("{} needs a law whose force is a polynomial in x^(1/2) (one that declares force_of_root); "

@@ -53,30 +53,31 @@ struct IntegratorTraits {
   /// run `fallback_for_other_laws`.
   bool needs_root_polynomial = false;
   IntegratorKind fallback_for_other_laws = kind;
-  /// What runs with the tension clamp (contact ends where the force reaches zero, an
-  /// event the regularised contact does not have): the same method in physical variables.
-  IntegratorKind fallback_with_tension_clamp = kind;
+  /// The same method in the physical variables: what runs where the regularised contact
+  /// does not apply (the tension clamp, whose contact ends where the force reaches zero, an
+  /// event the regularised contact does not have; the elastic rod, a system of many bodies).
+  IntegratorKind physical_counterpart = kind;
   /// Steps per contact time a fixed-step method needs for the step-resolution target
   /// (simulation/step_resolution.hpp), with and without event location; 0 if adaptive.
   long min_steps_per_contact_located = 0, min_steps_per_contact_unlocated = 0;
 };
 
-/// The CVODE integrators of a simulator, one per system size, created on first use and
-/// reused for every later impact (CVodeReInit), so a sweep pays the set-up once.
+/// The CVODE integrators of a simulator, one per system size (and Jacobian band), created
+/// on first use and reused for every later impact (CVodeReInit), so a sweep pays the set-up once.
 class IntegratorWorkspace {
  public:
-  template <OdeSystem S>
-  CvodeIntegrator& cvode(const CvodeOptions& options) {
+  CvodeIntegrator& cvode(int dimension, int event_count, const CvodeOptions& options) {
     for (const Entry& e : cvode_)
-      if (e.dimension == S::dimension && e.event_count == S::event_count) return *e.integrator;
-    cvode_.push_back({S::dimension, S::event_count,
-                      std::make_unique<CvodeIntegrator>(S::dimension, S::event_count, options)});
+      if (e.dimension == dimension && e.event_count == event_count && e.band_half_width == options.band_half_width)
+        return *e.integrator;
+    cvode_.push_back({dimension, event_count, options.band_half_width,
+                      std::make_unique<CvodeIntegrator>(dimension, event_count, options)});
     return *cvode_.back().integrator;
   }
 
  private:
   struct Entry {
-    int dimension, event_count;
+    int dimension, event_count, band_half_width;
     std::unique_ptr<CvodeIntegrator> integrator;
   };
   std::vector<Entry> cvode_;
@@ -129,7 +130,8 @@ struct CallCvode {
     o.rtol = s.rtol;
     o.atol = s.atol;
     o.max_step = s.max_step_s;
-    return w.cvode<S>(o).integrate(sys, y, t0, t1, observer);
+    o.band_half_width = jacobian_half_bandwidth<S>();
+    return w.cvode(static_cast<int>(y.size()), S::event_count, o).integrate(sys, y, t0, t1, observer);
   }
 };
 
@@ -163,14 +165,14 @@ struct Dopri5Regularized : CallDopri5 {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::dopri5_regularized, .name = "dopri5-regularized",
                                            .step_control = StepControl::adaptive,
                                            .variables = Variables::regularized,
-                                           .fallback_with_tension_clamp = IntegratorKind::dopri5};
+                                           .physical_counterpart = IntegratorKind::dopri5};
 };
 
 struct CvodeRegularized : CallCvode {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::cvode_regularized, .name = "cvode-regularized",
                                            .step_control = StepControl::adaptive,
                                            .variables = Variables::regularized, .reads_cvode_method = true,
-                                           .fallback_with_tension_clamp = IntegratorKind::cvode};
+                                           .physical_counterpart = IntegratorKind::cvode};
 };
 
 /// Gragg-Bulirsch-Stoer extrapolation of order 8 on the regularised contact: the fastest
@@ -181,7 +183,7 @@ struct Gbs8Regularized {
                                            .variables = Variables::regularized,
                                            .needs_root_polynomial = true,
                                            .fallback_for_other_laws = IntegratorKind::dopri5_regularized,
-                                           .fallback_with_tension_clamp = IntegratorKind::dopri5};
+                                           .physical_counterpart = IntegratorKind::dopri5};
   template <OdeSystem S, class Observer>
   static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
                                     IntegratorWorkspace&, Observer& observer) {
@@ -225,12 +227,12 @@ static_assert([] {
 }(), "IntegratorTable lists the rows in the order of IntegratorKind");
 static_assert([] {
   for (const IntegratorTraits& row : all_integrator_traits) {
-    const IntegratorTraits& clamp = all_integrator_traits[static_cast<std::size_t>(row.fallback_with_tension_clamp)];
+    const IntegratorTraits& clamp = all_integrator_traits[static_cast<std::size_t>(row.physical_counterpart)];
     const IntegratorTraits& other = all_integrator_traits[static_cast<std::size_t>(row.fallback_for_other_laws)];
     // The tension clamp needs the physical variables (their force-zero event); a
     // physical row runs itself.
     if (clamp.variables != Variables::physical) return false;
-    if (row.variables == Variables::physical && row.fallback_with_tension_clamp != row.kind) return false;
+    if (row.variables == Variables::physical && row.physical_counterpart != row.kind) return false;
     // A row that needs a root-polynomial law falls back to one that does not, and only then.
     if (row.needs_root_polynomial == (row.fallback_for_other_laws == row.kind) || other.needs_root_polynomial)
       return false;
@@ -255,10 +257,17 @@ std::string integrator_names(bool (*which)(const IntegratorTraits&) = nullptr);
 /// The integrator spelled `name`; throws InvalidParameter(option, name, "one of: ...").
 IntegratorKind parse_integrator(std::string_view name, const std::string& option = "--integrator");
 
-/// Which integrator runs an impact asked of `asked`: the row's fall-backs applied for the
-/// tension clamp and for a law that is not a RootPolynomialLaw. `why` (if given) receives
-/// the reason when it differs from `asked`, empty otherwise.
-IntegratorKind integrator_used(IntegratorKind asked, bool tension_clamp, bool root_polynomial_law,
-                               std::string* why = nullptr);
+/// What an impact asks of an integrator beyond its law's force.
+struct ImpactNeeds {
+  bool tension_clamp = false;        ///< --no-tension: contact ends where the force reaches zero
+  bool elastic_rod = false;          ///< --rod-model elastic: a many-body system in physical variables
+  bool root_polynomial_law = true;   ///< the law declares force_of_root (RootPolynomialLaw)
+};
+
+/// Which integrator runs an impact asked of `asked`: the row's physical counterpart for the
+/// tension clamp and the elastic rod, its fall-back for a law that is not a
+/// RootPolynomialLaw. `why` (if given) receives the reason when it differs from `asked`,
+/// empty otherwise.
+IntegratorKind integrator_used(IntegratorKind asked, const ImpactNeeds& needs, std::string* why = nullptr);
 
 }  // namespace hertzdash

@@ -78,6 +78,8 @@ PaperParameters load_paper_parameters(const std::filesystem::path& dir) {
 
   PaperParameters p;
   p.gravity_mps2 = assumed("gravity_mps2");
+  p.rig = RigAssumptions{assumed("load_cell_stiffness_N_per_m"), assumed("load_cell_damping_ratio"),
+                         assumed("rod_damping_ratio")};
   const std::size_t b1 = t1.find_row("body", "nylon-ball"), b3 = t3.find_row("body", "nylon-ball");
   p.ball = BallData{t1.number(b1, "diameter_m"), t1.number(b1, "length_m"), t1.number(b1, "mass_kg"),
                     assumed("nylon_E_Pa"),       t3.number(b3, "E_min_Pa"),  t3.number(b3, "E_max_Pa"),

@@ -30,9 +30,18 @@ struct BallData {
   double radius_m;                       ///< assumption: diameter / 2
 };
 
+/// The test rig's parameters the paper does not state (data/assumptions.csv), for the
+/// elastic rod on the load cell (--rod-model elastic).
+struct RigAssumptions {
+  double cell_stiffness_N_per_m;  ///< piezoelectric load cell stiffness
+  double cell_damping_ratio;      ///< the hemisphere's damping ratio on the cell
+  double rod_damping_ratio;       ///< material damping of the rod's first longitudinal mode
+};
+
 struct PaperParameters {
   std::vector<RodData> rods;
   BallData ball;
+  RigAssumptions rig;
   double gravity_mps2;
   const RodData& rod(const std::string& name) const;  ///< throws InvalidParameter("--rod", ...)
 };

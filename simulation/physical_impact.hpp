@@ -51,7 +51,7 @@ class ImpactObserver {
     s_->max_deformation_m = std::max(s_->max_deformation_m, y[0]);
     if (trace_) {
       const auto& m = sys_->model();
-      trace_->push_back({t, y[0], y[1], F, m.gravity_mps2 - F / m.mass_kg, y[0] + m.setup.height_m, y[1]});
+      trace_->push_back(rigid_trace_sample(t, y[0], y[1], F, m.gravity_mps2 - F / m.mass_kg, y[0] + m.setup.height_m, y[1]));
     }
   }
   const System* sys_;

@@ -66,7 +66,8 @@ class RegularizedImpactObserver {
     const double F = sys_->force(y), x = y[0] * y[0];
     s_->peak_force_N = std::max(s_->peak_force_N, F);
     s_->max_deformation_m = std::max(s_->max_deformation_m, x);
-    if (trace_) trace_->push_back({t_onset_s_ + y[2], x, y[1], F, gravity_mps2_ - F / mass_kg_, x + height_m_, y[1]});
+    if (trace_)
+      trace_->push_back(rigid_trace_sample(t_onset_s_ + y[2], x, y[1], F, gravity_mps2_ - F / mass_kg_, x + height_m_, y[1]));
   }
   void on_event(int which, double, const State& y, EventAction) {
     if (which != event_index(RegularizedContactEvent::separation)) return;

@@ -4,7 +4,11 @@
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace hertzdash {
 
@@ -40,6 +44,25 @@ std::vector<RunOption> make_run_options() {
        "rebound-energy, self-consistent, contact-time (both iterated to a fixed point), as-printed (the eq. 9 erratum)",
        G::setup},
       {"damping", &R::damping, "Damping law (see `hertzdash models`): " + registered_law_names(), G::setup},
+      {"rod-model", &R::rod_model,
+       "rigid (the paper's model: a rigid rod on a fixed hemisphere) or elastic (the rod as an elastic bar, the "
+       "hemisphere on its load cell; docs/elastic-rod.md)",
+       G::setup},
+      {"rod-elements", &R::rod_elements,
+       fmt::format("Finite elements of the elastic rod, an integer in [1, {}] (default: {})",
+                   ElasticRodSetup::max_elements, ElasticRodSetup::default_elements),
+       G::setup},
+      {"rod-damping-ratio", &R::rod_damping_ratio,
+       "Damping ratio of the elastic rod's first longitudinal mode, [0, 1) (default: data/assumptions.csv)", G::setup},
+      {"cell-stiffness", &R::cell_stiffness_N_per_m,
+       "Load cell stiffness [N/m]; inf fixes the hemisphere on a rigid base (default: data/assumptions.csv)",
+       G::setup},
+      {"cell-damping-ratio", &R::cell_damping_ratio,
+       "Damping ratio of the hemisphere on the load cell, [0, 1) (default: data/assumptions.csv)", G::setup},
+      {"hemisphere-mass", &R::hemisphere_mass_kg, "Hemisphere mass [kg] on the load cell (default: Table 1)",
+       G::setup},
+      {"accelerometer", &R::accelerometer,
+       "End face carrying the accelerometer: top (the free end, the default) or bottom (the struck face)", G::setup},
       {"integrator", &R::integrator, "One of: " + integrator_names(), G::solver},
       {"dt", &R::dt_s, "Fixed step [s] (" + fixed + ")", G::solver},
       {"no-event-location", &R::no_event_location,
@@ -49,6 +72,47 @@ std::vector<RunOption> make_run_options() {
       {"cvode-method", &R::cvode_method, "CVODE method: adams or bdf (" + cvode + ")", G::solver},
       {"max-step", &R::max_step_s, "Largest step [s]; 0 = no limit (" + timed + ")", G::solver},
   };
+}
+
+}  // namespace
+
+namespace {
+
+/// The elastic rod and load cell of --rod-model elastic, or nothing for the rigid model (whose
+/// options for the elastic one are then errors: they would be silently ignored).
+std::optional<ElasticRodSetup> resolve_elastic_rod(const RunOptions& o, const PaperParameters& paper) {
+  if (o.rod_model == "rigid") {
+    const std::pair<const char*, bool> elastic_only[] = {
+        {"--rod-elements", o.rod_elements.has_value()},           {"--rod-damping-ratio", o.rod_damping_ratio.has_value()},
+        {"--cell-stiffness", o.cell_stiffness_N_per_m.has_value()}, {"--cell-damping-ratio", o.cell_damping_ratio.has_value()},
+        {"--hemisphere-mass", o.hemisphere_mass_kg.has_value()},   {"--accelerometer", o.accelerometer.has_value()}};
+    for (const auto& [name, given] : elastic_only)
+      if (given)
+        throw InvalidParameter("--rod-model", o.rod_model,
+                               fmt::format("elastic when {} is given (it describes the elastic rod and load cell)", name));
+    return std::nullopt;
+  }
+  if (o.rod_model != "elastic") throw InvalidParameter("--rod-model", o.rod_model, "one of: rigid, elastic");
+  const RodData& rod = paper.rod(o.rod);
+  ElasticRodSetup e{.length_m = rod.length_m,
+                    .diameter_m = rod.diameter_m,
+                    .elements = ElasticRodSetup::default_elements,
+                    .rod_damping_ratio = o.rod_damping_ratio.value_or(paper.rig.rod_damping_ratio),
+                    .hemisphere_mass_kg = o.hemisphere_mass_kg.value_or(paper.ball.mass_kg),
+                    .cell_stiffness_N_per_m = o.cell_stiffness_N_per_m.value_or(paper.rig.cell_stiffness_N_per_m),
+                    .cell_damping_ratio = o.cell_damping_ratio.value_or(paper.rig.cell_damping_ratio)};
+  if (o.rod_elements) {
+    const double n = *o.rod_elements;
+    if (!(n >= 1 && n <= ElasticRodSetup::max_elements && n == std::floor(n)))
+      throw InvalidParameter("--rod-elements", format_value(n),
+                             fmt::format("an integer in [1, {}]", ElasticRodSetup::max_elements));
+    e.elements = static_cast<int>(n);
+  }
+  const std::string face = o.accelerometer.value_or("top");
+  if (face == "top") e.accelerometer = Accelerometer::top;
+  else if (face == "bottom") e.accelerometer = Accelerometer::bottom;
+  else throw InvalidParameter("--accelerometer", face, "one of: top, bottom");
+  return e;
 }
 
 }  // namespace
@@ -86,6 +150,7 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   else if (o.zeta == "exact") s.damping.zeta_form = ZetaForm::exact;
   else throw InvalidParameter("--zeta", o.zeta, "one of: paper, exact");
   s.damping.omega_n = parse_omega_n_variant(o.omega_n.value_or(to_string(OmegaNVariant::paper)));
+  s.elastic_rod = resolve_elastic_rod(o, paper);
   validate(s);
   with_damping_law(o.damping, [](auto) {});  // rejects an unknown law before any work
   if (o.omega_n && o.damping != HongoPaper::info.name)

@@ -33,6 +33,14 @@ struct RunOptions {
   std::string zeta = "paper";                    ///< paper (eq. 6) or exact
   std::optional<std::string> omega_n;            ///< the paper's law's omega_n variant (unset: paper)
   std::string damping{default_damping_law};      ///< a registered law
+  // The bodies: rigid (the paper's model) or the elastic rod on the load cell.
+  std::string rod_model = "rigid";               ///< rigid or elastic
+  std::optional<double> rod_elements;            ///< finite elements of the elastic rod (an integer)
+  std::optional<double> rod_damping_ratio;       ///< zeta of the rod's first longitudinal mode
+  std::optional<double> cell_stiffness_N_per_m;  ///< load cell stiffness [N/m] (inf: rigid base)
+  std::optional<double> cell_damping_ratio;      ///< the hemisphere's damping ratio on the cell
+  std::optional<double> hemisphere_mass_kg;      ///< [kg]
+  std::optional<std::string> accelerometer;      ///< top or bottom end face
   // The solver (simulation/solver_settings.hpp).
   std::string integrator = "cvode";
   double dt_s = 1e-6;

@@ -43,6 +43,14 @@ std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::
   return fmt::format("--integrator {} fell back to {}: {}", to_string(asked), to_string(used), why);
 }
 
+std::string stability_note(const SimulateRun& run) {
+  const auto& e = run.summary.elastic_rod;
+  if (!e || !(e->step_used_s > 0) || !(e->step_used_s < run.solver.dt_s)) return {};
+  return fmt::format("the elastic rod's fastest mode limits {} to steps of {:.6g} s; it ran with that step instead of "
+                     "--dt {:.6g} s",
+                     to_string(run.summary.integrator_used), e->step_used_s, run.solver.dt_s);
+}
+
 std::string resolution_warning(const SimulateRun& run) {
   const auto res = under_resolved_contact(run.summary, run.setup.mass_kg, run.solver);
   if (!res) return {};
@@ -79,6 +87,25 @@ nlohmann::ordered_json to_json(const SimulateRun& run) {
                                 {"converged", it->converged},
                                 {"relative_change", it->relative_change},
                                 {"contraction", it->contraction}};
+  }
+  if (const auto& e = s.elastic_rod) {
+    nlohmann::ordered_json r;
+    r["elements"] = e->elements;
+    r["first_frequency_hz"] = e->first_frequency_hz;
+    r["wave_round_trip_s"] = e->wave_round_trip_s;
+    if (e->step_used_s > 0) {
+      r["stable_step_s"] = e->stable_step_s;
+      r["step_used_s"] = e->step_used_s;
+    }
+    r["peak_load_cell_force_N"] = e->peak_load_cell_force_N;
+    r["energy_in_J"] = e->energy_in_J;
+    r["energy_rigid_body_out_J"] = e->energy_rigid_body_out_J;
+    r["energy_rod_vibration_J"] = e->energy_rod_vibration_J;
+    r["energy_cell_J"] = e->energy_cell_J;
+    r["energy_dissipated_contact_J"] = e->energy_dissipated_contact_J;
+    r["energy_dissipated_material_J"] = e->energy_dissipated_material_J;
+    r["energy_balance_error_J"] = e->energy_balance_error_J;
+    j["elastic_rod"] = r;
   }
   nlohmann::ordered_json in;
   for (const auto& [name, value] : run.inputs) in[name] = json_value(value);

@@ -37,6 +37,10 @@ SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper
 /// warning).
 std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::string& why);
 
+/// The note every front end shows when the elastic rod's stability limit shortened a fixed
+/// step below --dt (simulation/elastic_impact.hpp), else empty.
+std::string stability_note(const SimulateRun& run);
+
 /// The warning every front end shows when a fixed step resolved the contact with fewer steps
 /// than the convergence study asks for (simulation/step_resolution.hpp), else empty.
 std::string resolution_warning(const SimulateRun& run);

@@ -54,7 +54,8 @@ inline std::optional<ContactResolution> under_resolved_contact(const ImpactSumma
   const long required = min_steps_per_contact(solver.integrator, solver.locate_events);  // fixed steps never fall back
   if (required == 0 || !(s.impact_velocity_mps > 0) || !(s.K > 0)) return std::nullopt;
   const double t_hertz = undamped_hertz_impact(s.K, mass_kg, s.impact_velocity_mps).contact_time_s;
-  const double steps = t_hertz / solver.dt_s;
+  const double dt = s.elastic_rod && s.elastic_rod->step_used_s > 0 ? s.elastic_rod->step_used_s : solver.dt_s;
+  const double steps = t_hertz / dt;
   if (steps >= static_cast<double>(required)) return std::nullopt;
   return ContactResolution{steps, t_hertz, required};
 }

@@ -3,10 +3,9 @@
 // sampled measurements. The recorded samples sit at the integrator's accepted steps; between
 // two of them the deformation x and the rod displacement are interpolated by cubic Hermite
 // polynomials with their recorded derivatives (xdot, rod velocity), and xdot and the rod
-// velocity likewise with the recorded acceleration as derivative (x'' = rod acceleration:
-// the hemisphere does not move), so they are O(h^4) and O(h^3) accurate in the step h;
-// force and acceleration are interpolated linearly, O(h^2), and stay consistent with each
-// other (a = g - F/m).
+// velocity likewise with the recorded accelerations (x'', the rod's) as derivatives, so they
+// are O(h^4) and O(h^3) accurate in the step h; forces and accelerations are interpolated
+// linearly, O(h^2), and stay consistent with each other (a = g - F/m).
 #include "hertzdash/simulation/impact_summary.hpp"
 
 #include <cmath>
@@ -42,11 +41,17 @@ inline std::vector<TraceSample> uniform_trace(const std::vector<TraceSample>& tr
       return h00 * ya + h10 * h * dya + h01 * yb + h11 * h * dyb;
     };
     auto linear = [&](double ya, double yb) { return ya + s * (yb - ya); };
-    out.push_back({t, hermite(a.x_m, a.xdot_mps, b.x_m, b.xdot_mps),
-                   hermite(a.xdot_mps, a.accel_mps2, b.xdot_mps, b.accel_mps2), linear(a.force_N, b.force_N),
-                   linear(a.accel_mps2, b.accel_mps2),
-                   hermite(a.rod_displacement_m, a.rod_velocity_mps, b.rod_displacement_m, b.rod_velocity_mps),
-                   hermite(a.rod_velocity_mps, a.accel_mps2, b.rod_velocity_mps, b.accel_mps2)});
+    TraceSample& r = out.emplace_back();
+    r.t_s = t;
+    r.x_m = hermite(a.x_m, a.xdot_mps, b.x_m, b.xdot_mps);
+    r.xdot_mps = hermite(a.xdot_mps, a.xddot_mps2, b.xdot_mps, b.xddot_mps2);
+    r.force_N = linear(a.force_N, b.force_N);
+    r.accel_mps2 = linear(a.accel_mps2, b.accel_mps2);
+    r.rod_displacement_m = hermite(a.rod_displacement_m, a.rod_velocity_mps, b.rod_displacement_m, b.rod_velocity_mps);
+    r.rod_velocity_mps = hermite(a.rod_velocity_mps, a.accel_mps2, b.rod_velocity_mps, b.accel_mps2);
+    r.load_cell_force_N = linear(a.load_cell_force_N, b.load_cell_force_N);
+    r.accelerometer_mps2 = linear(a.accelerometer_mps2, b.accelerometer_mps2);
+    r.xddot_mps2 = linear(a.xddot_mps2, b.xddot_mps2);
   }
   return out;
 }

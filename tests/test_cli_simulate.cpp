@@ -97,7 +97,13 @@ TEST_CASE("CLI simulate --trace: contact phase under a provenance header", "[cli
   const auto t = hertzdash::CsvTable::read(path);
   std::filesystem::remove(path);
   CHECK(t.columns() == std::vector<std::string>{"t_s", "x_m", "xdot_mps", "force_N", "accel_mps2",
-                                                "rod_displacement_m", "rod_velocity_mps"});
+                                                "rod_displacement_m", "rod_velocity_mps", "load_cell_force_N",
+                                                "accelerometer_mps2"});
+  // The rigid model's instruments: the cell reads the contact force, the accelerometer the rod.
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    CHECK(t.number(i, "load_cell_force_N") == t.number(i, "force_N"));
+    CHECK(t.number(i, "accelerometer_mps2") == t.number(i, "accel_mps2"));
+  }
   bool has_revision = false, has_mass = false;
   for (const auto& c : t.comments()) {
     has_revision |= c.rfind("git_revision: ", 0) == 0;
