@@ -52,6 +52,20 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
       {"--rod titanium", "--rod", "steel"},
       {"--zeta approx", "--zeta", "paper, exact"},
       {"--cvode-method rk", "--cvode-method", "adams, bdf"},
+      {"--rod-model flexible", "--rod-model", "rigid, elastic"},
+      {"--rod-elements 10", "--rod-model", "elastic when --rod-elements is given"},
+      {"--cell-stiffness 1e9", "--rod-model", "elastic when --cell-stiffness is given"},
+      {"--accelerometer top", "--rod-model", "elastic when --accelerometer is given"},
+      {"--rod-model elastic --rod-elements 0", "--rod-elements", "an integer in [1, 400]"},
+      {"--rod-model elastic --rod-elements 2.5", "--rod-elements", "an integer in [1, 400]"},
+      {"--rod-model elastic --rod-elements 401", "--rod-elements", "an integer in [1, 400]"},
+      {"--rod-model elastic --rod-damping-ratio 1", "--rod-damping-ratio", "[0, 1)"},
+      {"--rod-model elastic --rod-damping-ratio -0.1", "--rod-damping-ratio", "[0, 1)"},
+      {"--rod-model elastic --cell-stiffness 0", "--cell-stiffness", "> 0 or inf"},
+      {"--rod-model elastic --cell-damping-ratio nan", "--cell-damping-ratio", "[0, 1)"},
+      {"--rod-model elastic --hemisphere-mass -1", "--hemisphere-mass", "> 0"},
+      {"--rod-model elastic --accelerometer middle", "--accelerometer", "top, bottom"},
+      {"--rod-model elastic --rod-E inf", "--rod-E", "a finite modulus"},
   };
   const auto trace = std::filesystem::temp_directory_path() / ("hertzdash_bad_" + std::to_string(::getpid()) + ".csv");
   for (const BadInput& c : cases) {

@@ -134,3 +134,43 @@ TEST_CASE("CLI --version names the version and the git revision it was built fro
   CHECK(r.exit_code == 0);
   CHECK(r.out == std::string("hertzdash ") + hertzdash::version() + " (git " + hertzdash::git_revision() + ")\n");
 }
+
+TEST_CASE("CLI simulate --rod-model elastic: the instruments, the energy account, the stability note", "[cli][elastic]") {
+  const auto path = std::filesystem::temp_directory_path() / ("hertzdash_elastic_" + std::to_string(::getpid()) + ".csv");
+  const auto r = run_cli("simulate --rod-model elastic --json --trace " + path.string());
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto t = hertzdash::CsvTable::read(path);
+  std::filesystem::remove(path);
+  const auto& e = j["elastic_rod"];
+  // The account closes: in = rigid-body out + vibration + cell + both dissipations + error,
+  // with the error at the integrator's level (rtol 1e-8 of the energy in, with margin).
+  const double in = e["energy_in_J"].get<double>();
+  CHECK(std::abs(e["energy_balance_error_J"].get<double>()) < 1e-7 * in);
+  CHECK(e["energy_rod_vibration_J"].get<double>() > 0);
+  CHECK(e["energy_cell_J"].get<double>() > 0);
+  CHECK(j["inputs"]["rod_model"] == "elastic");
+  CHECK(j["inputs"]["accelerometer"] == "top");
+  // On the load cell, the cell's force is not the contact force (the hemisphere's inertia and
+  // the cell's dashpot lie between), and the top face's accelerometer is not the centre of mass.
+  double cell_gap = 0, accel_gap = 0;
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    cell_gap = std::max(cell_gap, std::abs(t.number(i, "load_cell_force_N") - t.number(i, "force_N")));
+    accel_gap = std::max(accel_gap, std::abs(t.number(i, "accelerometer_mps2") - t.number(i, "accel_mps2")));
+  }
+  CHECK(cell_gap > 1e-3 * j["peak_force_N"].get<double>());
+  CHECK(accel_gap > 1.0);
+
+  // rk4 at --dt 1e-5 would be unstable on the rod's fastest mode: the run takes the limit and says so.
+  const auto rk4 = run_cli("simulate --rod-model elastic --integrator rk4 --dt 1e-5 --json");
+  REQUIRE(rk4.exit_code == 0);
+  const auto k = nlohmann::json::parse(rk4.out)["elastic_rod"];
+  CHECK(k["step_used_s"].get<double>() == k["stable_step_s"].get<double>());
+  CHECK(k["step_used_s"].get<double>() < 1e-5);
+  CHECK(rk4.err.find("limits rk4 to steps of") != std::string::npos);
+  // A regularised path falls back to its physical counterpart, with the reason.
+  const auto gbs = run_cli("simulate --rod-model elastic --integrator gbs8-regularized --json");
+  REQUIRE(gbs.exit_code == 0);
+  CHECK(nlohmann::json::parse(gbs.out)["integrator_used"] == "dopri5");
+  CHECK(gbs.err.find("--rod-model elastic") != std::string::npos);
+}
