@@ -128,6 +128,9 @@ def test_simulate_many_broadcasts_scalars_and_length_one_arrays():
     (dict(damping="no-such-law"), "--damping", "hongo"),
     (dict(integrator="rk5"), "--integrator", "rk4"),
     (dict(rtol=-1.0), "--rtol", "> 0"),
+    (dict(rod_elements=10), "--rod-model", "elastic when --rod-elements is given"),
+    (dict(rod_model="elastic", rod_elements=2.5), "--rod-elements", "an integer in [1, 400]"),
+    (dict(rod_model="elastic", cell_damping_ratio=1.0), "--cell-damping-ratio", "[0, 1)"),
 ])
 def test_bad_input_raises_the_programs_message(options, option, message):
     with pytest.raises(ValueError) as error:
@@ -248,3 +251,21 @@ def test_readme_python_examples_print_what_the_readme_shows():
         assert r.stdout.splitlines() == expected, code
         examples += 1
     assert examples >= 1
+
+
+def test_the_elastic_rod_is_the_programs():
+    # --rod-model elastic through the same option table: the same summary, energy account and
+    # instruments' channels, bit for bit.
+    options = dict(rod="duralumin-c", height=0.05, rod_model="elastic", rod_elements=12, cell_stiffness=2e9,
+                   accelerometer="bottom")
+    args = ["--rod", "duralumin-c", "--height", "0.05", "--rod-model", "elastic", "--rod-elements", "12",
+            "--cell-stiffness", "2e9", "--accelerometer", "bottom"]
+    r = hertzdash.simulate(**options)
+    expected = cli_json("simulate", *args)
+    expected.pop("git_revision")
+    r.pop("git_revision")
+    assert r == expected
+    assert abs(r["elastic_rod"]["energy_balance_error_J"]) < 1e-7 * r["elastic_rod"]["energy_in_J"]
+    trace = hertzdash.trace(**options)
+    assert {"load_cell_force_N", "accelerometer_mps2"} <= set(trace)
+    assert np.abs(trace["load_cell_force_N"] - trace["force_N"]).max() > 0
