@@ -40,6 +40,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace hertzdash {
 
@@ -89,7 +90,10 @@ class ElasticDropTest {
         law_(ImpactConditions{model.K, model.setup.mass_kg, model.v0_mps, model.setup.restitution},
              model.setup.damping),
         N_(model.bar.elements()),
-        x_scale_m_(hertz_impact_scale_m(model.K, model.setup.mass_kg, model.v0_mps)) {}
+        x_scale_m_(hertz_impact_scale_m(model.K, model.setup.mass_kg, model.v0_mps)) {
+    if (N_ < 1 || N_ > ElasticRodSetup::max_elements)  // the state's inline capacity
+      throw std::invalid_argument("ElasticDropTest: elements outside [1, ElasticRodSetup::max_elements]");
+  }
 
   const ElasticDropTestModel& model() const { return model_; }
   const Law& law() const { return law_; }

@@ -28,8 +28,10 @@ struct LoadCell {
   /// sqrt(k_cell / m_h) [rad/s]: the hemisphere's frequency on the cell (+inf on a rigid base).
   double natural_frequency_rad_per_s() const { return std::sqrt(stiffness_N_per_m / hemisphere_mass_kg); }
   /// Force transmitted to the base beyond the preload [N], at hemisphere state (w, w').
-  /// (Not defined on a rigid base, where the contact force is the cell's.)
-  double force_N(double w_m, double wdot_mps) const { return stiffness_N_per_m * w_m + damping_N_s_per_m * wdot_mps; }
+  /// On a rigid base the cell carries the contact force itself: callers use that (this returns 0).
+  double force_N(double w_m, double wdot_mps) const {
+    return rigid_base() ? 0.0 : stiffness_N_per_m * w_m + damping_N_s_per_m * wdot_mps;
+  }
   /// Spring energy plus the hemisphere's kinetic energy [J].
   double energy_J(double w_m, double wdot_mps) const {
     if (rigid_base()) return 0.0;

@@ -10,8 +10,12 @@
 // The run ends at separation, or 20 undamped Hertz contact times after onset.
 #include "hertzdash/model/elastic_drop_test.hpp"
 #include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/impact_summary.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,8 +30,9 @@ namespace hertzdash {
 ///      w_max^2 <= max(4 (k_e + k_t) / m_e, (k_cell + 2 k_t) / m_h),
 ///    and |lambda| <= w_max (zeta + sqrt(1 + zeta^2)) with zeta the larger of the rod's
 ///    damping ratio at w_max (beta w_max / 2) and the cell's;
-///  - RK4 is stable for h |lambda| <= 2.78 (its stability region's reach along the
-///    imaginary and negative real axes);
+///  - RK4's stability region reaches |h lambda| >= 2.6 in every direction of the left
+///    half-plane (2.83 on the imaginary axis, 2.79 on the negative real one, 2.62 at its
+///    narrowest, near 122 degrees), so h = 2.6 / |lambda| is stable;
 ///  - explicit Euler is unstable for any undamped oscillation (|1 + i w h| > 1): the step
 ///    keeps the fastest mode's growth exp(T w^2 h / 2) over one contact time T below 1 %.
 /// Returns +inf for other methods.
@@ -43,10 +48,15 @@ inline double elastic_stable_step_s(const ElasticDropTestModel& m, IntegratorKin
                      m.cell.damping_N_s_per_m / (2.0 * std::sqrt(m.cell.stiffness_N_per_m * m.cell.hemisphere_mass_kg))});
   }
   const double lambda = std::sqrt(w2) * (zeta + std::sqrt(1.0 + zeta * zeta));
-  if (kind == IntegratorKind::rk4) return 2.78 / lambda;
+  if (kind == IntegratorKind::rk4) return 2.6 / lambda;
   if (kind == IntegratorKind::euler) return 2.0 * std::log(1.01) / (hertz.contact_time_s * lambda * lambda);
   return INFINITY;
 }
+
+/// The most steps a fixed-step integrator may spend on one elastic contact: explicit Euler's
+/// stable step shrinks like 1/N^2 (about 1.5e-11 s at 20 elements on the default cell), so
+/// beyond this the run is refused instead of taking minutes and, with --trace, gigabytes.
+inline constexpr double elastic_fixed_step_budget = 5e7;
 
 namespace detail {
 
@@ -111,6 +121,14 @@ void run_elastic_impact(const DropTestSetup& setup, IntegratorKind kind, bool fi
   if (fixed_step) {
     r.stable_step_s = elastic_stable_step_s(model, kind);
     used.dt_s = r.step_used_s = std::min(settings.dt_s, r.stable_step_s);
+    const double contact_s = undamped_hertz_impact(model.K, setup.mass_kg, model.v0_mps).contact_time_s;
+    if (contact_s / r.step_used_s > elastic_fixed_step_budget)
+      throw InvalidParameter("--integrator", to_string(kind),
+                             fmt::format("an integrator that resolves this elastic rod's contact in at most {:g} steps: "
+                                         "at its stability limit {:.3g} s, {} would need {:.3g} (use rk4, dopri5 or "
+                                         "cvode, or fewer --rod-elements)",
+                                         elastic_fixed_step_budget, r.stable_step_s, to_string(kind),
+                                         contact_s / r.step_used_s));
   }
   s.K = model.K;
   s.impact_velocity_mps = model.v0_mps;

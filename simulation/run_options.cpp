@@ -49,7 +49,8 @@ std::vector<RunOption> make_run_options() {
        "hemisphere on its load cell; docs/elastic-rod.md)",
        G::setup},
       {"rod-elements", &R::rod_elements,
-       fmt::format("Finite elements of the elastic rod, an integer in [1, {}] (default: {})",
+       fmt::format("Finite elements of the elastic rod, an integer in [1, {}] (default: {}, within 2e-6 of converged "
+                   "e_effective)",
                    ElasticRodSetup::max_elements, ElasticRodSetup::default_elements),
        G::setup},
       {"rod-damping-ratio", &R::rod_damping_ratio,

@@ -66,6 +66,7 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
       {"--rod-model elastic --hemisphere-mass -1", "--hemisphere-mass", "> 0"},
       {"--rod-model elastic --accelerometer middle", "--accelerometer", "top, bottom"},
       {"--rod-model elastic --rod-E inf", "--rod-E", "a finite modulus"},
+      {"--rod-model elastic --integrator euler", "--integrator", "resolves this elastic rod's contact in at most"},
   };
   const auto trace = std::filesystem::temp_directory_path() / ("hertzdash_bad_" + std::to_string(::getpid()) + ".csv");
   for (const BadInput& c : cases) {

@@ -268,4 +268,4 @@ def test_the_elastic_rod_is_the_programs():
     assert abs(r["elastic_rod"]["energy_balance_error_J"]) < 1e-7 * r["elastic_rod"]["energy_in_J"]
     trace = hertzdash.trace(**options)
     assert {"load_cell_force_N", "accelerometer_mps2"} <= set(trace)
-    assert np.abs(trace["load_cell_force_N"] - trace["force_N"]).max() > 0
+    assert np.abs(trace["load_cell_force_N"] - trace["force_N"]).max() > 1e-3 * trace["force_N"].max()
