@@ -67,14 +67,24 @@ class ElasticBar {
   /// through the accessors (so the state's interleaved layout needs no copy). O(N).
   template <class U, class V, class F>
   void internal_force(U&& u, V&& v, F&& f) const {
-    const double k = element_stiffness_N_per_m_;
     for (int j = 0; j <= elements_; ++j) f(j) = 0.0;
     for (int e = 0; e < elements_; ++e) {
-      const double stretch = u(e + 1) - u(e), rate = v(e + 1) - v(e);
-      const double n = k * (stretch + beta_s_ * rate);  // tension in element e
+      const double n = tension_N(u, v, e);
       f(e) += n;
       f(e + 1) -= n;
     }
+  }
+
+  /// Tension in element e [N]: k_e (stretch + beta stretch rate).
+  template <class U, class V>
+  double tension_N(U&& u, V&& v, int e) const {
+    return element_stiffness_N_per_m_ * (u(e + 1) - u(e) + beta_s_ * (v(e + 1) - v(e)));
+  }
+
+  /// Internal force on node j alone [N]: the tensions of its one or two elements. O(1).
+  template <class U, class V>
+  double node_internal_force_N(U&& u, V&& v, int j) const {
+    return (j < elements_ ? tension_N(u, v, j) : 0.0) - (j > 0 ? tension_N(u, v, j - 1) : 0.0);
   }
 
   /// Strain energy (1/2) u^T K u [J].

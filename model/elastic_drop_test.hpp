@@ -118,7 +118,13 @@ class ElasticDropTest {
   }
   /// Acceleration of node j [m/s^2], downward positive.
   double node_acceleration_mps2(const State& y, int j) const {
-    return model_.setup.gravity_mps2 + node_force_N(y, j) / model_.bar.node_mass_kg(j);
+    double f = model_.bar.node_internal_force_N([&](int i) { return y[u(i)]; }, [&](int i) { return y[v(i)]; }, j);
+    if (j == N_) f -= contact_force_N(y);
+    return model_.setup.gravity_mps2 + f / model_.bar.node_mass_kg(j);
+  }
+  /// x'' = u_N'' - w'' [m/s^2].
+  double deformation_acceleration_mps2(const State& y) const {
+    return node_acceleration_mps2(y, N_) - hemisphere_acceleration_mps2(y, contact_force_N(y));
   }
   /// The accelerometer's reading: the acceleration of the end face it is on [m/s^2].
   double accelerometer_mps2(const State& y) const {
@@ -154,12 +160,8 @@ class ElasticDropTest {
       dy[v(j)] = model_.setup.gravity_mps2 + dy[v(j)] / b.node_mass_kg(j);
     }
     const LoadCell& c = model_.cell;
-    if (c.rigid_base()) {
-      dy[w()] = dy[wdot()] = 0.0;
-    } else {
-      dy[w()] = y[wdot()];
-      dy[wdot()] = (F - c.force_N(y[w()], y[wdot()])) / c.hemisphere_mass_kg;
-    }
+    dy[w()] = c.rigid_base() ? 0.0 : y[wdot()];
+    dy[wdot()] = hemisphere_acceleration_mps2(y, F);
     dy[dissipated_contact()] = F * xdot;
     dy[dissipated_material()] = b.dissipation_rate_W([&](int j) { return y[v(j)]; }) +
                                 (c.rigid_base() ? 0.0 : c.damping_N_s_per_m * y[wdot()] * y[wdot()]);
@@ -169,10 +171,7 @@ class ElasticDropTest {
     const double x = std::max(deformation_m(y), 0.0), xdot = deformation_rate_mps(y);
     const double F_law = law_.force(x, xdot);
     const double F = model_.setup.no_tension ? std::max(F_law, 0.0) : F_law;
-    const double hemisphere_accel =
-        model_.cell.rigid_base() ? 0.0
-                                 : (F - model_.cell.force_N(y[w()], y[wdot()])) / model_.cell.hemisphere_mass_kg;
-    const double xddot = node_acceleration_mps2(y, N_) - hemisphere_accel;
+    const double xddot = node_acceleration_mps2(y, N_) - hemisphere_acceleration_mps2(y, F);
     const double dFdt = contact_force_rate([this](double xi, double vi) { return force_at(xi, vi); }, x, xdot, xddot,
                                            x_scale_m_, model_.v0_mps);
     g = {deformation_m(y), xdot, F > 0 ? dFdt : -1.0, model_.setup.no_tension ? F_law : 1.0};
@@ -197,16 +196,10 @@ class ElasticDropTest {
     const double F = law_.force(x, xdot);
     return model_.setup.no_tension ? std::max(F, 0.0) : F;
   }
-  /// Internal plus contact force on node j [N] (gravity excluded).
-  double node_force_N(const State& y, int j) const {
-    const ElasticBar& b = model_.bar;
-    const double k = b.element_stiffness_N_per_m(), beta = b.damping_beta_s();
-    auto tension = [&](int e) { return k * (y[u(e + 1)] - y[u(e)] + beta * (y[v(e + 1)] - y[v(e)])); };
-    double f = 0;
-    if (j < N_) f += tension(j);
-    if (j > 0) f -= tension(j - 1);
-    if (j == N_) f -= contact_force_N(y);
-    return f;
+  /// w'' = (F - k_cell w - c_cell w') / m_h [m/s^2] under contact force F; 0 on a rigid base.
+  double hemisphere_acceleration_mps2(const State& y, double F) const {
+    const LoadCell& c = model_.cell;
+    return c.rigid_base() ? 0.0 : (F - c.force_N(y[w()], y[wdot()])) / c.hemisphere_mass_kg;
   }
   /// sum m_j u_j (which = 0) or sum m_j v_j (which = 1).
   double mass_weighted(const State& y, int which) const {
