@@ -22,4 +22,7 @@ Command add_models_command(CLI::App& app);
 /// `hertzdash restitution`: a law's effective restitution (rigid wall, no gravity), or calibration.
 Command add_restitution_command(CLI::App& app);
 
+/// `hertzdash bounce`: a drop and its bounces; restitution from impact intervals and velocities.
+Command add_bounce_command(CLI::App& app);
+
 }  // namespace hertzdash::cli

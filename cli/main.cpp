@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
       hertzdash::cli::add_simulate_command(app),
       hertzdash::cli::add_models_command(app),
       hertzdash::cli::add_restitution_command(app),
+      hertzdash::cli::add_bounce_command(app),
   };
 
   try {

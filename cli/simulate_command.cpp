@@ -31,6 +31,7 @@ void print_text(const SimulateRun& r) {
   line("e_effective", s.e_effective);
   line("peak_force_N", s.peak_force_N);
   line("max_deformation_m", s.max_deformation_m);
+  line("peak_contact_pressure_Pa", s.peak_contact_pressure_Pa);
   line("contact_time_s", s.contact_time_s);
   line("K_N_per_m_1_5", s.K);
   for (const NamedValue& c : s.law_coefficients) line(c.name, c.value);
@@ -83,6 +84,7 @@ Command add_simulate_command(CLI::App& app) {
             if (!opt->trace_path.empty()) write_trace(r, opt->trace_path);
             if (const std::string n = stability_note(r); !n.empty()) std::cerr << "hertzdash: note: " << n << "\n";
             if (const std::string w = resolution_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
+            if (const std::string w = yield_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";
             else print_text(r);
             return 0;

@@ -14,6 +14,7 @@ void validate(const DropTestSetup& s) {
   require_positive("--ball-radius", s.ball_radius_m, "m");
   require_positive("--ball-E", s.ball.E_Pa, "Pa");
   require_in_open("--ball-nu", s.ball.nu, -1.0, 0.5);
+  require_positive_or_infinite("--ball-yield-stress", s.ball_yield_stress_Pa, "Pa");
   require_positive_or_infinite("--rod-E", s.rod.E_Pa, "Pa");
   require_in_open("--rod-nu", s.rod.nu, -1.0, 0.5);
   require_in_open_closed("--restitution", s.restitution, 0.0, 1.0);
@@ -25,6 +26,8 @@ void validate(const DropTestSetup& s) {
     throw InvalidParameter("--height", format_value(s.height_m),
                            "> 0 with --gravity > 0 when no --impact-velocity is given (the rod must reach the ball)");
   }
+  if (const auto& A = s.damping.viscous_time_constant_s) require_non_negative("--viscous-time-constant", *A, "s");
+  require_non_negative("--reference-velocity", s.damping.reference_velocity_mps, "m/s (0: the approach speed)");
   if (s.elastic_rod) {
     if (std::isinf(s.rod.E_Pa))
       throw InvalidParameter("--rod-E", format_value(s.rod.E_Pa),

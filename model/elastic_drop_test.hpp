@@ -21,12 +21,16 @@
 // rows aside, which feed back into nothing), so CVODE's BDF uses a band solver.
 //
 // Events (g_i fires when decreasing through zero), in the order of the rigid model's:
-//   0 separation: g = x (stop)
-//   1 max_compression: g = x' (observation)
-//   2 peak_force: g = dF/dt where F > 0, else -1 (observation)
-//   3 force_zero: with the tension clamp g = F (stop); else inactive
-// The run ends at the first separation; a later re-contact of a still-vibrating rod is not
-// followed.
+//   0 contact: in contact g = x (separation: stop, or restart into flight when more impacts
+//     are followed); in flight g = -x (onset: restart into contact)
+//   1 max_compression: in contact g = x' (observation)
+//   2 peak_force: in contact g = dF/dt where F > 0, else -1 (observation)
+//   3 force_zero: in contact with the tension clamp g = F (ends contact like 0); else inactive
+// By default the run ends at the first separation. follow_impacts(n, v_min) follows the
+// flights and the next n - 1 impacts (the rod still ringing, the hemisphere still moving on
+// its cell); each impact calibrates the law afresh from its approach speed x' at onset, as the
+// rigid model does, and the sequence ends early when a rebound (centre-of-mass speed) is slower
+// than v_min.
 #include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
@@ -40,6 +44,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 namespace hertzdash {
@@ -63,7 +68,7 @@ struct ElasticDropTestModel {
 };
 
 /// The elastic drop test's events, in event order.
-enum class ElasticDropTestEvent : int { separation, max_compression, peak_force, force_zero };
+enum class ElasticDropTestEvent : int { contact, max_compression, peak_force, force_zero };
 
 /// The energies of the elastic drop test at one state [J] (see the header comment).
 struct ElasticEnergies {
@@ -85,18 +90,25 @@ class ElasticDropTest {
   using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, max_dimension, 1>;
   using Events = std::array<double, event_count>;
 
-  explicit ElasticDropTest(const ElasticDropTestModel& model)
-      : model_(model),
-        law_(ImpactConditions{model.K, model.setup.mass_kg, model.v0_mps, model.setup.restitution},
-             model.setup.damping),
-        N_(model.bar.elements()),
-        x_scale_m_(hertz_impact_scale_m(model.K, model.setup.mass_kg, model.v0_mps)) {
+  /// In contact at onset, calibrated for the approach speed v0.
+  explicit ElasticDropTest(const ElasticDropTestModel& model) : model_(model), N_(model.bar.elements()) {
     if (N_ < 1 || N_ > ElasticRodSetup::max_elements)  // the state's inline capacity
       throw std::invalid_argument("ElasticDropTest: elements outside [1, ElasticRodSetup::max_elements]");
+    begin_contact(model.v0_mps);
+  }
+
+  /// Follow `impacts` impacts in all (>= 1; 1 is the default) through the flights between
+  /// them, ending early at a separation whose centre-of-mass rebound speed is below
+  /// min_rebound_mps [m/s].
+  void follow_impacts(int impacts, double min_rebound_mps) {
+    impacts_ = impacts;
+    min_rebound_mps_ = min_rebound_mps;
   }
 
   const ElasticDropTestModel& model() const { return model_; }
-  const Law& law() const { return law_; }
+  bool in_contact() const { return law_.has_value(); }
+  /// The law of the current impact (in contact), or of the last one.
+  const Law& law() const { return *last_law_; }
   int size() const { return 2 * (N_ + 1) + 4; }
 
   /// At onset: every node at the approach speed, nothing strained, the hemisphere at rest.
@@ -108,9 +120,9 @@ class ElasticDropTest {
 
   double deformation_m(const State& y) const { return y[u(N_)] - y[w()]; }
   double deformation_rate_mps(const State& y) const { return y[v(N_)] - y[wdot()]; }
-  /// Contact force [N], compressive positive (zero where the faces are apart).
+  /// Contact force [N], compressive positive (zero where the faces are apart, and in flight).
   double contact_force_N(const State& y) const {
-    return force_at(std::max(deformation_m(y), 0.0), deformation_rate_mps(y));
+    return law_ ? force_at(std::max(deformation_m(y), 0.0), deformation_rate_mps(y)) : 0.0;
   }
   /// What the load cell measures beyond its preload [N]: the contact force on a rigid base.
   double load_cell_force_N(const State& y) const {
@@ -149,8 +161,8 @@ class ElasticDropTest {
 
   void rhs(double, const State& y, State& dy) const {
     dy.resize(y.size());
-    const double x = deformation_m(y), xdot = deformation_rate_mps(y);
-    const double F = force_at(std::max(x, 0.0), xdot);
+    const double xdot = deformation_rate_mps(y);
+    const double F = contact_force_N(y);
     const ElasticBar& b = model_.bar;
     b.internal_force([&](int j) { return y[u(j)]; }, [&](int j) { return y[v(j)]; },
                      [&](int j) -> double& { return dy[v(j)]; });
@@ -168,19 +180,31 @@ class ElasticDropTest {
   }
 
   void events(double, const State& y, Events& g) const {
+    if (!law_) {
+      g = {-deformation_m(y), 1.0, 1.0, 1.0};
+      return;
+    }
     const double x = std::max(deformation_m(y), 0.0), xdot = deformation_rate_mps(y);
-    const double F_law = law_.force(x, xdot);
+    const double F_law = law_->force(x, xdot);
     const double F = model_.setup.no_tension ? std::max(F_law, 0.0) : F_law;
     const double xddot = node_acceleration_mps2(y, N_) - hemisphere_acceleration_mps2(y, F);
     const double dFdt = contact_force_rate([this](double xi, double vi) { return force_at(xi, vi); }, x, xdot, xddot,
-                                           x_scale_m_, model_.v0_mps);
+                                           x_scale_m_, v_scale_mps_);
     g = {deformation_m(y), xdot, F > 0 ? dFdt : -1.0, model_.setup.no_tension ? F_law : 1.0};
   }
 
-  EventAction handle_event(int which, double, const State&) const {
-    if (which == event_index(ElasticDropTestEvent::separation) || which == event_index(ElasticDropTestEvent::force_zero))
-      return EventAction::stop;
-    return EventAction::continue_integration;
+  EventAction handle_event(int which, double, const State& y) {
+    const bool contact_event = which == event_index(ElasticDropTestEvent::contact);
+    if (!law_) {
+      if (!contact_event) return EventAction::continue_integration;
+      begin_contact(deformation_rate_mps(y));
+      return EventAction::restart;
+    }
+    if (!contact_event && which != event_index(ElasticDropTestEvent::force_zero)) return EventAction::continue_integration;
+    law_.reset();
+    ++impacts_done_;
+    const bool more = impacts_done_ < impacts_ && -centre_of_mass_velocity_mps(y) >= min_rebound_mps_;
+    return more ? EventAction::restart : EventAction::stop;
   }
 
  private:
@@ -191,9 +215,17 @@ class ElasticDropTest {
   int dissipated_contact() const { return w() + 2; }
   int dissipated_material() const { return w() + 3; }
 
-  /// The law's force at x >= 0, with the tension clamp applied.
+  /// Contact from now on, the law calibrated for the approach speed v [m/s] (x' at onset).
+  void begin_contact(double v) {
+    last_law_.emplace(ImpactConditions{model_.K, model_.setup.mass_kg, v, model_.setup.restitution}, model_.setup.damping);
+    law_ = last_law_;
+    x_scale_m_ = hertz_impact_scale_m(model_.K, model_.setup.mass_kg, v);
+    v_scale_mps_ = v;
+  }
+
+  /// The law's force at x >= 0 (in contact), with the tension clamp applied.
   double force_at(double x, double xdot) const {
-    const double F = law_.force(x, xdot);
+    const double F = law_->force(x, xdot);
     return model_.setup.no_tension ? std::max(F, 0.0) : F;
   }
   /// w'' = (F - k_cell w - c_cell w') / m_h [m/s^2] under contact force F; 0 on a rigid base.
@@ -209,9 +241,12 @@ class ElasticDropTest {
   }
 
   ElasticDropTestModel model_;
-  Law law_;
   int N_;
-  double x_scale_m_;  ///< the impact's deformation scale, for difference steps
+  std::optional<Law> law_;       ///< in contact: the law of this impact
+  std::optional<Law> last_law_;  ///< the law of the current or last impact
+  double x_scale_m_ = 0, v_scale_mps_ = 0;  ///< this impact's deformation and speed scales, for difference steps
+  int impacts_ = 1, impacts_done_ = 0;
+  double min_rebound_mps_ = 0;
 };
 
 }  // namespace hertzdash

@@ -3,6 +3,7 @@
 #include <gsl/gsl_sf_gamma.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace hertzdash {
 
@@ -14,6 +15,10 @@ double hertz_stiffness(double sphere_radius_m, const Material& sphere, const Mat
 
 double hertz_impact_scale_m(double K, double mass_kg, double v0_mps) {
   return std::pow(mass_kg * v0_mps * v0_mps / K, 0.4);
+}
+
+double hertz_peak_pressure_Pa(double K, double sphere_radius_m, double deformation_m) {
+  return 3.0 * K * std::sqrt(deformation_m) / (2.0 * std::numbers::pi * sphere_radius_m);
 }
 
 UndampedHertzImpact undamped_hertz_impact(double K, double mass_kg, double v0_mps) {

@@ -23,6 +23,17 @@ double hertz_stiffness(double sphere_radius_m, const Material& sphere, const Mat
 /// X* = (m v0^2 / K)^{2/5} [m], the only length that m, K and v0 form.
 double hertz_impact_scale_m(double K, double mass_kg, double v0_mps);
 
+/// Peak pressure of the Hertz contact at deformation x [m] on a sphere of radius R [m] [Pa]:
+///   p0 = 3 P / (2 pi a^2),  P = K x^{3/2},  a^2 = R x   =>   p0 = 3 K x^{1/2} / (2 pi R)
+/// (= (2 E*/pi) (x/R)^{1/2} with K = (4/3) E* R^{1/2}). P is the elastic (Hertz) force: the
+/// pressure field of the Hertz solution carries that force, not the dashpot's.
+double hertz_peak_pressure_Pa(double K, double sphere_radius_m, double deformation_m);
+
+/// Where yield begins beneath a Hertz contact on a body of yield stress Y [Pa]: p0 = 1.60 Y
+/// (von Mises, nu = 0.3; K. L. Johnson, Contact Mechanics, CUP 1985, sec. 6.2) [Pa].
+inline constexpr double hertz_yield_onset_factor = 1.60;
+inline double hertz_yield_onset_pressure_Pa(double yield_stress_Pa) { return hertz_yield_onset_factor * yield_stress_Pa; }
+
 /// Closed forms of the undamped Hertz impact (no gravity) at approach speed v0 [m/s]
 /// for a mass m [kg]; energy balance (1/2) m v0^2 = (2/5) K X^{5/2} gives the
 /// maximum deformation, and the half-period integral gives the contact time.

@@ -6,10 +6,12 @@
 // so e_effective = rebound speed / v0 is a property of the contact law, not of
 // the flight. Laws whose e_effective differs from their input e can be compared
 // at equal ACTUAL restitution by calibration: solve e_effective(e_input) = target
-// for e_input with GSL's Brent root finder (gsl_root_fsolver_brent) on (0, 1].
+// for e_input with GSL's Brent root finder (simulation/gsl_root.hpp) on (0, 1].
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 
+#include <functional>
+#include <string>
 #include <string_view>
 
 namespace hertzdash {
@@ -33,6 +35,14 @@ inline constexpr double calibration_e_min = 1e-3;
 /// A target this close to e_effective at an end of [calibration_e_min, 1] is met there:
 /// a single run's e_effective is accurate to ~1e-7 at the default CVODE tolerances.
 inline constexpr double calibration_end_tolerance = 1e-6;
+
+/// Solve observable(e_input) = target for e_input in [calibration_e_min, 1], `observable`
+/// increasing in e_input (an effective restitution, an interval ratio). A target within
+/// calibration_end_tolerance of the observable at an end is met there; converged when the
+/// bracket is narrower than 1e-10 in e_input. Throws InvalidParameter(option, ...) when the
+/// target is outside (0, 1] or outside the observable's range, whose name is `what`.
+RestitutionCalibration calibrate_input_restitution(const std::function<double(double)>& observable, double target,
+                                                   const std::string& option, std::string_view what);
 
 /// Solve e_effective(e_input) = target for e_input in [calibration_e_min, 1], contact phase
 /// of `s`. Converged when the bracket is narrower than 1e-10 in e_input. Throws

@@ -58,6 +58,24 @@ inline double elastic_stable_step_s(const ElasticDropTestModel& m, IntegratorKin
 /// beyond this the run is refused instead of taking minutes and, with --trace, gigabytes.
 inline constexpr double elastic_fixed_step_budget = 5e7;
 
+/// The settings a row integrates the elastic drop test with over `duration_s` [s]: a fixed-step
+/// row's step is min(--dt, elastic_stable_step_s), and a run that would need more than
+/// elastic_fixed_step_budget steps is refused (InvalidParameter naming --integrator).
+inline SolverSettings elastic_solver_settings(const ElasticDropTestModel& model, IntegratorKind kind, bool fixed_step,
+                                              const SolverSettings& settings, double duration_s) {
+  SolverSettings used = settings;
+  if (!fixed_step) return used;
+  const double stable_s = elastic_stable_step_s(model, kind);
+  used.dt_s = std::min(settings.dt_s, stable_s);
+  if (duration_s / used.dt_s > elastic_fixed_step_budget)
+    throw InvalidParameter("--integrator", to_string(kind),
+                           fmt::format("an integrator that resolves this elastic rod's run in at most {:g} steps: at "
+                                       "its stability limit {:.3g} s, {} would need {:.3g} (use rk4, dopri5 or cvode, "
+                                       "or fewer --rod-elements)",
+                                       elastic_fixed_step_budget, stable_s, to_string(kind), duration_s / used.dt_s));
+  return used;
+}
+
 namespace detail {
 
 template <class System>
@@ -115,17 +133,10 @@ void run_elastic_impact(const DropTestSetup& setup, IntegratorKind kind, bool fi
   r.first_frequency_hz = model.bar.frequency_rad_per_s(1) / (2.0 * std::numbers::pi);
   r.wave_round_trip_s = model.bar.wave_round_trip_s();
   const double contact_s = undamped_hertz_impact(model.K, setup.mass_kg, model.v0_mps).contact_time_s;
-  SolverSettings used = settings;
+  const SolverSettings used = elastic_solver_settings(model, kind, fixed_step, settings, contact_s);
   if (fixed_step) {
     r.stable_step_s = elastic_stable_step_s(model, kind);
-    used.dt_s = r.step_used_s = std::min(settings.dt_s, r.stable_step_s);
-    if (contact_s / r.step_used_s > elastic_fixed_step_budget)
-      throw InvalidParameter("--integrator", to_string(kind),
-                             fmt::format("an integrator that resolves this elastic rod's contact in at most {:g} steps: "
-                                         "at its stability limit {:.3g} s, {} would need {:.3g} (use rk4, dopri5 or "
-                                         "cvode, or fewer --rod-elements)",
-                                         elastic_fixed_step_budget, r.stable_step_s, to_string(kind),
-                                         contact_s / r.step_used_s));
+    r.step_used_s = used.dt_s;
   }
   s.K = model.K;
   s.impact_velocity_mps = model.v0_mps;

@@ -54,12 +54,16 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
                {"ball_radius_m", num(setup.ball_radius_m)},
                {"ball_E_Pa", num(setup.ball.E_Pa)},
                {"ball_nu", num(setup.ball.nu)},
+               {"ball_yield_stress_Pa", num(setup.ball_yield_stress_Pa)},
                {"rod_E_Pa", num(setup.rod.E_Pa)},
                {"rod_nu", num(setup.rod.nu)},
                {"restitution", num(setup.restitution)},
                {"zeta_form", to_string(setup.damping.zeta_form)},
                {"omega_n_variant", to_string(setup.damping.omega_n)},
                {"height_m", num(setup.height_m)}};
+  if (const auto& A = setup.damping.viscous_time_constant_s) p.emplace_back("viscous_time_constant_s", num(*A));
+  if (setup.damping.reference_velocity_mps > 0)
+    p.emplace_back("reference_velocity_mps", num(setup.damping.reference_velocity_mps));
   if (setup.impact_velocity_mps) p.emplace_back("impact_velocity_input_mps", num(*setup.impact_velocity_mps));
   p.emplace_back("gravity_mps2", num(setup.gravity_mps2));
   p.emplace_back("no_tension", setup.no_tension ? "true" : "false");

@@ -19,7 +19,11 @@
 #include "hertzdash/simulation/physical_impact.hpp"
 #include "hertzdash/simulation/regularized_impact.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
+#include "hertzdash/simulation/viscous_time_constant.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
 #include <string_view>
 #include <type_traits>
 #include <vector>
@@ -77,8 +81,48 @@ ImpactSummary simulate(const DropTestSetup& setup, const SolverSettings& setting
   return simulator.run<Law>(setup, trace);
 }
 
+/// `setup` with the viscous time constant of the law `Law` calibrated from its input e at the
+/// reference speed (simulation/viscous_time_constant.hpp). The last calibration of each thread
+/// is remembered, so a sweep over heights at one e calibrates once.
+template <MaterialTimeConstantLaw Law>
+DropTestSetup with_calibrated_time_constant(const DropTestSetup& setup) {
+  const DropTestSetup c = viscous_calibration_setup(setup);
+  const double K = hertz_stiffness(c), v = *c.impact_velocity_mps;
+  struct Remembered {
+    double K, mass_kg, v_mps, e;
+    bool no_tension;
+    double A_s;
+  };
+  thread_local std::optional<Remembered> last;
+  DropTestSetup out = setup;
+  if (last && last->K == K && last->mass_kg == c.mass_kg && last->v_mps == v && last->e == c.restitution &&
+      last->no_tension == c.no_tension) {
+    out.damping.viscous_time_constant_s = last->A_s;
+    return out;
+  }
+  const double X = hertz_impact_scale_m(K, c.mass_kg, v);
+  SolverSettings accurate;
+  accurate.integrator = IntegratorKind::gbs8_regularized;
+  accurate.rtol = 1e-12;
+  accurate.atol = 1e-12 * std::min({std::sqrt(X), v, X / v});
+  ImpactSimulator simulator(accurate);
+  DropTestSetup trial = c;
+  const double A = solve_viscous_time_constant_s(
+      [&](double A_s) {
+        trial.damping.viscous_time_constant_s = A_s;
+        const ImpactSummary r = simulator.run<Law>(trial);
+        return r.separated ? r.e_effective : 0.0;
+      },
+      c.restitution, X / v);
+  last = Remembered{K, c.mass_kg, v, c.restitution, c.no_tension, A};
+  out.damping.viscous_time_constant_s = A;
+  return out;
+}
+
 template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
+  if constexpr (MaterialTimeConstantLaw<Law>)
+    if (!setup.damping.viscous_time_constant_s) return run<Law>(with_calibrated_time_constant<Law>(setup), trace);
   ImpactSummary s;
   s.integrator_used = integrator_used(settings_.integrator, impact_needs<Law>(setup));
   with_integrator_row(s.integrator_used, [&]<class Row>(std::type_identity<Row>) {
@@ -97,6 +141,7 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<Trace
       run_physical_impact<Law>(setup, integrate, s, trace);
     }
   });
+  s.peak_contact_pressure_Pa = hertz_peak_pressure_Pa(s.K, setup.ball_radius_m, s.max_deformation_m);
   if (s.separated) {
     s.contact_time_s = s.t_separation_s - s.t_onset_s;
     s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;

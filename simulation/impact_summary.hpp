@@ -49,6 +49,7 @@ struct ImpactSummary {
   double e_effective = 0;              ///< rebound / approach speed
   double peak_force_N = 0;             ///< largest contact force
   double max_deformation_m = 0;        ///< largest x
+  double peak_contact_pressure_Pa = 0; ///< Hertz peak pressure at the largest x (hertz_peak_pressure_Pa)
   double contact_time_s = 0;           ///< separation minus onset time
   double t_onset_s = 0, t_separation_s = 0;
   bool separated = false;              ///< false if the rod came to rest on the ball

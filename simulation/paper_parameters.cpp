@@ -83,7 +83,8 @@ PaperParameters load_paper_parameters(const std::filesystem::path& dir) {
   const std::size_t b1 = t1.find_row("body", "nylon-ball"), b3 = t3.find_row("body", "nylon-ball");
   p.ball = BallData{t1.number(b1, "diameter_m"), t1.number(b1, "length_m"), t1.number(b1, "mass_kg"),
                     assumed("nylon_E_Pa"),       t3.number(b3, "E_min_Pa"),  t3.number(b3, "E_max_Pa"),
-                    assumed("nylon_nu"),         assumed("ball_radius_m")};
+                    assumed("nylon_nu"),         assumed("ball_radius_m"),   assumed("nylon_yield_stress_Pa"),
+                    assumed("nylon_yield_stress_min_Pa"), assumed("nylon_yield_stress_max_Pa")};
   for (std::size_t r = 0; r < t2.rows(); ++r) {
     const std::string& name = t2.text(r, "rod");
     const std::size_t r1 = t1.find_row("body", name), r3 = t3.find_row("body", name);
@@ -101,6 +102,7 @@ DropTestSetup paper_setup(const PaperParameters& p, const std::string& rod_name,
   s.mass_kg = rod.mass_kg;
   s.ball_radius_m = p.ball.radius_m;
   s.ball = Material{p.ball.E_Pa, p.ball.nu};
+  s.ball_yield_stress_Pa = p.ball.yield_stress_Pa;
   s.rod = Material{rod.E_Pa, rod.nu};
   s.restitution = rod.restitution;
   s.height_m = height_m;

@@ -28,6 +28,8 @@ struct BallData {
   double E_min_Pa, E_max_Pa;             ///< Table 3 catalogue range
   double nu;                             ///< assumption
   double radius_m;                       ///< assumption: diameter / 2
+  double yield_stress_Pa;                ///< assumption: nylon yield stress Y (the elasticity check)
+  double yield_stress_min_Pa, yield_stress_max_Pa;  ///< assumption: its plausible range
 };
 
 /// The test rig's parameters the paper does not state (data/assumptions.csv), for the

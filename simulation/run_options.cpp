@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 namespace hertzdash {
@@ -34,6 +35,10 @@ std::vector<RunOption> make_run_options() {
       {"ball-E", &R::ball_E_Pa, "Hemisphere Young's modulus [Pa] (default: 2.0e9, assumed)", G::setup},
       {"ball-nu", &R::ball_nu, "Hemisphere Poisson ratio (default: 0.40, assumed)", G::setup},
       {"ball-radius", &R::ball_radius_m, "Hemisphere radius R [m] (default: 0.0127)", G::setup},
+      {"ball-yield-stress", &R::ball_yield_stress_Pa,
+       "Hemisphere yield stress Y [Pa]; a Hertz peak pressure above 1.60 Y is flagged as plastic; inf: no check "
+       "(default: 7.0e7, assumed)",
+       G::setup},
       {"rod-E", &R::rod_E_Pa, "Rod Young's modulus [Pa]; inf for a rigid flat (default: Table 3)", G::setup},
       {"rod-nu", &R::rod_nu, "Rod Poisson ratio (default: 0.30 steel, 0.33 duralumin, assumed)", G::setup},
       {"gravity", &R::gravity_mps2, "Gravity g [m/s^2], 0 allowed (default: 9.80665)", G::setup},
@@ -44,6 +49,14 @@ std::vector<RunOption> make_run_options() {
        "rebound-energy, self-consistent, contact-time (both iterated to a fixed point), as-printed (the eq. 9 erratum)",
        G::setup},
       {"damping", &R::damping, "Damping law (see `hertzdash models`): " + registered_law_names(), G::setup},
+      {"viscous-time-constant", &R::viscous_time_constant_s,
+       "Material time constant A [s] >= 0 of the viscoelastic law (kuwabara-kono only): F = K (x^{3/2} + A x^{1/2} "
+       "xdot); replaces the calibration from e",
+       G::setup},
+      {"reference-velocity", &R::reference_velocity_mps,
+       "Approach speed [m/s] > 0 at which the viscoelastic law's restitution is the input e (kuwabara-kono only; "
+       "default: the approach speed of the run's first impact)",
+       G::setup},
       {"rod-model", &R::rod_model,
        "rigid (the paper's model: a rigid rod on a fixed hemisphere) or elastic (the rod as an elastic bar, the "
        "hemisphere on its load cell; docs/elastic-rod.md)",
@@ -143,6 +156,7 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   if (o.ball_E_Pa) s.ball.E_Pa = *o.ball_E_Pa;
   if (o.ball_nu) s.ball.nu = *o.ball_nu;
   if (o.ball_radius_m) s.ball_radius_m = *o.ball_radius_m;
+  if (o.ball_yield_stress_Pa) s.ball_yield_stress_Pa = *o.ball_yield_stress_Pa;
   if (o.rod_E_Pa) s.rod.E_Pa = *o.rod_E_Pa;
   if (o.rod_nu) s.rod.nu = *o.rod_nu;
   if (o.gravity_mps2) s.gravity_mps2 = *o.gravity_mps2;
@@ -151,9 +165,24 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   else if (o.zeta == "exact") s.damping.zeta_form = ZetaForm::exact;
   else throw InvalidParameter("--zeta", o.zeta, "one of: paper, exact");
   s.damping.omega_n = parse_omega_n_variant(o.omega_n.value_or(to_string(OmegaNVariant::paper)));
+  s.damping.viscous_time_constant_s = o.viscous_time_constant_s;
+  if (o.reference_velocity_mps) {
+    require_positive("--reference-velocity", *o.reference_velocity_mps, "m/s");
+    s.damping.reference_velocity_mps = *o.reference_velocity_mps;
+  }
   s.elastic_rod = resolve_elastic_rod(o, paper);
   validate(s);
-  with_damping_law(o.damping, [](auto) {});  // rejects an unknown law before any work
+  bool time_constant_law = false;  // rejects an unknown law before any work
+  with_damping_law(o.damping, [&]<class Law>(std::type_identity<Law>) { time_constant_law = MaterialTimeConstantLaw<Law>; });
+  for (const auto& [name, value] : {std::pair{"--viscous-time-constant", o.viscous_time_constant_s},
+                                    std::pair{"--reference-velocity", o.reference_velocity_mps}})
+    if (value && !time_constant_law)
+      throw InvalidParameter(name, format_value(*value),
+                             "given only with a viscoelastic law (kuwabara-kono), whose damping is a material time "
+                             "constant; --damping is " + o.damping);
+  if (o.viscous_time_constant_s && o.reference_velocity_mps)
+    throw InvalidParameter("--reference-velocity", format_value(*o.reference_velocity_mps),
+                           "omitted when --viscous-time-constant is given (the reference speed only calibrates A)");
   if (o.omega_n && o.damping != HongoPaper::info.name)
     throw InvalidParameter("--omega-n", *o.omega_n,
                            "given only with --damping " + std::string(HongoPaper::info.name) +

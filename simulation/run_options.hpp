@@ -27,12 +27,15 @@ struct RunOptions {
   std::optional<double> restitution;             ///< input e in (0, 1]
   std::optional<double> ball_E_Pa, ball_nu;      ///< hemisphere modulus [Pa], Poisson ratio
   std::optional<double> ball_radius_m;           ///< hemisphere radius [m]
+  std::optional<double> ball_yield_stress_Pa;    ///< hemisphere yield stress [Pa] (inf: no elasticity check)
   std::optional<double> rod_E_Pa, rod_nu;        ///< rod modulus [Pa] (inf: rigid), Poisson ratio
   std::optional<double> gravity_mps2;            ///< g [m/s^2]
   bool no_tension = false;                       ///< clamp the contact force at >= 0
   std::string zeta = "paper";                    ///< paper (eq. 6) or exact
   std::optional<std::string> omega_n;            ///< the paper's law's omega_n variant (unset: paper)
   std::string damping{default_damping_law};      ///< a registered law
+  std::optional<double> viscous_time_constant_s; ///< A [s] of a viscoelastic law (kuwabara-kono)
+  std::optional<double> reference_velocity_mps;  ///< speed [m/s] at which a viscoelastic law's e is the input e
   // The bodies: rigid (the paper's model) or the elastic rod on the load cell.
   std::string rod_model = "rigid";               ///< rigid or elastic
   std::optional<double> rod_elements;            ///< finite elements of the elastic rod (an integer)

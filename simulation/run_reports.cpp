@@ -63,6 +63,15 @@ std::string resolution_warning(const SimulateRun& run) {
       100 * step_resolution_target_error);
 }
 
+std::string yield_warning(const SimulateRun& run) {
+  const double p0 = run.summary.peak_contact_pressure_Pa, onset = hertz_yield_onset_pressure_Pa(run.setup.ball_yield_stress_Pa);
+  if (!(p0 > onset)) return {};
+  return fmt::format("the Hertz peak pressure {:.4g} MPa exceeds the onset of yield in the hemisphere, 1.60 Y = {:.4g} MPa "
+                     "(--ball-yield-stress {:.4g} Pa): the contact may deform plastically, which the elastic contact "
+                     "law does not model (docs/bounce.md)",
+                     p0 / 1e6, onset / 1e6, run.setup.ball_yield_stress_Pa);
+}
+
 nlohmann::ordered_json to_json(const SimulateRun& run) {
   const ImpactSummary& s = run.summary;
   nlohmann::ordered_json j;
@@ -70,6 +79,10 @@ nlohmann::ordered_json to_json(const SimulateRun& run) {
   j["e_effective"] = s.e_effective;
   j["peak_force_N"] = s.peak_force_N;
   j["max_deformation_m"] = s.max_deformation_m;
+  j["peak_contact_pressure_Pa"] = s.peak_contact_pressure_Pa;
+  const double yield_onset = hertz_yield_onset_pressure_Pa(run.setup.ball_yield_stress_Pa);
+  j["yield_onset_pressure_Pa"] = std::isfinite(yield_onset) ? nlohmann::ordered_json(yield_onset) : nlohmann::ordered_json(nullptr);
+  j["exceeds_yield_onset"] = s.peak_contact_pressure_Pa > yield_onset;
   j["contact_time_s"] = s.contact_time_s;
   j["impact_velocity_mps"] = s.impact_velocity_mps;
   j["rebound_velocity_mps"] = s.rebound_velocity_mps;
@@ -150,6 +163,65 @@ nlohmann::ordered_json to_json(const RestitutionRun& run) {
   j["e_effective"] = run.e_effective;
   if (run.iterations) j["iterations"] = *run.iterations;
   j["integrator_used"] = to_string(run.integrator_used);
+  j["git_revision"] = git_revision();
+  return j;
+}
+
+BounceRun run_bounce(const RunOptions& options, const PaperParameters& paper, const BounceOptions& bounce,
+                     std::optional<double> interval_target) {
+  BounceRun r;
+  r.setup = resolve_setup(options, paper);
+  r.law = options.damping;
+  r.solver = resolve_solver(options);
+  r.options = bounce;
+  validate(r.options);
+  r.interval_target = interval_target;
+  if (interval_target) {
+    r.calibration = calibrate_interval_restitution(r.setup, r.law, r.solver, *interval_target);
+    r.setup.restitution = r.calibration->e_input;
+  }
+  r.inputs = describe_run(r.setup, r.law, r.solver);
+  r.inputs.emplace_back("bounces", std::to_string(bounce.impacts));
+  r.inputs.emplace_back("min_rebound_velocity_mps", fmt::format("{}", bounce.min_rebound_velocity_mps));
+  integrator_used(r.solver, r.setup, r.law, &r.fallback_reason);
+  r.sequence = run_bounce_sequence(r.setup, r.law, r.solver, r.options);
+  return r;
+}
+
+nlohmann::ordered_json to_json(const BounceRun& run) {
+  const BounceSequence& b = run.sequence;
+  nlohmann::ordered_json j;
+  j["schema_version"] = json_schema_version;
+  j["damping"] = run.law;
+  if (run.calibration) {
+    j["interval_calibration"] = {{"e_target_from_intervals", *run.interval_target},
+                                 {"e_input", run.calibration->e_input},
+                                 {"e_from_intervals", run.calibration->e_effective},
+                                 {"iterations", run.calibration->iterations}};
+  }
+  if (b.viscous_time_constant_s) j["viscous_time_constant_s"] = *b.viscous_time_constant_s;
+  nlohmann::ordered_json impacts = nlohmann::ordered_json::array();
+  for (const BounceImpact& i : b.impacts)
+    impacts.push_back({{"onset_time_s", i.onset_time_s},
+                       {"separation_time_s", i.separation_time_s},
+                       {"contact_time_s", i.contact_time_s},
+                       {"approach_speed_mps", i.approach_speed_mps},
+                       {"rebound_speed_mps", i.rebound_speed_mps},
+                       {"peak_force_N", i.peak_force_N},
+                       {"max_deformation_m", i.max_deformation_m},
+                       {"separated", i.separated}});
+  j["impacts"] = impacts;
+  j["onset_times_s"] = b.onset_times_s;
+  j["e_from_intervals"] = b.e_from_intervals;
+  j["e_velocity_ratio"] = b.e_velocity_ratio;
+  j["flights"] = b.flights_integrated ? "integrated" : "closed form";
+  j["end_reason"] = b.end_reason;
+  j["steps"] = b.work.steps;
+  j["rhs_evaluations"] = b.work.rhs_evaluations;
+  j["integrator_used"] = to_string(b.integrator_used);
+  nlohmann::ordered_json in;
+  for (const auto& [name, value] : run.inputs) in[name] = json_value(value);
+  j["inputs"] = in;
   j["git_revision"] = git_revision();
   return j;
 }

@@ -1,9 +1,10 @@
 #pragma once
-// What `simulate` and `restitution` compute and report, for every front end: the command
+// What `simulate`, `restitution` and `bounce` compute and report, for every front end: the command
 // line (cli/) prints these reports, Python (python/) returns them as dicts, so the two
 // carry the same keys and the same numbers. The JSON schema is documented in
 // docs/json-output.md; json_schema_version changes whenever a key is renamed or removed.
 #include "hertzdash/io/provenance.hpp"
+#include "hertzdash/simulation/bounce_sequence.hpp"
 #include "hertzdash/simulation/impact_summary.hpp"
 #include "hertzdash/simulation/run_options.hpp"
 
@@ -45,6 +46,11 @@ std::string stability_note(const SimulateRun& run);
 /// than the convergence study asks for (simulation/step_resolution.hpp), else empty.
 std::string resolution_warning(const SimulateRun& run);
 
+/// The warning every front end shows when the Hertz peak pressure exceeds the onset of yield
+/// of the hemisphere (1.60 Y, model/hertz.hpp): the elastic contact model does not hold there.
+/// Empty otherwise.
+std::string yield_warning(const SimulateRun& run);
+
 /// `simulate --json`: the summary, "law_coefficients", "inputs", "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const SimulateRun& run);
 
@@ -67,6 +73,28 @@ RestitutionRun run_restitution(const RunOptions& options, const PaperParameters&
 
 /// `restitution --json`.
 nlohmann::ordered_json to_json(const RestitutionRun& run);
+
+/// A drop and its bounces (simulation/bounce_sequence.hpp), optionally with the input e
+/// calibrated so that the first interval ratio is a target.
+struct BounceRun {
+  DropTestSetup setup;                 ///< as asked for (restitution: the calibrated input e, if calibrated)
+  std::string law;
+  SolverSettings solver;
+  BounceOptions options;
+  Parameters inputs;
+  std::string fallback_reason;         ///< as in SimulateRun
+  std::optional<double> interval_target;
+  std::optional<RestitutionCalibration> calibration;
+  BounceSequence sequence;
+};
+
+/// Resolve, validate, calibrate (given a target) and run.
+BounceRun run_bounce(const RunOptions& options, const PaperParameters& paper, const BounceOptions& bounce,
+                     std::optional<double> interval_target = std::nullopt);
+
+/// `bounce --json`: per impact, "onset_times_s", "e_from_intervals", "e_velocity_ratio", the
+/// calibration if any, "inputs", "schema_version", "git_revision".
+nlohmann::ordered_json to_json(const BounceRun& run);
 
 /// `models --json`: one entry per registered law.
 nlohmann::ordered_json registered_laws_json();

@@ -62,6 +62,14 @@ inline SolverSettings accurate_solver(double K, double mass_kg, double v0_mps) {
   return s;
 }
 
+/// The damping settings the simulator builds Law with for the set-up `s`: a law with a material
+/// time constant (MaterialTimeConstantLaw) gets the A it would calibrate from s's e.
+template <class Law>
+DampingSettings settings_for(const DropTestSetup& s) {
+  if constexpr (MaterialTimeConstantLaw<Law>) return with_calibrated_time_constant<Law>(s).damping;
+  else return s.damping;
+}
+
 /// e_effective of Law for the contact phase (K, m, v0, e).
 template <class Law>
 double effective_restitution_of(double K, double mass_kg, double v0_mps, double e, bool no_tension = false) {

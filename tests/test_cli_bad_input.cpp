@@ -66,7 +66,16 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
       {"--rod-model elastic --hemisphere-mass -1", "--hemisphere-mass", "> 0"},
       {"--rod-model elastic --accelerometer middle", "--accelerometer", "top, bottom"},
       {"--rod-model elastic --rod-E inf", "--rod-E", "a finite modulus"},
-      {"--rod-model elastic --integrator euler", "--integrator", "resolves this elastic rod's contact in at most"},
+      {"--rod-model elastic --integrator euler", "--integrator", "resolves this elastic rod's run in at most"},
+      {"--viscous-time-constant 1e-4", "--viscous-time-constant", "only with a viscoelastic law (kuwabara-kono)"},
+      {"--reference-velocity 0.5", "--reference-velocity", "only with a viscoelastic law (kuwabara-kono)"},
+      {"--damping kuwabara-kono --viscous-time-constant -1e-4", "--viscous-time-constant", ">= 0"},
+      {"--damping kuwabara-kono --viscous-time-constant nan", "--viscous-time-constant", ">= 0"},
+      {"--damping kuwabara-kono --reference-velocity 0", "--reference-velocity", "> 0"},
+      {"--damping kuwabara-kono --reference-velocity 0.5 --viscous-time-constant 1e-4", "--reference-velocity",
+       "omitted when --viscous-time-constant is given"},
+      {"--ball-yield-stress 0", "--ball-yield-stress", "> 0 or inf"},
+      {"--ball-yield-stress nan", "--ball-yield-stress", "> 0 or inf"},
   };
   const auto trace = std::filesystem::temp_directory_path() / ("hertzdash_bad_" + std::to_string(::getpid()) + ".csv");
   for (const BadInput& c : cases) {
@@ -78,6 +87,27 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
     CHECK(r.err.find(c.range) != std::string::npos);
     CHECK(r.out.empty());
     CHECK_FALSE(std::filesystem::exists(trace));
+  }
+}
+
+TEST_CASE("CLI bounce: each invalid option exits 2, names it and its range", "[cli][bounce]") {
+  const BadInput cases[] = {
+      {"--bounces 0", "--bounces", "an integer in [1, 1000]"},
+      {"--bounces 1001", "--bounces", "an integer in [1, 1000]"},
+      {"--min-rebound-velocity -1", "--min-rebound-velocity", ">= 0"},
+      {"--min-rebound-velocity nan", "--min-rebound-velocity", ">= 0"},
+      {"--gravity 0 --impact-velocity 0.5", "--gravity", "> 0 for a bounce sequence"},
+      {"--target-interval-restitution 1.5", "--target-interval-restitution", "(0, 1]"},
+      {"--target-interval-restitution 0", "--target-interval-restitution", "(0, 1]"},
+      {"--mass -1", "--mass", "> 0"},
+  };
+  for (const BadInput& c : cases) {
+    const auto r = run_cli(std::string("bounce ") + c.args);
+    INFO("hertzdash bounce " << c.args << "\n  stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.parameter) != std::string::npos);
+    CHECK(r.err.find(c.range) != std::string::npos);
+    CHECK(r.out.empty());
   }
 }
 

@@ -137,6 +137,8 @@ TEST_CASE("hertzdash simulate warns on stderr when a fixed step under-resolves t
   const std::string euler = run_and_capture_stderr("--integrator euler");
   CHECK_THAT(euler, Catch::Contains("warning") && Catch::Contains(steps) &&
                         Catch::Contains(std::to_string(min_steps_per_contact(IntegratorKind::euler, true))));
-  CHECK(run_and_capture_stderr("--integrator rk4").empty());
-  CHECK(run_and_capture_stderr("--integrator cvode").empty());
+  // Nothing else on stderr: the elasticity check is off here (the paper's steel contact exceeds
+  // nylon's onset of yield, a warning of its own, tests/test_bounce_sequence.cpp).
+  CHECK(run_and_capture_stderr("--integrator rk4 --ball-yield-stress inf").empty());
+  CHECK(run_and_capture_stderr("--integrator cvode --ball-yield-stress inf").empty());
 }

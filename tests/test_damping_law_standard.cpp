@@ -49,7 +49,7 @@ TEMPLATE_LIST_TEST_CASE("Every law: force at contact onset agrees with its decla
   //  - declared discontinuous: |F(0, v0)| is a finite fraction of K X*^{3/2} (> 1e-3).
   const ContactScales p = paper_steel_contact();
   const ImpactConditions c{p.K, p.mass_kg, p.v0_mps, 0.5};
-  const TestType law(c, DampingSettings{});
+  const TestType law(c, settings_for<TestType>(contact_setup(p.K, p.mass_kg, p.v0_mps, 0.5)));
   const double X = std::pow(p.mass_kg * p.v0_mps * p.v0_mps / p.K, 0.4);
   const double F_scale = p.K * std::pow(X, 1.5);
   const double F0 = law.force(0.0, p.v0_mps), F_near = law.force(1e-9 * X, p.v0_mps);

@@ -116,7 +116,9 @@ TEST_CASE("RootPolynomialLaw: force_of_root(u, v) equals force(u^2, v) for every
   for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
     if constexpr (RootPolynomialLaw<Law>) {
       ++declared;
-      const Law law(c, setup.damping);
+      DampingSettings d = setup.damping;
+      d.viscous_time_constant_s = 1e-4;  // a viscoelastic law's A [s]: the identity holds for any
+      const Law law(c, d);
       for (double x : {0.0, 1e-7, 1e-5, 2.4e-4})
         for (double v : {0.626, 0.1, 0.0, -0.5}) {
           const double scale = std::abs(law.force(x, 0.0)) + std::abs(law.force(x, v) - law.force(x, 0.0)) + 1e-300;

@@ -19,6 +19,7 @@
 #include "hertzdash/model/restitution.hpp"
 
 #include <concepts>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -37,6 +38,13 @@ struct DampingSettings {
   ZetaForm zeta_form = ZetaForm::paper;  ///< eq. (6) or the exact linear-oscillator relation
   OmegaNVariant omega_n = OmegaNVariant::paper;  ///< the paper's law only: how omega_n is chosen (eqs. 7-11)
   double omega_n_rad_per_s = 0;  ///< omega_n [rad/s] used by the iterated variants (> 0 then), else ignored
+  /// Laws with a material time constant (MaterialTimeConstantLaw): A [s] >= 0. Unset, the
+  /// simulator calibrates it so that the law's restitution at reference_velocity_mps is the
+  /// input e (simulation/viscous_time_constant.hpp); other laws ignore it.
+  std::optional<double> viscous_time_constant_s;
+  /// Approach speed [m/s] at which that calibration holds, > 0; 0 means the set-up's own
+  /// approach speed (of its first impact).
+  double reference_velocity_mps = 0;
 };
 
 /// Descriptive data of a law, shown by `hertzdash models`.
@@ -72,5 +80,14 @@ template <class L>
 concept RootPolynomialLaw = DampingLaw<L> && requires(const L& law, double u) {
   { law.force_of_root(u, u) } -> std::same_as<double>;
 };
+
+/// Optional for a law: damping set by a material time constant A [s]
+/// (DampingSettings::viscous_time_constant_s) instead of by the input e, so that its
+/// restitution depends on the impact speed (the viscoelastic Hertz law). Such a law declares
+/// `static constexpr bool material_time_constant = true` and requires A in its constructor;
+/// when the user gives none, the simulator supplies it by calibrating the law's restitution to
+/// the input e at the reference speed (simulation/viscous_time_constant.hpp).
+template <class L>
+concept MaterialTimeConstantLaw = DampingLaw<L> && requires { requires L::material_time_constant; };
 
 }  // namespace hertzdash

@@ -27,7 +27,8 @@ using RegisteredLaws = LawList<
     Flores,
     HuGuo,
     GharibHurmuzlu,
-    TsujiDem
+    TsujiDem,
+    KuwabaraKono
 >;
 
 /// The law used when none is named: the paper's.

@@ -1,0 +1,78 @@
+// `hertzdash bounce`: a drop from --height and the impacts that follow it, with any law,
+// integrator and rod model; per impact the onset, separation and contact times, approach and
+// rebound speeds and peak force, and the restitution the paper's method would measure from the
+// intervals between impacts beside the true velocity ratios (simulation/bounce_sequence.hpp).
+// With --target-interval-restitution it first finds the input e whose first interval ratio is
+// the target: the e the paper should have put into its dashpot.
+#include "cli/command.hpp"
+#include "cli/setup_options.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
+#include "hertzdash/simulation/run_reports.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace hertzdash::cli {
+
+namespace {
+
+struct BounceCommandOptions {
+  RunOptions run;
+  BounceOptions bounce;
+  std::optional<double> interval_target;
+  bool json = false;
+};
+
+void print_text(const BounceRun& r) {
+  const BounceSequence& b = r.sequence;
+  std::cout << fmt::format("hertzdash bounce: damping law '{}', integrator {}, flights {}\n", r.law,
+                           to_string(b.integrator_used), b.flights_integrated ? "integrated" : "in closed form");
+  if (r.calibration)
+    std::cout << fmt::format("  input e {:.6g} gives the first interval ratio {:.6g} (target {:.6g})\n",
+                             r.calibration->e_input, r.calibration->e_effective, *r.interval_target);
+  if (b.viscous_time_constant_s) std::cout << fmt::format("  viscous_time_constant_s {:.6g}\n", *b.viscous_time_constant_s);
+  std::cout << fmt::format("  {:>3} {:>14} {:>14} {:>12} {:>12} {:>12} {:>12} {:>10} {:>10}\n", "n", "onset_time_s",
+                           "separation_s", "contact_s", "approach_mps", "rebound_mps", "peak_force_N", "e_velocity",
+                           "e_interval");
+  for (std::size_t n = 0; n < b.impacts.size(); ++n) {
+    const BounceImpact& i = b.impacts[n];
+    const std::string ev = i.separated ? fmt::format("{:.6f}", i.rebound_speed_mps / i.approach_speed_mps) : "-";
+    const std::string ei = n < b.e_from_intervals.size() ? fmt::format("{:.6f}", b.e_from_intervals[n]) : "-";
+    std::cout << fmt::format("  {:>3} {:>14.9f} {:>14.9f} {:>12.6g} {:>12.6g} {:>12.6g} {:>12.6g} {:>10} {:>10}\n", n,
+                             i.onset_time_s, i.separation_time_s, i.contact_time_s, i.approach_speed_mps,
+                             i.rebound_speed_mps, i.peak_force_N, ev, ei);
+  }
+  std::cout << fmt::format("  ended: {}; {} steps, {} rhs evaluations\n", b.end_reason, b.work.steps,
+                           b.work.rhs_evaluations);
+}
+
+}  // namespace
+
+Command add_bounce_command(CLI::App& app) {
+  auto opt = std::make_shared<BounceCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "bounce", "A drop and the bounces after it: the paper's restitution from impact intervals beside velocity ratios");
+  add_run_options(*sub, opt->run);
+  sub->add_option("--bounces", opt->bounce.impacts, "Impacts to follow, the first included (3 give one interval ratio)")
+      ->capture_default_str();
+  sub->add_option("--min-rebound-velocity", opt->bounce.min_rebound_velocity_mps,
+                  "End the sequence after a rebound slower than this [m/s]")
+      ->capture_default_str();
+  sub->add_option_function<double>(
+      "--target-interval-restitution", [opt](double v) { opt->interval_target = v; },
+      "Calibrate: find the input e whose first interval ratio is this, in (0,1]");
+  sub->add_flag("--json", opt->json, "Print the result as one JSON object");
+
+  return {sub, [opt]() {
+            const BounceRun r = run_bounce(opt->run, load_paper_parameters(), opt->bounce, opt->interval_target);
+            report_fallback(r.solver.integrator, r.sequence.integrator_used, r.fallback_reason);
+            if (opt->json) std::cout << to_json(r).dump(2) << "\n";
+            else print_text(r);
+            return 0;
+          }};
+}
+
+}  // namespace hertzdash::cli
