@@ -5,6 +5,7 @@
 
 #include <dlfcn.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -90,7 +91,7 @@ PaperParameters load_paper_parameters(const std::filesystem::path& dir) {
     const std::size_t r1 = t1.find_row("body", name), r3 = t3.find_row("body", name);
     const bool steel = name.rfind("steel", 0) == 0;
     p.rods.push_back(RodData{name, t1.number(r1, "diameter_m"), t1.number(r1, "length_m"), t1.number(r1, "mass_kg"),
-                             t2.number(r, "e"), t2.number(r, "zeta_printed"), t3.number(r3, "natural_frequency_hz"),
+                             t2.number(r, "e"), t2.number_or(r, "e_second", NAN), t2.number(r, "zeta_printed"), t3.number(r3, "natural_frequency_hz"),
                              t3.number(r3, "E_Pa"), assumed(steel ? "steel_nu" : "duralumin_nu")});
   }
   return p;

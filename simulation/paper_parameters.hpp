@@ -15,6 +15,7 @@ struct RodData {
   double length_m;               ///< Table 1
   double mass_kg;                ///< Table 1
   double restitution;            ///< Table 2, against the nylon ball
+  double restitution_second;     ///< Table 2's second printed value (rod A only), else NaN
   double zeta_printed;           ///< Table 2, in brackets
   double natural_frequency_hz;   ///< Table 3
   double E_Pa;                   ///< Table 3
