@@ -2,9 +2,11 @@
 // simulation/run_reports.hpp) with Python keywords for the command line's options, so
 //   hertzdash.simulate(rod="steel", height=0.02, ball_E=3e9)
 // returns, as a dict, exactly what `hertzdash simulate --rod steel --height 0.02 --ball-E 3e9
-// --json` prints. Bad input raises ValueError with the command line's message (naming the
-// option and its valid range). Every call releases the GIL while it integrates;
-// simulate_many() runs its impacts on all cores.
+// --json` prints (bounce(), restitution() and calibrate_restitution() likewise for their
+// commands). Bad input raises ValueError with the command line's message (naming the
+// option and its valid range); the notes and warnings the command line writes to stderr are
+// UserWarnings. Every call releases the GIL while it integrates; simulate_many() runs its
+// impacts on all cores.
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/io/csv_table.hpp"
@@ -24,6 +26,7 @@
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -135,6 +138,7 @@ void warn_about(const SimulateRun& run) {
   warn(fallback_note(run.solver.integrator, run.summary.integrator_used, run.fallback_reason));
   warn(stability_note(run));
   warn(resolution_warning(run));
+  warn(yield_warning(run));
 }
 
 // ---- the functions ----
@@ -199,6 +203,20 @@ py::dict calibrate(double target, const py::kwargs& kwargs) {
     run = run_restitution(options, paper(), target);
   }
   warn(fallback_note(run.solver.integrator, run.integrator_used, run.fallback_reason));
+  return to_python(to_json(run));
+}
+
+// bounce: `hertzdash bounce`'s own options are keywords of their own; the rest are the run's.
+py::dict py_bounce(int bounces, double min_rebound_velocity, std::optional<double> target_interval_restitution,
+                   const py::kwargs& kwargs) {
+  const RunOptions options = run_options_from(kwargs, "bounce");
+  const BounceOptions bounce{.impacts = bounces, .min_rebound_velocity_mps = min_rebound_velocity};
+  BounceRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_bounce(options, paper(), bounce, target_interval_restitution);
+  }
+  warn(fallback_note(run.solver.integrator, run.sequence.integrator_used, run.fallback_reason));
   return to_python(to_json(run));
 }
 
@@ -369,11 +387,14 @@ PYBIND11_MODULE(hertzdash, m) {
   m.def("simulate", &py_simulate,
         ("simulate(**options) -> dict\n\nOne drop test of the paper's set-up (a rod falling onto the nylon "
          "hemisphere), exactly `hertzdash simulate --json`: e_effective, peak_force_N, max_deformation_m, "
+         "peak_contact_pressure_Pa, yield_onset_pressure_Pa (None without a check), exceeds_yield_onset, "
          "contact_time_s, impact_velocity_mps, rebound_velocity_mps, separated, K_N_per_m_1_5, law_coefficients, "
          "steps, rhs_evaluations, events, integrator_used, omega_n_fixed_point (iterated omega_n variants only), "
-         "inputs, schema_version, git_revision (docs/json-output.md). Values are SI, units in the keys. Bad "
-         "values raise ValueError with the program's message, which names the option as --option. A fall-back "
-         "of the integrator or an under-resolved fixed step is reported as a UserWarning.\n\n" +
+         "elastic_rod (rod_model='elastic' only), inputs, schema_version, git_revision (docs/json-output.md). "
+         "Values are SI, units in the keys. Bad values raise ValueError with the program's message, which names "
+         "the option as --option. A fall-back of the integrator, an under-resolved fixed step, a step shortened "
+         "for stability and a Hertz peak pressure above the onset of yield (1.60 ball_yield_stress) are "
+         "reported as UserWarnings, as the program reports them on stderr.\n\n" +
          options)
             .c_str());
   m.def("trace", &py_trace, py::arg("grid_step") = py::none(),
@@ -392,6 +413,22 @@ PYBIND11_MODULE(hertzdash, m) {
   m.def("calibrate_restitution", &calibrate, py::arg("target"),
         ("calibrate_restitution(target, **options) -> dict\n\nThe input e whose effective restitution is `target` "
          "(in (0, 1]), exactly `hertzdash restitution --target-restitution TARGET --json`.\n\n" +
+         options)
+            .c_str());
+  m.def("bounce", &py_bounce, py::arg("bounces") = BounceOptions{}.impacts,
+        py::arg("min_rebound_velocity") = BounceOptions{}.min_rebound_velocity_mps,
+        py::arg("target_interval_restitution") = py::none(),
+        ("bounce(bounces=5, min_rebound_velocity=1e-3, target_interval_restitution=None, **options) -> dict\n\n"
+         "A drop and the impacts after it, exactly `hertzdash bounce --bounces N --min-rebound-velocity V "
+         "[--target-interval-restitution E] --json` (docs/bounce.md): per impact the onset, separation and "
+         "contact times, approach and rebound speeds, peak force and deformation (impacts), onset_times_s, "
+         "e_from_intervals (the paper's measurement: (t_on[n+2] - t_on[n+1]) / (t_on[n+1] - t_on[n])), "
+         "e_velocity_ratio, flights, end_reason, steps, rhs_evaluations, integrator_used, inputs, "
+         "schema_version, git_revision; viscous_time_constant_s for kuwabara-kono, and interval_calibration "
+         "when target_interval_restitution (in (0, 1]) asks for the input e whose first interval ratio is it. "
+         "bounces: impacts followed, the first included, in [1, 1000]; min_rebound_velocity [m/s] >= 0 ends the "
+         "sequence after a slower rebound. Bad values raise ValueError naming --bounces, "
+         "--min-rebound-velocity, --target-interval-restitution or the option.\n\n" +
          options)
             .c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },

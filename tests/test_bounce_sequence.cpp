@@ -84,7 +84,7 @@ TEST_CASE("bounce: the sequence does not drift; onset-time error per bounce", "[
   for (std::size_t n = 0; n < 8; ++n) {
     const double err = run.onset_times_s[n] - ref.onset_times_s[n];
     std::printf("%3zu %16.12f %14.3e\n", n, ref.onset_times_s[n], err);
-    CHECK(std::abs(err) <= n * per_bounce_bound + 1e-15);
+    CHECK(std::abs(err) <= static_cast<double>(n) * per_bounce_bound + 1e-15);
   }
 }
 
