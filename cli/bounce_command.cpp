@@ -22,6 +22,7 @@ namespace {
 struct BounceCommandOptions {
   RunOptions run;
   BounceOptions bounce;
+  double bounces = BounceOptions{}.impacts;  // read as a number, so that 2.5 gets the range in its message
   std::optional<double> interval_target;
   bool json = false;
 };
@@ -56,7 +57,7 @@ Command add_bounce_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "bounce", "A drop and the bounces after it: the paper's restitution from impact intervals beside velocity ratios");
   add_run_options(*sub, opt->run);
-  sub->add_option("--bounces", opt->bounce.impacts, "Impacts to follow, the first included (3 give one interval ratio)")
+  sub->add_option("--bounces", opt->bounces, "Impacts to follow, the first included (3 give one interval ratio)")
       ->capture_default_str();
   sub->add_option("--min-rebound-velocity", opt->bounce.min_rebound_velocity_mps,
                   "End the sequence after a rebound slower than this [m/s]")
@@ -67,6 +68,7 @@ Command add_bounce_command(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
 
   return {sub, [opt]() {
+            opt->bounce.impacts = parse_bounces(opt->bounces);
             const BounceRun r = run_bounce(opt->run, load_paper_parameters(), opt->bounce, opt->interval_target);
             report_fallback(r.solver.integrator, r.sequence.integrator_used, r.fallback_reason);
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";

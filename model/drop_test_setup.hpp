@@ -15,7 +15,7 @@ struct DropTestSetup {
   double ball_radius_m;      ///< hemisphere radius R [m], > 0
   Material ball;             ///< hemisphere (nylon): E [Pa] > 0, nu in (-1, 0.5)
   /// The hemisphere's yield stress Y [Pa] > 0 (+inf: never yields), for the elasticity check
-  /// only: a run whose Hertz peak pressure exceeds hertz_yield_onset_pressure_Pa(Y) is flagged.
+  /// only: a run whose Hertz peak pressure exceeds hertz_yield_onset_pressure_Pa(Y, ball.nu) is flagged.
   double ball_yield_stress_Pa = INFINITY;
   Material rod;              ///< flat rod end: E [Pa] > 0 or +inf (rigid), nu in (-1, 0.5)
   double restitution;        ///< input e in (0, 1]; 1 is undamped for the paper's law

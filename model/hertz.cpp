@@ -21,6 +21,24 @@ double hertz_peak_pressure_Pa(double K, double sphere_radius_m, double deformati
   return 3.0 * K * std::sqrt(deformation_m) / (2.0 * std::numbers::pi * sphere_radius_m);
 }
 
+double hertz_yield_onset_factor(double nu) {
+  auto stress_difference = [nu](double zeta) {  // |sigma_r - sigma_z| / p0 on the axis, z = zeta a
+    const double sz = -1.0 / (1.0 + zeta * zeta);
+    const double sr = -(1.0 + nu) * (1.0 - zeta * std::atan(1.0 / zeta)) + 0.5 / (1.0 + zeta * zeta);
+    return std::abs(sr - sz);
+  };
+  // Unimodal in zeta on (0, 2) for nu in (-1, 0.5): golden-section search to 1e-10 in zeta.
+  const double r = (std::sqrt(5.0) - 1.0) / 2.0;
+  double a = 1e-6, b = 2.0;
+  double c = b - r * (b - a), d = a + r * (b - a);
+  while (b - a > 1e-10) {
+    if (stress_difference(c) > stress_difference(d)) b = d;
+    else a = c;
+    c = b - r * (b - a), d = a + r * (b - a);
+  }
+  return 1.0 / stress_difference(0.5 * (a + b));
+}
+
 UndampedHertzImpact undamped_hertz_impact(double K, double mass_kg, double v0_mps) {
   // Energy: (1/2) m v^2 + (2/5) K x^{5/2} = (1/2) m v0^2. Time to X:
   //   t = int_0^X dx / sqrt(v0^2 - (4K/5m) x^{5/2}) = (X/v0) int_0^1 ds / sqrt(1 - s^{5/2})

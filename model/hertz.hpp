@@ -29,10 +29,21 @@ double hertz_impact_scale_m(double K, double mass_kg, double v0_mps);
 /// pressure field of the Hertz solution carries that force, not the dashpot's.
 double hertz_peak_pressure_Pa(double K, double sphere_radius_m, double deformation_m);
 
-/// Where yield begins beneath a Hertz contact on a body of yield stress Y [Pa]: p0 = 1.60 Y
-/// (von Mises, nu = 0.3; K. L. Johnson, Contact Mechanics, CUP 1985, sec. 6.2) [Pa].
-inline constexpr double hertz_yield_onset_factor = 1.60;
-inline double hertz_yield_onset_pressure_Pa(double yield_stress_Pa) { return hertz_yield_onset_factor * yield_stress_Pa; }
+/// p0 / Y at the onset of yield beneath a Hertz point contact on a body of Poisson ratio nu
+/// (K. L. Johnson, Contact Mechanics, CUP 1985, eq. 3.45 and sec. 6.2): on the axis, at depth
+/// z = zeta a,
+///   sigma_z / p0 = -1 / (1 + zeta^2),
+///   sigma_r / p0 = sigma_theta / p0 = -(1 + nu) (1 - zeta atan(1/zeta)) + (1/2) / (1 + zeta^2),
+/// and the von Mises (here also Tresca) stress |sigma_r - sigma_z| is largest below the surface;
+/// yield begins where that largest value reaches Y. Johnson's 1.60 (0.48 a deep) at nu = 0.3;
+/// 1.74 at 0.4.
+double hertz_yield_onset_factor(double nu);
+
+/// The Hertz peak pressure at which yield begins in a body of yield stress Y [Pa] and Poisson
+/// ratio nu [Pa]: hertz_yield_onset_factor(nu) Y.
+inline double hertz_yield_onset_pressure_Pa(double yield_stress_Pa, double nu) {
+  return hertz_yield_onset_factor(nu) * yield_stress_Pa;
+}
 
 /// Closed forms of the undamped Hertz impact (no gravity) at approach speed v0 [m/s]
 /// for a mass m [kg]; energy balance (1/2) m v0^2 = (2/5) K X^{5/2} gives the

@@ -207,10 +207,10 @@ py::dict calibrate(double target, const py::kwargs& kwargs) {
 }
 
 // bounce: `hertzdash bounce`'s own options are keywords of their own; the rest are the run's.
-py::dict py_bounce(int bounces, double min_rebound_velocity, std::optional<double> target_interval_restitution,
+py::dict py_bounce(double bounces, double min_rebound_velocity, std::optional<double> target_interval_restitution,
                    const py::kwargs& kwargs) {
   const RunOptions options = run_options_from(kwargs, "bounce");
-  const BounceOptions bounce{.impacts = bounces, .min_rebound_velocity_mps = min_rebound_velocity};
+  const BounceOptions bounce{.impacts = parse_bounces(bounces), .min_rebound_velocity_mps = min_rebound_velocity};
   BounceRun run;
   {
     py::gil_scoped_release release;
@@ -415,7 +415,7 @@ PYBIND11_MODULE(hertzdash, m) {
          "(in (0, 1]), exactly `hertzdash restitution --target-restitution TARGET --json`.\n\n" +
          options)
             .c_str());
-  m.def("bounce", &py_bounce, py::arg("bounces") = BounceOptions{}.impacts,
+  m.def("bounce", &py_bounce, py::arg("bounces") = static_cast<double>(BounceOptions{}.impacts),
         py::arg("min_rebound_velocity") = BounceOptions{}.min_rebound_velocity_mps,
         py::arg("target_interval_restitution") = py::none(),
         ("bounce(bounces=5, min_rebound_velocity=1e-3, target_interval_restitution=None, **options) -> dict\n\n"

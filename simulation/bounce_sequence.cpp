@@ -6,14 +6,12 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <type_traits>
 
 namespace hertzdash {
 
 namespace {
-
-/// The most impacts one sequence follows: the paper's measurement needs three.
-constexpr int max_bounces = 1000;
 
 /// Rigid model: one run per impact, flights in closed form (see the header).
 void run_rigid_bounces(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
@@ -37,8 +35,19 @@ void run_rigid_bounces(const DropTestSetup& setup, std::string_view law, const S
     }
     out.impacts.push_back(b);
     if (!b.separated || b.rebound_speed_mps < options.min_rebound_velocity_mps) return;
-    t_onset = b.separation_time_s + 2.0 * b.rebound_speed_mps / g;
-    v0 = b.rebound_speed_mps;
+    // Ballistic from the separation at depth x_s (> 0 where the tension clamp ended contact):
+    // the face rises x_s before it clears the ball, and meets it again on the way down at
+    // v = sqrt(v_r^2 - 2 g x_s), a flight of (v_r + v) / g (2 v_r / g for x_s = 0).
+    const double v_r = b.rebound_speed_mps, x_s = r.separation_deformation_m;
+    const double v_squared = v_r * v_r - 2.0 * g * x_s;
+    if (!(v_squared > 0)) {
+      out.end_reason = fmt::format("the rebound ({:.3g} m/s) did not lift the rod clear of the {:.3g} m deformation at "
+                                   "which the tension clamp ended contact",
+                                   v_r, x_s);
+      return;
+    }
+    t_onset = b.separation_time_s + (v_r + std::sqrt(v_squared)) / g;
+    v0 = std::sqrt(v_squared);
   }
 }
 
@@ -49,10 +58,16 @@ std::string end_reason(const BounceSequence& s, const BounceOptions& o) {
   if (last.rebound_speed_mps < o.min_rebound_velocity_mps)
     return fmt::format("rebound {:.3g} m/s below --min-rebound-velocity {:.3g} m/s", last.rebound_speed_mps,
                        o.min_rebound_velocity_mps);
-  return "the run's time limit";
+  return "the run's time limit (impacts x (2 v0 / g + 20 undamped contact times)): the rod may have come to rest";
 }
 
 }  // namespace
+
+int parse_bounces(double impacts) {
+  if (!(impacts >= 1 && impacts <= max_bounces && impacts == std::floor(impacts)))
+    throw InvalidParameter("--bounces", format_value(impacts), fmt::format("an integer in [1, {}]", max_bounces));
+  return static_cast<int>(impacts);
+}
 
 void validate(const BounceOptions& o) {
   if (o.impacts < 1 || o.impacts > max_bounces)
@@ -105,7 +120,7 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
     if (b.separated) out.e_velocity_ratio.push_back(b.rebound_speed_mps / b.approach_speed_mps);
   }
   out.e_from_intervals = interval_ratios(out.onset_times_s);
-  out.end_reason = end_reason(out, options);
+  if (out.end_reason.empty()) out.end_reason = end_reason(out, options);
   return out;
 }
 

@@ -9,7 +9,9 @@
 // The rigid model (the paper's): each impact is one ImpactSimulator run at that impact's
 // approach speed, gravity on during contact, with any law and integrator; the flights between
 // are ballistic and taken in closed form,
-//   t_on[n+1] = t_sep[n] + 2 v_r[n] / g,   v0[n+1] = v_r[n],
+//   t_on[n+1] = t_sep[n] + 2 v_r[n] / g,   v0[n+1] = v_r[n]
+// (with the tension clamp, contact may end at a depth x_s > 0, which the face must climb out of:
+// v0[n+1] = sqrt(v_r^2 - 2 g x_s), t_on[n+1] = t_sep[n] + (v_r + v0[n+1]) / g),
 // so no flight is integrated and event-location errors cannot accumulate: the onset time of
 // impact n carries only the contact-time and rebound-speed errors of the impacts before it
 // (tests/test_bounce_sequence.cpp bounds them; validation/bounce states them).
@@ -32,10 +34,17 @@
 
 namespace hertzdash {
 
+/// The most impacts one sequence follows (the paper's measurement needs three).
+inline constexpr int max_bounces = 1000;
+
 struct BounceOptions {
   int impacts = 5;                           ///< impacts to follow (--bounces), >= 1
   double min_rebound_velocity_mps = 1e-3;    ///< end the sequence after a slower rebound [m/s], >= 0
 };
+
+/// The number of impacts given as a number (the command line, Python): an integer in
+/// [1, max_bounces], else InvalidParameter("--bounces", ...).
+int parse_bounces(double impacts);
 
 /// Throws InvalidParameter naming --bounces or --min-rebound-velocity.
 void validate(const BounceOptions& o);

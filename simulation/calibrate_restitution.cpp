@@ -38,7 +38,14 @@ RestitutionCalibration calibrate_input_restitution(const std::function<double(do
                                        f_hi + target, what, calibration_e_min));
   int iterations = 0;
   const double e = brent_root(residual, calibration_e_min, 1.0, 1e-10, 0.0, "restitution calibration", &iterations);
-  return {e, residual(e) + target, iterations};
+  const double f = residual(e);
+  // A jump in the observable (an interval ratio that does not exist below some input e) can
+  // hold the bracket without a root: Brent then ends on the jump.
+  if (std::abs(f) > calibration_end_tolerance)
+    throw InvalidParameter(option, format_value(target),
+                           fmt::format("a value the {} take: they jump past it at input e = {:.6g}, to {:.6g}", what, e,
+                                       f + target));
+  return {e, f + target, iterations};
 }
 
 RestitutionCalibration calibrate_restitution(ImpactSimulator& simulator, const DropTestSetup& s, std::string_view law,

@@ -40,7 +40,8 @@ inline constexpr double calibration_end_tolerance = 1e-6;
 /// increasing in e_input (an effective restitution, an interval ratio). A target within
 /// calibration_end_tolerance of the observable at an end is met there; converged when the
 /// bracket is narrower than 1e-10 in e_input. Throws InvalidParameter(option, ...) when the
-/// target is outside (0, 1] or outside the observable's range, whose name is `what`.
+/// target is outside (0, 1], outside the observable's range, or in a gap where the observable
+/// jumps (`what` names the observable).
 RestitutionCalibration calibrate_input_restitution(const std::function<double(double)>& observable, double target,
                                                    const std::string& option, std::string_view what);
 

@@ -70,8 +70,8 @@ inline SolverSettings elastic_solver_settings(const ElasticDropTestModel& model,
   if (duration_s / used.dt_s > elastic_fixed_step_budget)
     throw InvalidParameter("--integrator", to_string(kind),
                            fmt::format("an integrator that resolves this elastic rod's run in at most {:g} steps: at "
-                                       "its stability limit {:.3g} s, {} would need {:.3g} (use rk4, dopri5 or cvode, "
-                                       "or fewer --rod-elements)",
+                                       "its stability limit {:.3g} s, {} would need {:.3g} (use dopri5 or cvode, fewer "
+                                       "--rod-elements or, for bounce, fewer --bounces)",
                                        elastic_fixed_step_budget, stable_s, to_string(kind), duration_s / used.dt_s));
   return used;
 }
@@ -108,6 +108,7 @@ class ElasticImpactObserver {
     if (action != EventAction::stop) return;
     s_->separated = true;
     s_->t_separation_s = t_onset_s_ + t;
+    s_->separation_deformation_m = std::max(sys_->deformation_m(y), 0.0);
     s_->rebound_velocity_mps = std::max(-sys_->centre_of_mass_velocity_mps(y), 0.0);
   }
 

@@ -52,6 +52,7 @@ struct ImpactSummary {
   double peak_contact_pressure_Pa = 0; ///< Hertz peak pressure at the largest x (hertz_peak_pressure_Pa)
   double contact_time_s = 0;           ///< separation minus onset time
   double t_onset_s = 0, t_separation_s = 0;
+  double separation_deformation_m = 0; ///< x at separation: > 0 only where the tension clamp ended contact before x = 0
   bool separated = false;              ///< false if the rod came to rest on the ball
   IntegrationStats work;               ///< steps and right-hand-side evaluations, whole run
   std::vector<NamedValue> law_coefficients;

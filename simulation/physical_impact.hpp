@@ -34,6 +34,7 @@ class ImpactObserver {
     if (action == EventAction::stop) {
       s_->separated = true;
       s_->t_separation_s = t;
+      s_->separation_deformation_m = std::max(y[0], 0.0);
       s_->rebound_velocity_mps = std::max(-y[1], 0.0);
     }
   }

@@ -36,7 +36,7 @@ std::vector<RunOption> make_run_options() {
       {"ball-nu", &R::ball_nu, "Hemisphere Poisson ratio (default: 0.40, assumed)", G::setup},
       {"ball-radius", &R::ball_radius_m, "Hemisphere radius R [m] (default: 0.0127)", G::setup},
       {"ball-yield-stress", &R::ball_yield_stress_Pa,
-       "Hemisphere yield stress Y [Pa]; a Hertz peak pressure above 1.60 Y is flagged as plastic; inf: no check "
+       "Hemisphere yield stress Y [Pa]; a Hertz peak pressure above the onset of yield (1.74 Y at nu = 0.4, Johnson) is flagged; inf: no check "
        "(default: 7.0e7, assumed)",
        G::setup},
       {"rod-E", &R::rod_E_Pa, "Rod Young's modulus [Pa]; inf for a rigid flat (default: Table 3)", G::setup},

@@ -64,12 +64,13 @@ std::string resolution_warning(const SimulateRun& run) {
 }
 
 std::string yield_warning(const SimulateRun& run) {
-  const double p0 = run.summary.peak_contact_pressure_Pa, onset = hertz_yield_onset_pressure_Pa(run.setup.ball_yield_stress_Pa);
+  const DropTestSetup& s = run.setup;
+  const double p0 = run.summary.peak_contact_pressure_Pa, onset = hertz_yield_onset_pressure_Pa(s.ball_yield_stress_Pa, s.ball.nu);
   if (!(p0 > onset)) return {};
-  return fmt::format("the Hertz peak pressure {:.4g} MPa exceeds the onset of yield in the hemisphere, 1.60 Y = {:.4g} MPa "
-                     "(--ball-yield-stress {:.4g} Pa): the contact may deform plastically, which the elastic contact "
-                     "law does not model (docs/bounce.md)",
-                     p0 / 1e6, onset / 1e6, run.setup.ball_yield_stress_Pa);
+  return fmt::format("the Hertz peak pressure {:.4g} MPa exceeds the onset of yield in the hemisphere, {:.3g} Y = {:.4g} "
+                     "MPa (--ball-yield-stress {:.4g} Pa, --ball-nu {:.3g}): the contact may deform plastically, which "
+                     "the elastic contact law does not model (docs/bounce.md)",
+                     p0 / 1e6, hertz_yield_onset_factor(s.ball.nu), onset / 1e6, s.ball_yield_stress_Pa, s.ball.nu);
 }
 
 nlohmann::ordered_json to_json(const SimulateRun& run) {
@@ -80,7 +81,7 @@ nlohmann::ordered_json to_json(const SimulateRun& run) {
   j["peak_force_N"] = s.peak_force_N;
   j["max_deformation_m"] = s.max_deformation_m;
   j["peak_contact_pressure_Pa"] = s.peak_contact_pressure_Pa;
-  const double yield_onset = hertz_yield_onset_pressure_Pa(run.setup.ball_yield_stress_Pa);
+  const double yield_onset = hertz_yield_onset_pressure_Pa(run.setup.ball_yield_stress_Pa, run.setup.ball.nu);
   j["yield_onset_pressure_Pa"] = std::isfinite(yield_onset) ? nlohmann::ordered_json(yield_onset) : nlohmann::ordered_json(nullptr);
   j["exceeds_yield_onset"] = s.peak_contact_pressure_Pa > yield_onset;
   j["contact_time_s"] = s.contact_time_s;

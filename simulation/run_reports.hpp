@@ -47,7 +47,7 @@ std::string stability_note(const SimulateRun& run);
 std::string resolution_warning(const SimulateRun& run);
 
 /// The warning every front end shows when the Hertz peak pressure exceeds the onset of yield
-/// of the hemisphere (1.60 Y, model/hertz.hpp): the elastic contact model does not hold there.
+/// of the hemisphere (hertz_yield_onset_factor(nu) Y, model/hertz.hpp): the elastic contact model does not hold there.
 /// Empty otherwise.
 std::string yield_warning(const SimulateRun& run);
 

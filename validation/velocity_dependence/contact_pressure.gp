@@ -1,7 +1,7 @@
 # Does the contact stay elastic? gnuplot -d -c contact_pressure.gp OUT -> OUT/contact_pressure.pdf,
 # .png from OUT/contact_pressure.csv (validation/velocity_dependence). The Hertz peak pressure
 # p0 of each rod's drop (the paper's law, rigid model) against the drop height, and the onset
-# of yield 1.60 Y in the nylon: the band for the assumed range of Y, the line for the assumed Y.
+# of yield (yield_onset_factor Y, 1.74 Y at nu = 0.4) in the nylon: the band for the assumed range of Y, the line for the assumed Y.
 out = ARG1
 here = system('dirname '.ARG0)
 data = out.'/contact_pressure.csv'
@@ -36,8 +36,8 @@ do for [format in 'pdf png'] {
   eval key_panel
   eval key_row
   set key maxrows 4
-  plot NaN with filledcurves lc rgb '#bbbbbb' title sprintf('1.6 Y, Y = %.0f-%.0f MPa', onset_lo/factor, onset_hi/factor), \
-       NaN with lines ls 2 title sprintf('1.6 Y, Y = %.0f MPa', onset/factor), \
+  plot NaN with filledcurves lc rgb '#bbbbbb' title sprintf('%.2f Y, Y = %.0f-%.0f MPa', factor, onset_lo/factor, onset_hi/factor), \
+       NaN with lines ls 2 title sprintf('%.2f Y, Y = %.0f MPa', factor, onset/factor), \
        NaN with lines lc rgb '#555555' dt 3 lw 1.0 title 'h = 20 mm', \
        for [i=1:4] NaN with lines lc rgb rod_colour(word(rods,i)) lw 1.6 title rod_label(word(rods,i))
   unset multiplot
