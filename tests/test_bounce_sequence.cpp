@@ -30,6 +30,23 @@ SolverSettings gbs8(double rtol) {
   return s;
 }
 
+/// `rigid` with a rod 1e4 times stiffer, and the same as an elastic rod of one element on a rigid
+/// base, its vibration damped (ratio 0.5): the elastic model in its rigid limit, whose flights
+/// CVODE (BDF, band) integrates.
+struct RigidLimit {
+  DropTestSetup rigid, elastic;
+  SolverSettings bdf;
+};
+RigidLimit rigid_limit(DropTestSetup rigid) {
+  rigid.rod.E_Pa *= 1e4;
+  RigidLimit r{rigid, rigid, {}};
+  r.elastic.elastic_rod = ElasticRodSetup{.length_m = 0.2, .diameter_m = 0.025, .elements = 1, .rod_damping_ratio = 0.5,
+                                          .hemisphere_mass_kg = 0.0078,
+                                          .cell_stiffness_N_per_m = INFINITY, .cell_damping_ratio = 0.0};
+  r.bdf.cvode_method = CvodeMethod::bdf;
+  return r;
+}
+
 }  // namespace
 
 TEST_CASE("bounce: onsets follow the closed-form ballistic flights", "[bounce]") {
@@ -94,16 +111,9 @@ TEST_CASE("bounce: the elastic rod's integrated flights tend to the rigid model'
   // vibration decays (damping ratio 0.5), must land the next onsets where the rigid model's
   // closed form puts them. Stiffness terms of order 1e-4 relative in the contact, tolerance
   // 1e-8 in the flights: onset times agree to 1e-6 s, speeds to 1e-4 relative.
-  DropTestSetup rigid = steel_20mm();
-  rigid.rod.E_Pa *= 1e4;
-  DropTestSetup elastic = rigid;
-  elastic.elastic_rod = ElasticRodSetup{.length_m = 0.2, .diameter_m = 0.025, .elements = 1, .rod_damping_ratio = 0.5,
-                                        .hemisphere_mass_kg = 0.0078,
-                                        .cell_stiffness_N_per_m = INFINITY, .cell_damping_ratio = 0.0};
-  SolverSettings bdf;
-  bdf.cvode_method = CvodeMethod::bdf;
-  const BounceSequence r = run_bounce_sequence(rigid, "hongo", gbs8(1e-12), {.impacts = 3});
-  const BounceSequence e = run_bounce_sequence(elastic, "hongo", bdf, {.impacts = 3});
+  const RigidLimit limit = rigid_limit(steel_20mm());
+  const BounceSequence r = run_bounce_sequence(limit.rigid, "hongo", gbs8(1e-12), {.impacts = 3});
+  const BounceSequence e = run_bounce_sequence(limit.elastic, "hongo", limit.bdf, {.impacts = 3});
   REQUIRE(e.flights_integrated);
   REQUIRE(e.impacts.size() == 3);
   for (std::size_t n = 0; n < 3; ++n) {
@@ -148,21 +158,15 @@ TEST_CASE("bounce: with the tension clamp the flights start below the surface", 
   // (bounce_sequence.hpp). The elastic rod in its rigid limit integrates the flights (same
   // set-up and bounds as the rigid-limit test above) and must agree; the uncorrected
   // closed form, 2 v_r / g, would be off by ~2 x_s / v_r ~ 1e-4 s.
-  DropTestSetup rigid = steel_20mm();
-  rigid.no_tension = true;
-  rigid.rod.E_Pa *= 1e4;
-  DropTestSetup elastic = rigid;
-  elastic.elastic_rod = ElasticRodSetup{.length_m = 0.2, .diameter_m = 0.025, .elements = 1, .rod_damping_ratio = 0.5,
-                                        .hemisphere_mass_kg = 0.0078,
-                                        .cell_stiffness_N_per_m = INFINITY, .cell_damping_ratio = 0.0};
-  SolverSettings bdf;
-  bdf.cvode_method = CvodeMethod::bdf;
+  DropTestSetup clamped = steel_20mm();
+  clamped.no_tension = true;
+  const RigidLimit limit = rigid_limit(clamped);
   SolverSettings dopri5;
   dopri5.integrator = IntegratorKind::dopri5;
   dopri5.rtol = 1e-10;
   dopri5.atol = 1e-14;
-  const BounceSequence r = run_bounce_sequence(rigid, "hongo", dopri5, {.impacts = 3});
-  const BounceSequence e = run_bounce_sequence(elastic, "hongo", bdf, {.impacts = 3});
+  const BounceSequence r = run_bounce_sequence(limit.rigid, "hongo", dopri5, {.impacts = 3});
+  const BounceSequence e = run_bounce_sequence(limit.elastic, "hongo", limit.bdf, {.impacts = 3});
   REQUIRE(r.impacts.size() == 3);
   REQUIRE(e.impacts.size() == 3);
   for (std::size_t n = 0; n < 3; ++n) {
