@@ -70,8 +70,7 @@ int parse_bounces(double impacts) {
 }
 
 void validate(const BounceOptions& o) {
-  if (o.impacts < 1 || o.impacts > max_bounces)
-    throw InvalidParameter("--bounces", std::to_string(o.impacts), fmt::format("an integer in [1, {}]", max_bounces));
+  parse_bounces(o.impacts);
   require_non_negative("--min-rebound-velocity", o.min_rebound_velocity_mps, "m/s");
 }
 

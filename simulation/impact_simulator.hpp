@@ -83,7 +83,10 @@ ImpactSummary simulate(const DropTestSetup& setup, const SolverSettings& setting
 
 /// `setup` with the viscous time constant of the law `Law` calibrated from its input e at the
 /// reference speed (simulation/viscous_time_constant.hpp). The last calibration of each thread
-/// is remembered, so a sweep over heights at one e calibrates once.
+/// is remembered (keyed by K, m, the reference speed, e and the tension clamp: what the
+/// calibration of kuwabara-kono depends on), so a sweep over heights with one
+/// --reference-velocity calibrates once; without one, each height is calibrated at its own speed
+/// and the law returns e at every height.
 template <MaterialTimeConstantLaw Law>
 DropTestSetup with_calibrated_time_constant(const DropTestSetup& setup) {
   const DropTestSetup c = viscous_calibration_setup(setup);

@@ -94,6 +94,8 @@ TEST_CASE("CLI bounce: each invalid option exits 2, names it and its range", "[c
   const BadInput cases[] = {
       {"--bounces 0", "--bounces", "an integer in [1, 1000]"},
       {"--bounces 1001", "--bounces", "an integer in [1, 1000]"},
+      {"--bounces 2.5", "--bounces", "an integer in [1, 1000]"},
+      {"--target-interval-restitution 0.05", "--target-interval-restitution", "jump past it"},
       {"--min-rebound-velocity -1", "--min-rebound-velocity", ">= 0"},
       {"--min-rebound-velocity nan", "--min-rebound-velocity", ">= 0"},
       {"--gravity 0 --impact-velocity 0.5", "--gravity", "> 0 for a bounce sequence"},
