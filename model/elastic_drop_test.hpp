@@ -106,9 +106,9 @@ class ElasticDropTest {
   }
 
   const ElasticDropTestModel& model() const { return model_; }
-  bool in_contact() const { return law_.has_value(); }
+  bool in_contact() const { return in_contact_; }
   /// The law of the current impact (in contact), or of the last one.
-  const Law& law() const { return *last_law_; }
+  const Law& law() const { return *law_; }
   int size() const { return 2 * (N_ + 1) + 4; }
 
   /// At onset: every node at the approach speed, nothing strained, the hemisphere at rest.
@@ -122,7 +122,7 @@ class ElasticDropTest {
   double deformation_rate_mps(const State& y) const { return y[v(N_)] - y[wdot()]; }
   /// Contact force [N], compressive positive (zero where the faces are apart, and in flight).
   double contact_force_N(const State& y) const {
-    return law_ ? force_at(std::max(deformation_m(y), 0.0), deformation_rate_mps(y)) : 0.0;
+    return in_contact_ ? force_at(std::max(deformation_m(y), 0.0), deformation_rate_mps(y)) : 0.0;
   }
   /// What the load cell measures beyond its preload [N]: the contact force on a rigid base.
   double load_cell_force_N(const State& y) const {
@@ -180,7 +180,7 @@ class ElasticDropTest {
   }
 
   void events(double, const State& y, Events& g) const {
-    if (!law_) {
+    if (!in_contact_) {
       g = {-deformation_m(y), 1.0, 1.0, 1.0};
       return;
     }
@@ -195,13 +195,13 @@ class ElasticDropTest {
 
   EventAction handle_event(int which, double, const State& y) {
     const bool contact_event = which == event_index(ElasticDropTestEvent::contact);
-    if (!law_) {
+    if (!in_contact_) {
       if (!contact_event) return EventAction::continue_integration;
       begin_contact(deformation_rate_mps(y));
       return EventAction::restart;
     }
     if (!contact_event && which != event_index(ElasticDropTestEvent::force_zero)) return EventAction::continue_integration;
-    law_.reset();
+    in_contact_ = false;
     ++impacts_done_;
     const bool more = impacts_done_ < impacts_ && -centre_of_mass_velocity_mps(y) >= min_rebound_mps_;
     return more ? EventAction::restart : EventAction::stop;
@@ -217,8 +217,8 @@ class ElasticDropTest {
 
   /// Contact from now on, the law calibrated for the approach speed v [m/s] (x' at onset).
   void begin_contact(double v) {
-    last_law_.emplace(ImpactConditions{model_.K, model_.setup.mass_kg, v, model_.setup.restitution}, model_.setup.damping);
-    law_ = last_law_;
+    law_.emplace(ImpactConditions{model_.K, model_.setup.mass_kg, v, model_.setup.restitution}, model_.setup.damping);
+    in_contact_ = true;
     x_scale_m_ = hertz_impact_scale_m(model_.K, model_.setup.mass_kg, v);
     v_scale_mps_ = v;
   }
@@ -242,8 +242,8 @@ class ElasticDropTest {
 
   ElasticDropTestModel model_;
   int N_;
-  std::optional<Law> law_;       ///< in contact: the law of this impact
-  std::optional<Law> last_law_;  ///< the law of the current or last impact
+  std::optional<Law> law_;   ///< the law of the current (in contact) or last impact
+  bool in_contact_ = false;
   double x_scale_m_ = 0, v_scale_mps_ = 0;  ///< this impact's deformation and speed scales, for difference steps
   int impacts_ = 1, impacts_done_ = 0;
   double min_rebound_mps_ = 0;

@@ -24,6 +24,14 @@ nlohmann::ordered_json json_value(const std::string& text) {
   return text;
 }
 
+// The closing keys of a run's report: "inputs" (numbers as numbers) and "git_revision".
+void add_inputs_and_revision(nlohmann::ordered_json& j, const Parameters& inputs) {
+  nlohmann::ordered_json in;
+  for (const auto& [name, value] : inputs) in[name] = json_value(value);
+  j["inputs"] = in;
+  j["git_revision"] = git_revision();
+}
+
 }  // namespace
 
 SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper, bool record_trace) {
@@ -121,10 +129,7 @@ nlohmann::ordered_json to_json(const SimulateRun& run) {
     r["energy_balance_error_J"] = e->energy_balance_error_J;
     j["elastic_rod"] = r;
   }
-  nlohmann::ordered_json in;
-  for (const auto& [name, value] : run.inputs) in[name] = json_value(value);
-  j["inputs"] = in;
-  j["git_revision"] = git_revision();
+  add_inputs_and_revision(j, run.inputs);
   return j;
 }
 
@@ -220,10 +225,7 @@ nlohmann::ordered_json to_json(const BounceRun& run) {
   j["steps"] = b.work.steps;
   j["rhs_evaluations"] = b.work.rhs_evaluations;
   j["integrator_used"] = to_string(b.integrator_used);
-  nlohmann::ordered_json in;
-  for (const auto& [name, value] : run.inputs) in[name] = json_value(value);
-  j["inputs"] = in;
-  j["git_revision"] = git_revision();
+  add_inputs_and_revision(j, run.inputs);
   return j;
 }
 
