@@ -25,4 +25,7 @@ Command add_restitution_command(CLI::App& app);
 /// `hertzdash bounce`: a drop and its bounces; restitution from impact intervals and velocities.
 Command add_bounce_command(CLI::App& app);
 
+/// `hertzdash fit`: parameters from a measured trace by weighted least squares.
+Command add_fit_command(CLI::App& app);
+
 }  // namespace hertzdash::cli

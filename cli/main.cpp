@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
       hertzdash::cli::add_models_command(app),
       hertzdash::cli::add_restitution_command(app),
       hertzdash::cli::add_bounce_command(app),
+      hertzdash::cli::add_fit_command(app),
   };
 
   try {

@@ -2,6 +2,7 @@
 #include "cli/command.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
 
@@ -17,8 +18,28 @@ namespace {
 struct SimulateOptions {
   RunOptions run;
   std::string trace_path;
+  std::string trace_format = "model";
+  MeasurementChain chain;
+  std::string channels = "force_N,accel_mps2,displacement_m";
   bool json = false;
 };
+
+// The options of the measured format, which are errors with the model's.
+constexpr const char* measurement_options[] = {"--sample-rate", "--anti-alias", "--noise", "--seed", "--channels"};
+
+void check_trace_options(const CLI::App& sub, SimulateOptions& opt) {
+  if (opt.trace_format == "measured") {
+    if (opt.trace_path.empty()) throw InvalidParameter("--trace-format", opt.trace_format, "given with --trace FILE");
+    opt.chain.channels = parse_channels(opt.channels, "--channels");
+    validate(opt.chain);
+    return;
+  }
+  if (opt.trace_format != "model") throw InvalidParameter("--trace-format", opt.trace_format, "one of: model, measured");
+  for (const char* name : measurement_options)
+    if (sub.count(name) > 0)
+      throw InvalidParameter(name, sub.get_option(name)->as<std::string>(),
+                             "given only with --trace-format measured (it describes the virtual measurement)");
+}
 
 void print_text(const SimulateRun& r) {
   const ImpactSummary& s = r.summary;
@@ -76,12 +97,33 @@ Command add_simulate_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("simulate", "Simulate one drop of a rod onto the nylon hemisphere");
   add_run_options(*sub, opt->run);
   sub->add_option("--trace", opt->trace_path, "Write the contact-phase time series to this CSV file");
+  sub->add_option("--trace-format", opt->trace_format,
+                  "model: every integrator step, all state columns; measured: a virtual experiment in the measured-trace "
+                  "format (data/measurements/README.md), labelled synthetic")
+      ->capture_default_str();
+  sub->add_option("--sample-rate", opt->chain.sample_rate_Hz, "Virtual measurement: sampling rate [Hz]")->capture_default_str();
+  sub->add_option("--anti-alias", opt->chain.anti_alias_cutoff_Hz,
+                  "Virtual measurement: cut-off [Hz] of the 2nd-order Butterworth anti-alias filter; 0 = none")
+      ->capture_default_str();
+  sub->add_option("--noise", opt->chain.noise_fraction,
+                  "Virtual measurement: Gaussian noise sigma as a fraction of each channel's largest magnitude")
+      ->capture_default_str();
+  sub->add_option("--seed", opt->chain.seed, "Virtual measurement: seed of the noise")->capture_default_str();
+  sub->add_option("--channels", opt->channels, "Virtual measurement: channels to record")->capture_default_str();
   sub->add_flag("--json", opt->json, "Print the summary as one JSON object");
 
-  return {sub, [opt]() {
+  return {sub, [opt, sub]() {
+            check_trace_options(*sub, *opt);
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
             report_fallback(r.solver.integrator, r.summary.integrator_used, r.fallback_reason);
-            if (!opt->trace_path.empty()) write_trace(r, opt->trace_path);
+            if (opt->trace_format == "measured") {
+              if (const std::string n = virtual_measurement_note(r, opt->chain); !n.empty())
+                std::cerr << "hertzdash: note: " << n << "\n";
+              write_measured_trace(opt->trace_path, virtual_measurement(r, opt->run.rod, opt->chain),
+                                   "hertzdash simulate: a SYNTHETIC virtual measurement of the model (not a measurement)",
+                                   virtual_measurement_parameters(r, opt->chain));
+            } else if (!opt->trace_path.empty())
+              write_trace(r, opt->trace_path);
             if (const std::string n = stability_note(r); !n.empty()) std::cerr << "hertzdash: note: " << n << "\n";
             if (const std::string w = resolution_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
             if (const std::string w = yield_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";

@@ -1,9 +1,14 @@
 #include "hertzdash/io/measured_trace.hpp"
 
+#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_table.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <sstream>
 
 namespace hertzdash {
 
@@ -11,6 +16,40 @@ const std::vector<std::string>& measured_quantity_columns() {
   static const std::vector<std::string> columns{"force_N", "accel_mps2", "velocity_mps", "displacement_m"};
   return columns;
 }
+
+const std::vector<TraceColumnUnit>& trace_column_units() {
+  static const std::vector<TraceColumnUnit> units{
+      {"t_s", "t_s", 1.0},
+      {"t_ms", "t_s", 1e-3},
+      {"t_us", "t_s", 1e-6},
+      {"force_N", "force_N", 1.0},
+      {"force_kN", "force_N", 1e3},
+      {"accel_mps2", "accel_mps2", 1.0},
+      {"accel_g", "accel_mps2", standard_gravity_mps2},
+      {"velocity_mps", "velocity_mps", 1.0},
+      {"velocity_mmps", "velocity_mps", 1e-3},
+      {"displacement_m", "displacement_m", 1.0},
+      {"displacement_mm", "displacement_m", 1e-3},
+      {"displacement_um", "displacement_m", 1e-6},
+  };
+  return units;
+}
+
+namespace {
+
+const TraceColumnUnit* find_column_unit(const std::string& column) {
+  for (const TraceColumnUnit& u : trace_column_units())
+    if (u.column == column) return &u;
+  return nullptr;
+}
+
+std::string allowed_columns() {
+  std::string s;
+  for (const TraceColumnUnit& u : trace_column_units()) s += (s.empty() ? "" : ", ") + std::string(u.column);
+  return s;
+}
+
+}  // namespace
 
 MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
   const CsvTable t = CsvTable::read(path);
@@ -38,31 +77,89 @@ MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
     m.synthetic = s->second == "true";
   }
 
-  t.require_columns({"t_s"});
+  // Each column is a quantity with its unit (t_us, force_kN, ...), read into SI; one column per quantity.
+  std::map<std::string, std::string> column_of;  // SI quantity -> the file's column
   for (const std::string& c : t.columns()) {
-    const auto& known = measured_quantity_columns();
-    if (c != "t_s" && std::find(known.begin(), known.end(), c) == known.end())
-      throw DataError(file + ": unknown column '" + c + "' (allowed: t_s, force_N, accel_mps2, velocity_mps, "
-                      "displacement_m)");
+    const TraceColumnUnit* u = find_column_unit(c);
+    if (!u) throw DataError(file + ": unknown column '" + c + "' (allowed: " + allowed_columns() + ")");
+    if (!column_of.emplace(u->quantity, c).second)
+      throw DataError(file + ": columns '" + column_of[u->quantity] + "' and '" + c + "' are the same quantity");
   }
-  if (t.columns().size() < 2) throw DataError(file + ": needs t_s and at least one measured quantity column");
+  if (!column_of.count("t_s")) throw DataError(file + ": missing the time column (t_s, t_ms or t_us)");
+  if (column_of.size() < 2) throw DataError(file + ": needs a time column and at least one measured quantity column");
   if (t.rows() < 2) throw DataError(file + ": needs at least two samples");
 
-  auto column = [&](const std::string& name, std::vector<double>& out) {
-    if (std::find(t.columns().begin(), t.columns().end(), name) == t.columns().end()) return;
-    out.reserve(t.rows());
-    for (std::size_t r = 0; r < t.rows(); ++r) out.push_back(t.number_or(r, name, NAN));
+  auto value = [&](std::size_t r, const std::string& column, double fallback) {
+    const double v = t.number_or(r, column, fallback);
+    if (std::isinf(v))
+      throw DataError(fmt::format("{}: column '{}', sample {}: '{}' is not a finite number (an empty field marks a "
+                                  "sample not measured)",
+                                  file, column, r + 1, t.text(r, column)));
+    return v;
   };
-  for (std::size_t r = 0; r < t.rows(); ++r) {
-    m.t_s.push_back(t.number(r, "t_s"));
+  auto column = [&](const std::string& quantity, std::vector<double>& out) {
+    const auto it = column_of.find(quantity);
+    if (it == column_of.end()) return;
+    const double factor = find_column_unit(it->second)->si_factor;
+    out.reserve(t.rows());
+    for (std::size_t r = 0; r < t.rows(); ++r) out.push_back(factor * value(r, it->second, NAN));
+  };
+  column("t_s", m.t_s);
+  for (std::size_t r = 0; r < m.t_s.size(); ++r) {
+    if (std::isnan(m.t_s[r])) throw DataError(fmt::format("{}: sample {} has no time", file, r + 1));
     if (r > 0 && !(m.t_s[r] > m.t_s[r - 1]))
-      throw DataError(file + ": t_s must increase strictly (sample " + std::to_string(r + 1) + ")");
+      throw DataError(file + ": the time must increase strictly (sample " + std::to_string(r + 1) + ")");
   }
   column("force_N", m.force_N);
   column("accel_mps2", m.accel_mps2);
   column("velocity_mps", m.velocity_mps);
   column("displacement_m", m.displacement_m);
   return m;
+}
+
+std::vector<double>* quantity(MeasuredTrace& m, const std::string& name) {
+  if (name == "force_N") return &m.force_N;
+  if (name == "accel_mps2") return &m.accel_mps2;
+  if (name == "velocity_mps") return &m.velocity_mps;
+  if (name == "displacement_m") return &m.displacement_m;
+  return nullptr;
+}
+
+const std::vector<double>* quantity(const MeasuredTrace& m, const std::string& name) {
+  if (name == "force_N") return &m.force_N;
+  if (name == "accel_mps2") return &m.accel_mps2;
+  if (name == "velocity_mps") return &m.velocity_mps;
+  if (name == "displacement_m") return &m.displacement_m;
+  return nullptr;
+}
+
+std::string measured_trace_text(const MeasuredTrace& m, const std::string& what, const Parameters& parameters) {
+  std::ostringstream out;
+  out << "# source: " << m.source << "\n# rod: " << m.rod << "\n"
+      << fmt::format("# height_m: {}\n", m.height_m) << "# synthetic: " << (m.synthetic ? "true" : "false") << "\n"
+      << provenance_header(what, parameters);
+  std::vector<std::string> names{"t_s"};
+  std::vector<const std::vector<double>*> columns{&m.t_s};
+  for (const std::string& c : measured_quantity_columns())
+    if (const auto* q = quantity(m, c); !q->empty()) {
+      names.push_back(c);
+      columns.push_back(q);
+    }
+  for (std::size_t i = 0; i < names.size(); ++i) out << (i ? "," : "") << names[i];
+  out << "\n";
+  for (std::size_t r = 0; r < m.t_s.size(); ++r) {
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      const double v = (*columns[i])[r];
+      out << (i ? "," : "") << (std::isnan(v) ? std::string() : fmt::format("{:.17g}", v));
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+void write_measured_trace(const std::filesystem::path& path, const MeasuredTrace& m, const std::string& what,
+                          const Parameters& parameters) {
+  write_file_atomically(path, measured_trace_text(m, what, parameters));
 }
 
 std::vector<MeasuredTrace> find_measured_traces(const std::filesystem::path& dir, const std::string& rod,

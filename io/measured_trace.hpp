@@ -2,9 +2,12 @@
 // Measured drop-test traces to overlay on the model (Figs. 5 and 6). The format is
 // defined in data/measurements/README.md: provenance comment lines "# key: value"
 // (source, rod, height_m; optional synthetic), a header row with t_s and at least
-// one of force_N, accel_mps2, velocity_mps, displacement_m, then one row per sample.
+// one of force_N, accel_mps2, velocity_mps, displacement_m (or the same quantities in the
+// other units of trace_column_units(), read into SI), then one row per sample.
 // No measured trace ships: the paper printed its traces only as plots, and no
 // machine-readable copy exists.
+#include "hertzdash/io/provenance.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -23,11 +26,35 @@ struct MeasuredTrace {
   std::vector<double> t_s, force_N, accel_mps2, velocity_mps, displacement_m;
 };
 
-/// The columns a measured trace may carry besides t_s.
+/// The quantities a measured trace may carry besides the time, by their SI column names.
 const std::vector<std::string>& measured_quantity_columns();
+
+/// Standard gravity [m/s^2], the unit of an acceleration column in g (accel_g).
+inline constexpr double standard_gravity_mps2 = 9.80665;
+
+/// A column name the reader accepts: the quantity (t_s or one of measured_quantity_columns())
+/// in a unit, and the factor that converts it to SI (t_us: 1e-6; force_kN: 1e3; accel_g: 9.80665).
+struct TraceColumnUnit {
+  const char* column;
+  const char* quantity;
+  double si_factor;
+};
+const std::vector<TraceColumnUnit>& trace_column_units();
+
+/// The samples of the quantity `name` (one of measured_quantity_columns()), or nullptr for another name.
+std::vector<double>* quantity(MeasuredTrace& m, const std::string& name);
+const std::vector<double>* quantity(const MeasuredTrace& m, const std::string& name);
 
 /// Read and check one file; throws DataError naming the file (and line) of any defect.
 MeasuredTrace read_measured_trace(const std::filesystem::path& path);
+
+/// The file of `m` in the measurement format (SI columns; NaN written as an empty field):
+/// the four header lines, then provenance_header(what, parameters), then the samples.
+std::string measured_trace_text(const MeasuredTrace& m, const std::string& what, const Parameters& parameters);
+
+/// measured_trace_text written atomically to `path`.
+void write_measured_trace(const std::filesystem::path& path, const MeasuredTrace& m, const std::string& what,
+                          const Parameters& parameters);
 
 /// Every *.csv file in `dir` (sorted by name) whose header names `rod` and a height
 /// within 0.5 mm of `height_m`. A missing directory has none; a malformed file throws.

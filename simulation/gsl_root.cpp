@@ -36,14 +36,12 @@ void check(int status, const char* call, const char* what, const Callable& c) {
   if (status != GSL_SUCCESS) throw std::runtime_error(fmt::format("{}: GSL {} failed: {}", what, call, gsl_strerror(status)));
 }
 
-// GSL's default error handler aborts the process (a Python session included); hertzdash
-// checks every GSL return code instead, so the handler is turned off before the first call.
+}  // namespace
+
 void use_gsl_return_codes() {
   static std::once_flag once;
   std::call_once(once, [] { gsl_set_error_handler_off(); });
 }
-
-}  // namespace
 
 double brent_root(const std::function<double(double)>& f, double lo, double hi, double abs_tol, double rel_tol,
                   const char* what, int* iterations) {

@@ -8,6 +8,10 @@
 
 namespace hertzdash {
 
+/// GSL's default error handler aborts the process (a Python session included); hertzdash
+/// checks every GSL return code instead. Call before the first GSL call (once is enough).
+void use_gsl_return_codes();
+
 /// Root of f in [lo, hi], where f(lo) and f(hi) have opposite signs; converged when the
 /// bracket is narrower than abs_tol + rel_tol |root| (gsl_root_test_interval). `what` names the
 /// calibration in errors (std::runtime_error: no convergence in 200 iterations, a GSL failure);

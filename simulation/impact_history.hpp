@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace hertzdash {
@@ -20,6 +21,23 @@ namespace hertzdash {
 struct ImpactState {
   double displacement_m, velocity_mps, accel_mps2, force_N;
 };
+
+/// What the instruments of the drop test read at one instant [SI], in the measured-trace
+/// conventions (data/measurements/README.md): the load cell's force (rigid base: the contact
+/// force), the accelerometer, the rod's velocity and its displacement since contact onset.
+struct InstrumentReading {
+  double force_N, accel_mps2, velocity_mps, displacement_m;
+};
+
+/// The reading of one channel by its measured-trace name (force_N, accel_mps2, velocity_mps,
+/// displacement_m; io/measured_trace.hpp).
+inline double instrument_channel(const InstrumentReading& r, const std::string& channel) {
+  if (channel == "force_N") return r.force_N;
+  if (channel == "accel_mps2") return r.accel_mps2;
+  if (channel == "velocity_mps") return r.velocity_mps;
+  if (channel == "displacement_m") return r.displacement_m;
+  throw std::invalid_argument("instrument_channel: no channel " + channel);
+}
 
 class ImpactHistory {
  public:
@@ -34,27 +52,55 @@ class ImpactHistory {
 
   /// State at time tau [s] since contact onset.
   ImpactState at(double tau) const {
-    if (tau <= 0) {
+    const Bracket b = bracket(tau);
+    if (b.before_onset) {
       const TraceSample& a = trace_.front();
       return {a.xdot_mps * tau + 0.5 * g_ * tau * tau, a.xdot_mps + g_ * tau, g_, 0.0};
     }
-    if (tau >= contact_time_s()) {
-      const TraceSample& b = trace_.back();
+    if (b.after_contact) {
+      const TraceSample& e = trace_.back();
       const double s = tau - contact_time_s();
-      return {b.x_m + b.xdot_mps * s + 0.5 * g_ * s * s, b.xdot_mps + g_ * s, g_, 0.0};
+      return {e.x_m + e.xdot_mps * s + 0.5 * g_ * s * s, e.xdot_mps + g_ * s, g_, 0.0};
     }
-    const double t = t0_ + tau;
-    const auto hi = std::upper_bound(trace_.begin(), trace_.end(), t,
-                                     [](double v, const TraceSample& r) { return v < r.t_s; });
-    const TraceSample& b = *hi;
-    const TraceSample& a = *(hi - 1);
-    const double w = (t - a.t_s) / (b.t_s - a.t_s);
-    auto lerp = [w](double p, double q) { return p + w * (q - p); };
-    return {lerp(a.x_m, b.x_m), lerp(a.xdot_mps, b.xdot_mps), lerp(a.accel_mps2, b.accel_mps2),
-            lerp(a.force_N, b.force_N)};
+    auto lerp = [&](double TraceSample::*f) { return b.lo->*f + b.w * (b.hi->*f - b.lo->*f); };
+    return {lerp(&TraceSample::x_m), lerp(&TraceSample::xdot_mps), lerp(&TraceSample::accel_mps2),
+            lerp(&TraceSample::force_N)};
+  }
+
+  /// The instruments at time tau [s] since contact onset. Outside the contact trace the rod is in
+  /// free flight and the instruments read no force and g (for the elastic rod this neglects the
+  /// ringing after separation).
+  InstrumentReading instruments_at(double tau) const {
+    const TraceSample& a = trace_.front();
+    const Bracket b = bracket(tau);
+    if (b.before_onset) return {0.0, g_, a.rod_velocity_mps + g_ * tau, a.rod_velocity_mps * tau + 0.5 * g_ * tau * tau};
+    if (b.after_contact) {
+      const TraceSample& e = trace_.back();
+      const double s = tau - contact_time_s();
+      return {0.0, g_, e.rod_velocity_mps + g_ * s,
+              e.rod_displacement_m - a.rod_displacement_m + e.rod_velocity_mps * s + 0.5 * g_ * s * s};
+    }
+    auto lerp = [&](double TraceSample::*f) { return b.lo->*f + b.w * (b.hi->*f - b.lo->*f); };
+    return {lerp(&TraceSample::load_cell_force_N), lerp(&TraceSample::accelerometer_mps2),
+            lerp(&TraceSample::rod_velocity_mps), lerp(&TraceSample::rod_displacement_m) - a.rod_displacement_m};
   }
 
  private:
+  // Where tau lies: before onset, after the contact, or between two samples (weight w of hi).
+  struct Bracket {
+    bool before_onset = false, after_contact = false;
+    const TraceSample *lo = nullptr, *hi = nullptr;
+    double w = 0;
+  };
+  Bracket bracket(double tau) const {
+    if (tau <= 0) return {.before_onset = true};
+    if (tau >= contact_time_s()) return {.after_contact = true};
+    const double t = t0_ + tau;
+    const auto hi = std::upper_bound(trace_.begin(), trace_.end(), t,
+                                     [](double v, const TraceSample& r) { return v < r.t_s; });
+    return {.lo = &*(hi - 1), .hi = &*hi, .w = (t - (hi - 1)->t_s) / (hi->t_s - (hi - 1)->t_s)};
+  }
+
   std::vector<TraceSample> trace_;
   double g_;
   double t0_;

@@ -3,6 +3,7 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/calibrate_restitution.hpp"
+#include "hertzdash/simulation/impact_history.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/simulation/step_resolution.hpp"
 
@@ -227,6 +228,142 @@ nlohmann::ordered_json to_json(const BounceRun& run) {
   j["integrator_used"] = to_string(b.integrator_used);
   add_inputs_and_revision(j, run.inputs);
   return j;
+}
+
+MeasuredTrace virtual_measurement(const SimulateRun& run, const std::string& rod, const MeasurementChain& chain) {
+  MeasuredTrace m = record_virtual_measurement(ImpactHistory(run.trace, run.setup.gravity_mps2), chain);
+  const double v = run.summary.impact_velocity_mps, g = run.setup.gravity_mps2;
+  m.source = "SYNTHETIC: a virtual experiment made by hertzdash simulate --trace-format measured (the model through "
+             "a simulated measurement chain; not a measurement)";
+  m.rod = rod;
+  m.height_m = run.setup.impact_velocity_mps && g > 0 ? v * v / (2 * g) : run.setup.height_m;
+  return m;
+}
+
+std::string virtual_measurement_note(const SimulateRun& run, const MeasurementChain& chain) {
+  double longest = 0;
+  for (std::size_t i = 1; i < run.trace.size(); ++i) longest = std::max(longest, run.trace[i].t_s - run.trace[i - 1].t_s);
+  if (!(longest > 1.0 / chain.sample_rate_Hz)) return {};
+  return fmt::format("{} took steps up to {:.3g} s, longer than the sampling interval {:.3g} s: the samples between its "
+                     "steps are linear interpolations (bound the step with --max-step, or use a fixed --dt, for a "
+                     "faithful virtual experiment)",
+                     to_string(run.summary.integrator_used), longest, 1.0 / chain.sample_rate_Hz);
+}
+
+Parameters virtual_measurement_parameters(const SimulateRun& run, const MeasurementChain& chain) {
+  Parameters p = run.inputs;
+  p.emplace_back("integrator_used", to_string(run.summary.integrator_used));
+  p.emplace_back("sample_rate_Hz", fmt::format("{}", chain.sample_rate_Hz));
+  p.emplace_back("anti_alias_cutoff_Hz", fmt::format("{}", chain.anti_alias_cutoff_Hz));
+  p.emplace_back("noise_fraction", fmt::format("{}", chain.noise_fraction));
+  p.emplace_back("noise_seed", std::to_string(chain.seed));
+  return p;
+}
+
+FitRun run_fit(const std::string& trace_path, const RunOptions& base, const PaperParameters& paper,
+               const TraceFitSettings& settings, bool compare_all_laws) {
+  FitRun r;
+  r.settings = settings;
+  resolve_setup(base, paper);  // bad options are reported before the file is read
+  r.trace = read_measured_trace(trace_path);
+  if (compare_all_laws) {
+    LawComparison c = compare_laws(r.trace, base, paper, settings);
+    r.fits = std::move(c.fits);
+    r.failures = std::move(c.failures);
+  } else {
+    r.fits.push_back(fit_trace(r.trace, base, paper, settings));
+  }
+  return r;
+}
+
+namespace {
+
+nlohmann::ordered_json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const TraceFit& f, const PaperParameters& paper) {
+  nlohmann::ordered_json j;
+  j["law"] = f.law;
+  nlohmann::ordered_json parameters = nlohmann::ordered_json::array();
+  for (const FittedParameter& p : f.parameters)
+    parameters.push_back({{"name", p.name},
+                          {"initial", p.initial},
+                          {"estimate", p.estimate},
+                          {"standard_error", number_or_null(p.standard_error)},
+                          {"lower", number_or_null(p.lower)},
+                          {"upper", number_or_null(p.upper)},
+                          {"at_bound", p.at_bound}});
+  j["parameters"] = parameters;
+  nlohmann::ordered_json correlation = nlohmann::ordered_json::array();
+  for (const auto& row : f.correlation) {
+    nlohmann::ordered_json r = nlohmann::ordered_json::array();
+    for (double c : row) r.push_back(number_or_null(c));
+    correlation.push_back(r);
+  }
+  j["correlation"] = correlation;
+  nlohmann::ordered_json channels = nlohmann::ordered_json::array();
+  for (const ChannelFit& c : f.channels)
+    channels.push_back({{"name", c.name},
+                        {"samples", c.samples},
+                        {"noise_sigma", c.noise_sigma},
+                        {"residual_rms", c.residual_rms}});
+  j["channels"] = channels;
+  j["samples"] = f.samples;
+  j["chi_square"] = f.chi_square;
+  j["reduced_chi_square"] = f.reduced_chi_square;
+  j["condition_number"] = number_or_null(f.condition_number);
+  j["identifiable"] = f.identifiable;
+  j["aic"] = f.aic;
+  j["bic"] = f.bic;
+  j["iterations"] = f.iterations;
+  j["model_runs"] = f.model_runs;
+  j["stop_reason"] = f.stop_reason;
+  j["contact_time_s"] = f.contact_time_s;
+  nlohmann::ordered_json in;
+  const DropTestSetup s = resolve_setup(f.fitted_options, paper);
+  for (const auto& [name, value] : describe_run(s, f.law, resolve_solver(f.fitted_options))) in[name] = json_value(value);
+  j["fitted_inputs"] = in;
+  return j;
+}
+
+nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper) {
+  nlohmann::ordered_json j;
+  j["schema_version"] = json_schema_version;
+  j["trace"] = {{"path", run.trace.path.string()},   {"source", run.trace.source},
+                {"rod", run.trace.rod},               {"height_m", run.trace.height_m},
+                {"synthetic", run.trace.synthetic},   {"samples", run.trace.t_s.size()}};
+  nlohmann::ordered_json fits = nlohmann::ordered_json::array();
+  for (const TraceFit& f : run.fits) fits.push_back(to_json(f, paper));
+  j["fits"] = fits;
+  nlohmann::ordered_json failures = nlohmann::ordered_json::array();
+  for (const auto& [law, why] : run.failures) failures.push_back({{"law", law}, {"error", why}});
+  j["failures"] = failures;
+  j["git_revision"] = git_revision();
+  return j;
+}
+
+std::vector<std::string> fit_warnings(const FitRun& run) {
+  std::vector<std::string> w;
+  if (run.trace.synthetic)
+    w.push_back("the trace says 'synthetic: true': it is not a measurement");
+  for (const TraceFit& f : run.fits) {
+    const std::string law = run.fits.size() > 1 ? " (" + f.law + ")" : "";
+    if (!f.identifiable)
+      w.push_back(fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (identifiable "
+                              "below {:g}); fit fewer parameters or add a channel",
+                              law, f.condition_number, identifiable_condition_limit));
+    for (const FittedParameter& p : f.parameters)
+      if (p.at_bound)
+        w.push_back(fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law, p.estimate));
+    if (f.reduced_chi_square > 2)
+      w.push_back(fmt::format("the model{} does not explain the trace to its noise: reduced chi-square {:.3g} (about 1 "
+                              "if it did); the standard errors are scaled by it",
+                              law, f.reduced_chi_square));
+  }
+  return w;
 }
 
 nlohmann::ordered_json registered_laws_json() {

@@ -7,6 +7,8 @@
 #include "hertzdash/simulation/bounce_sequence.hpp"
 #include "hertzdash/simulation/impact_summary.hpp"
 #include "hertzdash/simulation/run_options.hpp"
+#include "hertzdash/simulation/trace_fit.hpp"
+#include "hertzdash/simulation/virtual_measurement.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -53,6 +55,44 @@ std::string yield_warning(const SimulateRun& run);
 
 /// `simulate --json`: the summary, "law_coefficients", "inputs", "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const SimulateRun& run);
+
+/// The run's contact recorded as a virtual experiment (simulation/virtual_measurement.hpp), with
+/// its provenance: `source` says it is synthetic and what made it; `rod` is the rod asked for;
+/// `height_m` the drop height that gives the run's approach speed. Needs a run with a trace.
+MeasuredTrace virtual_measurement(const SimulateRun& run, const std::string& rod, const MeasurementChain& chain);
+
+/// The note every front end shows when the run's integrator stepped more coarsely than the
+/// virtual measurement samples (the samples between steps are then interpolated), else empty.
+std::string virtual_measurement_note(const SimulateRun& run, const MeasurementChain& chain);
+
+/// The header parameters of a virtual measurement file: the run's inputs, the integrator that
+/// ran, and the measurement chain.
+Parameters virtual_measurement_parameters(const SimulateRun& run, const MeasurementChain& chain);
+
+/// A fit of a measured trace (simulation/trace_fit.hpp): one law, or every registered law ranked.
+struct FitRun {
+  MeasuredTrace trace;                                        ///< as read
+  TraceFitSettings settings;
+  std::vector<TraceFit> fits;                                 ///< one; or, comparing laws, best first
+  std::vector<std::pair<std::string, std::string>> failures;  ///< comparing laws: law, why it could not be fitted
+};
+
+/// Read the trace, fit (validating like `simulate`: InvalidParameter; a bad trace: DataError).
+FitRun run_fit(const std::string& trace_path, const RunOptions& base, const PaperParameters& paper,
+               const TraceFitSettings& settings, bool compare_all_laws);
+
+/// One fit: "law", "parameters" (name, initial, estimate, standard_error, lower, upper, at_bound),
+/// "correlation", "channels", the goodness of fit and the criteria, "fitted_inputs".
+nlohmann::ordered_json to_json(const TraceFit& fit, const PaperParameters& paper);
+
+/// `fit --json`: "trace" (path, source, rod, height_m, synthetic, samples), "fits" (one law, or
+/// every law ranked by AIC, best first), "failures" (laws that could not be fitted),
+/// "schema_version", "git_revision".
+nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
+
+/// The warnings every front end shows for a fit (not identifiable, a parameter at its bound, a
+/// model that does not explain the trace to its noise, a synthetic trace), one per line; empty if none.
+std::vector<std::string> fit_warnings(const FitRun& run);
 
 /// A law's effective restitution in the rigid-wall contact phase (no gravity), or, given a
 /// target, the input e that makes it the target (simulation/calibrate_restitution.hpp).

@@ -1,0 +1,135 @@
+// `hertzdash fit`: identify parameters of the drop test from a measured trace
+// (data/measurements/README.md) by weighted least squares (simulation/trace_fit.hpp): the
+// estimates, their standard errors and correlation, the residuals per channel, whether the
+// trace determines the parameters; --compare-laws fits every registered law and ranks them by
+// AIC; --curves writes the trace, the fitted model and the residuals for a figure
+// (validation/identification/fit_curves.gp draws one).
+#include "cli/command.hpp"
+#include "cli/setup_options.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/run_reports.hpp"
+#include "hertzdash/simulation/virtual_measurement.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace hertzdash::cli {
+
+namespace {
+
+struct FitCommandOptions {
+  RunOptions run;
+  std::string trace_path, fit = "ball-E,restitution", channels, curves_path;
+  double resample_Hz = 0;
+  bool compare_laws = false, json = false;
+};
+
+void print_fit(const TraceFit& f) {
+  std::cout << fmt::format("  {:<24} {:>14} {:>14} {:>14} {:>9}\n", "parameter", "initial", "estimate", "std_error",
+                           "rel_%");
+  for (const FittedParameter& p : f.parameters)
+    std::cout << fmt::format("  {:<24} {:>14.6g} {:>14.8g} {:>14.3g} {:>9}\n", p.name, p.initial, p.estimate,
+                             p.standard_error,
+                             p.name == "onset-time" ? "-" : fmt::format("{:.3g}", 100 * p.standard_error / std::abs(p.estimate)));
+  std::cout << "  correlation:\n";
+  for (std::size_t i = 0; i < f.correlation.size(); ++i) {
+    std::cout << fmt::format("    {:<22}", f.parameters[i].name);
+    for (double c : f.correlation[i]) std::cout << fmt::format(" {:>7.3f}", c);
+    std::cout << "\n";
+  }
+  for (const ChannelFit& c : f.channels)
+    std::cout << fmt::format("  channel {:<16} {:>6} samples, noise sigma {:.4g}, residual RMS {:.4g}\n", c.name,
+                             c.samples, c.noise_sigma, c.residual_rms);
+  std::cout << fmt::format("  reduced chi-square {:.4g} ({} residuals), condition number {:.4g} ({}), AIC {:.6g}, BIC {:.6g}\n",
+                           f.reduced_chi_square, f.samples, f.condition_number,
+                           f.identifiable ? "identifiable" : "NOT identifiable", f.aic, f.bic);
+  std::cout << fmt::format("  {} iterations, {} model runs, stopped: {}; fitted contact time {:.6g} s\n", f.iterations,
+                           f.model_runs, f.stop_reason, f.contact_time_s);
+}
+
+void print_text(const FitRun& r) {
+  std::cout << fmt::format("hertzdash fit: {} ({} samples{}; rod {}, h = {:g} m)\n", r.trace.path.string(),
+                           r.trace.t_s.size(), r.trace.synthetic ? ", SYNTHETIC" : "", r.trace.rod, r.trace.height_m);
+  if (r.fits.size() == 1) {
+    std::cout << fmt::format("  damping law '{}'\n", r.fits[0].law);
+    print_fit(r.fits[0]);
+    return;
+  }
+  std::cout << fmt::format("  {:>3} {:<22} {:>14} {:>14} {:>12} {:>12}\n", "", "law (best first)", "AIC", "BIC",
+                           "chi2/dof", "condition");
+  for (std::size_t i = 0; i < r.fits.size(); ++i) {
+    const TraceFit& f = r.fits[i];
+    std::cout << fmt::format("  {:>3} {:<22} {:>14.6g} {:>14.6g} {:>12.4g} {:>12.3g}\n", i + 1, f.law, f.aic, f.bic,
+                             f.reduced_chi_square, f.condition_number);
+  }
+  for (const auto& [law, why] : r.failures) std::cout << fmt::format("  {}: not fitted: {}\n", law, why);
+  std::cout << fmt::format("  best: '{}'\n", r.fits.front().law);
+  print_fit(r.fits.front());
+}
+
+// The trace, the model and the residual of every channel of the best fit, one row per sample time.
+void write_curves(const FitRun& r, const std::string& path) {
+  const TraceFit& f = r.fits.front();
+  std::vector<std::string> columns{"t_s"};
+  for (const ChannelFit& c : f.channels)
+    for (const char* what : {"measured", "model", "residual"}) columns.push_back(c.name + "_" + what);
+  Parameters header{{"trace", r.trace.path.string()}, {"trace_source", r.trace.source},
+                    {"synthetic", r.trace.synthetic ? "true" : "false"}, {"damping", f.law}};
+  for (const FittedParameter& p : f.parameters) header.emplace_back(p.name + "_estimate", fmt::format("{}", p.estimate));
+  CsvWriter csv("hertzdash fit: the trace, the fitted model and the residuals (time on the trace's clock)", header,
+                columns);
+  std::map<double, std::vector<CsvWriter::Cell>> rows;
+  for (std::size_t c = 0; c < f.channels.size(); ++c) {
+    const ChannelFit& ch = f.channels[c];
+    for (std::size_t i = 0; i < ch.t_s.size(); ++i) {
+      auto& row = rows[ch.t_s[i]];
+      if (row.empty()) row.assign(columns.size(), std::string());
+      row[0] = ch.t_s[i];
+      row[1 + 3 * c] = ch.measured[i];
+      row[2 + 3 * c] = ch.model[i];
+      row[3 + 3 * c] = ch.measured[i] - ch.model[i];
+    }
+  }
+  for (const auto& [t, row] : rows) csv.add_row(row);
+  csv.save(path);
+}
+
+}  // namespace
+
+Command add_fit_command(CLI::App& app) {
+  auto opt = std::make_shared<FitCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "fit", "Identify parameters (by default the hemisphere's modulus and e) from a measured trace");
+  sub->add_option("--trace", opt->trace_path, "Measured trace, CSV (data/measurements/README.md)")->required();
+  add_run_options(*sub, opt->run, RunOption::Group::setup);
+  sub->add_option("--fit", opt->fit,
+                  "Parameters to fit besides the onset time: NAME or NAME:LOWER:UPPER, comma-separated; NAME one of: " +
+                      fittable_option_names() + "; the starting values are the run options (or the paper's)")
+      ->capture_default_str();
+  sub->add_option("--channels", opt->channels, "Channels of the trace to fit (default: all it has)");
+  sub->add_option("--resample", opt->resample_Hz, "Average the trace into bins of 1/RATE first [Hz]; 0 = as sampled")
+      ->capture_default_str();
+  sub->add_flag("--compare-laws", opt->compare_laws, "Fit every registered damping law and rank them by AIC");
+  sub->add_option("--curves", opt->curves_path, "Write the trace, the fitted model and the residuals to this CSV file");
+  sub->add_flag("--json", opt->json, "Print the result as one JSON object");
+
+  return {sub, [opt]() {
+            TraceFitSettings settings;
+            settings.parameters = parse_fit_parameters(opt->fit);
+            if (!opt->channels.empty()) settings.channels = parse_channels(opt->channels, "--channels");
+            settings.resample_Hz = opt->resample_Hz;
+            const PaperParameters paper = load_paper_parameters();
+            const FitRun r = run_fit(opt->trace_path, opt->run, paper, settings, opt->compare_laws);
+            if (r.fits.empty()) throw std::runtime_error("no damping law could be fitted to the trace");
+            for (const std::string& w : fit_warnings(r)) std::cerr << "hertzdash: warning: " << w << "\n";
+            if (!opt->curves_path.empty()) write_curves(r, opt->curves_path);
+            if (opt->json) std::cout << to_json(r, paper).dump(2) << "\n";
+            else print_text(r);
+            return 0;
+          }};
+}
+
+}  // namespace hertzdash::cli

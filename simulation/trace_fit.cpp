@@ -1,0 +1,589 @@
+#include "hertzdash/simulation/trace_fit.hpp"
+
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/gsl_root.hpp"
+#include "hertzdash/simulation/impact_history.hpp"
+#include "hertzdash/simulation/impact_simulator.hpp"
+
+#include <fmt/format.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_multifit_nlinear.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <tuple>
+#include <type_traits>
+
+namespace hertzdash {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// ---- Which options may be fitted, their ranges, and their values when the user left them unset.
+
+struct Fittable {
+  const char* name;
+  double lower, upper;
+  std::optional<double> (*initial)(const DropTestSetup&);
+};
+
+const std::vector<Fittable>& fittables() {
+  using S = const DropTestSetup&;
+  using V = std::optional<double>;
+  static const std::vector<Fittable> table{
+      {"height", 0, inf, +[](S s) -> V { return s.height_m; }},
+      {"impact-velocity", 0, inf, +[](S s) -> V { return approach_speed(s); }},
+      {"mass", 0, inf, +[](S s) -> V { return s.mass_kg; }},
+      {"restitution", 0, 1, +[](S s) -> V { return s.restitution; }},
+      {"ball-E", 0, inf, +[](S s) -> V { return s.ball.E_Pa; }},
+      {"ball-nu", -1, 0.5, +[](S s) -> V { return s.ball.nu; }},
+      {"ball-radius", 0, inf, +[](S s) -> V { return s.ball_radius_m; }},
+      {"rod-E", 0, inf, +[](S s) -> V { return s.rod.E_Pa; }},
+      {"rod-nu", -1, 0.5, +[](S s) -> V { return s.rod.nu; }},
+      {"gravity", 0, inf, +[](S s) -> V { return s.gravity_mps2; }},
+      {"viscous-time-constant", 0, inf, +[](S s) -> V { return s.damping.viscous_time_constant_s; }},
+      {"rod-damping-ratio", 0, 1, +[](S s) -> V { return s.elastic_rod ? V(s.elastic_rod->rod_damping_ratio) : V(); }},
+      {"cell-stiffness", 0, inf, +[](S s) -> V { return s.elastic_rod ? V(s.elastic_rod->cell_stiffness_N_per_m) : V(); }},
+      {"cell-damping-ratio", 0, 1, +[](S s) -> V { return s.elastic_rod ? V(s.elastic_rod->cell_damping_ratio) : V(); }},
+      {"hemisphere-mass", 0, inf, +[](S s) -> V { return s.elastic_rod ? V(s.elastic_rod->hemisphere_mass_kg) : V(); }},
+  };
+  return table;
+}
+
+const Fittable* find_fittable(const std::string& name) {
+  const RunOption* o = find_run_option(name);
+  if (!o) return nullptr;
+  for (const Fittable& f : fittables())
+    if (o->name == f.name) return &f;
+  return nullptr;
+}
+
+void set_option(RunOptions& o, const std::string& name, double value) {
+  std::visit(
+      [&]<class T>(T RunOptions::*field) {
+        if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) o.*field = value;
+      },
+      find_run_option(name)->field);
+}
+
+// ---- Unbounded fitting variables.
+
+struct Transform {
+  double lo, hi;
+  bool two_sided() const { return std::isfinite(hi); }
+  double p(double z) const { return two_sided() ? lo + (hi - lo) / (1.0 + std::exp(-z)) : lo + std::exp(z); }
+  double z(double p) const { return two_sided() ? std::log((p - lo) / (hi - p)) : std::log(p - lo); }
+  double dp_dz(double z) const {
+    if (!two_sided()) return std::exp(z);
+    const double s = 1.0 / (1.0 + std::exp(-z));
+    return (hi - lo) * s * (1.0 - s);
+  }
+};
+
+// ---- The model: the run options with the fitted values, from onset, by RK4 at a fixed step.
+
+class TraceModel {
+ public:
+  TraceModel(RunOptions base, const PaperParameters& paper, std::vector<std::string> names, int steps_per_contact)
+      : base_(std::move(base)), paper_(&paper), names_(std::move(names)) {
+    const DropTestSetup s = onset_setup(base_);
+    time_scale_s_ = undamped_hertz_impact(hertz_stiffness(s), s.mass_kg, approach_speed(s)).contact_time_s;
+    solver_.integrator = IntegratorKind::rk4;
+    solver_.dt_s = time_scale_s_ / steps_per_contact;
+    simulator_.emplace(solver_);
+  }
+
+  /// t_H at the initial parameters [s]: the unit of the onset variable and of the step.
+  double time_scale_s() const { return time_scale_s_; }
+  int runs() const { return runs_; }
+
+  RunOptions options_at(const std::vector<double>& values) const {
+    RunOptions o = base_;
+    for (std::size_t j = 0; j < names_.size(); ++j) set_option(o, names_[j], values[j]);
+    return o;
+  }
+
+  /// The impact at these parameter values (the last one is kept).
+  const ImpactHistory& history(const std::vector<double>& values) {
+    if (!history_ || values != values_) {
+      const DropTestSetup s = onset_setup(options_at(values));
+      std::vector<TraceSample> trace;
+      const ImpactSummary summary = simulator_->run(s, base_.damping, &trace);
+      ++runs_;
+      history_.emplace(std::move(trace), s.gravity_mps2);
+      contact_time_s_ = summary.contact_time_s;
+      values_ = values;
+    }
+    return *history_;
+  }
+  double contact_time_s() const { return contact_time_s_; }
+
+ private:
+  DropTestSetup onset_setup(const RunOptions& o) const {
+    DropTestSetup s = resolve_setup(o, *paper_);
+    s.impact_velocity_mps = approach_speed(s);  // start at contact onset: the drop before it is exact
+    return s;
+  }
+
+  RunOptions base_;
+  const PaperParameters* paper_;
+  std::vector<std::string> names_;
+  double time_scale_s_ = 0;
+  SolverSettings solver_;
+  std::optional<ImpactSimulator> simulator_;
+  std::vector<double> values_;
+  std::optional<ImpactHistory> history_;
+  double contact_time_s_ = 0;
+  int runs_ = 0;
+};
+
+// ---- Trace checks and the channels' noise.
+
+struct Observation {
+  std::size_t channel;
+  double t_s, y, inv_sigma;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return NAN;
+  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+// sigma from the second differences of consecutive samples with values (see the header).
+double noise_sigma(const std::vector<double>& y) {
+  std::vector<double> d2;
+  for (std::size_t i = 1; i + 1 < y.size(); ++i)
+    if (std::isfinite(y[i - 1]) && std::isfinite(y[i]) && std::isfinite(y[i + 1]))
+      d2.push_back(y[i + 1] - 2.0 * y[i] + y[i - 1]);
+  const double m = median(d2);
+  for (double& d : d2) d = std::abs(d - m);
+  double largest = 0;
+  for (double v : y)
+    if (std::isfinite(v)) largest = std::max(largest, std::abs(v));
+  // A noise-free trace (a virtual experiment without noise) gets the noise of a 20-bit recorder.
+  return std::max(1.4826 * median(d2) / std::sqrt(6.0), 1e-6 * largest);
+}
+
+std::vector<std::string> channels_to_fit(const MeasuredTrace& trace, const TraceFitSettings& settings) {
+  std::vector<std::string> out;
+  for (const std::string& c : measured_quantity_columns()) {
+    const bool asked = settings.channels.empty() ||
+                       std::find(settings.channels.begin(), settings.channels.end(), c) != settings.channels.end();
+    if (!asked) continue;
+    if (quantity(trace, c)->empty()) {
+      if (settings.channels.empty()) continue;
+      throw DataError(fmt::format("{}: no {} column to fit (--channels)", trace.path.string(), c));
+    }
+    out.push_back(c);
+  }
+  if (out.empty()) throw DataError(trace.path.string() + ": no channel to fit");
+  return out;
+}
+
+MeasuredTrace resampled(const MeasuredTrace& in, double rate_Hz) {
+  MeasuredTrace out = in;
+  out.t_s.clear();
+  const double bin = 1.0 / rate_Hz, t0 = in.t_s.front();
+  std::vector<std::string> present;
+  for (const std::string& c : measured_quantity_columns())
+    if (!quantity(in, c)->empty()) present.push_back(c), quantity(out, c)->clear();
+  std::size_t i = 0;
+  while (i < in.t_s.size()) {
+    const auto k = std::floor((in.t_s[i] - t0) / bin);
+    std::size_t j = i;
+    double t_sum = 0;
+    while (j < in.t_s.size() && std::floor((in.t_s[j] - t0) / bin) == k) t_sum += in.t_s[j++];
+    out.t_s.push_back(t_sum / static_cast<double>(j - i));
+    for (const std::string& c : present) {
+      const std::vector<double>& y = *quantity(in, c);
+      double sum = 0;
+      int count = 0;
+      for (std::size_t r = i; r < j; ++r)
+        if (std::isfinite(y[r])) sum += y[r], ++count;
+      quantity(out, c)->push_back(count ? sum / count : NAN);
+    }
+    i = j;
+  }
+  return out;
+}
+
+double median_interval_s(const std::vector<double>& t) {
+  std::vector<double> dt;
+  for (std::size_t i = 1; i < t.size(); ++i) dt.push_back(t[i] - t[i - 1]);
+  return median(dt);
+}
+
+std::vector<double> initial_values(const RunOptions& base, const PaperParameters& paper,
+                                   const std::vector<FitParameter>& parameters) {
+  const DropTestSetup s = resolve_setup(base, paper);
+  std::vector<double> v;
+  for (const FitParameter& p : parameters) {
+    const std::optional<double> x = find_fittable(p.option)->initial(s);
+    if (!x)
+      throw InvalidParameter("--fit", p.option,
+                             fmt::format("given a starting value: --{} is unset and has no default for this run", p.option));
+    if (!(*x > p.lower && *x < p.upper))
+      throw InvalidParameter("--fit", fmt::format("{}:{}:{}", p.option, format_value(p.lower), format_value(p.upper)),
+                             fmt::format("bounds around the starting value --{} {} (set it inside them)", p.option,
+                                         format_value(*x)));
+    v.push_back(*x);
+  }
+  return v;
+}
+
+// ---- The least-squares problem in the unbounded variables z = (transformed parameters, t0 / t_H).
+
+class FitProblem {
+ public:
+  FitProblem(std::vector<Observation> obs, TraceModel& model, std::vector<Transform> transforms,
+             std::vector<std::string> channels)
+      : obs_(std::move(obs)), model_(&model), transforms_(std::move(transforms)), channels_(std::move(channels)) {}
+
+  std::size_t n() const { return obs_.size(); }
+  std::size_t p() const { return transforms_.size() + 1; }
+
+  std::vector<double> physical(const double* z) const {
+    std::vector<double> v;
+    for (std::size_t j = 0; j < transforms_.size(); ++j) v.push_back(transforms_[j].p(z[j]));
+    return v;
+  }
+  double onset_s(const double* z) const { return z[transforms_.size()] * model_->time_scale_s(); }
+
+  /// The model's value of each observation's channel at z.
+  std::vector<double> model_values(const double* z) {
+    const ImpactHistory& h = model_->history(physical(z));
+    const double t0 = onset_s(z);
+    std::vector<double> m(obs_.size());
+    for (std::size_t i = 0; i < obs_.size(); ++i)
+      m[i] = instrument_channel(h.instruments_at(obs_[i].t_s - t0), channels_[obs_[i].channel]);
+    return m;
+  }
+
+  void residuals(const double* z, double* r) {
+    const std::vector<double> m = model_values(z);
+    for (std::size_t i = 0; i < obs_.size(); ++i) r[i] = (obs_[i].y - m[i]) * obs_[i].inv_sigma;
+  }
+
+  /// Central differences, step 1e-6 in every z (relative 1e-6 of p - lower; 1e-6 t_H for the onset).
+  void jacobian(const double* z, gsl_matrix* J) {
+    std::vector<double> zz(z, z + p()), plus(n()), minus(n());
+    for (std::size_t j = 0; j < p(); ++j) {
+      const double h = 1e-6;
+      zz[j] = z[j] + h;
+      residuals(zz.data(), plus.data());
+      zz[j] = z[j] - h;
+      residuals(zz.data(), minus.data());
+      zz[j] = z[j];
+      for (std::size_t i = 0; i < n(); ++i) gsl_matrix_set(J, i, j, (plus[i] - minus[i]) / (2.0 * h));
+    }
+  }
+
+  const std::vector<Observation>& observations() const { return obs_; }
+  const std::vector<Transform>& transforms() const { return transforms_; }
+  std::exception_ptr error;
+
+ private:
+  std::vector<Observation> obs_;
+  TraceModel* model_;
+  std::vector<Transform> transforms_;
+  std::vector<std::string> channels_;
+};
+
+int residuals_thunk(const gsl_vector* z, void* params, gsl_vector* f) {
+  auto* problem = static_cast<FitProblem*>(params);
+  try {
+    problem->residuals(z->data, f->data);
+    return GSL_SUCCESS;
+  } catch (...) {
+    problem->error = std::current_exception();
+    return GSL_EBADFUNC;
+  }
+}
+
+int jacobian_thunk(const gsl_vector* z, void* params, gsl_matrix* J) {
+  auto* problem = static_cast<FitProblem*>(params);
+  try {
+    problem->jacobian(z->data, J);
+    return GSL_SUCCESS;
+  } catch (...) {
+    problem->error = std::current_exception();
+    return GSL_EBADFUNC;
+  }
+}
+
+// Condition number of J with columns scaled to relative changes of the parameters.
+double scaled_condition_number(const gsl_matrix* J, const FitProblem& problem, const double* z) {
+  const std::size_t n = J->size1, p = J->size2;
+  const std::unique_ptr<gsl_matrix, decltype(&gsl_matrix_free)> A(gsl_matrix_alloc(n, p), &gsl_matrix_free);
+  gsl_matrix_memcpy(A.get(), J);
+  for (std::size_t j = 0; j + 1 < p; ++j) {
+    const Transform& t = problem.transforms()[j];
+    const double value = t.p(z[j]), scale = value != 0 ? std::abs(value) : 1.0;
+    gsl_vector_view column = gsl_matrix_column(A.get(), j);
+    gsl_vector_scale(&column.vector, scale / t.dp_dz(z[j]));
+  }
+  const std::unique_ptr<gsl_matrix, decltype(&gsl_matrix_free)> V(gsl_matrix_alloc(p, p), &gsl_matrix_free);
+  const std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)> S(gsl_vector_alloc(p), &gsl_vector_free),
+      work(gsl_vector_alloc(p), &gsl_vector_free);
+  if (const int status = gsl_linalg_SV_decomp(A.get(), V.get(), S.get(), work.get()); status != GSL_SUCCESS)
+    throw std::runtime_error(std::string("fit: GSL gsl_linalg_SV_decomp failed: ") + gsl_strerror(status));
+  const double smallest = gsl_vector_min(S.get()), largest = gsl_vector_max(S.get());
+  return smallest > 0 ? largest / smallest : inf;
+}
+
+std::string stop_reason(int status, int info) {
+  if (status == GSL_EMAXITER) return "maximum number of iterations reached";
+  if (status == GSL_ENOPROG) return "no further decrease of the cost within its resolution";
+  return info == 1 ? "small step (xtol)" : "small gradient (gtol)";
+}
+
+}  // namespace
+
+std::string fittable_option_names() {
+  std::string s;
+  for (const Fittable& f : fittables()) s += (s.empty() ? "" : ", ") + std::string(f.name);
+  return s;
+}
+
+std::vector<FitParameter> parse_fit_parameters(const std::string& list) {
+  std::vector<FitParameter> out;
+  std::size_t begin = 0;
+  while (begin <= list.size()) {
+    const std::size_t end = std::min(list.find(',', begin), list.size());
+    const std::string item = list.substr(begin, end - begin);
+    begin = end + 1;
+    const std::size_t colon = item.find(':');
+    const Fittable* f = find_fittable(item.substr(0, colon));
+    if (!f)
+      throw InvalidParameter("--fit", list,
+                             "a comma-separated list of NAME or NAME:LOWER:UPPER with NAME one of: " + fittable_option_names());
+    FitParameter p{f->name, f->lower, f->upper};
+    if (colon != std::string::npos) {
+      const std::string bounds = item.substr(colon + 1);
+      const std::size_t mid = bounds.find(':');
+      auto number = [&](const std::string& text) {
+        char* stop = nullptr;
+        const double v = std::strtod(text.c_str(), &stop);
+        if (text.empty() || stop != text.c_str() + text.size() || std::isnan(v))
+          throw InvalidParameter("--fit", item, "NAME:LOWER:UPPER with two numbers, LOWER < UPPER");
+        return v;
+      };
+      if (mid == std::string::npos) throw InvalidParameter("--fit", item, "NAME:LOWER:UPPER with two numbers, LOWER < UPPER");
+      p.lower = number(bounds.substr(0, mid));
+      p.upper = number(bounds.substr(mid + 1));
+      if (!(p.lower < p.upper) || !std::isfinite(p.lower) || p.lower < f->lower || p.upper > f->upper)
+        throw InvalidParameter("--fit", item,
+                               fmt::format("NAME:LOWER:UPPER with LOWER < UPPER, LOWER finite, within --{}'s range [{}, {}]",
+                                           f->name, format_value(f->lower), format_value(f->upper)));
+    }
+    for (const FitParameter& q : out)
+      if (q.option == p.option) throw InvalidParameter("--fit", list, "a list naming each parameter once");
+    out.push_back(p);
+  }
+  return out;
+}
+
+MeasuredTrace prepare_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
+                            const TraceFitSettings& settings) {
+  const std::string file = trace.path.string();
+  MeasuredTrace t = trace;
+  if (settings.resample_Hz != 0) {
+    require_positive("--resample", settings.resample_Hz, "Hz");
+    const double rate = 1.0 / median_interval_s(trace.t_s);
+    if (!(settings.resample_Hz < rate))
+      throw InvalidParameter("--resample", format_value(settings.resample_Hz),
+                             fmt::format("below the trace's sampling rate, {:.6g} Hz", rate));
+    t = resampled(trace, settings.resample_Hz);
+  }
+  const std::vector<std::string> channels = channels_to_fit(t, settings);
+
+  // The sampling must resolve the contact of the model at its initial parameters.
+  TraceModel model(base, paper, {}, settings.steps_per_contact);
+  model.history({});
+  const double tc = model.contact_time_s(), dt = median_interval_s(t.t_s);
+  if (!(tc / dt >= min_samples_per_contact))
+    throw DataError(fmt::format("{}: sampled every {:.3g} s ({:.4g} Hz), too coarse: the model's contact lasts {:.3g} s "
+                                "and needs at least {:g} samples, a sampling rate of at least {:.4g} Hz",
+                                file, dt, 1.0 / dt, tc, min_samples_per_contact, min_samples_per_contact / tc));
+
+  // A contact must rise above the noise: the force above zero, or the deceleration below g.
+  const double g = resolve_setup(base, paper).gravity_mps2;
+  bool checked = false, contact = false;
+  std::string seen;
+  for (const auto& [name, rest, sign] : {std::tuple{"force_N", 0.0, 1.0}, std::tuple{"accel_mps2", g, -1.0}}) {
+    if (std::find(channels.begin(), channels.end(), name) == channels.end()) continue;
+    const std::vector<double>& y = *quantity(t, name);
+    const double sigma = noise_sigma(y);
+    double largest = 0;
+    for (double v : y)
+      if (std::isfinite(v)) largest = std::max(largest, sign * (v - rest));
+    checked = true;
+    contact = contact || largest > 10.0 * sigma;
+    seen += fmt::format("{}{} departs from {:g} by at most {:.3g} against a noise of {:.3g}", seen.empty() ? "" : "; ",
+                        name, rest, largest, sigma);
+  }
+  if (checked && !contact) throw DataError(fmt::format("{}: no contact in the trace ({}; a contact needs ten noise levels)", file, seen));
+  if (t.t_s.size() <= settings.parameters.size() + 1)
+    throw DataError(fmt::format("{}: {} samples cannot determine {} parameters", file, t.t_s.size(), settings.parameters.size() + 1));
+  return t;
+}
+
+TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const PaperParameters& paper,
+                   const TraceFitSettings& settings) {
+  use_gsl_return_codes();
+  if (!(settings.steps_per_contact >= 100)) throw InvalidParameter("steps per contact", std::to_string(settings.steps_per_contact), ">= 100");
+  const MeasuredTrace trace = prepare_trace(trace_in, base, paper, settings);
+  const std::vector<std::string> channels = channels_to_fit(trace, settings);
+
+  std::vector<std::string> names;
+  std::vector<Transform> transforms;
+  for (const FitParameter& p : settings.parameters) {
+    names.push_back(p.option);
+    transforms.push_back({p.lower, p.upper});
+  }
+  const std::vector<double> initial = initial_values(base, paper, settings.parameters);
+  TraceModel model(base, paper, names, settings.steps_per_contact);
+
+  TraceFit fit;
+  fit.law = base.damping;
+  std::vector<Observation> obs;
+  for (std::size_t c = 0; c < channels.size(); ++c) {
+    const std::vector<double>& y = *quantity(trace, channels[c]);
+    ChannelFit ch;
+    ch.name = channels[c];
+    ch.noise_sigma = noise_sigma(y);
+    for (std::size_t i = 0; i < y.size(); ++i)
+      if (std::isfinite(y[i])) obs.push_back({c, trace.t_s[i], y[i], 1.0 / ch.noise_sigma}), ++ch.samples;
+    fit.channels.push_back(ch);
+  }
+  FitProblem problem(std::move(obs), model, transforms, channels);
+  const std::size_t n = problem.n(), p = problem.p();
+  if (n <= p) throw DataError(fmt::format("{}: {} values cannot determine {} parameters", trace.path.string(), n, p));
+
+  // Start: the initial values, and the onset time that fits best at them (a scan over +-0.3 t_H:
+  // the onset needs no model run).
+  std::vector<double> z0;
+  for (std::size_t j = 0; j < transforms.size(); ++j) z0.push_back(transforms[j].z(initial[j]));
+  z0.push_back(0.0);
+  {
+    std::vector<double> r(n);
+    double best = inf, best_z = 0;
+    for (int k = -30; k <= 30; ++k) {
+      z0.back() = 0.01 * k;
+      problem.residuals(z0.data(), r.data());
+      double chi2 = 0;
+      for (double v : r) chi2 += v * v;
+      if (chi2 < best) best = chi2, best_z = z0.back();
+    }
+    z0.back() = best_z;
+  }
+
+  gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
+  const std::unique_ptr<gsl_multifit_nlinear_workspace, decltype(&gsl_multifit_nlinear_free)> w(
+      gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p), &gsl_multifit_nlinear_free);
+  if (!w) throw std::bad_alloc();
+  gsl_multifit_nlinear_fdf fdf{};
+  fdf.f = residuals_thunk;
+  fdf.df = jacobian_thunk;
+  fdf.fvv = nullptr;
+  fdf.n = n;
+  fdf.p = p;
+  fdf.params = &problem;
+  gsl_vector_view start = gsl_vector_view_array(z0.data(), p);
+  int status = gsl_multifit_nlinear_init(&start.vector, &fdf, w.get());
+  if (problem.error) std::rethrow_exception(problem.error);
+  if (status != GSL_SUCCESS) throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_init failed: ") + gsl_strerror(status));
+  int info = 0;
+  status = gsl_multifit_nlinear_driver(settings.max_iterations, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w.get());
+  if (problem.error) std::rethrow_exception(problem.error);
+  if (status != GSL_SUCCESS && status != GSL_EMAXITER && status != GSL_ENOPROG)
+    throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_driver failed: ") + gsl_strerror(status));
+  fit.stop_reason = stop_reason(status, info);
+  fit.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w.get()));
+
+  const gsl_vector* zv = gsl_multifit_nlinear_position(w.get());
+  const std::vector<double> z(zv->data, zv->data + p);
+  const gsl_matrix* J = gsl_multifit_nlinear_jac(w.get());
+  const gsl_vector* f = gsl_multifit_nlinear_residual(w.get());
+  gsl_blas_ddot(f, f, &fit.chi_square);
+  fit.samples = n;
+  fit.reduced_chi_square = fit.chi_square / static_cast<double>(n - p);
+
+  const std::unique_ptr<gsl_matrix, decltype(&gsl_matrix_free)> covar(gsl_matrix_alloc(p, p), &gsl_matrix_free);
+  if (const int s = gsl_multifit_nlinear_covar(J, 0.0, covar.get()); s != GSL_SUCCESS)
+    throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_covar failed: ") + gsl_strerror(s));
+  gsl_matrix_scale(covar.get(), fit.reduced_chi_square);
+  fit.condition_number = scaled_condition_number(J, problem, z.data());
+
+  const std::vector<double> estimate = problem.physical(z.data());
+  bool finite_errors = true;
+  for (std::size_t j = 0; j < p; ++j) {
+    FittedParameter fp;
+    const double sz = std::sqrt(gsl_matrix_get(covar.get(), j, j));
+    if (j < transforms.size()) {
+      const Transform& t = transforms[j];
+      fp = {names[j], initial[j], estimate[j], std::abs(t.dp_dz(z[j])) * sz, t.lo, t.hi};
+      const double span = t.two_sided() ? t.hi - t.lo : std::abs(initial[j]);
+      fp.at_bound = (estimate[j] - t.lo) < 1e-6 * span || (t.two_sided() && (t.hi - estimate[j]) < 1e-6 * span);
+    } else {
+      fp = {"onset-time", 0.0, problem.onset_s(z.data()), model.time_scale_s() * sz, -inf, inf};
+    }
+    finite_errors = finite_errors && std::isfinite(fp.standard_error);
+    fit.parameters.push_back(fp);
+  }
+  for (std::size_t i = 0; i < p; ++i) {
+    fit.correlation.emplace_back();
+    for (std::size_t j = 0; j < p; ++j)
+      fit.correlation.back().push_back(gsl_matrix_get(covar.get(), i, j) /
+                                       std::sqrt(gsl_matrix_get(covar.get(), i, i) * gsl_matrix_get(covar.get(), j, j)));
+  }
+  fit.identifiable = finite_errors && fit.condition_number < identifiable_condition_limit;
+  const double k = static_cast<double>(p);
+  fit.aic = fit.chi_square + 2.0 * k;
+  fit.bic = fit.chi_square + k * std::log(static_cast<double>(n));
+
+  // The model at the estimate, channel by channel.
+  const std::vector<double> m = problem.model_values(z.data());
+  fit.contact_time_s = model.contact_time_s();
+  std::vector<double> sum_sq(channels.size(), 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Observation& o = problem.observations()[i];
+    ChannelFit& ch = fit.channels[o.channel];
+    ch.t_s.push_back(o.t_s);
+    ch.measured.push_back(o.y);
+    ch.model.push_back(m[i]);
+    sum_sq[o.channel] += (o.y - m[i]) * (o.y - m[i]);
+  }
+  for (std::size_t c = 0; c < channels.size(); ++c)
+    fit.channels[c].residual_rms = std::sqrt(sum_sq[c] / static_cast<double>(fit.channels[c].samples));
+  fit.model_runs = model.runs();
+  fit.fitted_options = model.options_at(estimate);
+  return fit;
+}
+
+LawComparison compare_laws(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
+                           const TraceFitSettings& settings) {
+  LawComparison out;
+  for (const LawInfo& law : registered_laws()) {
+    RunOptions o = base;
+    o.damping = std::string(law.name);
+    try {
+      out.fits.push_back(fit_trace(trace, o, paper, settings));
+    } catch (const InvalidParameter& e) {
+      out.failures.emplace_back(o.damping, e.what());
+    }
+  }
+  std::stable_sort(out.fits.begin(), out.fits.end(), [](const TraceFit& a, const TraceFit& b) { return a.aic < b.aic; });
+  return out;
+}
+
+}  // namespace hertzdash

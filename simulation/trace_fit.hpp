@@ -1,0 +1,134 @@
+#pragma once
+// Identifying parameters of the drop test from a measured trace (data/measurements/README.md):
+// weighted nonlinear least squares, GSL's multifit_nlinear (trust region, Levenberg-Marquardt).
+//
+// Model. The run options (simulation/run_options.hpp) with the fitted ones replaced; the drop
+// starts at contact onset with the approach speed sqrt(2 g h) (or --impact-velocity), and is
+// integrated by RK4 with located events at a fixed step t_H / steps_per_contact, t_H the
+// undamped Hertz contact time at the initial parameters (fixed during the fit, so the model
+// is a smooth function of the parameters; RK4's error is O((1/2000)^4), the linear
+// interpolation between steps O((pi/2000)^2/8) = 3e-7 of the peak). The instruments read
+// ImpactHistory::instruments_at(t - t0): t0, the onset time on the trace's clock, is a nuisance
+// parameter fitted with the others.
+//
+// Residuals. r_ci = (y_c(t_i) - model_c(t_i - t0)) / sigma_c for every channel c and every
+// sample with a value. sigma_c is the channel's noise estimated from the data alone,
+//   sigma_c = 1.4826 median|D2 y - median D2 y| / sqrt(6),  D2 y_i = y_{i+1} - 2 y_i + y_{i-1},
+// (a white noise of variance s^2 gives D2 y a variance 6 s^2; the median absolute deviation is
+// robust to the few second differences the contact's curvature dominates), at least 1e-6 of the
+// channel's largest magnitude (a 20-bit recorder: a noise-free virtual experiment gets finite
+// weights), so the weights do not depend on the model and every law of --compare-laws is fitted
+// with the same ones.
+//
+// Uncertainty. Parameters are fitted in unbounded variables (log(p - lower), or the logit of
+// (p - lower)/(upper - lower) between two finite bounds; t0 / t_H for the onset). The
+// covariance is s^2 (J^T J)^{-1} with s^2 = chi^2 / (n - p) (gsl_multifit_nlinear_covar), mapped
+// to the physical parameters by the transforms' derivatives. The Jacobian is by central
+// differences with step 1e-6 in the unbounded variables: on its fixed grid the model is smooth
+// in the parameters to rounding (~1e-10 error at this step), except at samples within ~1e-6 t_H
+// of the contact's ends, where the paper's dashpot force rises as sqrt(tau); a larger step lets
+// those samples spoil the Jacobian (at step 1e-4 the exactly degenerate pair ball-E, ball-radius,
+// which enter only through K, shows a condition number of 3e4 instead of > 1e6). The condition
+// number is that of J with columns scaled to relative changes (d r / d ln p; d r / d(t0 / t_H));
+// above 1e6 some combination of the parameters is not determined by the trace, and the fit says
+// it is not identifiable.
+//
+// Information criteria with the noise known (sigma_c): AIC = chi^2 + 2k, BIC = chi^2 + k ln n,
+// k the number of fitted parameters including t0.
+#include "hertzdash/io/measured_trace.hpp"
+#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/run_options.hpp"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace hertzdash {
+
+/// A parameter to fit: a numeric set-up option by name (--fit NAME[:LOWER:UPPER]) and its bounds [SI].
+struct FitParameter {
+  std::string option;  ///< the option's name, e.g. "ball-E"
+  double lower = 0, upper = std::numeric_limits<double>::infinity();
+};
+
+/// The parameters of a --fit list, "ball-E,restitution" or "ball-E:1e9:3e9,restitution"; each
+/// without bounds gets the option's range (restitution (0, 1), Poisson ratios (-1, 0.5), damping
+/// ratios (0, 1), others (0, inf)). Throws InvalidParameter("--fit", ...).
+std::vector<FitParameter> parse_fit_parameters(const std::string& list);
+
+/// The options that may be fitted, comma-separated (for help and messages).
+std::string fittable_option_names();
+
+/// How to fit.
+struct TraceFitSettings {
+  std::vector<FitParameter> parameters = parse_fit_parameters("ball-E,restitution");
+  std::vector<std::string> channels;   ///< of the trace's; empty: all the trace has
+  double resample_Hz = 0;              ///< > 0: average the trace into bins of 1/resample_Hz first
+  int steps_per_contact = 2000;        ///< the model's RK4 steps per undamped Hertz contact time
+  int max_iterations = 200;
+};
+
+/// One fitted parameter. The onset time is the last, named "onset-time" [s].
+struct FittedParameter {
+  std::string name;
+  double initial = 0, estimate = 0, standard_error = 0;
+  double lower = 0, upper = 0;
+  bool at_bound = false;  ///< within 1e-6 (relative) of a bound: the standard error does not hold
+};
+
+/// One channel: its weight and how well the model explains it.
+struct ChannelFit {
+  std::string name;            ///< e.g. force_N
+  std::size_t samples = 0;     ///< with a value
+  double noise_sigma = 0;      ///< sigma_c, estimated from the data [the channel's unit]
+  double residual_rms = 0;     ///< RMS of y - model [the channel's unit]
+  std::vector<double> t_s, measured, model;  ///< at the samples used (for curves and figures)
+};
+
+/// The result of one fit.
+struct TraceFit {
+  std::string law;
+  std::vector<FittedParameter> parameters;           ///< the fitted ones, then onset-time
+  std::vector<std::vector<double>> correlation;      ///< of the estimates, same order
+  std::vector<ChannelFit> channels;
+  std::size_t samples = 0;                           ///< residuals n
+  double chi_square = 0;                             ///< sum r^2
+  double reduced_chi_square = 0;                     ///< chi^2 / (n - p): about 1 if the model explains the trace to its noise
+  double condition_number = 0;
+  bool identifiable = false;                         ///< condition_number < 1e6 and every standard error finite
+  double aic = 0, bic = 0;
+  int iterations = 0, model_runs = 0;
+  std::string stop_reason;                           ///< GSL's: small step, small gradient
+  double contact_time_s = 0;                         ///< of the fitted model
+  RunOptions fitted_options;                         ///< the run options at the estimate
+};
+
+/// Largest condition number of an identifiable fit.
+inline constexpr double identifiable_condition_limit = 1e6;
+
+/// Fewest samples per contact the fit accepts (the sampling check).
+inline constexpr double min_samples_per_contact = 10;
+
+/// Prepare a trace for fitting: resample if asked, and check it: a time column and a channel to
+/// fit, a sampling interval that resolves the contact of the model at the initial parameters
+/// (min_samples_per_contact samples; the message says the least rate), and a contact the
+/// noise does not hide (force or acceleration beyond ten noise levels). Throws DataError naming the file.
+MeasuredTrace prepare_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
+                            const TraceFitSettings& settings);
+
+/// Fit `settings.parameters` and the onset time to the trace, starting from the values of
+/// `base` (or the paper's where `base` leaves an option unset). Validates like `simulate`
+/// (InvalidParameter); a trace unfit for fitting throws DataError.
+TraceFit fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
+                   const TraceFitSettings& settings);
+
+/// fit_trace for every registered law (base.damping replaced), ranked by AIC; a law that
+/// cannot be fitted (its options reject the set-up) is left out and named in `failures`.
+struct LawComparison {
+  std::vector<TraceFit> fits;                                 ///< best (lowest AIC) first
+  std::vector<std::pair<std::string, std::string>> failures;  ///< law, why
+};
+LawComparison compare_laws(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
+                           const TraceFitSettings& settings);
+
+}  // namespace hertzdash
