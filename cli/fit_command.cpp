@@ -6,14 +6,12 @@
 // (validation/identification/fit_curves.gp draws one).
 #include "cli/command.hpp"
 #include "cli/setup_options.hpp"
-#include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
 #include "hertzdash/simulation/virtual_measurement.hpp"
 
 #include <fmt/format.h>
 
 #include <iostream>
-#include <map>
 #include <memory>
 
 namespace hertzdash::cli {
@@ -70,33 +68,6 @@ void print_text(const FitRun& r) {
   print_fit(r.fits.front());
 }
 
-// The trace, the model and the residual of every channel of the best fit, one row per sample time.
-void write_curves(const FitRun& r, const std::string& path) {
-  const TraceFit& f = r.fits.front();
-  std::vector<std::string> columns{"t_s"};
-  for (const ChannelFit& c : f.channels)
-    for (const char* what : {"measured", "model", "residual"}) columns.push_back(c.name + "_" + what);
-  Parameters header{{"trace", r.trace.path.string()}, {"trace_source", r.trace.source},
-                    {"synthetic", r.trace.synthetic ? "true" : "false"}, {"damping", f.law}};
-  for (const FittedParameter& p : f.parameters) header.emplace_back(p.name + "_estimate", fmt::format("{}", p.estimate));
-  CsvWriter csv("hertzdash fit: the trace, the fitted model and the residuals (time on the trace's clock)", header,
-                columns);
-  std::map<double, std::vector<CsvWriter::Cell>> rows;
-  for (std::size_t c = 0; c < f.channels.size(); ++c) {
-    const ChannelFit& ch = f.channels[c];
-    for (std::size_t i = 0; i < ch.t_s.size(); ++i) {
-      auto& row = rows[ch.t_s[i]];
-      if (row.empty()) row.assign(columns.size(), std::string());
-      row[0] = ch.t_s[i];
-      row[1 + 3 * c] = ch.measured[i];
-      row[2 + 3 * c] = ch.model[i];
-      row[3 + 3 * c] = ch.measured[i] - ch.model[i];
-    }
-  }
-  for (const auto& [t, row] : rows) csv.add_row(row);
-  csv.save(path);
-}
-
 }  // namespace
 
 Command add_fit_command(CLI::App& app) {
@@ -125,7 +96,7 @@ Command add_fit_command(CLI::App& app) {
             const FitRun r = run_fit(opt->trace_path, opt->run, paper, settings, opt->compare_laws);
             if (r.fits.empty()) throw std::runtime_error("no damping law could be fitted to the trace");
             for (const std::string& w : fit_warnings(r)) std::cerr << "hertzdash: warning: " << w << "\n";
-            if (!opt->curves_path.empty()) write_curves(r, opt->curves_path);
+            if (!opt->curves_path.empty()) write_fit_curves(r.fits.front(), r.trace, opt->curves_path);
             if (opt->json) std::cout << to_json(r, paper).dump(2) << "\n";
             else print_text(r);
             return 0;

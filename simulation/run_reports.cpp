@@ -1,5 +1,6 @@
 #include "hertzdash/simulation/run_reports.hpp"
 
+#include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/calibrate_restitution.hpp"
@@ -11,6 +12,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <map>
 
 namespace hertzdash {
 
@@ -343,6 +345,31 @@ nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper) 
   j["failures"] = failures;
   j["git_revision"] = git_revision();
   return j;
+}
+
+void write_fit_curves(const TraceFit& f, const MeasuredTrace& trace, const std::filesystem::path& path) {
+  std::vector<std::string> columns{"t_s"};
+  for (const ChannelFit& c : f.channels)
+    for (const char* what : {"measured", "model", "residual"}) columns.push_back(c.name + "_" + what);
+  Parameters header{{"trace", trace.path.string()}, {"trace_source", trace.source},
+                    {"synthetic", trace.synthetic ? "true" : "false"}, {"damping", f.law}};
+  for (const FittedParameter& p : f.parameters) header.emplace_back(p.name + "_estimate", fmt::format("{}", p.estimate));
+  CsvWriter csv("hertzdash fit: the trace, the fitted model and the residuals (time on the trace's clock)", header,
+                columns);
+  std::map<double, std::vector<CsvWriter::Cell>> rows;  // by sample time: channels may have gaps
+  for (std::size_t c = 0; c < f.channels.size(); ++c) {
+    const ChannelFit& ch = f.channels[c];
+    for (std::size_t i = 0; i < ch.t_s.size(); ++i) {
+      auto& row = rows[ch.t_s[i]];
+      if (row.empty()) row.assign(columns.size(), std::string());
+      row[0] = ch.t_s[i];
+      row[1 + 3 * c] = ch.measured[i];
+      row[2 + 3 * c] = ch.model[i];
+      row[3 + 3 * c] = ch.measured[i] - ch.model[i];
+    }
+  }
+  for (const auto& [t, row] : rows) csv.add_row(row);
+  csv.save(path);
 }
 
 std::vector<std::string> fit_warnings(const FitRun& run) {

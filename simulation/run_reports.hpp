@@ -90,6 +90,11 @@ nlohmann::ordered_json to_json(const TraceFit& fit, const PaperParameters& paper
 /// "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
 
+/// `fit --curves`: the trace, the fitted model and the residual of every channel of `fit`, one
+/// row per sample time (t_s, then <channel>_measured, _model, _residual), written atomically
+/// under a header naming the trace and the estimates.
+void write_fit_curves(const TraceFit& fit, const MeasuredTrace& trace, const std::filesystem::path& path);
+
 /// The warnings every front end shows for a fit (not identifiable, a parameter at its bound, a
 /// model that does not explain the trace to its noise, a synthetic trace), one per line; empty if none.
 std::vector<std::string> fit_warnings(const FitRun& run);
