@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <stdexcept>
 
 namespace hertzdash {
@@ -31,5 +32,13 @@ std::string LatexMacros::str() const {
 }
 
 void LatexMacros::save(const std::filesystem::path& path) const { write_file_atomically(path, str()); }
+
+std::string latex_scientific(double v) {
+  if (v == 0) return "$0$";
+  const int exponent = static_cast<int>(std::floor(std::log10(std::abs(v))));
+  const double mantissa = v / std::pow(10.0, exponent);
+  if (std::abs(mantissa) >= 9.95) return latex_scientific(std::copysign(std::pow(10.0, exponent + 1), v));
+  return fmt::format("${:.1f}\\times 10^{{{}}}$", mantissa, exponent);
+}
 
 }  // namespace hertzdash

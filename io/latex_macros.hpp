@@ -27,4 +27,8 @@ class LatexMacros {
   std::string body_;
 };
 
+/// v as LaTeX math in scientific notation with two significant digits: $5.2\times 10^{-6}$
+/// ($0$ for zero).
+std::string latex_scientific(double v);
+
 }  // namespace hertzdash

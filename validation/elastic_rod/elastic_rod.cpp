@@ -66,14 +66,6 @@ RunOptions options(const std::string& rod, double height_m, bool elastic) {
 /// Relative departure |elastic / rigid - 1| [-].
 double departure(double elastic, double rigid) { return std::abs(elastic / rigid - 1); }
 
-/// v as LaTeX math in scientific notation with two significant digits: $5.2\times 10^{-6}$.
-std::string latex_scientific(double v) {
-  const int exponent = static_cast<int>(std::floor(std::log10(std::abs(v))));
-  double mantissa = v / std::pow(10.0, exponent);
-  if (std::abs(mantissa) >= 9.95) return latex_scientific(std::copysign(std::pow(10.0, exponent + 1), v));
-  return fmt::format("${:.1f}\\times 10^{{{}}}$", mantissa, exponent);
-}
-
 /// Amplitude spectrum |sum a(t_k) exp(-2 pi i f t_k) dt| of a uniformly sampled signal.
 double amplitude(const std::vector<double>& t, const std::vector<double>& a, double dt, double f_hz) {
   std::complex<double> sum = 0;
