@@ -220,6 +220,54 @@ py::dict py_bounce(double bounces, double min_rebound_velocity, std::optional<do
   return to_python(to_json(run));
 }
 
+// virtual_measurement: `hertzdash simulate --trace PATH --trace-format measured`; the chain's
+// settings are keywords of their own, the rest are the run's.
+py::dict py_virtual_measurement(const std::string& path, double sample_rate, double anti_alias, double noise,
+                                std::uint64_t seed, const std::string& channels, const py::kwargs& kwargs) {
+  const RunOptions options = run_options_from(kwargs, "virtual_measurement");
+  MeasurementChain chain{.sample_rate_Hz = sample_rate, .anti_alias_cutoff_Hz = anti_alias, .noise_fraction = noise,
+                         .seed = seed};
+  chain.channels = parse_channels(channels, "--channels");
+  validate(chain);
+  SimulateRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_simulate(options, paper(), true);
+    write_measured_trace(path, virtual_measurement(run, options.rod, chain),
+                         "hertzdash simulate: a SYNTHETIC virtual measurement of the model (not a measurement)",
+                         virtual_measurement_parameters(run, chain));
+  }
+  warn_about(run);
+  warn(virtual_measurement_note(run, chain));
+  return to_python(to_json(run));
+}
+
+// fit: `hertzdash fit --json`; only the set-up's options are keywords (the fit chooses its solver).
+py::dict py_fit(const std::string& trace, const std::string& fit, const std::string& channels, double resample,
+                bool compare_laws, const std::string& curves, const py::kwargs& kwargs) {
+  RunOptions options;
+  for (const auto& [key, value] : kwargs) {
+    const RunOption& o = option_named(key.cast<std::string>(), "fit");
+    if (o.group != RunOption::Group::setup)
+      throw py::type_error(fmt::format("fit() got the solver option '{}': the fit integrates its model itself "
+                                       "(simulation/trace_fit.hpp)",
+                                       python_keyword(o.name)));
+    set_option(options, o, value);
+  }
+  TraceFitSettings settings;
+  settings.parameters = parse_fit_parameters(fit);
+  if (!channels.empty()) settings.channels = parse_channels(channels, "--channels");
+  settings.resample_Hz = resample;
+  FitRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_fit(trace, options, paper(), settings, compare_laws);
+    if (!curves.empty() && !run.fits.empty()) write_fit_curves(run.fits.front(), run.trace, curves);
+  }
+  for (const std::string& w : fit_warnings(run)) warn(w);
+  return to_python(to_json(run, paper()));
+}
+
 py::dict py_paper_parameters() {
   const PaperParameters& p = paper();
   py::list rods;
@@ -429,6 +477,29 @@ PYBIND11_MODULE(hertzdash, m) {
          "bounces: impacts followed, the first included, in [1, 1000]; min_rebound_velocity [m/s] >= 0 ends the "
          "sequence after a slower rebound. Bad values raise ValueError naming --bounces, "
          "--min-rebound-velocity, --target-interval-restitution or the option.\n\n" +
+         options)
+            .c_str());
+  m.def("virtual_measurement", &py_virtual_measurement, py::arg("path"), py::arg("sample_rate") = MeasurementChain{}.sample_rate_Hz,
+        py::arg("anti_alias") = 0.0, py::arg("noise") = 0.0, py::arg("seed") = std::uint64_t{1},
+        py::arg("channels") = "force_N,accel_mps2,displacement_m",
+        ("virtual_measurement(path, sample_rate=1e6, anti_alias=0, noise=0, seed=1, "
+         "channels='force_N,accel_mps2,displacement_m', **options) -> dict\n\nA SYNTHETIC trace: the drop test "
+         "recorded as a measurement would be (anti-alias filter [Hz, 0 = none], sampling [Hz], white noise as a "
+         "fraction of each channel's peak, seeded), written to `path` in the measured-trace format "
+         "(data/measurements/README.md) with `synthetic: true`; exactly `hertzdash simulate --trace PATH "
+         "--trace-format measured ...`. Returns simulate()'s dict.\n\n" +
+         options)
+            .c_str());
+  m.def("fit", &py_fit, py::arg("trace"), py::arg("fit") = "ball-E,restitution", py::arg("channels") = "",
+        py::arg("resample") = 0.0, py::arg("compare_laws") = false, py::arg("curves") = "",
+        ("fit(trace, fit='ball-E,restitution', channels='', resample=0, compare_laws=False, curves='', **options) "
+         "-> dict\n\nIdentify parameters from a measured trace by weighted least squares, exactly `hertzdash fit "
+         "--trace TRACE --json` (docs/fit.md): trace, fits (parameters with estimate, standard_error, bounds; "
+         "correlation; channels with noise_sigma and residual_rms; reduced_chi_square, condition_number, "
+         "identifiable, aic, bic, fitted_inputs), failures. fit: NAME or NAME:LOWER:UPPER, comma-separated; the "
+         "starting values are the options below (set-up options only). curves: a CSV file for the trace, the "
+         "fit and the residuals. Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
+         "are UserWarnings.\n\n" +
          options)
             .c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },

@@ -319,3 +319,34 @@ def test_a_peak_pressure_beyond_yield_is_a_warning():
         r = hertzdash.simulate(ball_yield_stress=float("inf"))
     assert not [w for w in caught if "yield" in str(w.message)]
     assert r["exceeds_yield_onset"] is False and r["yield_onset_pressure_Pa"] is None
+
+
+def test_virtual_measurement_and_fit_are_the_programs(tmp_path):
+    # virtual_measurement() writes the file `simulate --trace-format measured` writes, byte for
+    # byte, and fit() returns `fit --json`; the recovered E and e lie within 2 sigma of the truth
+    # (the C++ tests cover the statistics).
+    py_file, cli_file = tmp_path / "py.csv", tmp_path / "cli.csv"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        hertzdash.virtual_measurement(str(py_file), noise=0.01, seed=7, ball_E=1.7e9, restitution=0.8,
+                                      integrator="rk4", dt=2e-7)
+    cli("simulate", "--trace", str(cli_file), "--trace-format", "measured", "--noise", "0.01", "--seed", "7",
+        "--ball-E", "1.7e9", "--restitution", "0.8", "--integrator", "rk4", "--dt", "2e-7")
+    assert py_file.read_bytes() == cli_file.read_bytes()
+    with pytest.warns(UserWarning, match="synthetic: true"):
+        r = hertzdash.fit(str(py_file))
+    assert r == cli_json("fit", "--trace", str(py_file))
+    E, e = r["fits"][0]["parameters"][:2]
+    assert abs(E["estimate"] - 1.7e9) < 2 * E["standard_error"]
+    assert abs(e["estimate"] - 0.8) < 2 * e["standard_error"]
+
+
+def test_fit_refuses_solver_options_and_bad_lists(tmp_path):
+    trace = tmp_path / "t.csv"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        hertzdash.virtual_measurement(str(trace))
+    with pytest.raises(TypeError, match="solver option 'rtol'"):
+        hertzdash.fit(str(trace), rtol=1e-9)
+    with pytest.raises(ValueError, match="--fit"):
+        hertzdash.fit(str(trace), fit="ball-colour")
