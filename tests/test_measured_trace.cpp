@@ -59,6 +59,19 @@ TEST_CASE("a well-formed synthetic trace is read with its provenance and gaps", 
   CHECK(m.displacement_m.empty());
 }
 
+TEST_CASE("columns in other units are read into SI", "[measured_trace]") {
+  // 250 us = 2.5e-4 s; 1.5 kN = 1500 N; -2 g = -2 x 9.80665 m/s^2 (standard gravity); 3 mm = 3e-3 m.
+  ScratchDir dir("units");
+  const auto file = dir.write("units.csv", synthetic_header + "t_us,force_kN,accel_g,displacement_mm\n"
+                                                               "0,0,1,0\n"
+                                                               "250,1.5,-2,3\n");
+  const MeasuredTrace m = read_measured_trace(file);
+  CHECK(m.t_s == std::vector<double>{0.0, 250 * 1e-6});
+  CHECK(m.force_N == std::vector<double>{0.0, 1.5 * 1e3});
+  CHECK(m.accel_mps2 == std::vector<double>{9.80665, -2 * 9.80665});
+  CHECK(m.displacement_m == std::vector<double>{0.0, 3 * 1e-3});
+}
+
 TEST_CASE("malformed traces are rejected with a message naming the file and the defect", "[measured_trace]") {
   ScratchDir dir("bad");
   auto rejects = [&](const std::string& text, const std::string& expected) {
@@ -69,11 +82,12 @@ TEST_CASE("malformed traces are rejected with a message naming the file and the 
   rejects("# rod: steel\n# height_m: 0.02\nt_s,force_N\n0,0\n1e-4,1\n", "'# source: ...'");
   rejects("# source: x\n# height_m: 0.02\nt_s,force_N\n0,0\n1e-4,1\n", "'# rod: ...'");
   rejects("# source: x\n# rod: steel\n# height_m: -1\nt_s,force_N\n0,0\n1e-4,1\n", "must be a finite number > 0");
-  rejects(synthetic_header + "time,force_N\n0,0\n1e-4,1\n", "missing column 't_s'");
-  rejects(synthetic_header + "t_s,force_kN\n0,0\n1e-4,1\n", "unknown column 'force_kN'");
+  rejects(synthetic_header + "time,force_N\n0,0\n1e-4,1\n", "unknown column 'time'");
+  rejects(synthetic_header + "force_N,accel_g\n0,0\n1e-4,1\n", "missing the time column (t_s, t_ms or t_us)");
+  rejects(synthetic_header + "t_s,force_lbf\n0,0\n1e-4,1\n", "unknown column 'force_lbf'");
   rejects(synthetic_header + "t_s\n0\n1e-4\n", "at least one measured quantity");
   rejects(synthetic_header + "t_s,force_N\n0,0\n", "at least two samples");
-  rejects(synthetic_header + "t_s,force_N\n0,0\n0,1\n", "t_s must increase strictly");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n0,1\n", "the time must increase strictly (sample 2)");
   rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,abc\n", "'abc' is not a number");
   rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4\n", "expected 2 fields");
 }
