@@ -326,7 +326,7 @@ nlohmann::ordered_json to_json(const TraceFit& f, const PaperParameters& paper) 
   j["contact_time_s"] = f.contact_time_s;
   nlohmann::ordered_json in;
   const DropTestSetup s = resolve_setup(f.fitted_options, paper);
-  for (const auto& [name, value] : describe_run(s, f.law, resolve_solver(f.fitted_options))) in[name] = json_value(value);
+  for (const auto& [name, value] : describe_run(s, f.law, f.model_solver)) in[name] = json_value(value);
   j["fitted_inputs"] = in;
   return j;
 }

@@ -103,6 +103,7 @@ class TraceModel {
   /// t_H at the initial parameters [s]: the unit of the onset variable and of the step.
   double time_scale_s() const { return time_scale_s_; }
   int runs() const { return runs_; }
+  const SolverSettings& solver() const { return solver_; }
 
   RunOptions options_at(const std::vector<double>& values) const {
     RunOptions o = base_;
@@ -567,6 +568,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
     fit.channels[c].residual_rms = std::sqrt(sum_sq[c] / static_cast<double>(fit.channels[c].samples));
   fit.model_runs = model.runs();
   fit.fitted_options = model.options_at(estimate);
+  fit.model_solver = model.solver();
   return fit;
 }
 
@@ -578,7 +580,9 @@ LawComparison compare_laws(const MeasuredTrace& trace, const RunOptions& base, c
     o.damping = std::string(law.name);
     try {
       out.fits.push_back(fit_trace(trace, o, paper, settings));
-    } catch (const InvalidParameter& e) {
+    } catch (const DataError&) {
+      throw;  // the trace's fault, the same for every law
+    } catch (const std::exception& e) {
       out.failures.emplace_back(o.damping, e.what());
     }
   }

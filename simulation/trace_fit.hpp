@@ -101,6 +101,7 @@ struct TraceFit {
   std::string stop_reason;                           ///< GSL's: small step, small gradient
   double contact_time_s = 0;                         ///< of the fitted model
   RunOptions fitted_options;                         ///< the run options at the estimate
+  SolverSettings model_solver;                       ///< how the model was integrated (RK4, t_H / steps_per_contact)
 };
 
 /// Largest condition number of an identifiable fit.
@@ -123,7 +124,8 @@ TraceFit fit_trace(const MeasuredTrace& trace, const RunOptions& base, const Pap
                    const TraceFitSettings& settings);
 
 /// fit_trace for every registered law (base.damping replaced), ranked by AIC; a law that
-/// cannot be fitted (its options reject the set-up) is left out and named in `failures`.
+/// cannot be fitted (its options reject the set-up, its model or the fit fails) is left out and
+/// named in `failures`. A trace unfit for fitting throws DataError as fit_trace does.
 struct LawComparison {
   std::vector<TraceFit> fits;                                 ///< best (lowest AIC) first
   std::vector<std::pair<std::string, std::string>> failures;  ///< law, why
