@@ -3,7 +3,7 @@
 // estimates, their standard errors and correlation, the residuals per channel, whether the
 // trace determines the parameters; --compare-laws fits every registered law and ranks them by
 // AIC; --curves writes the trace, the fitted model and the residuals for a figure
-// (validation/identification/fit_curves.gp draws one).
+// (validation/identification/identification_fit.gp draws two).
 #include "cli/command.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
@@ -24,6 +24,9 @@ struct FitCommandOptions {
   double resample_Hz = 0;
   bool compare_laws = false, json = false;
 };
+
+// AIC differences below 2 do not prefer one model over another (Burnham and Anderson).
+constexpr double aic_tie = 2.0;
 
 void print_fit(const TraceFit& f) {
   std::cout << fmt::format("  {:<24} {:>14} {:>14} {:>14} {:>9}\n", "parameter", "initial", "estimate", "std_error",
@@ -56,15 +59,19 @@ void print_text(const FitRun& r) {
     print_fit(r.fits[0]);
     return;
   }
-  std::cout << fmt::format("  {:>3} {:<22} {:>14} {:>14} {:>12} {:>12}\n", "", "law (best first)", "AIC", "BIC",
-                           "chi2/dof", "condition");
+  std::cout << fmt::format("  {:>3} {:<22} {:>12} {:>12} {:>12} {:>10} {:>10}\n", "", "law (best first)", "AIC", "dAIC",
+                           "BIC", "chi2/dof", "condition");
+  std::string ties;
   for (std::size_t i = 0; i < r.fits.size(); ++i) {
     const TraceFit& f = r.fits[i];
-    std::cout << fmt::format("  {:>3} {:<22} {:>14.6g} {:>14.6g} {:>12.4g} {:>12.3g}\n", i + 1, f.law, f.aic, f.bic,
-                             f.reduced_chi_square, f.condition_number);
+    const double gap = f.aic - r.fits.front().aic;
+    if (i > 0 && gap < aic_tie) ties += (ties.empty() ? "" : ", ") + f.law;
+    std::cout << fmt::format("  {:>3} {:<22} {:>12.6g} {:>12.4g} {:>12.6g} {:>10.4g} {:>10.3g}\n", i + 1, f.law, f.aic, gap,
+                             f.bic, f.reduced_chi_square, f.condition_number);
   }
   for (const auto& [law, why] : r.failures) std::cout << fmt::format("  {}: not fitted: {}\n", law, why);
-  std::cout << fmt::format("  best: '{}'\n", r.fits.front().law);
+  std::cout << fmt::format("  best: '{}'{}\n", r.fits.front().law,
+                           ties.empty() ? "" : fmt::format(" (tied within dAIC < {:g}: {})", aic_tie, ties));
   print_fit(r.fits.front());
 }
 

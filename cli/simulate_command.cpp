@@ -117,11 +117,11 @@ Command add_simulate_command(CLI::App& app) {
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
             report_fallback(r.solver.integrator, r.summary.integrator_used, r.fallback_reason);
             if (opt->trace_format == "measured") {
-              if (const std::string n = virtual_measurement_note(r, opt->chain); !n.empty())
-                std::cerr << "hertzdash: note: " << n << "\n";
               write_measured_trace(opt->trace_path, virtual_measurement(r, opt->run.rod, opt->chain),
                                    "hertzdash simulate: a SYNTHETIC virtual measurement of the model (not a measurement)",
                                    virtual_measurement_parameters(r, opt->chain));
+              if (const std::string n = virtual_measurement_note(r, opt->chain); !n.empty())
+                std::cerr << "hertzdash: note: " << n << "\n";
             } else if (!opt->trace_path.empty())
               write_trace(r, opt->trace_path);
             if (const std::string n = stability_note(r); !n.empty()) std::cerr << "hertzdash: note: " << n << "\n";

@@ -323,6 +323,7 @@ nlohmann::ordered_json to_json(const TraceFit& f, const PaperParameters& paper) 
   j["iterations"] = f.iterations;
   j["model_runs"] = f.model_runs;
   j["stop_reason"] = f.stop_reason;
+  j["converged"] = f.converged;
   j["contact_time_s"] = f.contact_time_s;
   nlohmann::ordered_json in;
   const DropTestSetup s = resolve_setup(f.fitted_options, paper);
@@ -378,10 +379,13 @@ std::vector<std::string> fit_warnings(const FitRun& run) {
     w.push_back("the trace says 'synthetic: true': it is not a measurement");
   for (const TraceFit& f : run.fits) {
     const std::string law = run.fits.size() > 1 ? " (" + f.law + ")" : "";
+    if (!f.converged)
+      w.push_back(fmt::format("the fit{} did not converge ({}): the estimates are where it stopped", law, f.stop_reason));
     if (!f.identifiable)
-      w.push_back(fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (identifiable "
-                              "below {:g}); fit fewer parameters or add a channel",
-                              law, f.condition_number, identifiable_condition_limit));
+      w.push_back(fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (limit {:g}), "
+                              "a correlation beyond {:g} or an infinite standard error; fit fewer parameters or add a "
+                              "channel",
+                              law, f.condition_number, identifiable_condition_limit, identifiable_correlation_limit));
     for (const FittedParameter& p : f.parameters)
       if (p.at_bound)
         w.push_back(fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law, p.estimate));

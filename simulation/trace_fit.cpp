@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <tuple>
@@ -111,18 +112,29 @@ class TraceModel {
     return o;
   }
 
-  /// The impact at these parameter values (the last one is kept).
-  const ImpactHistory& history(const std::vector<double>& values) {
-    if (!history_ || values != values_) {
-      const DropTestSetup s = onset_setup(options_at(values));
-      std::vector<TraceSample> trace;
-      const ImpactSummary summary = simulator_->run(s, base_.damping, &trace);
-      ++runs_;
-      history_.emplace(std::move(trace), s.gravity_mps2);
-      contact_time_s_ = summary.contact_time_s;
-      values_ = values;
+  /// The impact at these parameter values (the last one is kept), or nullptr where they leave
+  /// the model's domain: values the set-up rejects, or an undamped Hertz contact longer than
+  /// max_contact_growth times the starting one (the fixed step would take that many more steps).
+  const ImpactHistory* history(const std::vector<double>& values) {
+    if (values_valid_ && values == values_) return history_ ? &*history_ : nullptr;
+    values_ = values;
+    values_valid_ = true;
+    history_.reset();
+    DropTestSetup s;
+    try {
+      s = onset_setup(options_at(values));
+    } catch (const InvalidParameter&) {
+      return nullptr;
     }
-    return *history_;
+    if (undamped_hertz_impact(hertz_stiffness(s), s.mass_kg, approach_speed(s)).contact_time_s >
+        max_contact_growth * time_scale_s_)
+      return nullptr;
+    std::vector<TraceSample> trace;
+    const ImpactSummary summary = simulator_->run(s, base_.damping, &trace);
+    ++runs_;
+    history_.emplace(std::move(trace), s.gravity_mps2);
+    contact_time_s_ = summary.contact_time_s;
+    return &*history_;
   }
   double contact_time_s() const { return contact_time_s_; }
 
@@ -139,7 +151,9 @@ class TraceModel {
   double time_scale_s_ = 0;
   SolverSettings solver_;
   std::optional<ImpactSimulator> simulator_;
+  static constexpr double max_contact_growth = 50;
   std::vector<double> values_;
+  bool values_valid_ = false;
   std::optional<ImpactHistory> history_;
   double contact_time_s_ = 0;
   int runs_ = 0;
@@ -159,19 +173,27 @@ double median(std::vector<double> v) {
   return *mid;
 }
 
-// sigma from the second differences of consecutive samples with values (see the header).
-double noise_sigma(const std::vector<double>& y) {
+// sigma of the channel `name` from the second differences of consecutive samples with values
+// (see the header), at least the rounding of a recorder whose step is the smallest change
+// between samples (q / sqrt(12)) and 1e-6 of the largest magnitude (a noise-free virtual
+// experiment). A channel that never changes carries no information: DataError.
+double noise_sigma(const std::vector<double>& y, const std::string& file, const std::string& name) {
   std::vector<double> d2;
   for (std::size_t i = 1; i + 1 < y.size(); ++i)
     if (std::isfinite(y[i - 1]) && std::isfinite(y[i]) && std::isfinite(y[i + 1]))
       d2.push_back(y[i + 1] - 2.0 * y[i] + y[i - 1]);
   const double m = median(d2);
   for (double& d : d2) d = std::abs(d - m);
-  double largest = 0;
-  for (double v : y)
-    if (std::isfinite(v)) largest = std::max(largest, std::abs(v));
-  // A noise-free trace (a virtual experiment without noise) gets the noise of a 20-bit recorder.
-  return std::max(1.4826 * median(d2) / std::sqrt(6.0), 1e-6 * largest);
+  double largest = 0, step = inf;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (!std::isfinite(y[i])) continue;
+    largest = std::max(largest, std::abs(y[i]));
+    if (i > 0 && std::isfinite(y[i - 1]) && y[i] != y[i - 1]) step = std::min(step, std::abs(y[i] - y[i - 1]));
+  }
+  if (!std::isfinite(step))
+    throw DataError(fmt::format("{}: the {} column never changes: it carries nothing to fit", file, name));
+  const double mad = d2.empty() ? 0.0 : 1.4826 * median(d2) / std::sqrt(6.0);
+  return std::max({mad, step / std::sqrt(12.0), 1e-6 * largest});
 }
 
 std::vector<std::string> channels_to_fit(const MeasuredTrace& trace, const TraceFitSettings& settings) {
@@ -180,9 +202,14 @@ std::vector<std::string> channels_to_fit(const MeasuredTrace& trace, const Trace
     const bool asked = settings.channels.empty() ||
                        std::find(settings.channels.begin(), settings.channels.end(), c) != settings.channels.end();
     if (!asked) continue;
-    if (quantity(trace, c)->empty()) {
+    const std::vector<double>& y = *quantity(trace, c);
+    if (y.empty()) {
       if (settings.channels.empty()) continue;
       throw DataError(fmt::format("{}: no {} column to fit (--channels)", trace.path.string(), c));
+    }
+    if (std::none_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); })) {
+      if (settings.channels.empty()) continue;
+      throw DataError(fmt::format("{}: the {} column has no values (--channels)", trace.path.string(), c));
     }
     out.push_back(c);
   }
@@ -241,6 +268,42 @@ std::vector<double> initial_values(const RunOptions& base, const PaperParameters
   return v;
 }
 
+// Where the contact starts to show: the first time the force exceeds, or the acceleration falls
+// below g by, ten noise levels. Empty without such a channel or crossing.
+std::optional<double> first_departure(const std::vector<std::string>& names, const std::vector<double>& sigma, double g,
+                                      const std::function<double(std::size_t, std::size_t)>& value, std::size_t count,
+                                      const std::function<double(std::size_t)>& time) {
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      const double v = value(c, i);
+      if ((names[c] == "force_N" && v > 10 * sigma[c]) || (names[c] == "accel_mps2" && g - v > 10 * sigma[c]))
+        return time(i);
+    }
+  return std::nullopt;
+}
+
+// The onset on the trace's clock that makes the model's departure coincide with the trace's
+// (0 when either has none).
+double onset_guess_s(const MeasuredTrace& trace, const std::vector<ChannelFit>& channels, const ImpactHistory& model,
+                     double g, double dt_s) {
+  std::vector<std::string> names;
+  std::vector<double> sigma;
+  for (const ChannelFit& c : channels) names.push_back(c.name), sigma.push_back(c.noise_sigma);
+  const auto in_trace = first_departure(
+      names, sigma, g,
+      [&](std::size_t c, std::size_t i) {
+        const double v = (*quantity(trace, names[c]))[i];
+        return std::isfinite(v) ? v : (names[c] == "accel_mps2" ? g : 0.0);
+      },
+      trace.t_s.size(), [&](std::size_t i) { return trace.t_s[i]; });
+  const auto steps = static_cast<std::size_t>(model.contact_time_s() / dt_s) + 1;
+  const auto in_model = first_departure(
+      names, sigma, g,
+      [&](std::size_t c, std::size_t i) { return instrument_channel(model.instruments_at(i * dt_s), names[c]); }, steps,
+      [&](std::size_t i) { return i * dt_s; });
+  return in_trace && in_model ? *in_trace - *in_model : 0.0;
+}
+
 // ---- The least-squares problem in the unbounded variables z = (transformed parameters, t0 / t_H).
 
 class FitProblem {
@@ -259,20 +322,24 @@ class FitProblem {
   }
   double onset_s(const double* z) const { return z[transforms_.size()] * model_->time_scale_s(); }
 
-  /// The model's value of each observation's channel at z.
+  /// The model's value of each observation's channel at z; empty outside the model's domain.
   std::vector<double> model_values(const double* z) {
-    const ImpactHistory& h = model_->history(physical(z));
+    const ImpactHistory* h = model_->history(physical(z));
+    if (!h) return {};
     const double t0 = onset_s(z);
     std::vector<double> m(obs_.size());
     for (std::size_t i = 0; i < obs_.size(); ++i)
-      m[i] = instrument_channel(h.instruments_at(obs_[i].t_s - t0), channels_[obs_[i].channel]);
+      m[i] = instrument_channel(h->instruments_at(obs_[i].t_s - t0), channels_[obs_[i].channel]);
     return m;
   }
 
+  /// Outside the model's domain every residual is `outside` (1e30): the trust region rejects the
+  /// step and shrinks, as it does for any step that raises the cost.
   void residuals(const double* z, double* r) {
     const std::vector<double> m = model_values(z);
-    for (std::size_t i = 0; i < obs_.size(); ++i) r[i] = (obs_[i].y - m[i]) * obs_[i].inv_sigma;
+    for (std::size_t i = 0; i < obs_.size(); ++i) r[i] = m.empty() ? outside : (obs_[i].y - m[i]) * obs_[i].inv_sigma;
   }
+  static constexpr double outside = 1e30;
 
   /// Central differences, step 1e-6 in every z (relative 1e-6 of p - lower; 1e-6 t_H for the onset).
   void jacobian(const double* z, gsl_matrix* J) {
@@ -409,30 +476,38 @@ MeasuredTrace prepare_trace(const MeasuredTrace& trace, const RunOptions& base, 
 
   // The sampling must resolve the contact of the model at its initial parameters.
   TraceModel model(base, paper, {}, settings.steps_per_contact);
-  model.history({});
+  if (!model.history({})) throw InvalidParameter("--fit", "the starting values", "values inside the model's domain");
   const double tc = model.contact_time_s(), dt = median_interval_s(t.t_s);
   if (!(tc / dt >= min_samples_per_contact))
     throw DataError(fmt::format("{}: sampled every {:.3g} s ({:.4g} Hz), too coarse: the model's contact lasts {:.3g} s "
                                 "and needs at least {:g} samples, a sampling rate of at least {:.4g} Hz",
                                 file, dt, 1.0 / dt, tc, min_samples_per_contact, min_samples_per_contact / tc));
 
-  // A contact must rise above the noise: the force above zero, or the deceleration below g.
+  // A contact must stand out of the noise by ten noise levels in some channel: the force above
+  // zero, the deceleration below g, the velocity reversed (a rebound), or the displacement
+  // returning from its largest value (the rod coming back up).
   const double g = resolve_setup(base, paper).gravity_mps2;
-  bool checked = false, contact = false;
+  bool contact = false;
   std::string seen;
-  for (const auto& [name, rest, sign] : {std::tuple{"force_N", 0.0, 1.0}, std::tuple{"accel_mps2", g, -1.0}}) {
-    if (std::find(channels.begin(), channels.end(), name) == channels.end()) continue;
+  for (const std::string& name : channels) {
     const std::vector<double>& y = *quantity(t, name);
-    const double sigma = noise_sigma(y);
-    double largest = 0;
-    for (double v : y)
-      if (std::isfinite(v)) largest = std::max(largest, sign * (v - rest));
-    checked = true;
-    contact = contact || largest > 10.0 * sigma;
-    seen += fmt::format("{}{} departs from {:g} by at most {:.3g} against a noise of {:.3g}", seen.empty() ? "" : "; ",
-                        name, rest, largest, sigma);
+    const double sigma = noise_sigma(y, file, name);
+    double signature = 0, last = NAN, peak = -inf;
+    for (double v : y) {
+      if (!std::isfinite(v)) continue;
+      if (name == "force_N") signature = std::max(signature, v);
+      else if (name == "accel_mps2") signature = std::max(signature, g - v);
+      else if (name == "velocity_mps") signature = std::max(signature, -v);
+      else peak = std::max(peak, v), last = v;
+    }
+    if (name == "displacement_m") signature = peak - last;
+    contact = contact || signature > 10.0 * sigma;
+    seen += fmt::format("{}{} {:.3g} against a noise of {:.3g}", seen.empty() ? "" : "; ", name, signature, sigma);
   }
-  if (checked && !contact) throw DataError(fmt::format("{}: no contact in the trace ({}; a contact needs ten noise levels)", file, seen));
+  if (!contact)
+    throw DataError(fmt::format("{}: no contact in the trace: no channel departs from free fall by ten noise levels "
+                                "(force above 0, g minus acceleration, upward velocity, displacement's return: {})",
+                                file, seen));
   if (t.t_s.size() <= settings.parameters.size() + 1)
     throw DataError(fmt::format("{}: {} samples cannot determine {} parameters", file, t.t_s.size(), settings.parameters.size() + 1));
   return t;
@@ -461,7 +536,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
     const std::vector<double>& y = *quantity(trace, channels[c]);
     ChannelFit ch;
     ch.name = channels[c];
-    ch.noise_sigma = noise_sigma(y);
+    ch.noise_sigma = noise_sigma(y, trace.path.string(), ch.name);
     for (std::size_t i = 0; i < y.size(); ++i)
       if (std::isfinite(y[i])) obs.push_back({c, trace.t_s[i], y[i], 1.0 / ch.noise_sigma}), ++ch.samples;
     fit.channels.push_back(ch);
@@ -470,16 +545,20 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   const std::size_t n = problem.n(), p = problem.p();
   if (n <= p) throw DataError(fmt::format("{}: {} values cannot determine {} parameters", trace.path.string(), n, p));
 
-  // Start: the initial values, and the onset time that fits best at them (a scan over +-0.3 t_H:
-  // the onset needs no model run).
+  // Start: the initial values, and the onset time that fits best at them: first where the
+  // trace's contact departs from free fall minus where the model's does (onset_guess_s), then
+  // a scan over +-0.3 t_H around it (the onset needs no model run).
   std::vector<double> z0;
   for (std::size_t j = 0; j < transforms.size(); ++j) z0.push_back(transforms[j].z(initial[j]));
-  z0.push_back(0.0);
+  const double guess = onset_guess_s(trace, fit.channels, *model.history(initial), resolve_setup(base, paper).gravity_mps2,
+                                     model.solver().dt_s) /
+                       model.time_scale_s();
+  z0.push_back(guess);
   {
     std::vector<double> r(n);
-    double best = inf, best_z = 0;
+    double best = inf, best_z = guess;
     for (int k = -30; k <= 30; ++k) {
-      z0.back() = 0.01 * k;
+      z0.back() = guess + 0.01 * k;
       problem.residuals(z0.data(), r.data());
       double chi2 = 0;
       for (double v : r) chi2 += v * v;
@@ -509,6 +588,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   if (status != GSL_SUCCESS && status != GSL_EMAXITER && status != GSL_ENOPROG)
     throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_driver failed: ") + gsl_strerror(status));
   fit.stop_reason = stop_reason(status, info);
+  fit.converged = status == GSL_SUCCESS;
   fit.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w.get()));
 
   const gsl_vector* zv = gsl_multifit_nlinear_position(w.get());
@@ -525,6 +605,16 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   gsl_matrix_scale(covar.get(), fit.reduced_chi_square);
   fit.condition_number = scaled_condition_number(J, problem, z.data());
 
+  // A parameter the trace does not see has a zero column in J; GSL's pivoted covariance then
+  // sets its variance to zero, which would read as perfectly determined: it is infinite.
+  for (std::size_t j = 0; j < p; ++j) {
+    gsl_vector_const_view column = gsl_matrix_const_column(J, j);
+    if (gsl_blas_dnrm2(&column.vector) == 0 || !(gsl_matrix_get(covar.get(), j, j) > 0))
+      for (std::size_t i = 0; i < p; ++i) {
+        gsl_matrix_set(covar.get(), i, j, i == j ? inf : NAN);
+        gsl_matrix_set(covar.get(), j, i, i == j ? inf : NAN);
+      }
+  }
   const std::vector<double> estimate = problem.physical(z.data());
   bool finite_errors = true;
   for (std::size_t j = 0; j < p; ++j) {
@@ -533,10 +623,12 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
     if (j < transforms.size()) {
       const Transform& t = transforms[j];
       fp = {names[j], initial[j], estimate[j], std::abs(t.dp_dz(z[j])) * sz, t.lo, t.hi};
-      const double span = t.two_sided() ? t.hi - t.lo : std::abs(initial[j]);
-      fp.at_bound = (estimate[j] - t.lo) < 1e-6 * span || (t.two_sided() && (t.hi - estimate[j]) < 1e-6 * span);
+      // At a bound the transform flattens (dp/dz -> 0) and the standard error shrinks with it:
+      // within 1e-3 of the range (two bounds) or of the starting distance from the bound.
+      fp.at_bound = t.two_sided() ? std::abs(z[j]) > std::log(1e3)
+                                  : (estimate[j] - t.lo) < 1e-3 * std::abs(initial[j] - t.lo);
     } else {
-      fp = {"onset-time", 0.0, problem.onset_s(z.data()), model.time_scale_s() * sz, -inf, inf};
+      fp = {"onset-time", guess * model.time_scale_s(), problem.onset_s(z.data()), model.time_scale_s() * sz, -inf, inf};
     }
     finite_errors = finite_errors && std::isfinite(fp.standard_error);
     fit.parameters.push_back(fp);
@@ -547,7 +639,11 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
       fit.correlation.back().push_back(gsl_matrix_get(covar.get(), i, j) /
                                        std::sqrt(gsl_matrix_get(covar.get(), i, i) * gsl_matrix_get(covar.get(), j, j)));
   }
-  fit.identifiable = finite_errors && fit.condition_number < identifiable_condition_limit;
+  double largest_correlation = 0;
+  for (std::size_t i = 0; i < p; ++i)
+    for (std::size_t j = 0; j < i; ++j) largest_correlation = std::max(largest_correlation, std::abs(fit.correlation[i][j]));
+  fit.identifiable = finite_errors && fit.condition_number < identifiable_condition_limit &&
+                     largest_correlation < identifiable_correlation_limit;
   const double k = static_cast<double>(p);
   fit.aic = fit.chi_square + 2.0 * k;
   fit.bic = fit.chi_square + k * std::log(static_cast<double>(n));
@@ -575,6 +671,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
 LawComparison compare_laws(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                            const TraceFitSettings& settings) {
   LawComparison out;
+  initial_values(base, paper, settings.parameters);  // a bad --fit is the user's, not a law's
   for (const LawInfo& law : registered_laws()) {
     RunOptions o = base;
     o.damping = std::string(law.name);

@@ -25,13 +25,20 @@
 // covariance is s^2 (J^T J)^{-1} with s^2 = chi^2 / (n - p) (gsl_multifit_nlinear_covar), mapped
 // to the physical parameters by the transforms' derivatives. The Jacobian is by central
 // differences with step 1e-6 in the unbounded variables: on its fixed grid the model is smooth
-// in the parameters to rounding (~1e-10 error at this step), except at samples within ~1e-6 t_H
-// of the contact's ends, where the paper's dashpot force rises as sqrt(tau); a larger step lets
-// those samples spoil the Jacobian (at step 1e-4 the exactly degenerate pair ball-E, ball-radius,
-// which enter only through K, shows a condition number of 3e4 instead of > 1e6). The condition
-// number is that of J with columns scaled to relative changes (d r / d ln p; d r / d(t0 / t_H));
-// above 1e6 some combination of the parameters is not determined by the trace, and the fit says
-// it is not identifiable.
+// in the parameters, except at samples near the contact's ends, where the paper's dashpot force
+// rises as sqrt(tau) and the differences err; a larger step lets more samples spoil the
+// Jacobian (at step 1e-4 the exactly degenerate pair ball-E, ball-radius, which enter only
+// through K, shows a condition number of 3e4, at 1e-6 about 1.5e6: its columns agree to ~1e-6).
+// The condition number is that of J with columns scaled to relative changes (d r / d ln p;
+// d r / d(t0 / t_H)). The fit is identifiable when that is below 1e6, no two estimates correlate
+// beyond 0.999 (a degenerate pair among other parameters can hide under the condition limit, the
+// Jacobian being only that accurate) and every standard error is finite: a parameter the trace
+// does not see at all (a zero column of J) has an infinite one.
+//
+// Outside the model's domain (values the set-up rejects, or a contact over 50 times longer
+// than at the start) a step is rejected. The onset starts where the trace's contact first
+// departs from free fall (force or acceleration, ten noise levels) less where the model's does,
+// so a trace need not start near its onset.
 //
 // Information criteria with the noise known (sigma_c): AIC = chi^2 + 2k, BIC = chi^2 + k ln n,
 // k the number of fitted parameters including t0.
@@ -73,7 +80,7 @@ struct FittedParameter {
   std::string name;
   double initial = 0, estimate = 0, standard_error = 0;
   double lower = 0, upper = 0;
-  bool at_bound = false;  ///< within 1e-6 (relative) of a bound: the standard error does not hold
+  bool at_bound = false;  ///< at a bound (within 1e-3 of the range): the standard error does not hold
 };
 
 /// One channel: its weight and how well the model explains it.
@@ -95,10 +102,11 @@ struct TraceFit {
   double chi_square = 0;                             ///< sum r^2
   double reduced_chi_square = 0;                     ///< chi^2 / (n - p): about 1 if the model explains the trace to its noise
   double condition_number = 0;
-  bool identifiable = false;                         ///< condition_number < 1e6 and every standard error finite
+  bool identifiable = false;                         ///< condition number, correlations and standard errors within limits
   double aic = 0, bic = 0;
   int iterations = 0, model_runs = 0;
-  std::string stop_reason;                           ///< GSL's: small step, small gradient
+  std::string stop_reason;                           ///< GSL's: small step, small gradient, or why not converged
+  bool converged = false;                            ///< GSL's test met (not the iteration limit, not stalled)
   double contact_time_s = 0;                         ///< of the fitted model
   RunOptions fitted_options;                         ///< the run options at the estimate
   SolverSettings model_solver;                       ///< how the model was integrated (RK4, t_H / steps_per_contact)
@@ -106,6 +114,8 @@ struct TraceFit {
 
 /// Largest condition number of an identifiable fit.
 inline constexpr double identifiable_condition_limit = 1e6;
+/// Largest correlation between two estimates of an identifiable fit.
+inline constexpr double identifiable_correlation_limit = 0.999;
 
 /// Fewest samples per contact the fit accepts (the sampling check).
 inline constexpr double min_samples_per_contact = 10;

@@ -64,7 +64,9 @@ void validate(const MeasurementChain& c) {
   if (c.anti_alias_cutoff_Hz != 0 && !(c.anti_alias_cutoff_Hz > 0 && c.anti_alias_cutoff_Hz <= c.sample_rate_Hz / 2))
     throw InvalidParameter("--anti-alias", format_value(c.anti_alias_cutoff_Hz),
                            fmt::format("0 (no filter) or a cut-off in (0, {}] Hz, half the sampling rate", c.sample_rate_Hz / 2));
-  require_non_negative("--noise", c.noise_fraction, "(a fraction of each channel's largest magnitude)");
+  if (!(c.noise_fraction >= 0 && c.noise_fraction <= 1))
+    throw InvalidParameter("--noise", format_value(c.noise_fraction),
+                           "in [0, 1], a fraction of each channel's largest magnitude");
   if (c.channels.empty()) throw InvalidParameter("--channels", "", "at least one channel");
   require_positive("window margin", c.window_margin, "contact times");
 }
@@ -73,7 +75,12 @@ MeasuredTrace record_virtual_measurement(const ImpactHistory& history, const Mea
   validate(chain);
   const double tc = history.contact_time_s(), dt = 1.0 / chain.sample_rate_Hz;
   const double t_first = -chain.window_margin * tc, t_last = (1.0 + chain.window_margin) * tc;
-  const auto samples = static_cast<std::size_t>(std::floor((t_last - t_first) / dt)) + 1;
+  const double count = std::floor((t_last - t_first) / dt) + 1;
+  if (!(count <= max_virtual_samples))
+    throw InvalidParameter("--sample-rate", format_value(chain.sample_rate_Hz),
+                           fmt::format("at most {:.4g} Hz: {:g} samples over this contact's window of {:.4g} s",
+                                       max_virtual_samples / (t_last - t_first), max_virtual_samples, t_last - t_first));
+  const auto samples = static_cast<std::size_t>(count);
   MeasuredTrace m;
   m.synthetic = true;
   for (std::size_t i = 0; i < samples; ++i) m.t_s.push_back(t_first + static_cast<double>(i) * dt);
@@ -88,7 +95,7 @@ MeasuredTrace record_virtual_measurement(const ImpactHistory& history, const Mea
     auto signal = [&](double tau) { return instrument_channel(history.instruments_at(tau), channel); };
     if (chain.anti_alias_cutoff_Hz > 0) {
       // The filter runs on a grid `oversampling` times finer than the sampling, from rest at the
-      // signal's value ten filter time constants before the window.
+      // signal's value 10 / (2 pi f_c) before the window.
       const double h = dt / oversampling, settle = 10.0 / (2.0 * std::numbers::pi * chain.anti_alias_cutoff_Hz);
       const auto lead = static_cast<long>(std::ceil(settle / h));
       const auto last = static_cast<long>(samples - 1) * oversampling;

@@ -7,7 +7,7 @@
 //      (its group delay at low frequency is sqrt(2) / (2 pi f_c), which the fit's onset time
 //      absorbs), run on a grid 16 times finer than the sampling and started from rest well
 //      before the window;
-//   2. sampling at the rate f_s over the window [-margin t_c, (1 + margin) t_c] around the contact;
+//   2. sampling at the rate f_s (at most max_virtual_samples samples) over the window [-margin t_c, (1 + margin) t_c] around the contact;
 //   3. additive white Gaussian noise of standard deviation noise_fraction * max |channel| over
 //      the window (GSL's mt19937 and gsl_ran_gaussian, seeded: the same seed gives the same file).
 // Nothing here is a measurement: the trace says `synthetic: true` and names what made it.
@@ -24,11 +24,14 @@ namespace hertzdash {
 struct MeasurementChain {
   double sample_rate_Hz = 1e6;        ///< f_s [Hz] > 0
   double anti_alias_cutoff_Hz = 0;    ///< f_c [Hz] in (0, f_s / 2], or 0 for no filter
-  double noise_fraction = 0;          ///< noise sigma over the channel's largest magnitude, >= 0
+  double noise_fraction = 0;          ///< noise sigma over the channel's largest magnitude, in [0, 1]
   std::uint64_t seed = 1;             ///< of the noise
   double window_margin = 0.1;         ///< the window's margin either side of the contact, in contact times
   std::vector<std::string> channels{"force_N", "accel_mps2", "displacement_m"};  ///< of measured_quantity_columns()
 };
+
+/// Most samples of one virtual measurement (a CSV file of about 1 GB).
+inline constexpr double max_virtual_samples = 1e7;
 
 /// Throws InvalidParameter naming the option (--sample-rate, --anti-alias, --noise, --channels) and its range.
 void validate(const MeasurementChain& chain);

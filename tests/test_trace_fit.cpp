@@ -10,6 +10,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -92,13 +94,35 @@ TEST_CASE("fit: 1 % noise, the estimates lie within their 2-sigma intervals, eac
 }
 
 TEST_CASE("fit: the onset on the trace's clock is found, a shifted trace gives the same estimates", "[fit]") {
+  // From a trigger 37 us early to a clock started a second before the contact: the fit starts
+  // the onset where the trace departs from free fall, so the shift is found to a fraction of
+  // the model's step (6e-7 s) and the estimates are those of the unshifted trace (1e-5, as above).
   MeasurementChain chain;
-  MeasuredTrace m = virtual_trace(truth_options(), chain);
-  const double shift_s = 37e-6;  // a trigger 37 us early
-  for (double& t : m.t_s) t += shift_s;
-  const TraceFit f = fit_trace(m, RunOptions{}, load_paper_parameters(), {});
-  CHECK(parameter(f, "onset-time").estimate == Approx(shift_s).margin(1e-8));
-  CHECK(parameter(f, "ball-E").estimate == Approx(1.7e9).epsilon(1e-5));
+  const MeasuredTrace original = virtual_trace(truth_options(), chain);
+  for (double shift_s : {37e-6, 3e-3, 1.0}) {
+    MeasuredTrace m = original;
+    for (double& t : m.t_s) t += shift_s;
+    const TraceFit f = fit_trace(m, RunOptions{}, load_paper_parameters(), {});
+    INFO("shift " << shift_s);
+    CHECK(parameter(f, "onset-time").estimate == Approx(shift_s).margin(1e-8));
+    CHECK(parameter(f, "ball-E").estimate == Approx(1.7e9).epsilon(1e-5));
+    CHECK(f.converged);
+  }
+}
+
+TEST_CASE("fit: a parameter the trace does not see has an infinite standard error", "[fit]") {
+  // With --impact-velocity given the drop height changes nothing: its column of J is zero, its
+  // variance infinite (not the zero GSL's pivoted covariance would give it).
+  MeasurementChain chain;
+  chain.noise_fraction = 0.01;
+  RunOptions start;
+  start.impact_velocity_mps = 0.6263;
+  TraceFitSettings s;
+  s.parameters = parse_fit_parameters("height,ball-E");
+  const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), start, load_paper_parameters(), s);
+  CHECK(std::isinf(parameter(f, "height").standard_error));
+  CHECK(std::isfinite(parameter(f, "ball-E").standard_error));
+  CHECK_FALSE(f.identifiable);
 }
 
 TEST_CASE("fit: a degenerate pair is flagged: ball-E and ball-radius enter only through K", "[fit]") {
@@ -110,8 +134,11 @@ TEST_CASE("fit: a degenerate pair is flagged: ball-E and ball-radius enter only 
   s.parameters = parse_fit_parameters("ball-E,ball-radius");
   const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), s);
   CHECK_FALSE(f.identifiable);
-  CHECK(f.condition_number > identifiable_condition_limit);
-  CHECK(std::abs(f.correlation[0][1]) > 0.999);
+  CHECK(std::abs(f.correlation[0][1]) > identifiable_correlation_limit);
+  // Among other parameters the pair still shows, by its correlation.
+  s.parameters = parse_fit_parameters("mass,ball-E,restitution,ball-radius");
+  const TraceFit g = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), s);
+  CHECK_FALSE(g.identifiable);
 }
 
 TEST_CASE("fit: the paper's law and Kuwabara-Kono are one law at one speed; the x^{3/2} xdot family is not", "[fit]") {
@@ -204,6 +231,21 @@ TEST_CASE("fit: traces unfit for fitting are refused with the file and the reaso
     CHECK(e.find("coarse.csv: sampled every 0.0002 s") != std::string::npos);
     CHECK(e.find("a sampling rate of at least 80") != std::string::npos);
   }
+  SECTION("a channel that never changes") {
+    std::string body = "t_s,force_N,displacement_m\n";
+    for (int i = 0; i < 2000; ++i)
+      body += std::to_string(i * 1e-6) + "," + std::to_string(1000 * std::sin(3.14159 * i / 1240.0)) + ",0\n";
+    CHECK(error_of(write("constant.csv", body)).find("the displacement_m column never changes") != std::string::npos);
+  }
+  SECTION("free fall without a contact in the displacement alone") {
+    // x = v0 t + g t^2 / 2 keeps rising: no return from a largest value.
+    std::string body = "t_s,displacement_m\n";
+    for (int i = 0; i < 2000; ++i) {
+      const double t = i * 1e-6;
+      body += std::to_string(t) + "," + fmt::format("{:.17g}", 0.626 * t + 0.5 * 9.81 * t * t) + "\n";
+    }
+    CHECK(error_of(write("falling.csv", body)).find("no contact in the trace") != std::string::npos);
+  }
   SECTION("a channel asked for that the trace lacks") {
     TraceFitSettings s;
     s.channels = {"accel_mps2"};
@@ -224,24 +266,70 @@ TEST_CASE("fit: traces unfit for fitting are refused with the file and the reaso
 }
 
 TEST_CASE("CLI fit: the issue's recipe, simulate --trace-format measured then fit, recovers E and e", "[fit][cli]") {
-  // Issue 16's done-when, through the command line: 1 % noise, the default solver of simulate.
+  // Issue 16's done-when, through the command line: 1 % noise; with simulate's default solver
+  // (CVODE, whose steps of up to 26 us the virtual measurement interpolates linearly, an error of
+  // (pi 26 us / 1.25 ms)^2 / 8 = 5e-4 of the peak, below the noise) and with a fine fixed step.
   const fs::path trace = fs::temp_directory_path() / ("hertzdash_fit_cli_" + std::to_string(::getpid()) + ".csv");
-  const auto made = run_cli("simulate --ball-E 1.7e9 --restitution 0.80 --trace " + trace.string() +
-                            " --trace-format measured --noise 0.01 --integrator rk4 --dt 2e-7");
-  REQUIRE(made.exit_code == 0);
-  const MeasuredTrace m = read_measured_trace(trace);
-  CHECK(m.synthetic);
-  CHECK(m.source.find("SYNTHETIC") == 0);
-  const auto r = run_cli("fit --trace " + trace.string() + " --json");
-  REQUIRE(r.exit_code == 0);
-  CHECK(r.err.find("'synthetic: true': it is not a measurement") != std::string::npos);
-  const auto j = nlohmann::json::parse(r.out);
-  const auto& p = j["fits"][0]["parameters"];
-  CHECK(p[0]["name"] == "ball-E");
-  CHECK(std::abs(p[0]["estimate"].get<double>() - 1.7e9) < 2 * p[0]["standard_error"].get<double>());
-  CHECK(std::abs(p[1]["estimate"].get<double>() - 0.80) < 2 * p[1]["standard_error"].get<double>());
-  CHECK(j["trace"]["synthetic"] == true);
+  for (const std::string solver : {"", " --integrator rk4 --dt 2e-7"}) {
+    INFO("solver:" << solver);
+    const auto made = run_cli("simulate --ball-E 1.7e9 --restitution 0.80 --trace " + trace.string() +
+                              " --trace-format measured --noise 0.01" + solver);
+    REQUIRE(made.exit_code == 0);
+    const MeasuredTrace m = read_measured_trace(trace);
+    CHECK(m.synthetic);
+    CHECK(m.source.find("SYNTHETIC") == 0);
+    const auto r = run_cli("fit --trace " + trace.string() + " --json");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.find("'synthetic: true': it is not a measurement") != std::string::npos);
+    const auto j = nlohmann::json::parse(r.out);
+    const auto& p = j["fits"][0]["parameters"];
+    CHECK(p[0]["name"] == "ball-E");
+    CHECK(std::abs(p[0]["estimate"].get<double>() - 1.7e9) < 2 * p[0]["standard_error"].get<double>());
+    CHECK(std::abs(p[1]["estimate"].get<double>() - 0.80) < 2 * p[1]["standard_error"].get<double>());
+    CHECK(j["trace"]["synthetic"] == true);
+    CHECK(j["fits"][0]["converged"] == true);
+    CHECK(4 * p[0]["standard_error"].get<double>() / 1.7e9 < 0.03);
+  }
   fs::remove(trace);
+}
+
+TEST_CASE("CLI fit --curves and --compare-laws", "[fit][cli]") {
+  const fs::path dir = fs::temp_directory_path() / ("hertzdash_fit_curves_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path trace = dir / "t.csv", curves = dir / "curves.csv";
+  REQUIRE(run_cli("simulate --trace " + trace.string() + " --trace-format measured --noise 0.01 --channels force_N")
+              .exit_code == 0);
+  SECTION("the curves hold the trace, the model and their difference") {
+    REQUIRE(run_cli("fit --trace " + trace.string() + " --curves " + curves.string()).exit_code == 0);
+    const CsvTable t = CsvTable::read(curves);
+    REQUIRE(t.columns() == std::vector<std::string>{"t_s", "force_N_measured", "force_N_model", "force_N_residual"});
+    const MeasuredTrace m = read_measured_trace(trace);
+    REQUIRE(t.rows() == m.t_s.size());
+    for (std::size_t r = 0; r < t.rows(); r += 97) {
+      CHECK(t.number(r, "force_N_measured") == m.force_N[r]);
+      CHECK(t.number(r, "force_N_residual") == t.number(r, "force_N_measured") - t.number(r, "force_N_model"));
+    }
+  }
+  SECTION("a failing fit leaves no curves file") {
+    CHECK(run_cli("fit --trace " + trace.string() + " --fit ball-colour --curves " + curves.string()).exit_code == 2);
+    CHECK_FALSE(fs::exists(curves));
+  }
+  SECTION("--compare-laws ranks every law, names the tie of the paper's law with Kuwabara-Kono") {
+    const auto r = run_cli("fit --trace " + trace.string() + " --compare-laws --json");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["fits"].size() + j["failures"].size() == registered_laws().size());
+    for (std::size_t i = 1; i < j["fits"].size(); ++i) CHECK(j["fits"][i]["aic"] >= j["fits"][i - 1]["aic"]);
+    const auto text = run_cli("fit --trace " + trace.string() + " --compare-laws");
+    CHECK((text.out.find("best: 'hongo' (tied within dAIC < 2: kuwabara-kono)") != std::string::npos ||
+           text.out.find("best: 'kuwabara-kono' (tied within dAIC < 2: hongo)") != std::string::npos));
+  }
+  SECTION("--compare-laws with a --fit the start lies outside of is the user's error") {
+    const auto r = run_cli("fit --trace " + trace.string() + " --compare-laws --fit restitution:0.9:1");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("bounds around the starting value") != std::string::npos);
+  }
+  fs::remove_all(dir);
 }
 
 TEST_CASE("CLI fit and the virtual measurement: bad options exit 2 naming the option", "[fit][cli]") {
@@ -260,7 +348,9 @@ TEST_CASE("CLI fit and the virtual measurement: bad options exit 2 naming the op
       {"simulate --trace-format measured", "given with --trace FILE"},
       {"simulate --trace x.csv --trace-format measured --sample-rate 0", "--sample-rate"},
       {"simulate --trace x.csv --trace-format measured --anti-alias 6e5", "half the sampling rate"},
-      {"simulate --trace x.csv --trace-format measured --noise -0.1", "--noise"},
+      {"simulate --trace x.csv --trace-format measured --noise -0.1", "in [0, 1]"},
+      {"simulate --trace x.csv --trace-format measured --noise 2", "in [0, 1]"},
+      {"simulate --trace x.csv --trace-format measured --sample-rate 1e12", "1e+07 samples over this contact's window"},
       {"simulate --trace x.csv --trace-format wav", "one of: model, measured"},
   };
   for (const auto& [args, expected] : cases) {

@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <tuple>
 
 using namespace hertzdash;
@@ -44,6 +45,7 @@ using namespace hertzdash;
 namespace {
 
 constexpr double truth_E_Pa = 1.7e9, start_e = 0.9, height_m = 0.020;
+constexpr double inf_aic = std::numeric_limits<double>::infinity();
 
 MeasurementChain load_cell_and_accelerometer() {
   MeasurementChain c;
@@ -177,6 +179,11 @@ int main(int argc, char** argv) {
     macros.add("identAicGapHuntCrossley", aic("hunt-crossley") - reference, "{:.0f}");
     macros.add("identAicGapKelvinVoigt", aic("kelvin-voigt") - reference, "{:.0f}");
     macros.add("identAicGapNone", aic("none") - reference, "{:.0f}");
+    // The spread of the x^{3/2} xdot family (laws whose coefficient differs, not their form).
+    double lo = inf_aic, hi = -inf_aic;
+    for (const char* law : {"hunt-crossley", "lankarani-nikravesh", "flores", "gonthier", "hu-guo", "zhiying-qishao"})
+      lo = std::min(lo, aic(law)), hi = std::max(hi, aic(law));
+    macros.add("identAicSpreadHuntCrossleyFamily", hi - lo, "{:.2g}");
     std::cout << fmt::format("AIC minus the paper's law's: kuwabara-kono {:.2f}, hunt-crossley {:.0f}, kelvin-voigt {:.0f}, "
                              "none {:.0f}\n",
                              aic("kuwabara-kono") - reference, aic("hunt-crossley") - reference,
@@ -189,7 +196,8 @@ int main(int argc, char** argv) {
   // measured against and the reduced chi-square a researcher would see.
   std::string table;
   long seed = 100;
-  std::vector<double> biases_E, biases_E_sigma, biases_e_sigma, chi2_rigid, elastic_biases_E;
+  std::size_t residual_count = 0;
+  std::vector<double> biases_E, biases_E_sigma, biases_e_sigma, chi2_rigid, chi2_elastic, elastic_biases_E;
   for (const RodData& rod : paper.rods) {
     const SimulateRun truth = truth_run(paper, rod.name, true, elements);
     auto fits_of = [&](double noise_fraction) {
@@ -220,6 +228,8 @@ int main(int argc, char** argv) {
     biases_E_sigma.push_back(bias_E / sigma_E);
     biases_e_sigma.push_back(std::abs(bias_e / sigma_e));
     chi2_rigid.push_back(noisy_rigid.reduced_chi_square);
+    chi2_elastic.push_back(noisy_elastic.reduced_chi_square);
+    residual_count = noisy_elastic.samples;
     elastic_biases_E.push_back(std::abs(100 * elastic_bias_E));
     const std::string tag = rod_macro_tag(rod.name);
     macros.add("ident" + tag + "RigidBiasEPct", 100 * bias_E, "{:+.2f}");
@@ -253,11 +263,19 @@ int main(int argc, char** argv) {
   macros.add("identRigidBiasRestitutionInSigmaMax", *std::max_element(biases_e_sigma.begin(), biases_e_sigma.end()), "{:.1f}");
   macros.add("identRigidReducedChiSquareMin", *lo_c, "{:.3g}");
   macros.add("identRigidReducedChiSquareMax", *hi_c, "{:.3g}");
+  auto [lo_ce, hi_ce] = std::minmax_element(chi2_elastic.begin(), chi2_elastic.end());
+  macros.add("identElasticReducedChiSquareMin", *lo_ce, "{:.3g}");
+  // The reduced chi-square of a correct model scatters by sqrt(2 / n) about 1 (chi^2 with n dof).
+  macros.add("identResiduals", residual_count, "{:.0f}");
+  macros.add("identChiSquareScatter", std::sqrt(2.0 / residual_count), "{:.2f}");
+  macros.add("identElasticReducedChiSquareMax", *hi_ce, "{:.3g}");
   macros.add("identElasticBiasEPctMax", *std::max_element(elastic_biases_E.begin(), elastic_biases_E.end()), "{:.3f}");
   macros.add("identSampleRateKHz", chain.sample_rate_Hz / 1e3, "{:.0f}");
   macros.add("identAntiAliasKHz", chain.anti_alias_cutoff_Hz / 1e3, "{:.0f}");
   macros.add("identNoisePct", 100 * chain.noise_fraction, "{:.0f}");
   macros.add("identTruthEGPa", truth_E_Pa / 1e9, "{:.1f}");
+  macros.add("identStartEGPa", paper.ball.E_Pa / 1e9, "{:.1f}");
+  macros.add("identHeightMm", 1e3 * height_m, "{:.0f}");
   macros.add("identStartRestitution", start_e, "{:.1f}");
 
   draws_csv.save(args.out_dir / "identification_draws.csv");
