@@ -183,7 +183,7 @@ int main(int argc, char** argv) {
     double lo = inf_aic, hi = -inf_aic;
     for (const char* law : {"hunt-crossley", "lankarani-nikravesh", "flores", "gonthier", "hu-guo", "zhiying-qishao"})
       lo = std::min(lo, aic(law)), hi = std::max(hi, aic(law));
-    macros.add("identAicSpreadHuntCrossleyFamily", hi - lo, "{:.2g}");
+    macros.add_text("identAicSpreadHuntCrossleyFamily", latex_scientific(hi - lo));
     std::cout << fmt::format("AIC minus the paper's law's: kuwabara-kono {:.2f}, hunt-crossley {:.0f}, kelvin-voigt {:.0f}, "
                              "none {:.0f}\n",
                              aic("kuwabara-kono") - reference, aic("hunt-crossley") - reference,
