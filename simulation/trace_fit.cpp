@@ -299,8 +299,10 @@ double onset_guess_s(const MeasuredTrace& trace, const std::vector<ChannelFit>& 
   const auto steps = static_cast<std::size_t>(model.contact_time_s() / dt_s) + 1;
   const auto in_model = first_departure(
       names, sigma, g,
-      [&](std::size_t c, std::size_t i) { return instrument_channel(model.instruments_at(i * dt_s), names[c]); }, steps,
-      [&](std::size_t i) { return i * dt_s; });
+      [&](std::size_t c, std::size_t i) {
+        return instrument_channel(model.instruments_at(static_cast<double>(i) * dt_s), names[c]);
+      },
+      steps, [&](std::size_t i) { return static_cast<double>(i) * dt_s; });
   return in_trace && in_model ? *in_trace - *in_model : 0.0;
 }
 

@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
       throw std::logic_error("law not fitted: " + law);
     };
     const double reference = aic("hongo");
-    macros.add("identLawsFitted", laws.fits.size(), "{:.0f}");
+    macros.add("identLawsFitted", static_cast<double>(laws.fits.size()), "{:.0f}");
     macros.add("identAicGapKuwabaraKono", aic("kuwabara-kono") - reference, "{:.2f}");
     macros.add("identAicGapHuntCrossley", aic("hunt-crossley") - reference, "{:.0f}");
     macros.add("identAicGapKelvinVoigt", aic("kelvin-voigt") - reference, "{:.0f}");
@@ -266,8 +266,8 @@ int main(int argc, char** argv) {
   auto [lo_ce, hi_ce] = std::minmax_element(chi2_elastic.begin(), chi2_elastic.end());
   macros.add("identElasticReducedChiSquareMin", *lo_ce, "{:.3g}");
   // The reduced chi-square of a correct model scatters by sqrt(2 / n) about 1 (chi^2 with n dof).
-  macros.add("identResiduals", residual_count, "{:.0f}");
-  macros.add("identChiSquareScatter", std::sqrt(2.0 / residual_count), "{:.2f}");
+  macros.add("identResiduals", static_cast<double>(residual_count), "{:.0f}");
+  macros.add("identChiSquareScatter", std::sqrt(2.0 / static_cast<double>(residual_count)), "{:.2f}");
   macros.add("identElasticReducedChiSquareMax", *hi_ce, "{:.3g}");
   macros.add("identElasticBiasEPctMax", *std::max_element(elastic_biases_E.begin(), elastic_biases_E.end()), "{:.3f}");
   macros.add("identSampleRateKHz", chain.sample_rate_Hz / 1e3, "{:.0f}");
