@@ -16,6 +16,7 @@
 #include "hertzdash/ode/ode_system.hpp"
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace hertzdash {
@@ -28,7 +29,7 @@ struct CvodeOptions {
   double rtol = 1e-8;          ///< relative tolerance, > 0
   double atol = 1e-12;         ///< absolute tolerance (state units), > 0
   double max_step = 0.0;       ///< largest step [s]; 0 means no limit
-  long max_num_steps = 1000000;
+  long max_num_steps = 1000000;  ///< steps of one integrate() call, over its restarts; more: std::runtime_error
   int band_half_width = -1;    ///< BDF: banded Jacobian with this half-bandwidth; < 0: dense
 };
 
@@ -96,7 +97,13 @@ IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double
   double t = t0;
   restart(t, y.data());
   observer.on_step(t, y);
+  long steps = 0;
   while (t < t_end) {
+    // CV_ONE_STEP takes one step per call, so CVodeSetMaxNumSteps never trips: the bound is here.
+    if (++steps > options_.max_num_steps)
+      throw std::runtime_error("did not finish: CVODE took " + std::to_string(options_.max_num_steps) +
+                               " steps and reached t = " + std::to_string(t) + " s of " + std::to_string(t_end) +
+                               " s (a --max-step or tolerance too small for the run?)");
     const int kind = step(t_end, t, y.data());
     observer.on_step(t, y);
     if (kind == 2) break;

@@ -13,13 +13,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace hertzdash {
 
 struct FixedStepOptions {
   double dt = 1e-6;            ///< step size [s], > 0
   bool locate_events = true;   ///< cut steps at located event crossings
+  double max_steps = 1e9;      ///< a run needing more steps does not start: std::runtime_error "did not finish"
 };
 
 namespace detail {
@@ -54,6 +57,11 @@ template <class Method, OdeSystem S, IntegrationObserver<typename S::State> Obse
 IntegrationStats integrate_fixed_step(S& sys, typename S::State& y, double t0, double t_end,
                                       const FixedStepOptions& opt, Observer& observer) {
   if (!(opt.dt > 0)) throw std::invalid_argument("integrate_fixed_step: dt must be > 0");
+  // A bound on the work instead of a hang (a step so small that t + dt == t included).
+  if (const double needed = std::ceil((t_end - t0) / opt.dt); needed > opt.max_steps)
+    throw std::runtime_error("did not finish: a fixed step of " + std::to_string(opt.dt) + " s would need " +
+                             std::to_string(needed) + " steps to reach t = " + std::to_string(t_end) +
+                             " s, more than the limit of " + std::to_string(opt.max_steps) + " (take a larger step)");
   using State = typename S::State;
   using Events = typename S::Events;
   IntegrationStats stats;

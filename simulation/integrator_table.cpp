@@ -47,13 +47,12 @@ IntegratorKind integrator_used(IntegratorKind asked, const ImpactNeeds& needs, s
 }
 
 void validate(const SolverSettings& s) {
+  // Every setting is checked, whether or not the chosen integrator reads it: a bad value is a
+  // mistake even where it happens not to matter.
   const IntegratorTraits& row = integrator_traits(s.integrator);
-  if (row.step_control == StepControl::fixed_step) {
-    require_positive("--dt", s.dt_s, "s");
-    return;
-  }
-  require_positive("--rtol", s.rtol, "-");
-  require_positive("--atol", s.atol, "m, m/s");
+  require_positive("--dt", s.dt_s, "s");
+  require_in_open("--rtol", s.rtol, 0, 1);
+  require_in_open("--atol", s.atol, 0, 1);
   require_non_negative("--max-step", s.max_step_s, "s");
   // A regularised path steps in tau (dt = 2 x^{1/2} dtau), not in time: no largest step.
   if (row.variables == Variables::regularized && s.max_step_s != 0)

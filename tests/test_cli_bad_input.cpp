@@ -44,9 +44,16 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
       {"--impact-velocity nan", "--impact-velocity", "> 0"},
       {"--integrator rk4 --dt 0", "--dt", "> 0"},
       {"--integrator euler --dt -1e-6", "--dt", "> 0"},
-      {"--rtol 0", "--rtol", "> 0"},
-      {"--atol -1", "--atol", "> 0"},
-      {"--rtol nan", "--rtol", "> 0"},
+      {"--rtol 0", "--rtol", "in (0, 1)"},
+      {"--atol -1", "--atol", "in (0, 1)"},
+      {"--rtol nan", "--rtol", "in (0, 1)"},
+      {"--rtol 10", "--rtol", "in (0, 1)"},
+      {"--rtol 1", "--rtol", "in (0, 1)"},
+      {"--atol 1", "--atol", "in (0, 1)"},
+      {"--dt 0", "--dt", "> 0"},
+      {"--dt nan", "--dt", "> 0"},
+      {"--integrator rk4 --rtol 10", "--rtol", "in (0, 1)"},
+      {"--max-step -1", "--max-step", ">= 0"},
       {"--integrator leapfrog", "--integrator", "euler, rk4, cvode"},
       {"--damping nonsense", "--damping", "hongo"},
       {"--rod titanium", "--rod", "steel"},
@@ -87,6 +94,20 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
     CHECK(r.err.find(c.range) != std::string::npos);
     CHECK(r.out.empty());
     CHECK_FALSE(std::filesystem::exists(trace));
+  }
+}
+
+TEST_CASE("CLI: a run that would not finish ends with exit 1 and says so instead of hanging", "[cli]") {
+  // Issue 19's hangs. A fixed step whose run needs more than 1e9 steps does not start (the
+  // 20 mm drop and 20 t_H after it last 0.089 s: 8.9e10 steps of 1e-12 s; with 1e-308 s,
+  // t + dt == t and it would never end). CVODE stepping one step per call is bounded by its
+  // 1e6 steps (--max-step 1e-12 would need 8.9e10).
+  for (const char* args : {"--integrator rk4 --dt 1e-12", "--integrator euler --dt 1e-308", "--max-step 1e-12"}) {
+    const auto r = run_cli(std::string("simulate ") + args);
+    INFO("hertzdash simulate " << args << "\n  stderr: " << r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("did not finish") != std::string::npos);
+    CHECK(r.out.empty());
   }
 }
 

@@ -128,7 +128,7 @@ def test_simulate_many_broadcasts_scalars_and_length_one_arrays():
     (dict(rod="brass"), "--rod", "steel"),
     (dict(damping="no-such-law"), "--damping", "hongo"),
     (dict(integrator="rk5"), "--integrator", "rk4"),
-    (dict(rtol=-1.0), "--rtol", "> 0"),
+    (dict(rtol=-1.0), "--rtol", "in (0, 1)"),
     (dict(rod_elements=10), "--rod-model", "elastic when --rod-elements is given"),
     (dict(rod_model="elastic", rod_elements=2.5), "--rod-elements", "an integer in [1, 400]"),
     (dict(rod_model="elastic", cell_damping_ratio=1.0), "--cell-damping-ratio", "[0, 1)"),
