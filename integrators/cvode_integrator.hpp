@@ -13,6 +13,7 @@
 // One CvodeIntegrator owns its SUNContext, vectors and solver memory; integrate()
 // may be called any number of times and reuses them (CVodeReInit), so a sweep
 // over many impacts pays for the set-up once. Not thread-safe: one per thread.
+#include "hertzdash/integrators/format_message.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 
 #include <memory>
@@ -101,9 +102,9 @@ IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double
   while (t < t_end) {
     // CV_ONE_STEP takes one step per call, so CVodeSetMaxNumSteps never trips: the bound is here.
     if (++steps > options_.max_num_steps)
-      throw std::runtime_error("did not finish: CVODE took " + std::to_string(options_.max_num_steps) +
-                               " steps and reached t = " + std::to_string(t) + " s of " + std::to_string(t_end) +
-                               " s (a --max-step or tolerance too small for the run?)");
+      throw std::runtime_error(detail::format_g("did not finish: CVODE took %ld steps and reached t = %.6g s of %.6g s "
+                                                "(a largest step or tolerance too small for the run?)",
+                                                options_.max_num_steps, t, t_end));
     const int kind = step(t_end, t, y.data());
     observer.on_step(t, y);
     if (kind == 2) break;

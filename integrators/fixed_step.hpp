@@ -9,6 +9,7 @@
 // right-hand-side evaluations. With location off, events are handled at the end
 // of the step in which the sign change is seen; convergence studies use this to
 // show what an unlocated kink costs.
+#include "hertzdash/integrators/format_message.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
@@ -59,9 +60,9 @@ IntegrationStats integrate_fixed_step(S& sys, typename S::State& y, double t0, d
   if (!(opt.dt > 0)) throw std::invalid_argument("integrate_fixed_step: dt must be > 0");
   // A bound on the work instead of a hang (a step so small that t + dt == t included).
   if (const double needed = std::ceil((t_end - t0) / opt.dt); needed > opt.max_steps)
-    throw std::runtime_error("did not finish: a fixed step of " + std::to_string(opt.dt) + " s would need " +
-                             std::to_string(needed) + " steps to reach t = " + std::to_string(t_end) +
-                             " s, more than the limit of " + std::to_string(opt.max_steps) + " (take a larger step)");
+    throw std::runtime_error(detail::format_g("did not finish: a fixed step of %.3g s would need %.3g steps to reach "
+                                              "t = %.6g s, more than the limit of %.3g (take a larger step)",
+                                              opt.dt, needed, t_end, opt.max_steps));
   using State = typename S::State;
   using Events = typename S::Events;
   IntegrationStats stats;
