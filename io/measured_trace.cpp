@@ -117,21 +117,23 @@ MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
   return m;
 }
 
-std::vector<double>* quantity(MeasuredTrace& m, const std::string& name) {
+namespace {
+
+// The column of `name` in a trace, const or not.
+template <class Trace>
+auto* quantity_in(Trace& m, const std::string& name) {
   if (name == "force_N") return &m.force_N;
   if (name == "accel_mps2") return &m.accel_mps2;
   if (name == "velocity_mps") return &m.velocity_mps;
   if (name == "displacement_m") return &m.displacement_m;
-  return nullptr;
+  return static_cast<decltype(&m.force_N)>(nullptr);
 }
 
-const std::vector<double>* quantity(const MeasuredTrace& m, const std::string& name) {
-  if (name == "force_N") return &m.force_N;
-  if (name == "accel_mps2") return &m.accel_mps2;
-  if (name == "velocity_mps") return &m.velocity_mps;
-  if (name == "displacement_m") return &m.displacement_m;
-  return nullptr;
-}
+}  // namespace
+
+std::vector<double>* quantity(MeasuredTrace& m, const std::string& name) { return quantity_in(m, name); }
+
+const std::vector<double>* quantity(const MeasuredTrace& m, const std::string& name) { return quantity_in(m, name); }
 
 std::string measured_trace_text(const MeasuredTrace& m, const std::string& what, const Parameters& parameters) {
   std::ostringstream out;

@@ -136,6 +136,17 @@ const std::vector<RunOption>& run_options() {
   return options;
 }
 
+std::vector<std::string> split_option_list(const std::string& list) {
+  std::vector<std::string> items;
+  std::size_t begin = 0;
+  while (begin <= list.size()) {
+    const std::size_t end = std::min(list.find(',', begin), list.size());
+    items.push_back(list.substr(begin, end - begin));
+    begin = end + 1;
+  }
+  return items;
+}
+
 std::string python_keyword(std::string_view option_name) {
   std::string k(option_name);
   std::replace(k.begin(), k.end(), '-', '_');

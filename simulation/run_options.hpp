@@ -71,6 +71,10 @@ const std::vector<RunOption>& run_options();
 /// The option called `name` (command-line or Python spelling), or nullptr.
 const RunOption* find_run_option(std::string_view name);
 
+/// The items of a comma-separated option value: "a,b" -> {"a", "b"}; an empty item stays
+/// (",a" -> {"", "a"}, "" -> {""}) for the caller to refuse.
+std::vector<std::string> split_option_list(const std::string& list);
+
 /// "ball-E" -> "ball_E": the Python keyword of an option.
 std::string python_keyword(std::string_view option_name);
 

@@ -416,7 +416,76 @@ std::string stop_reason(int status, int info) {
   return info == 1 ? "small step (xtol)" : "small gradient (gtol)";
 }
 
+// The trace as fitted, and its channels with their noise (ChannelFit's name and noise_sigma).
+struct PreparedTrace {
+  MeasuredTrace trace;
+  std::vector<ChannelFit> channels;
+};
+
+// Resample if asked, and check the trace: a channel to fit, a sampling interval that resolves
+// the model's contact at the starting values (`contact_time_s`: min_samples_per_contact samples;
+// the message says the least rate), a contact the noise does not hide, enough samples. Throws
+// DataError naming the file.
+PreparedTrace prepare_trace(const MeasuredTrace& trace, const TraceFitSettings& settings, double contact_time_s,
+                            double g) {
+  const std::string file = trace.path.string();
+  MeasuredTrace t = trace;
+  if (settings.resample_Hz != 0) {
+    require_positive("--resample", settings.resample_Hz, "Hz");
+    const double rate = 1.0 / median_interval_s(trace.t_s);
+    if (!(settings.resample_Hz < rate))
+      throw InvalidParameter("--resample", format_value(settings.resample_Hz),
+                             fmt::format("below the trace's sampling rate, {:.6g} Hz", rate));
+    t = resampled(trace, settings.resample_Hz);
+  }
+  const double tc = contact_time_s, dt = median_interval_s(t.t_s);
+  if (!(tc / dt >= min_samples_per_contact))
+    throw DataError(fmt::format("{}: sampled every {:.3g} s ({:.4g} Hz), too coarse: the model's contact lasts {:.3g} s "
+                                "and needs at least {:g} samples, a sampling rate of at least {:.4g} Hz",
+                                file, dt, 1.0 / dt, tc, min_samples_per_contact, min_samples_per_contact / tc));
+
+  // A contact must stand out of the noise by ten noise levels in some channel: the force above
+  // zero, the deceleration below g, the velocity reversed (a rebound), or the displacement
+  // returning from its largest value (the rod coming back up).
+  PreparedTrace prepared;
+  bool contact = false;
+  std::string seen;
+  for (const std::string& name : channels_to_fit(t, settings)) {
+    const std::vector<double>& y = *quantity(t, name);
+    const double sigma = noise_sigma(y, file, name);
+    ChannelFit channel;
+    channel.name = name;
+    channel.noise_sigma = sigma;
+    prepared.channels.push_back(channel);
+    double signature = 0, last = NAN, peak = -inf;
+    for (double v : y) {
+      if (!std::isfinite(v)) continue;
+      if (name == "force_N") signature = std::max(signature, v);
+      else if (name == "accel_mps2") signature = std::max(signature, g - v);
+      else if (name == "velocity_mps") signature = std::max(signature, -v);
+      else peak = std::max(peak, v), last = v;
+    }
+    if (name == "displacement_m") signature = peak - last;
+    contact = contact || signature > 10.0 * sigma;
+    seen += fmt::format("{}{} {:.3g} against a noise of {:.3g}", seen.empty() ? "" : "; ", name, signature, sigma);
+  }
+  if (!contact)
+    throw DataError(fmt::format("{}: no contact in the trace: no channel departs from free fall by ten noise levels "
+                                "(force above 0, g minus acceleration, upward velocity, displacement's return: {})",
+                                file, seen));
+  if (t.t_s.size() <= settings.parameters.size() + 1)
+    throw DataError(fmt::format("{}: {} samples cannot determine {} parameters", file, t.t_s.size(), settings.parameters.size() + 1));
+  prepared.trace = std::move(t);
+  return prepared;
+}
+
 }  // namespace
+
+const FittedParameter& TraceFit::parameter(const std::string& name) const {
+  for (const FittedParameter& p : parameters)
+    if (p.name == name) return p;
+  throw std::out_of_range("fit: no fitted parameter " + name);
+}
 
 std::string fittable_option_names() {
   std::string s;
@@ -426,11 +495,7 @@ std::string fittable_option_names() {
 
 std::vector<FitParameter> parse_fit_parameters(const std::string& list) {
   std::vector<FitParameter> out;
-  std::size_t begin = 0;
-  while (begin <= list.size()) {
-    const std::size_t end = std::min(list.find(',', begin), list.size());
-    const std::string item = list.substr(begin, end - begin);
-    begin = end + 1;
+  for (const std::string& item : split_option_list(list)) {
     const std::size_t colon = item.find(':');
     const Fittable* f = find_fittable(item.substr(0, colon));
     if (!f)
@@ -462,66 +527,10 @@ std::vector<FitParameter> parse_fit_parameters(const std::string& list) {
   return out;
 }
 
-MeasuredTrace prepare_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
-                            const TraceFitSettings& settings) {
-  const std::string file = trace.path.string();
-  MeasuredTrace t = trace;
-  if (settings.resample_Hz != 0) {
-    require_positive("--resample", settings.resample_Hz, "Hz");
-    const double rate = 1.0 / median_interval_s(trace.t_s);
-    if (!(settings.resample_Hz < rate))
-      throw InvalidParameter("--resample", format_value(settings.resample_Hz),
-                             fmt::format("below the trace's sampling rate, {:.6g} Hz", rate));
-    t = resampled(trace, settings.resample_Hz);
-  }
-  const std::vector<std::string> channels = channels_to_fit(t, settings);
-
-  // The sampling must resolve the contact of the model at its initial parameters.
-  TraceModel model(base, paper, {}, settings.steps_per_contact);
-  if (!model.history({})) throw InvalidParameter("--fit", "the starting values", "values inside the model's domain");
-  const double tc = model.contact_time_s(), dt = median_interval_s(t.t_s);
-  if (!(tc / dt >= min_samples_per_contact))
-    throw DataError(fmt::format("{}: sampled every {:.3g} s ({:.4g} Hz), too coarse: the model's contact lasts {:.3g} s "
-                                "and needs at least {:g} samples, a sampling rate of at least {:.4g} Hz",
-                                file, dt, 1.0 / dt, tc, min_samples_per_contact, min_samples_per_contact / tc));
-
-  // A contact must stand out of the noise by ten noise levels in some channel: the force above
-  // zero, the deceleration below g, the velocity reversed (a rebound), or the displacement
-  // returning from its largest value (the rod coming back up).
-  const double g = resolve_setup(base, paper).gravity_mps2;
-  bool contact = false;
-  std::string seen;
-  for (const std::string& name : channels) {
-    const std::vector<double>& y = *quantity(t, name);
-    const double sigma = noise_sigma(y, file, name);
-    double signature = 0, last = NAN, peak = -inf;
-    for (double v : y) {
-      if (!std::isfinite(v)) continue;
-      if (name == "force_N") signature = std::max(signature, v);
-      else if (name == "accel_mps2") signature = std::max(signature, g - v);
-      else if (name == "velocity_mps") signature = std::max(signature, -v);
-      else peak = std::max(peak, v), last = v;
-    }
-    if (name == "displacement_m") signature = peak - last;
-    contact = contact || signature > 10.0 * sigma;
-    seen += fmt::format("{}{} {:.3g} against a noise of {:.3g}", seen.empty() ? "" : "; ", name, signature, sigma);
-  }
-  if (!contact)
-    throw DataError(fmt::format("{}: no contact in the trace: no channel departs from free fall by ten noise levels "
-                                "(force above 0, g minus acceleration, upward velocity, displacement's return: {})",
-                                file, seen));
-  if (t.t_s.size() <= settings.parameters.size() + 1)
-    throw DataError(fmt::format("{}: {} samples cannot determine {} parameters", file, t.t_s.size(), settings.parameters.size() + 1));
-  return t;
-}
-
 TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const PaperParameters& paper,
                    const TraceFitSettings& settings) {
   use_gsl_return_codes();
   if (!(settings.steps_per_contact >= 100)) throw InvalidParameter("steps per contact", std::to_string(settings.steps_per_contact), ">= 100");
-  const MeasuredTrace trace = prepare_trace(trace_in, base, paper, settings);
-  const std::vector<std::string> channels = channels_to_fit(trace, settings);
-
   std::vector<std::string> names;
   std::vector<Transform> transforms;
   for (const FitParameter& p : settings.parameters) {
@@ -530,18 +539,23 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   }
   const std::vector<double> initial = initial_values(base, paper, settings.parameters);
   TraceModel model(base, paper, names, settings.steps_per_contact);
+  const ImpactHistory* at_start = model.history(initial);
+  if (!at_start) throw InvalidParameter("--fit", "the starting values", "values inside the model's domain");
+  const double g = resolve_setup(base, paper).gravity_mps2;
+  PreparedTrace prepared = prepare_trace(trace_in, settings, model.contact_time_s(), g);
+  const MeasuredTrace& trace = prepared.trace;
 
   TraceFit fit;
   fit.law = base.damping;
+  fit.channels = std::move(prepared.channels);
+  std::vector<std::string> channels;
   std::vector<Observation> obs;
-  for (std::size_t c = 0; c < channels.size(); ++c) {
-    const std::vector<double>& y = *quantity(trace, channels[c]);
-    ChannelFit ch;
-    ch.name = channels[c];
-    ch.noise_sigma = noise_sigma(y, trace.path.string(), ch.name);
+  for (std::size_t c = 0; c < fit.channels.size(); ++c) {
+    ChannelFit& ch = fit.channels[c];
+    channels.push_back(ch.name);
+    const std::vector<double>& y = *quantity(trace, ch.name);
     for (std::size_t i = 0; i < y.size(); ++i)
       if (std::isfinite(y[i])) obs.push_back({c, trace.t_s[i], y[i], 1.0 / ch.noise_sigma}), ++ch.samples;
-    fit.channels.push_back(ch);
   }
   FitProblem problem(std::move(obs), model, transforms, channels);
   const std::size_t n = problem.n(), p = problem.p();
@@ -552,9 +566,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   // a scan over +-0.3 t_H around it (the onset needs no model run).
   std::vector<double> z0;
   for (std::size_t j = 0; j < transforms.size(); ++j) z0.push_back(transforms[j].z(initial[j]));
-  const double guess = onset_guess_s(trace, fit.channels, *model.history(initial), resolve_setup(base, paper).gravity_mps2,
-                                     model.solver().dt_s) /
-                       model.time_scale_s();
+  const double guess = onset_guess_s(trace, fit.channels, *at_start, g, model.solver().dt_s) / model.time_scale_s();
   z0.push_back(guess);
   {
     std::vector<double> r(n);

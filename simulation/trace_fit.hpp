@@ -109,6 +109,9 @@ struct TraceFit {
   bool converged = false;                            ///< GSL's test met (not the iteration limit, not stalled)
   double contact_time_s = 0;                         ///< of the fitted model
   RunOptions fitted_options;                         ///< the run options at the estimate
+
+  /// The fitted parameter called `name` (an option's name or "onset-time"); std::out_of_range if none.
+  const FittedParameter& parameter(const std::string& name) const;
   SolverSettings model_solver;                       ///< how the model was integrated (RK4, t_H / steps_per_contact)
 };
 
@@ -120,16 +123,13 @@ inline constexpr double identifiable_correlation_limit = 0.999;
 /// Fewest samples per contact the fit accepts (the sampling check).
 inline constexpr double min_samples_per_contact = 10;
 
-/// Prepare a trace for fitting: resample if asked, and check it: a time column and a channel to
-/// fit, a sampling interval that resolves the contact of the model at the initial parameters
-/// (min_samples_per_contact samples; the message says the least rate), and a contact the
-/// noise does not hide (force or acceleration beyond ten noise levels). Throws DataError naming the file.
-MeasuredTrace prepare_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
-                            const TraceFitSettings& settings);
-
 /// Fit `settings.parameters` and the onset time to the trace, starting from the values of
 /// `base` (or the paper's where `base` leaves an option unset). Validates like `simulate`
-/// (InvalidParameter); a trace unfit for fitting throws DataError.
+/// (InvalidParameter). The trace is resampled if asked, then checked: a channel to fit, a
+/// sampling interval that resolves the model's contact at the starting values
+/// (min_samples_per_contact samples; the message says the least rate), a contact the noise does
+/// not hide (ten noise levels in some channel), no channel that never changes; a trace unfit
+/// for fitting throws DataError naming the file.
 TraceFit fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                    const TraceFitSettings& settings);
 

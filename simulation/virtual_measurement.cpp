@@ -1,6 +1,7 @@
 #include "hertzdash/simulation/virtual_measurement.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/run_options.hpp"
 
 #include <fmt/format.h>
 #include <gsl/gsl_randist.h>
@@ -46,15 +47,11 @@ class ButterworthLowPass {
 std::vector<std::string> parse_channels(const std::string& list, const char* option) {
   const auto& known = measured_quantity_columns();
   std::vector<std::string> out;
-  std::size_t begin = 0;
-  while (begin <= list.size()) {
-    const std::size_t end = std::min(list.find(',', begin), list.size());
-    const std::string name = list.substr(begin, end - begin);
+  for (const std::string& name : split_option_list(list)) {
     if (std::find(known.begin(), known.end(), name) == known.end() || std::count(out.begin(), out.end(), name))
       throw InvalidParameter(option, list, "a comma-separated list of distinct channels from: force_N, accel_mps2, "
                                            "velocity_mps, displacement_m");
     out.push_back(name);
-    begin = end + 1;
   }
   return out;
 }

@@ -44,13 +44,6 @@ MeasuredTrace virtual_trace(const RunOptions& o, const MeasurementChain& chain) 
   return m;
 }
 
-const FittedParameter& parameter(const TraceFit& f, const std::string& name) {
-  for (const FittedParameter& p : f.parameters)
-    if (p.name == name) return p;
-  FAIL("no parameter " << name);
-  throw;
-}
-
 }  // namespace
 
 TEST_CASE("fit: a noise-free virtual experiment gives back its truth", "[fit]") {
@@ -61,12 +54,12 @@ TEST_CASE("fit: a noise-free virtual experiment gives back its truth", "[fit]") 
   MeasurementChain chain;
   const MeasuredTrace m = virtual_trace(truth_options(), chain);
   const TraceFit f = fit_trace(m, RunOptions{}, load_paper_parameters(), TraceFitSettings{});
-  INFO("E " << parameter(f, "ball-E").estimate << " e " << parameter(f, "restitution").estimate << " t0 "
-            << parameter(f, "onset-time").estimate);
-  CHECK(parameter(f, "ball-E").estimate == Approx(1.7e9).epsilon(1e-5));
-  CHECK(parameter(f, "restitution").estimate == Approx(0.80).epsilon(1e-5));
+  INFO("E " << f.parameter("ball-E").estimate << " e " << f.parameter("restitution").estimate << " t0 "
+            << f.parameter("onset-time").estimate);
+  CHECK(f.parameter("ball-E").estimate == Approx(1.7e9).epsilon(1e-5));
+  CHECK(f.parameter("restitution").estimate == Approx(0.80).epsilon(1e-5));
   // The onset is the trace's zero to within a fraction of the model's step.
-  CHECK(std::abs(parameter(f, "onset-time").estimate) < 1e-8);
+  CHECK(std::abs(f.parameter("onset-time").estimate) < 1e-8);
   CHECK(f.identifiable);
 }
 
@@ -80,7 +73,7 @@ TEST_CASE("fit: 1 % noise, the estimates lie within their 2-sigma intervals, eac
     chain.seed = seed;
     const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), {});
     for (const auto& [name, truth] : {std::pair{"ball-E", 1.7e9}, std::pair{"restitution", 0.80}}) {
-      const FittedParameter& p = parameter(f, name);
+      const FittedParameter& p = f.parameter(name);
       INFO("seed " << seed << ": " << name << " = " << p.estimate << " +- " << p.standard_error);
       CHECK(std::abs(p.estimate - truth) < 2 * p.standard_error);
       CHECK(4 * p.standard_error / p.estimate < 0.03);
@@ -104,8 +97,8 @@ TEST_CASE("fit: the onset on the trace's clock is found, a shifted trace gives t
     for (double& t : m.t_s) t += shift_s;
     const TraceFit f = fit_trace(m, RunOptions{}, load_paper_parameters(), {});
     INFO("shift " << shift_s);
-    CHECK(parameter(f, "onset-time").estimate == Approx(shift_s).margin(1e-8));
-    CHECK(parameter(f, "ball-E").estimate == Approx(1.7e9).epsilon(1e-5));
+    CHECK(f.parameter("onset-time").estimate == Approx(shift_s).margin(1e-8));
+    CHECK(f.parameter("ball-E").estimate == Approx(1.7e9).epsilon(1e-5));
     CHECK(f.converged);
   }
 }
@@ -120,8 +113,8 @@ TEST_CASE("fit: a parameter the trace does not see has an infinite standard erro
   TraceFitSettings s;
   s.parameters = parse_fit_parameters("height,ball-E");
   const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), start, load_paper_parameters(), s);
-  CHECK(std::isinf(parameter(f, "height").standard_error));
-  CHECK(std::isfinite(parameter(f, "ball-E").standard_error));
+  CHECK(std::isinf(f.parameter("height").standard_error));
+  CHECK(std::isfinite(f.parameter("ball-E").standard_error));
   CHECK_FALSE(f.identifiable);
 }
 
@@ -193,10 +186,10 @@ TEST_CASE("fit: the anti-alias filter's delay is absorbed by the onset time", "[
   chain.anti_alias_cutoff_Hz = 1e5;
   const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), {}, load_paper_parameters(), {});
   const double delay_s = std::numbers::sqrt2 / (2 * std::numbers::pi * 1e5);
-  INFO("onset " << parameter(f, "onset-time").estimate << " delay " << delay_s);
-  CHECK(parameter(f, "onset-time").estimate == Approx(delay_s).epsilon(0.02));
-  CHECK(parameter(f, "ball-E").estimate == Approx(1.7e9).epsilon(1e-3));
-  CHECK(parameter(f, "restitution").estimate == Approx(0.80).epsilon(1e-3));
+  INFO("onset " << f.parameter("onset-time").estimate << " delay " << delay_s);
+  CHECK(f.parameter("onset-time").estimate == Approx(delay_s).epsilon(0.02));
+  CHECK(f.parameter("ball-E").estimate == Approx(1.7e9).epsilon(1e-3));
+  CHECK(f.parameter("restitution").estimate == Approx(0.80).epsilon(1e-3));
 }
 
 TEST_CASE("fit: traces unfit for fitting are refused with the file and the reason", "[fit][measured_trace]") {

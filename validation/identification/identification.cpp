@@ -85,12 +85,6 @@ RunOptions fit_start(const std::string& rod, bool elastic, int elements) {
   return o;
 }
 
-const FittedParameter& parameter(const TraceFit& f, const std::string& name) {
-  for (const FittedParameter& p : f.parameters)
-    if (p.name == name) return p;
-  throw std::logic_error("no fitted parameter " + name);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -135,7 +129,7 @@ int main(int argc, char** argv) {
       c.seed = static_cast<std::uint64_t>(d);
       const TraceFit f = fit_trace(virtual_measurement(truth, rod.name, c), fit_start(rod.name, false, elements), paper,
                                    settings);
-      const FittedParameter &E = parameter(f, "ball-E"), &e = parameter(f, "restitution");
+      const FittedParameter &E = f.parameter("ball-E"), &e = f.parameter("restitution");
       inside_E += std::abs(E.estimate - truth_E_Pa) <= E.standard_error;
       inside_e += std::abs(e.estimate - rod.restitution) <= e.standard_error;
       rel_se_E += E.standard_error / E.estimate;
@@ -213,17 +207,17 @@ int main(int argc, char** argv) {
     const auto [noisy_trace, noisy_rigid, noisy_elastic] = fits_of(chain.noise_fraction);
     for (const auto& [model, clean, noisy] : {std::tuple{"rigid", &clean_rigid, &noisy_rigid},
                                               std::tuple{"elastic", &clean_elastic, &noisy_elastic}}) {
-      const FittedParameter &E = parameter(*clean, "ball-E"), &e = parameter(*clean, "restitution");
-      bias_csv.add_row({rod.name, std::string(model), E.estimate, parameter(*noisy, "ball-E").standard_error,
-                        rod.restitution, e.estimate, parameter(*noisy, "restitution").standard_error,
+      const FittedParameter &E = clean->parameter("ball-E"), &e = clean->parameter("restitution");
+      bias_csv.add_row({rod.name, std::string(model), E.estimate, noisy->parameter("ball-E").standard_error,
+                        rod.restitution, e.estimate, noisy->parameter("restitution").standard_error,
                         noisy->reduced_chi_square});
     }
-    const double bias_E = parameter(clean_rigid, "ball-E").estimate / truth_E_Pa - 1;
-    const double bias_e = parameter(clean_rigid, "restitution").estimate - rod.restitution;
-    const double sigma_E = parameter(noisy_rigid, "ball-E").standard_error / truth_E_Pa;
-    const double sigma_e = parameter(noisy_rigid, "restitution").standard_error;
-    const double elastic_bias_E = parameter(clean_elastic, "ball-E").estimate / truth_E_Pa - 1;
-    const double elastic_bias_e = parameter(clean_elastic, "restitution").estimate - rod.restitution;
+    const double bias_E = clean_rigid.parameter("ball-E").estimate / truth_E_Pa - 1;
+    const double bias_e = clean_rigid.parameter("restitution").estimate - rod.restitution;
+    const double sigma_E = noisy_rigid.parameter("ball-E").standard_error / truth_E_Pa;
+    const double sigma_e = noisy_rigid.parameter("restitution").standard_error;
+    const double elastic_bias_E = clean_elastic.parameter("ball-E").estimate / truth_E_Pa - 1;
+    const double elastic_bias_e = clean_elastic.parameter("restitution").estimate - rod.restitution;
     biases_E.push_back(100 * bias_E);
     biases_E_sigma.push_back(bias_E / sigma_E);
     biases_e_sigma.push_back(std::abs(bias_e / sigma_e));
