@@ -16,6 +16,10 @@ class CsvWriter {
   /// `what` says what the file holds; `parameters` go into the header.
   CsvWriter(std::string what, Parameters parameters, std::vector<std::string> columns);
 
+  /// A comment line ("# " + line) after the parameters, before the column names; `line` may not
+  /// contain a line break.
+  void add_comment(const std::string& line);
+
   /// One row; must have one cell per column. Doubles are written with 17 significant digits.
   void add_row(const std::vector<Cell>& cells);
 
@@ -26,6 +30,7 @@ class CsvWriter {
   std::string what_;
   Parameters parameters_;
   std::vector<std::string> columns_;
+  std::string comments_;
   std::string body_;
 };
 
