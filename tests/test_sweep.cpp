@@ -50,7 +50,7 @@ TEST_CASE("SHA-256 of the FIPS 180-4 examples", "[sweep]") {
   CHECK(sha256_hex(std::string(1000000, 'a')) == "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
-TEST_CASE("A grid is the cartesian product in the file's order; ranges are linear or log", "[sweep]") {
+TEST_CASE("A grid is the cartesian product in the file's order, ranges are linear or log", "[sweep]") {
   const SweepCase c = parse_sweep_case(R"(
 [base]
 rod = "duralumin-b"
@@ -80,7 +80,7 @@ ball-E = { from = 1e9, to = 3e9, count = 3 }
   CHECK(number(c.parameters(12)[1]) == 0.1);
 }
 
-TEST_CASE("A sample draws its inputs from the design; with a grid, the same draws at every point", "[sweep]") {
+TEST_CASE("A sample draws its inputs from the design, with a grid, the same draws at every point", "[sweep]") {
   const SweepCase c = parse_sweep_case(R"(
 [grid]
 rod = ["steel", "duralumin-a"]
@@ -183,7 +183,7 @@ columns = ["e_effective", "peak_force_N", "contact_time_s", "max_deformation_m",
   }
 }
 
-TEST_CASE("A failing run records its error in its row; the others run", "[sweep]") {
+TEST_CASE("A failing run records its error in its row, the others run", "[sweep]") {
   const SweepCase c = parse_sweep_case("[grid]\nrestitution = [0.8, 1.5, 0.6]\n", "fail.toml");
   const SweepResults r = run_sweep(c, all_runs(c), load_paper_parameters(), {.threads = 2, .progress = false});
   CHECK(r.errors[0].empty());
