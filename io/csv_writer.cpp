@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <iterator>
 #include <stdexcept>
 
 namespace hertzdash {
@@ -34,7 +35,7 @@ void CsvWriter::add_row(const std::vector<Cell>& cells) {
     std::visit(
         [&](const auto& v) {
           using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, double>) body_ += fmt::format("{:.17g}", v);
+          if constexpr (std::is_same_v<T, double>) fmt::format_to(std::back_inserter(body_), "{}", v);
           else if constexpr (std::is_same_v<T, long>) body_ += std::to_string(v);
           else body_ += quoted_if_needed(v);
         },

@@ -20,7 +20,8 @@ class CsvWriter {
   /// contain a line break.
   void add_comment(const std::string& line);
 
-  /// One row; must have one cell per column. Doubles are written with 17 significant digits.
+  /// One row; must have one cell per column. Doubles are written as the shortest text that reads
+  /// back to the same double (fmt's "{}", Dragonbox: exact and several times faster than "{:.17g}").
   void add_row(const std::vector<Cell>& cells);
 
   std::string str() const;

@@ -232,7 +232,7 @@ std::vector<SweepValue> SweepCase::parameters(std::size_t run) const {
   }
   if (sample) {
     const std::size_t draw = run % sample->count, d = sample->inputs.size();
-    for (std::size_t j = 0; j < d; ++j) values.emplace_back(sample->inputs[j].distribution->quantile(sample->unit[draw * d + j]));
+    for (std::size_t j = 0; j < d; ++j) values.emplace_back(sample->values[draw * d + j]);
   }
   return values;
 }
@@ -301,7 +301,10 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
     }
     if (s.inputs.empty())
       r.fail("sample", *sample_node, "no distribution", "at least one option with a distribution, e.g. ball-E = { distribution = \"uniform\", min = 1.2e9, max = 2.9e9 }");
-    s.unit = unit_sample(s.method, s.count, s.inputs.size(), s.seed);
+    // The draws once: the quantiles of the unit-cube design, input by input.
+    s.values = unit_sample(s.method, s.count, s.inputs.size(), s.seed);
+    for (std::size_t i = 0; i < s.values.size(); ++i)
+      s.values[i] = s.inputs[i % s.inputs.size()].distribution->quantile(s.values[i]);
     c.sample = std::move(s);
   }
   if (const toml::node* output = doc.get("output")) {

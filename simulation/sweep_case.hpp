@@ -46,7 +46,7 @@ struct SweepSample {
   std::size_t count = 0;
   std::uint64_t seed = 1;
   std::vector<SweepAxis> inputs;
-  std::vector<double> unit;  ///< the design: count x inputs.size() points of (0, 1)^d, point-major
+  std::vector<double> values;  ///< the draws: count x inputs.size(), point-major (the design's quantiles)
 };
 
 /// The largest number of runs of one case (results are held in memory: ~100 bytes a run).

@@ -36,7 +36,7 @@ CsvWriter::Cell cell(const SweepValue& v) {
 }
 
 std::string text(const SweepValue& v) {
-  if (const double* d = std::get_if<double>(&v)) return fmt::format("{:.17g}", *d);
+  if (const double* d = std::get_if<double>(&v)) return fmt::format("{}", *d);
   if (const bool* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
   return std::get<std::string>(v);
 }

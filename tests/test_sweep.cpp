@@ -214,7 +214,6 @@ columns = ["impact_velocity_mps"]
                                        "stats.toml");
   const SweepResults r = run_sweep(c, all_runs(c), load_paper_parameters(), {.threads = 1, .progress = false});
   const std::string summary = sweep_summary_table(c, r);
-  const std::string sd = fmt::format("{:.17g}", std::sqrt(2.5));
   CHECK_THAT(summary, Catch::Contains("damping,output,runs,failed,mean,sd,min,q05,q25,median,q75,q95,max\n"));
   for (const char* law : {"hongo", "flores"}) {
     INFO(summary);
