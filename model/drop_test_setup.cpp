@@ -1,5 +1,6 @@
 #include "hertzdash/model/drop_test_setup.hpp"
 
+#include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
@@ -33,6 +34,33 @@ void validate(const DropTestSetup& s) {
       throw InvalidParameter("--rod-E", format_value(s.rod.E_Pa),
                              "a finite modulus [Pa] with --rod-model elastic (inf is the rigid rod: --rod-model rigid)");
     validate(*s.elastic_rod);
+  }
+  validate_hertz_scale(s);
+}
+
+void validate_hertz_scale(const DropTestSetup& s) {
+  const double K = hertz_stiffness(s), v0 = approach_speed(s);
+  const double X = undamped_hertz_impact(K, s.mass_kg, v0).max_deformation_m;
+  // The approach speed at which X = R: R^{5/2} = 5 m v^2 / (4 K).
+  const double v_max = std::sqrt(4.0 * K * std::pow(s.ball_radius_m, 2.5) / (5.0 * s.mass_kg));
+  const std::string why = fmt::format(
+      "(with --mass {:g} kg, --ball-radius {:g} m and K = {:.4g} N/m^1.5 from the moduli, the undamped Hertz "
+      "deformation X = (5 m v0^2 / 4K)^(2/5) is {:.3g} m",
+      s.mass_kg, s.ball_radius_m, K, X);
+  if (!(X < s.ball_radius_m)) {
+    const std::string tail = why + "; at or above the ball radius the small-deformation Hertz contact does not hold)";
+    if (s.impact_velocity_mps)
+      throw InvalidParameter("--impact-velocity", format_value(v0), fmt::format("below {:.4g} m/s {}", v_max, tail));
+    throw InvalidParameter("--height", format_value(s.height_m),
+                           fmt::format("below {:.4g} m with --gravity {:g} m/s^2 {}",
+                                       v_max * v_max / (2.0 * s.gravity_mps2), s.gravity_mps2, tail));
+  }
+  if (!(X >= min_hertz_deformation_m)) {
+    const std::string range = fmt::format(
+        "large enough that X >= {:g} m {}; below that, far under atomic dimensions, no continuum contact model applies)",
+        min_hertz_deformation_m, why);
+    throw InvalidParameter(s.impact_velocity_mps ? "--impact-velocity" : "--height",
+                           format_value(s.impact_velocity_mps ? v0 : s.height_m), range);
   }
 }
 

@@ -30,8 +30,20 @@ struct DropTestSetup {
   std::optional<ElasticRodSetup> elastic_rod;
 };
 
-/// Throws InvalidParameter naming the CLI option and its valid range.
+/// Throws InvalidParameter naming the CLI option and its valid range; includes validate_hertz_scale.
 void validate(const DropTestSetup& s);
+
+/// The least undamped Hertz deformation a set-up may have [m]: a picometre, a hundredth of an
+/// atom's size, below which no continuum contact model applies (and the integrators' absolute
+/// tolerances would exceed the whole motion).
+inline constexpr double min_hertz_deformation_m = 1e-12;
+
+/// The impact's own scale is one the Hertz model describes: the undamped Hertz deformation
+/// X = (5 m v0^2 / (4 K))^{2/5} (model/hertz.hpp) is finite, below the ball radius R (the
+/// small-deformation assumption; the message gives the approach speed v0 = sqrt(4 K R^{5/2} / (5 m))
+/// at which X = R) and at least min_hertz_deformation_m. Throws InvalidParameter naming
+/// --impact-velocity, or --height when the speed comes from a fall.
+void validate_hertz_scale(const DropTestSetup& s);
 
 /// Hertz stiffness of the set-up, eq. (3) [N/m^{3/2}].
 double hertz_stiffness(const DropTestSetup& s);
