@@ -442,7 +442,7 @@ int main(int argc, char** argv) {
     }
     std::cout << fmt::format("uncertainty: {} done ({} runs)\n", rod.name, runs);
   }
-  tex.add("uqLargestTotalLinearGap", largest_gap, "{:.3f}");
+  tex.add_text("uqLargestTotalLinearGap", latex_scientific(largest_gap));
   tex.add("uqSharesOutsideFirstInterval", shares_outside, "{:.0f}");
   tex.add("uqIndexCount", indices, "{:.0f}");
   tex.add_text("uqMinorLargestTotal", latex_scientific(minor_total));

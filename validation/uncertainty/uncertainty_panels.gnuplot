@@ -15,7 +15,7 @@ in_contact(x) = x >= 0 ? 1e6*x : NaN
 
 # Time tics: about four per panel whatever the contact time; value tics 1, 2 or 5 times a power of ten.
 stats data using (1e3*column('t_s')) nooutput
-t_step = STATS_max > 1.5 ? 0.5 : (STATS_max > 0.8 ? 0.25 : 0.1)
+t_step = STATS_max > 1.0 ? 0.5 : (STATS_max > 0.5 ? 0.25 : 0.1)
 nice_step(span) = (r = span/5.0, m = 10**floor(log10(r)), r/m <= 1 ? m : r/m <= 2 ? 2*m : r/m <= 5 ? 5*m : 10*m)
 stats data using 'force_q95_N' nooutput
 f_step = nice_step(STATS_max)
