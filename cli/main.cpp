@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
       hertzdash::cli::add_restitution_command(app),
       hertzdash::cli::add_bounce_command(app),
       hertzdash::cli::add_fit_command(app),
+      hertzdash::cli::add_sweep_command(app),
   };
 
   try {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <iterator>
 #include <stdexcept>
 
 namespace hertzdash {
@@ -20,6 +21,11 @@ std::string quoted_if_needed(const std::string& v) {
 CsvWriter::CsvWriter(std::string what, Parameters parameters, std::vector<std::string> columns)
     : what_(std::move(what)), parameters_(std::move(parameters)), columns_(std::move(columns)) {}
 
+void CsvWriter::add_comment(const std::string& line) {
+  if (line.find_first_of("\r\n") != std::string::npos) throw std::logic_error("CsvWriter: a comment line with a line break");
+  comments_ += "# " + line + "\n";
+}
+
 void CsvWriter::add_row(const std::vector<Cell>& cells) {
   if (cells.size() != columns_.size()) {
     throw std::logic_error(fmt::format("CsvWriter: row has {} cells for {} columns", cells.size(), columns_.size()));
@@ -29,7 +35,7 @@ void CsvWriter::add_row(const std::vector<Cell>& cells) {
     std::visit(
         [&](const auto& v) {
           using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, double>) body_ += fmt::format("{:.17g}", v);
+          if constexpr (std::is_same_v<T, double>) fmt::format_to(std::back_inserter(body_), "{}", v);
           else if constexpr (std::is_same_v<T, long>) body_ += std::to_string(v);
           else body_ += quoted_if_needed(v);
         },
@@ -41,7 +47,7 @@ void CsvWriter::add_row(const std::vector<Cell>& cells) {
 std::string CsvWriter::str() const {
   std::string header;
   for (std::size_t i = 0; i < columns_.size(); ++i) header += (i ? "," : "") + columns_[i];
-  return provenance_header(what_, parameters_) + header + "\n" + body_;
+  return provenance_header(what_, parameters_) + comments_ + header + "\n" + body_;
 }
 
 void CsvWriter::save(const std::filesystem::path& path) const { write_file_atomically(path, str()); }

@@ -16,7 +16,12 @@ class CsvWriter {
   /// `what` says what the file holds; `parameters` go into the header.
   CsvWriter(std::string what, Parameters parameters, std::vector<std::string> columns);
 
-  /// One row; must have one cell per column. Doubles are written with 17 significant digits.
+  /// A comment line ("# " + line) after the parameters, before the column names; `line` may not
+  /// contain a line break.
+  void add_comment(const std::string& line);
+
+  /// One row; must have one cell per column. Doubles are written as the shortest text that reads
+  /// back to the same double (fmt's "{}", Dragonbox: exact and several times faster than "{:.17g}").
   void add_row(const std::vector<Cell>& cells);
 
   std::string str() const;
@@ -26,6 +31,7 @@ class CsvWriter {
   std::string what_;
   Parameters parameters_;
   std::vector<std::string> columns_;
+  std::string comments_;
   std::string body_;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Sweeps over many impacts (restitution maps, height sweeps, sensitivity grids) on
+// Sweeps over many impacts (restitution maps, height sweeps, sensitivity grids, case files) on
 // all cores.
 //
 //   std::vector<double> e(n);
@@ -7,12 +7,17 @@
 //     e[i] = sim.run<HongoPaper>(setup_for(i)).e_effective;
 //   }, {.label = "restitution map"});
 //
-// The index range [0, count) is handed out in chunks from an atomic counter to a
-// pool of std::threads; each thread owns one ImpactSimulator (so the CVODE memory
-// is reused within a thread, never shared). `body(simulator, i)` must only write
-// results for index i. While the sweep runs, a progress line is drawn on stderr if
-// stderr is a terminal (never into logs or pipes). The first exception thrown by a
-// body stops the hand-out of new chunks and is rethrown after all threads joined.
+// The index range [0, count) is handed out in chunks from an atomic counter to a pool of
+// std::threads; each thread owns one ImpactSimulator (so the CVODE memory is reused within a
+// thread, never shared). `body(simulator, i)` must only write results for index i.
+// parallel_for_chunks is the same with a state of the caller's making per thread (a sweep whose
+// runs differ in solver keeps one simulator per solver setting).
+//
+// Progress goes to stderr: on a terminal a line redrawn every 0.2 s (done, rate, ETA); elsewhere
+// (logs, pipes, batch jobs) a plain line every `log_interval_s` seconds if that is > 0, else
+// nothing. The first exception thrown by a body stops the hand-out of new chunks and is rethrown
+// after all threads joined. A `cancel` flag set (by a signal handler, say) stops the hand-out
+// likewise; the caller sees how far it got from the flag and its own results.
 #include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <unistd.h>
@@ -35,7 +40,9 @@ struct SweepOptions {
   unsigned threads = 0;          ///< 0: std::thread::hardware_concurrency()
   std::size_t chunk = 256;       ///< indices handed out at once
   std::string label = "sweep";   ///< shown in the progress line
-  bool progress = true;          ///< draw the progress line (only ever on a terminal)
+  bool progress = true;          ///< report progress (a redrawn line on a terminal)
+  double log_interval_s = 0;     ///< not on a terminal: a plain progress line this often (0: never)
+  const std::atomic<bool>* cancel = nullptr;  ///< stop handing out work once set
 };
 
 /// The number of worker threads `options` asks for (at least 1).
@@ -43,48 +50,66 @@ inline unsigned sweep_threads(const SweepOptions& options) {
   return std::max(1u, options.threads ? options.threads : std::thread::hardware_concurrency());
 }
 
-template <class Body>
-void parallel_sweep(std::size_t count, const SolverSettings& settings, Body&& body, const SweepOptions& options = {}) {
+namespace sweep_detail {
+
+// "1234 / 5000 runs (25%), 3.1e+04 runs/s, ETA 0:00:12"
+inline void print_progress(const SweepOptions& options, std::size_t done, std::size_t count, unsigned threads,
+                           double elapsed_s, bool redraw) {
+  const double rate = elapsed_s > 0 ? static_cast<double>(done) / elapsed_s : 0;
+  const double eta = rate > 0 ? static_cast<double>(count - done) / rate : 0;
+  const auto s = static_cast<long>(eta + 0.5);
+  std::fprintf(stderr, "%s%s: %zu / %zu (%3.0f%%) on %u threads, %.3g per s, ETA %ld:%02ld:%02ld%s", redraw ? "\r" : "",
+               options.label.c_str(), done, count,
+               count ? 100.0 * static_cast<double>(done) / static_cast<double>(count) : 100.0, threads, rate, s / 3600,
+               s / 60 % 60, s % 60, redraw ? "   " : "\n");
+  std::fflush(stderr);
+}
+
+}  // namespace sweep_detail
+
+/// Runs body(state, i) for every i in [0, count), each thread with its own state = make_state().
+template <class MakeState, class Body>
+void parallel_for_chunks(std::size_t count, MakeState&& make_state, Body&& body, const SweepOptions& options = {}) {
   const unsigned n_threads = static_cast<unsigned>(std::min<std::size_t>(sweep_threads(options), std::max<std::size_t>(count, 1)));
   const std::size_t chunk = std::max<std::size_t>(options.chunk, 1);
   std::atomic<std::size_t> next{0}, done{0};
   std::atomic<bool> failed{false};
   std::exception_ptr error;
   std::mutex error_mutex;
+  auto stopped = [&] { return failed.load(std::memory_order_relaxed) || (options.cancel && options.cancel->load()); };
 
   auto worker = [&] {
-    ImpactSimulator simulator(settings);
-    for (;;) {
-      const std::size_t begin = next.fetch_add(chunk);
-      if (begin >= count || failed.load(std::memory_order_relaxed)) return;
-      const std::size_t end = std::min(count, begin + chunk);
-      try {
-        for (std::size_t i = begin; i < end; ++i) body(simulator, i);
-      } catch (...) {
-        std::lock_guard lock(error_mutex);
-        if (!error) error = std::current_exception();
-        failed = true;
-        return;
+    try {
+      auto state = make_state();
+      for (;;) {
+        const std::size_t begin = next.fetch_add(chunk);
+        if (begin >= count || stopped()) return;
+        const std::size_t end = std::min(count, begin + chunk);
+        for (std::size_t i = begin; i < end; ++i) body(state, i);
+        done += end - begin;
       }
-      done += end - begin;
+    } catch (...) {
+      std::lock_guard lock(error_mutex);
+      if (!error) error = std::current_exception();
+      failed = true;
     }
   };
 
-  // The progress line: redrawn every 0.2 s by a reporter thread, on a terminal only.
-  const bool show = options.progress && isatty(STDERR_FILENO);
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  const bool show = options.progress && (terminal || options.log_interval_s > 0);
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   std::mutex finished_mutex;
   std::condition_variable finished_cv;
   bool finished = false;
   std::thread reporter;
   if (show) {
-    reporter = std::thread([&] {
+    const auto period = terminal ? std::chrono::milliseconds(200)
+                                 : std::chrono::milliseconds(static_cast<long>(1000 * options.log_interval_s));
+    reporter = std::thread([&, period] {
       std::unique_lock lock(finished_mutex);
-      while (!finished_cv.wait_for(lock, std::chrono::milliseconds(200), [&] { return finished; })) {
-        const std::size_t d = done.load();
-        std::fprintf(stderr, "\r%s: %zu / %zu impacts (%3.0f%%) on %u threads", options.label.c_str(), d, count,
-                     count ? 100.0 * static_cast<double>(d) / static_cast<double>(count) : 100.0, n_threads);
-        std::fflush(stderr);
-      }
+      while (!finished_cv.wait_for(lock, period, [&] { return finished; }))
+        sweep_detail::print_progress(options, done.load(), count, n_threads, elapsed(), terminal);
     });
   }
 
@@ -100,9 +125,17 @@ void parallel_sweep(std::size_t count, const SolverSettings& settings, Body&& bo
     }
     finished_cv.notify_one();
     reporter.join();
-    std::fprintf(stderr, "\r%s: %zu / %zu impacts done%*s\n", options.label.c_str(), done.load(), count, 20, "");
+    sweep_detail::print_progress(options, done.load(), count, n_threads, elapsed(), terminal);
+    if (terminal) std::fputc('\n', stderr);
   }
   if (error) std::rethrow_exception(error);
+}
+
+/// Runs body(simulator, i) for every i in [0, count), one ImpactSimulator(settings) per thread.
+template <class Body>
+void parallel_sweep(std::size_t count, const SolverSettings& settings, Body&& body, const SweepOptions& options = {}) {
+  parallel_for_chunks(
+      count, [&] { return ImpactSimulator(settings); }, body, options);
 }
 
 }  // namespace hertzdash

@@ -27,21 +27,21 @@ std::vector<RunOption> make_run_options() {
   const std::string cvode = integrator_names([](const IntegratorTraits& r) { return r.reads_cvode_method; });
   return {
       {"rod", &R::rod, "Rod of Tables 1-3: steel, duralumin-a, duralumin-b, duralumin-c", G::setup},
-      {"height", &R::height_m, "Drop height h [m], free fall from rest", G::setup},
-      {"impact-velocity", &R::impact_velocity_mps, "Approach speed at contact onset [m/s]; overrides --height", G::setup},
-      {"mass", &R::mass_kg, "Rod mass [kg] (default: Table 1)", G::setup},
+      {"height", &R::height_m, "Drop height h [m], free fall from rest", G::setup, "m"},
+      {"impact-velocity", &R::impact_velocity_mps, "Approach speed at contact onset [m/s]; overrides --height", G::setup, "mps"},
+      {"mass", &R::mass_kg, "Rod mass [kg] (default: Table 1)", G::setup, "kg"},
       {"restitution", &R::restitution, "Input coefficient of restitution e in (0,1] (default: Table 2; 1 = undamped)",
        G::setup},
-      {"ball-E", &R::ball_E_Pa, "Hemisphere Young's modulus [Pa] (default: 2.0e9, assumed)", G::setup},
+      {"ball-E", &R::ball_E_Pa, "Hemisphere Young's modulus [Pa] (default: 2.0e9, assumed)", G::setup, "Pa"},
       {"ball-nu", &R::ball_nu, "Hemisphere Poisson ratio (default: 0.40, assumed)", G::setup},
-      {"ball-radius", &R::ball_radius_m, "Hemisphere radius R [m] (default: 0.0127)", G::setup},
+      {"ball-radius", &R::ball_radius_m, "Hemisphere radius R [m] (default: 0.0127)", G::setup, "m"},
       {"ball-yield-stress", &R::ball_yield_stress_Pa,
        "Hemisphere yield stress Y [Pa]; a Hertz peak pressure above the onset of yield (1.74 Y at nu = 0.4, Johnson) is flagged; inf: no check "
        "(default: 7.0e7, assumed)",
-       G::setup},
-      {"rod-E", &R::rod_E_Pa, "Rod Young's modulus [Pa]; inf for a rigid flat (default: Table 3)", G::setup},
+       G::setup, "Pa"},
+      {"rod-E", &R::rod_E_Pa, "Rod Young's modulus [Pa]; inf for a rigid flat (default: Table 3)", G::setup, "Pa"},
       {"rod-nu", &R::rod_nu, "Rod Poisson ratio (default: 0.30 steel, 0.33 duralumin, assumed)", G::setup},
-      {"gravity", &R::gravity_mps2, "Gravity g [m/s^2], 0 allowed (default: 9.80665)", G::setup},
+      {"gravity", &R::gravity_mps2, "Gravity g [m/s^2], 0 allowed (default: 9.80665)", G::setup, "mps2"},
       {"no-tension", &R::no_tension, "Clamp the contact force at >= 0; contact ends where it reaches zero", G::setup},
       {"zeta", &R::zeta, "Damping ratio from e: paper (eq. 6) or exact (linear oscillator)", G::setup},
       {"omega-n", &R::omega_n,
@@ -52,11 +52,11 @@ std::vector<RunOption> make_run_options() {
       {"viscous-time-constant", &R::viscous_time_constant_s,
        "Material time constant A [s] >= 0 of the viscoelastic law (kuwabara-kono only): F = K (x^{3/2} + A x^{1/2} "
        "xdot); replaces the calibration from e",
-       G::setup},
+       G::setup, "s"},
       {"reference-velocity", &R::reference_velocity_mps,
        "Approach speed [m/s] > 0 at which the viscoelastic law's restitution is the input e (kuwabara-kono only; "
        "default: the approach speed of the run's first impact)",
-       G::setup},
+       G::setup, "mps"},
       {"rod-model", &R::rod_model,
        "rigid (the paper's model: a rigid rod on a fixed hemisphere) or elastic (the rod as an elastic bar, the "
        "hemisphere on its load cell; docs/elastic-rod.md)",
@@ -70,21 +70,21 @@ std::vector<RunOption> make_run_options() {
        "Damping ratio of the elastic rod's first longitudinal mode, [0, 1) (default: data/assumptions.csv)", G::setup},
       {"cell-stiffness", &R::cell_stiffness_N_per_m,
        "Load cell stiffness [N/m]; inf fixes the hemisphere on a rigid base (default: data/assumptions.csv)",
-       G::setup},
+       G::setup, "N_per_m"},
       {"cell-damping-ratio", &R::cell_damping_ratio,
        "Damping ratio of the hemisphere on the load cell, [0, 1) (default: data/assumptions.csv)", G::setup},
       {"hemisphere-mass", &R::hemisphere_mass_kg, "Hemisphere mass [kg] on the load cell (default: Table 1)",
-       G::setup},
+       G::setup, "kg"},
       {"accelerometer", &R::accelerometer,
        "End face carrying the accelerometer: top (the free end, the default) or bottom (the struck face)", G::setup},
       {"integrator", &R::integrator, "One of: " + integrator_names(), G::solver},
-      {"dt", &R::dt_s, "Fixed step [s] > 0 (" + fixed + "; a run needing more than 1e9 steps does not start)", G::solver},
+      {"dt", &R::dt_s, "Fixed step [s] > 0 (" + fixed + "; a run needing more than 1e9 steps does not start)", G::solver, "s"},
       {"no-event-location", &R::no_event_location,
        "Handle events at the end of the step that crosses them (" + fixed + "; convergence studies)", G::solver},
       {"rtol", &R::rtol, "Relative tolerance in (0, 1) (" + adaptive + ")", G::solver},
       {"atol", &R::atol, "Absolute tolerance [m, m/s] in (0, 1) (" + adaptive + ")", G::solver},
       {"cvode-method", &R::cvode_method, "CVODE method: adams or bdf (" + cvode + ")", G::solver},
-      {"max-step", &R::max_step_s, "Largest step [s]; 0 = no limit (" + timed + ")", G::solver},
+      {"max-step", &R::max_step_s, "Largest step [s]; 0 = no limit (" + timed + ")", G::solver, "s"},
   };
 }
 
@@ -145,6 +145,10 @@ std::vector<std::string> split_option_list(const std::string& list) {
     begin = end + 1;
   }
   return items;
+}
+
+std::string column_name(const RunOption& option) {
+  return python_keyword(option.name) + (option.unit.empty() ? "" : "_" + option.unit);
 }
 
 std::string python_keyword(std::string_view option_name) {

@@ -54,7 +54,8 @@ struct RunOptions {
 };
 
 /// One option: its name (the command line's --name; Python's keyword, '-' read as '_'),
-/// the field it sets, and its help text (units in brackets).
+/// the field it sets, its help text (units in brackets), and the SI unit a column of its values
+/// carries in its name (empty for a dimensionless or text option).
 struct RunOption {
   using Field = std::variant<double RunOptions::*, std::optional<double> RunOptions::*, std::string RunOptions::*,
                              std::optional<std::string> RunOptions::*, bool RunOptions::*>;
@@ -63,7 +64,12 @@ struct RunOption {
   Field field;
   std::string help;
   Group group;
+  std::string unit = {};
 };
+
+/// The name of a column of the option's values: its Python keyword and unit ("height_m",
+/// "ball_E_Pa", "restitution").
+std::string column_name(const RunOption& option);
 
 /// Every option, the set-up's first.
 const std::vector<RunOption>& run_options();

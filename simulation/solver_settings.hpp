@@ -19,6 +19,8 @@ struct SolverSettings {
   double atol = 1e-12;         ///< absolute tolerance (state units: m, m/s; m^{1/2}, m/s, s regularised), > 0
   double max_step_s = 0;       ///< largest step [s], physical variables only; 0: no limit
   CvodeMethod cvode_method = CvodeMethod::adams;  ///< cvode, cvode-regularized
+
+  friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
 };
 
 /// Throws InvalidParameter, naming the option, for a setting the chosen integrator reads

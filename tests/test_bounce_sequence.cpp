@@ -84,7 +84,7 @@ TEST_CASE("bounce: without damping every bounce returns at the impact speed, int
   for (const double e : b.e_from_intervals) CHECK(std::abs(e - 1.0) < 1e-10);
 }
 
-TEST_CASE("bounce: the sequence does not drift; onset-time error per bounce", "[bounce]") {
+TEST_CASE("bounce: the sequence does not drift, onset-time error per bounce", "[bounce]") {
   // Flights are closed form, so the onset time of impact n carries only the errors of the
   // contacts before it: each contact's time and rebound speed; an error delta e in a rebound
   // speed e v changes the next flight by 2 v delta e / g. CVODE at its default rtol 1e-8 gives

@@ -27,7 +27,7 @@ TEST_CASE("CLI models lists every registered law with its citation", "[cli][damp
   for (const auto& l : laws) CHECK(text.out.find(std::string(l.citation)) != std::string::npos);
 }
 
-TEST_CASE("CLI restitution: Kelvin-Voigt returns its input e; calibration inverts the paper's law",
+TEST_CASE("CLI restitution: Kelvin-Voigt returns its input e, calibration inverts the paper's law",
           "[cli][damping]") {
   // Kelvin-Voigt with tension allowed: e_effective = e exactly (closed form); the CLI's
   // default CVODE tolerance rtol 1e-8 gives ~1e-7 error: bound 1e-6.

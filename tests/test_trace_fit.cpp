@@ -134,7 +134,7 @@ TEST_CASE("fit: a degenerate pair is flagged: ball-E and ball-radius enter only 
   CHECK_FALSE(g.identifiable);
 }
 
-TEST_CASE("fit: the paper's law and Kuwabara-Kono are one law at one speed; the x^{3/2} xdot family is not", "[fit]") {
+TEST_CASE("fit: the paper's law and Kuwabara-Kono are one law at one speed, the x^{3/2} xdot family is not", "[fit]") {
   // The paper's dashpot c_e x^{1/2} xdot and Kuwabara-Kono's K A x^{1/2} xdot have the same form;
   // with e fitted, both fit a trace made by the paper's law equally (their chi^2 agree to the
   // fit's convergence), while a Hunt-Crossley force (x^{3/2} xdot) cannot match its shape:

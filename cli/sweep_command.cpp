@@ -1,0 +1,155 @@
+// `hertzdash sweep CASE.toml`: the runs of a case file (docs/sweep.md) on every core, or under
+// an MPI launcher on every process of the job; one CSV row per run, optionally a summary.
+//
+// Under MPI, run i goes to rank i mod size (neighbouring runs, often alike in cost, are spread
+// over the ranks); rank 0 gathers the outputs and errors and writes the same files the threaded
+// run writes, byte for byte apart from the timing line.
+#include "cli/command.hpp"
+#include "cli/process_group.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/simulation/sweep_run.hpp"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <iostream>
+#include <memory>
+
+namespace hertzdash::cli {
+
+namespace {
+
+struct SweepCommandOptions {
+  std::string case_path, out, summary;
+  unsigned threads = 0;
+  bool quiet = false;
+};
+
+// Set by SIGINT/SIGTERM while the runs run; a second signal ends the program at once (nothing
+// has been written then: the files are written after the runs).
+std::atomic<bool> interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void on_interrupt(int signal) {
+  interrupted = true;
+  std::signal(signal, SIG_DFL);
+}
+
+// The signal handlers for the duration of the runs.
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    interrupted = false;
+    previous_int_ = std::signal(SIGINT, on_interrupt);
+    previous_term_ = std::signal(SIGTERM, on_interrupt);
+  }
+  ~InterruptGuard() {
+    std::signal(SIGINT, previous_int_);
+    std::signal(SIGTERM, previous_term_);
+  }
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+ private:
+  void (*previous_int_)(int);
+  void (*previous_term_)(int);
+};
+
+std::filesystem::path summary_path(const std::filesystem::path& out) {
+  std::filesystem::path p = out;
+  return p.replace_extension(".summary.csv");
+}
+
+// Put this rank's results (runs rank, rank + size, ...) into the whole case's order.
+SweepResults assemble(const std::vector<std::vector<double>>& values, const std::vector<std::string>& errors,
+                      std::size_t runs, std::size_t outputs) {
+  SweepResults all{.outputs = outputs, .values = std::vector<double>(runs * outputs), .errors = std::vector<std::string>(runs)};
+  const std::size_t size = values.size();
+  for (std::size_t r = 0; r < size; ++r) {
+    std::size_t j = 0, begin = 0;
+    for (std::size_t run = r; run < runs; run += size, ++j) {
+      std::copy_n(values[r].begin() + static_cast<std::ptrdiff_t>(j * outputs), outputs,
+                  all.values.begin() + static_cast<std::ptrdiff_t>(run * outputs));
+      const std::size_t end = errors[r].find('\0', begin);
+      all.errors[run] = errors[r].substr(begin, end - begin);
+      begin = end + 1;
+    }
+  }
+  return all;
+}
+
+int run_sweep_command(const SweepCommandOptions& opt) {
+  const ProcessGroup group;
+  const SweepCase c = read_sweep_case(opt.case_path);
+  const std::filesystem::path out = opt.out.empty() ? default_sweep_output(c) : std::filesystem::path(opt.out);
+  const bool summary = c.summary || !opt.summary.empty();
+  const std::filesystem::path summary_out = opt.summary.empty() ? summary_path(out) : std::filesystem::path(opt.summary);
+
+  std::vector<std::size_t> mine;
+  for (std::size_t run = static_cast<std::size_t>(group.rank()); run < c.size(); run += static_cast<std::size_t>(group.size()))
+    mine.push_back(run);
+  const unsigned threads =
+      opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency() / static_cast<unsigned>(group.local_size()));
+  const PaperParameters paper = load_paper_parameters();
+  const auto start = std::chrono::steady_clock::now();
+  SweepResults results;
+  {
+    const InterruptGuard guard;
+    results = run_sweep(c, mine, paper,
+                        {.threads = threads,
+                         .label = group.size() > 1 ? fmt::format("sweep (rank 0 of {})", group.size()) : "sweep",
+                         .progress = !opt.quiet && group.rank() == 0,
+                         .log_interval_s = 10,
+                         .cancel = &interrupted});
+  }
+  if (group.any(interrupted)) {
+    if (group.rank() == 0) std::cerr << "hertzdash: sweep interrupted; no file written\n";
+    return 130;
+  }
+  std::string errors;
+  for (const std::string& e : results.errors) errors += e + '\0';
+  const std::vector<std::vector<double>> values = group.gather(results.values);
+  const std::vector<std::string> error_parts = group.gather(errors);
+  if (group.rank() != 0) return 0;
+
+  const SweepResults all = assemble(values, error_parts, c.size(), c.outputs.size());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string timing =
+      fmt::format("timing: {:.3f} s on {} process{} x {} thread{}, {:.3g} runs/s", seconds, group.size(),
+                  group.size() > 1 ? "es" : "", threads, threads > 1 ? "s" : "", static_cast<double>(c.size()) / seconds);
+  write_file_atomically(out, sweep_table(c, all, timing));
+  if (summary) write_file_atomically(summary_out, sweep_summary_table(c, all));
+
+  std::size_t failed = 0;
+  for (const std::string& e : all.errors) failed += e.empty() ? 0 : 1;
+  std::cout << fmt::format("hertzdash sweep: {} runs, {} failed; wrote {}{}\n", c.size(), failed, out.string(),
+                           summary ? " and " + summary_out.string() : "");
+  if (summary) std::cout << sweep_summary_text(c, all);
+  if (failed == 0) return 0;
+  const auto first = std::find_if(all.errors.begin(), all.errors.end(), [](const std::string& e) { return !e.empty(); });
+  std::cerr << fmt::format("hertzdash: {} of {} runs failed (the error column says why); run {}: {}\n", failed, c.size(),
+                           first - all.errors.begin(), *first);
+  return failed == c.size() ? 1 : 0;
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& app) {
+  auto opt = std::make_shared<SweepCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "sweep", "Run a case file's grid or sample of simulate runs (docs/sweep.md); under mpirun on every process");
+  sub->add_option("case", opt->case_path, "The case file (TOML)")->required();
+  sub->add_option("--out", opt->out,
+                  "The CSV of one row per run (default: the case's [output] file, else the case file's name with .csv)");
+  sub->add_option("--summary", opt->summary,
+                  "Also write the summary of every output here (default with [output] summary = true: "
+                  "the CSV's name with .summary.csv)");
+  sub->add_option("--threads", opt->threads,
+                  "Threads per process (default: the machine's cores shared among the job's processes on it)");
+  sub->add_flag("--quiet", opt->quiet, "No progress line");
+  return {sub, [opt]() { return run_sweep_command(*opt); }};
+}
+
+}  // namespace hertzdash::cli
