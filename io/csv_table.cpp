@@ -96,8 +96,10 @@ std::size_t CsvTable::column_index(const std::string& name) const {
   return static_cast<std::size_t>(it - columns_.begin());
 }
 
+std::string CsvTable::row_location(std::size_t row) const { return path_ + ":" + std::to_string(line_numbers_.at(row)); }
+
 std::string CsvTable::where(std::size_t row, const std::string& column) const {
-  return path_ + ":" + std::to_string(line_numbers_.at(row)) + ": column '" + column + "'";
+  return row_location(row) + ": column '" + column + "'";
 }
 
 const std::string& CsvTable::text(std::size_t row, const std::string& column) const {

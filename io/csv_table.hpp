@@ -36,6 +36,8 @@ class CsvTable {
   double number_or(std::size_t row, const std::string& column, double fallback) const;
   /// The first row whose `column` equals `value`; throws DataError if there is none.
   std::size_t find_row(const std::string& column, const std::string& value) const;
+  /// "FILE:LINE" of a row, for messages about its content.
+  std::string row_location(std::size_t row) const;
 
  private:
   std::size_t column_index(const std::string& name) const;

@@ -23,6 +23,12 @@ const RodData& PaperParameters::rod(const std::string& name) const {
   throw InvalidParameter("--rod", name, "one of: " + names);
 }
 
+const UncertainInput& PaperParameters::uncertain_input(const std::string& parameter) const {
+  for (const auto& in : uncertain_inputs)
+    if (in.parameter == parameter) return in;
+  throw DataError("assumptions.csv: parameter " + parameter + " has no distribution (distribution = fixed or no row)");
+}
+
 namespace {
 
 // The file this code was loaded from: the shared library libhertzdash_simulation.so (or,
@@ -79,6 +85,7 @@ PaperParameters load_paper_parameters(const std::filesystem::path& dir) {
 
   PaperParameters p;
   p.gravity_mps2 = assumed("gravity_mps2");
+  p.uncertain_inputs = read_uncertain_inputs(as);
   p.rig = RigAssumptions{assumed("load_cell_stiffness_N_per_m"), assumed("load_cell_damping_ratio"),
                          assumed("rod_damping_ratio")};
   const std::size_t b1 = t1.find_row("body", "nylon-ball"), b3 = t3.find_row("body", "nylon-ball");

@@ -1,6 +1,7 @@
 #pragma once
 // The paper's Tables 1-3 and the stated assumptions, read from data/*.csv.
 #include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/simulation/uncertain_inputs.hpp"
 
 #include <filesystem>
 #include <string>
@@ -46,7 +47,11 @@ struct PaperParameters {
   BallData ball;
   RigAssumptions rig;
   double gravity_mps2;
+  /// The inputs data/assumptions.csv gives a distribution (the joint uncertainty study).
+  std::vector<UncertainInput> uncertain_inputs;
   const RodData& rod(const std::string& name) const;  ///< throws InvalidParameter("--rod", ...)
+  /// The uncertain input `parameter`; throws DataError if assumptions.csv gives it none.
+  const UncertainInput& uncertain_input(const std::string& parameter) const;
 };
 
 /// Where the data tables sit below an installation prefix or a build tree.

@@ -9,7 +9,7 @@ namespace hertzdash {
 StudyArgs parse_study_args(int argc, char** argv) {
   StudyArgs a;
   auto usage = [&] {
-    std::cerr << "usage: " << argv[0] << " --out DIR [--generated DIR] [--reduced]\n";
+    std::cerr << "usage: " << argv[0] << " --out DIR [--generated DIR] [--reduced | --full]\n";
     std::exit(2);
   };
   for (int i = 1; i < argc; ++i) {
@@ -17,9 +17,10 @@ StudyArgs parse_study_args(int argc, char** argv) {
     if (arg == "--out" && i + 1 < argc) a.out_dir = argv[++i];
     else if (arg == "--generated" && i + 1 < argc) a.generated_dir = argv[++i];
     else if (arg == "--reduced") a.reduced = true;
+    else if (arg == "--full") a.full = true;
     else usage();
   }
-  if (a.out_dir.empty()) usage();
+  if (a.out_dir.empty() || (a.reduced && a.full)) usage();
   if (a.generated_dir.empty()) a.generated_dir = a.out_dir.parent_path() / "generated";
   std::filesystem::create_directories(a.out_dir);
   std::filesystem::create_directories(a.generated_dir);

@@ -1,9 +1,11 @@
 #pragma once
 // The command line every study program takes:
-//   <study> --out DIR [--generated DIR] [--reduced]
+//   <study> --out DIR [--generated DIR] [--reduced | --full]
 // --out: where CSV data (and the figures drawn from it) go, e.g. paper/figures;
 // --generated: where LaTeX fragments go (default: DIR/../generated);
-// --reduced: a small, fast version of the study for the pipeline test.
+// --reduced: a small, fast version of the study for the pipeline test;
+// --full: the full sample size of a study whose `make figures` size is cut to stay within a
+//   minute (validation/uncertainty: `make uncertainty`); studies without one run as usual.
 #include <filesystem>
 
 namespace hertzdash {
@@ -12,6 +14,7 @@ struct StudyArgs {
   std::filesystem::path out_dir;
   std::filesystem::path generated_dir;
   bool reduced = false;
+  bool full = false;
 };
 
 /// Parses the arguments; prints usage and exits with code 2 on bad ones.
