@@ -127,7 +127,7 @@ TEST_CASE("Sobol indices do not change when a constant is added to the output", 
   }
 }
 
-TEST_CASE("A linear additive function: S_i = ST_i = a_i^2 var_i / sum; an unused input gets exactly 0", "[sobol]") {
+TEST_CASE("A linear additive function: S_i = ST_i = a_i^2 var_i / sum, an unused input gets exactly 0", "[sobol]") {
   // f = sum a_i x_i with independent x_i: V_i = a_i^2 var_i, no interactions, so
   // S_i = ST_i = a_i^2 var_i / sum_k a_k^2 var_k. Inputs: U(0, 1) (var 1/12), N(0, 2)
   // (var 4), U(-3, 3) (var 3), and a fourth that f ignores; a = (1, 0.5, 2, 0):

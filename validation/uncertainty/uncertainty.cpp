@@ -163,11 +163,20 @@ Linearised linearise(const PaperParameters& paper, const RodData& rod, const Dro
 }
 
 // Text for LaTeX: _ % & # escaped, "+-" as a plus-minus sign, | in math (OT1 text has none).
-std::string latex_text(std::string s) {
-  for (std::size_t at = 0; (at = s.find_first_of("_%&#", at)) != std::string::npos; at += 2) s.insert(at, "\\");
-  for (std::size_t at = 0; (at = s.find("+-", at)) != std::string::npos;) s.replace(at, 2, "$\\pm$");
-  for (std::size_t at = 0; (at = s.find('|', at)) != std::string::npos; at += 3) s.replace(at, 1, "$|$");
-  return s;
+std::string latex_text(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.compare(i, 2, "+-") == 0) {
+      out += "$\\pm$";
+      ++i;
+    } else if (s[i] == '|') {
+      out += "$|$";
+    } else {
+      if (std::string_view("_%&#").find(s[i]) != std::string_view::npos) out += '\\';
+      out += s[i];
+    }
+  }
+  return out;
 }
 
 // A number for LaTeX math: 1.2e+09 -> 1.2\times 10^{9}.
