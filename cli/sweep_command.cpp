@@ -16,6 +16,7 @@
 #include <csignal>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 namespace hertzdash::cli {
 
@@ -44,6 +45,8 @@ class InterruptGuard {
     interrupted = false;
     previous_int_ = std::signal(SIGINT, on_interrupt);
     previous_term_ = std::signal(SIGTERM, on_interrupt);
+    if (previous_int_ == SIG_ERR || previous_term_ == SIG_ERR)
+      throw std::runtime_error("cannot install the SIGINT/SIGTERM handlers of the sweep");
   }
   ~InterruptGuard() {
     std::signal(SIGINT, previous_int_);
