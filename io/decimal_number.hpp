@@ -1,0 +1,21 @@
+#pragma once
+// The one reader of numbers typed by people: command-line options, data tables, measured
+// traces, case files. Decimal only: no hexadecimal (0x10, 0x1p-1), no inf or nan words, no
+// spaces, the whole text or nothing.
+#include <optional>
+#include <string_view>
+
+namespace hertzdash {
+
+/// What parse_decimal() accepts, for messages.
+inline constexpr const char* decimal_number_format =
+    "a decimal number: an optional sign, digits with an optional decimal point, an optional exponent "
+    "(0.02, -1.5e-3, 2E9)";
+
+/// The value of `text` if it is, as a whole, a decimal number within the range of a double:
+/// [+-] (digits [. [digits]] | . digits) [(e|E) [+-] digits]. Otherwise nothing: an empty
+/// text, surrounding spaces, hexadecimal, inf, nan, and a value that overflows or rounds to
+/// zero from a nonzero number (1e999, 1e-999).
+std::optional<double> parse_decimal(std::string_view text);
+
+}  // namespace hertzdash
