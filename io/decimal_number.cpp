@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <system_error>
 
 namespace hertzdash {
@@ -49,6 +50,13 @@ std::optional<double> parse_decimal(std::string_view text) {
   const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), v, std::chars_format::general);
   if (ec != std::errc() || end != body.data() + body.size() || !std::isfinite(v)) return std::nullopt;
   return negative ? -v : v;
+}
+
+std::optional<double> parse_option_number(std::string_view text) {
+  if (text == "inf") return std::numeric_limits<double>::infinity();
+  if (text == "-inf") return -std::numeric_limits<double>::infinity();
+  if (text == "nan") return std::numeric_limits<double>::quiet_NaN();
+  return parse_decimal(text);
 }
 
 }  // namespace hertzdash

@@ -18,4 +18,9 @@ inline constexpr const char* decimal_number_format =
 /// zero from a nonzero number (1e999, 1e-999).
 std::optional<double> parse_decimal(std::string_view text);
 
+/// The value of an option as typed: a decimal number (parse_decimal) or one of the words inf,
+/// -inf and nan (what Python prints for float('inf'), float('-inf'), float('nan')), which the
+/// option's own validation then accepts or refuses with its range.
+std::optional<double> parse_option_number(std::string_view text);
+
 }  // namespace hertzdash

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <limits>
 
 using hertzdash::parse_decimal;
@@ -36,5 +37,17 @@ TEST_CASE("anything but a whole decimal number is refused", "[decimal]") {
   for (const char* text : refused) {
     INFO("'" << text << "'");
     CHECK_FALSE(parse_decimal(text).has_value());
+  }
+}
+
+TEST_CASE("an option's value is a decimal number or one of the words inf, -inf, nan", "[decimal]") {
+  using hertzdash::parse_option_number;
+  CHECK(parse_option_number("2e9") == 2e9);
+  CHECK(parse_option_number("inf") == std::numeric_limits<double>::infinity());
+  CHECK(parse_option_number("-inf") == -std::numeric_limits<double>::infinity());
+  CHECK(std::isnan(parse_option_number("nan").value()));
+  for (const char* text : {"", "0x10", "1e", "Inf", "+inf", "NAN", "infinity", " 1"}) {
+    INFO("'" << text << "'");
+    CHECK_FALSE(parse_option_number(text).has_value());
   }
 }
