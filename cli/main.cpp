@@ -2,11 +2,13 @@
 // Exit codes: 0 success, 2 invalid input (the message names the parameter and
 // its valid range), 1 any other failure. No output file is left half-written.
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <iostream>
+#include <string>
 #include <vector>
 
 int main(int argc, char** argv) {
@@ -25,6 +27,8 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    for (const auto& command : commands)
+      if (command.subcommand->parsed()) return command.run();
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -34,12 +38,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "hertzdash: " << e.what() << "\n";
     return 2;
-  }
-  try {
-    for (const auto& command : commands)
-      if (command.subcommand->parsed()) return command.run();
   } catch (const hertzdash::InvalidParameter& e) {
-    std::cerr << "hertzdash: " << e.what() << "\n";
+    std::cerr << "hertzdash: " << hertzdash::cli::refusal_message(e) << "\n";
     return 2;
   } catch (const hertzdash::DataError& e) {
     std::cerr << "hertzdash: bad data file: " << e.what() << "\n";

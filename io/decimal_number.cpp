@@ -59,4 +59,12 @@ std::optional<double> parse_option_number(std::string_view text) {
   return parse_decimal(text);
 }
 
+std::optional<std::uint64_t> parse_decimal_integer(std::string_view text, std::uint64_t max) {
+  if (text.empty() || digits_at(text, 0) != text.size()) return std::nullopt;
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || v > max) return std::nullopt;
+  return v;
+}
+
 }  // namespace hertzdash

@@ -51,3 +51,15 @@ TEST_CASE("an option's value is a decimal number or one of the words inf, -inf, 
     CHECK_FALSE(parse_option_number(text).has_value());
   }
 }
+
+TEST_CASE("an integer option is decimal digits up to its largest value", "[decimal]") {
+  using hertzdash::parse_decimal_integer;
+  CHECK(parse_decimal_integer("0", 10) == 0u);
+  CHECK(parse_decimal_integer("010", 10) == 10u);
+  CHECK(parse_decimal_integer("18446744073709551615", UINT64_MAX) == UINT64_MAX);
+  for (const char* text : {"", "11", "-1", "+1", "0x1", "1e1", "1.0", " 1"}) {
+    INFO("'" << text << "'");
+    CHECK_FALSE(parse_decimal_integer(text, 10).has_value());
+  }
+  CHECK_FALSE(parse_decimal_integer("18446744073709551616", UINT64_MAX).has_value());  // 2^64
+}
