@@ -158,6 +158,22 @@ TEST_CASE("CLI restitution: an iterated --omega-n exits 2 naming the option and 
   }
 }
 
+TEST_CASE("CLI: an unknown or missing subcommand exits 2 and lists the subcommands", "[cli]") {
+  // Issue 19: `hertzdash frobnicate` said "A subcommand is required".
+  const std::string listed = "simulate, models, restitution, bounce, fit, sweep (hertzdash --help)";
+  const auto unknown = run_cli("frobnicate --mass 1");
+  CHECK(unknown.exit_code == 2);
+  CHECK(unknown.err == "hertzdash: unknown subcommand 'frobnicate': the subcommands are " + listed + "\n");
+  CHECK(unknown.out.empty());
+  const auto none = run_cli("");
+  CHECK(none.exit_code == 2);
+  CHECK(none.err == "hertzdash: a subcommand is required: " + listed + "\n");
+  // A subcommand's own missing option is still named.
+  const auto fit = run_cli("fit");
+  CHECK(fit.exit_code == 2);
+  CHECK(fit.err.find("--trace is required") != std::string::npos);
+}
+
 TEST_CASE("CLI: an option value that is not a number exits 2 naming the option", "[cli]") {
   const auto r = run_cli("simulate --mass heavy");
   CHECK(r.exit_code == 2);
