@@ -267,25 +267,103 @@ TEST_CASE("CLI: every numeric option of every subcommand refuses text that is no
   CHECK(tried > 7 * 30);
 }
 
-TEST_CASE("CLI: a malformed data table exits 2 naming the file, line and column", "[cli][data]") {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("hertzdash_data_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  for (const auto& f : fs::directory_iterator(fs::path(HERTZDASH_SOURCE_DIR) / "data"))
-    if (f.is_regular_file()) fs::copy_file(f.path(), dir / f.path().filename(), fs::copy_options::overwrite_existing);
+namespace {
 
+// A copy of data/ whose tables a test may change, removed afterwards.
+struct DataCopy {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hertzdash_data_" + std::to_string(::getpid()));
+  DataCopy() {
+    namespace fs = std::filesystem;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const auto& f : fs::directory_iterator(fs::path(HERTZDASH_SOURCE_DIR) / "data"))
+      if (f.is_regular_file()) fs::copy_file(f.path(), dir / f.path().filename());
+  }
+  ~DataCopy() { std::filesystem::remove_all(dir); }
+  std::string env() const { return "HERTZDASH_DATA_DIR=" + dir.string(); }
+  void append(const std::string& file, const std::string& text) const { std::ofstream(dir / file, std::ios::app) << text; }
+  void write(const std::string& file, const std::string& text) const { std::ofstream(dir / file) << text; }
+  // The file with every occurrence of `from` replaced by `to`, built piece by piece.
+  void replace(const std::string& file, const std::string& from, const std::string& to) const {
+    const std::string text = hertzdash::test::slurp(dir / file);
+    std::string out;
+    for (std::size_t begin = 0;;) {
+      const std::size_t at = text.find(from, begin);
+      out.append(text, begin, at == std::string::npos ? std::string::npos : at - begin);
+      if (at == std::string::npos) break;
+      out += to;
+      begin = at + from.size();
+    }
+    write(file, out);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("CLI: a malformed data table exits 2 naming the file, line and column", "[cli][data]") {
+  // Lines count from 1 with the comment lines; columns are 1-based bytes where the field starts.
+  const DataCopy data;
+  std::vector<std::string> expected;  // every piece must appear in the message
   SECTION("a row with a missing field") {
-    std::ofstream(dir / "table1_dimensions.csv", std::ios::app) << "extra-rod,0.025,0.2\n";
-    const auto r = run_cli("simulate", "HERTZDASH_DATA_DIR=" + dir.string());
-    CHECK(r.exit_code == 2);
-    CHECK(r.err.find("table1_dimensions.csv:9") != std::string::npos);
-    CHECK(r.err.find("expected 5 fields") != std::string::npos);
+    data.append("table1_dimensions.csv", "extra-rod,0.025,0.2\n");  // line 9 of 8
+    expected = {"table1_dimensions.csv:9:", "expected 5 fields"};
   }
   SECTION("a field that is not a number") {
-    std::ofstream(dir / "table2_restitution.csv") << "rod,e,e_second,zeta_printed,provenance\nsteel,zero point eight,,0.07,x\n";
-    const auto r = run_cli("simulate", "HERTZDASH_DATA_DIR=" + dir.string());
-    CHECK(r.exit_code == 2);
-    CHECK(r.err.find("table2_restitution.csv:2: column 'e'") != std::string::npos);
+    data.write("table2_restitution.csv", "rod,e,e_second,zeta_printed,provenance\nsteel,zero point eight,,0.07,x\n");
+    expected = {"table2_restitution.csv:2:7: column 'e': 'zero point eight' is not a decimal number"};
   }
-  fs::remove_all(dir);
+  SECTION("a hexadecimal number (strtod read 0x1p-1 as 0.5)") {
+    data.replace("table1_dimensions.csv", "steel,0.0250,0.200,0.778", "steel,0.0250,0.200,0x1p-1");
+    expected = {"table1_dimensions.csv:5:20: column 'mass_kg': '0x1p-1' is not a decimal number"};
+  }
+  SECTION("a value out of its range is blamed on the table, not on --restitution") {
+    data.replace("table2_restitution.csv", "steel,0.795", "steel,1.5");
+    expected = {"table2_restitution.csv:5:7: column 'e': 1.5 is not in (0, 1]"};
+  }
+  SECTION("an assumed value out of its range") {
+    data.replace("assumptions.csv", "nylon_nu,0.40", "nylon_nu,0.5");
+    expected = {"assumptions.csv:12:10: column 'value': 0.5 is not in (-1, 0.5)"};
+  }
+  SECTION("a second steel row") {
+    data.append("table1_dimensions.csv", "steel,0.0250,0.200,0.5,a second row\n");
+    expected = {"table1_dimensions.csv:9:1: column 'body': 'steel' again (first on line 5); each body appears once"};
+  }
+  SECTION("a second gravity_mps2 in assumptions.csv") {
+    data.append("assumptions.csv", "gravity_mps2,9.81,m/s^2,again,fixed,,,,,again\n");
+    expected = {"assumptions.csv:27:1: column 'parameter': 'gravity_mps2' again (first on line 15)"};
+  }
+  SECTION("a table with a header and no rows") {
+    data.write("table2_restitution.csv", "# no rods\nrod,e,e_second,zeta_printed,provenance\n");
+    expected = {"table2_restitution.csv: the table is empty (a header row and no rows below it)"};
+  }
+  SECTION("an empty file") {
+    data.write("table3_properties.csv", "");
+    expected = {"table3_properties.csv: the table is empty (no header row, no lines)"};
+  }
+  SECTION("a table beyond 16 MiB is refused before it is read") {
+    std::filesystem::resize_file(data.dir / "assumptions.csv", (std::uintmax_t{16} << 20) + 1);  // sparse
+    expected = {"assumptions.csv: 16777217 bytes; a data table is at most 16 MiB"};
+  }
+  const auto r = run_cli("simulate", data.env());
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err.rfind("hertzdash: bad data file: ", 0) == 0);
+  CHECK(r.err.find("--") == std::string::npos);  // no command-line option is blamed
+  for (const std::string& piece : expected) CHECK(r.err.find(piece) != std::string::npos);
+}
+
+TEST_CASE("CLI: data tables with a UTF-8 byte-order mark or CRLF line ends read as without", "[cli][data]") {
+  const DataCopy data;
+  const auto plain = run_cli("simulate --json", data.env());
+  REQUIRE(plain.exit_code == 0);
+  for (const char* file : {"table1_dimensions.csv", "table2_restitution.csv", "table3_properties.csv", "assumptions.csv"})
+    data.write(file, "\xEF\xBB\xBF" + hertzdash::test::slurp(data.dir / file));
+  data.replace("table2_restitution.csv", "\n", "\r\n");
+  data.replace("assumptions.csv", "\n", "\r\n");
+  const auto marked = run_cli("simulate --json", data.env());
+  INFO("stderr: " << marked.err);
+  CHECK(marked.exit_code == 0);
+  // The results and the inputs are the same; only the data directory's path could differ, and it is not printed.
+  CHECK(marked.out == plain.out);
 }
