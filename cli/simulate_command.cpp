@@ -73,7 +73,6 @@ void print_text(const SimulateRun& r) {
     line("energy_dissipated_material_J", e->energy_dissipated_material_J);
     line("energy_balance_error_J", e->energy_balance_error_J);
   }
-  if (!s.separated) std::cout << "  note: the rod did not separate (it came to rest on the ball)\n";
 }
 
 void write_trace(const SimulateRun& r, const std::string& path) {
@@ -115,7 +114,6 @@ Command add_simulate_command(CLI::App& app) {
   return {sub, [opt, sub]() {
             check_trace_options(*sub, *opt);
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
-            report_fallback(r.solver.integrator, r.summary.integrator_used, r.fallback_reason);
             if (opt->trace_format == "measured") {
               write_measured_trace(opt->trace_path, virtual_measurement(r, opt->run.rod, opt->chain),
                                    "hertzdash simulate: a SYNTHETIC virtual measurement of the model (not a measurement)",
@@ -124,9 +122,7 @@ Command add_simulate_command(CLI::App& app) {
                 std::cerr << "hertzdash: note: " << n << "\n";
             } else if (!opt->trace_path.empty())
               write_trace(r, opt->trace_path);
-            if (const std::string n = stability_note(r); !n.empty()) std::cerr << "hertzdash: note: " << n << "\n";
-            if (const std::string w = resolution_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
-            if (const std::string w = yield_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
+            for (const RunDiagnostic& d : run_diagnostics(r)) std::cerr << "hertzdash: " << d.kind << ": " << d.message << "\n";
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";
             else print_text(r);
             return 0;
