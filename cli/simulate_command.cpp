@@ -1,5 +1,6 @@
 // `hertzdash simulate`: one drop test of the paper's set-up, any law, any integrator.
 #include "cli/command.hpp"
+#include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
@@ -21,7 +22,7 @@ struct SimulateOptions {
   std::string trace_format = "model";
   MeasurementChain chain;
   std::string channels = "force_N,accel_mps2,displacement_m";
-  bool json = false;
+  bool json = false, mkdir = false;
 };
 
 // The options of the measured format, which are errors with the model's.
@@ -110,9 +111,11 @@ Command add_simulate_command(CLI::App& app) {
   sub->add_option("--seed", opt->chain.seed, "Virtual measurement: seed of the noise")->capture_default_str();
   sub->add_option("--channels", opt->channels, "Virtual measurement: channels to record")->capture_default_str();
   sub->add_flag("--json", opt->json, "Print the summary as one JSON object");
+  add_mkdir_flag(*sub, opt->mkdir);
 
   return {sub, [opt, sub]() {
             check_trace_options(*sub, *opt);
+            prepare_output_file("--trace", opt->trace_path, opt->mkdir);
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
             if (opt->trace_format == "measured") {
               write_measured_trace(opt->trace_path, virtual_measurement(r, opt->run.rod, opt->chain),
