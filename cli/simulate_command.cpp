@@ -1,5 +1,6 @@
 // `hertzdash simulate`: one drop test of the paper's set-up, any law, any integrator.
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/io/csv_writer.hpp"
@@ -101,14 +102,12 @@ Command add_simulate_command(CLI::App& app) {
                   "model: every integrator step, all state columns; measured: a virtual experiment in the measured-trace "
                   "format (data/measurements/README.md), labelled synthetic")
       ->capture_default_str();
-  sub->add_option("--sample-rate", opt->chain.sample_rate_Hz, "Virtual measurement: sampling rate [Hz]")->capture_default_str();
-  sub->add_option("--anti-alias", opt->chain.anti_alias_cutoff_Hz,
-                  "Virtual measurement: cut-off [Hz] of the 2nd-order Butterworth anti-alias filter; 0 = none")
-      ->capture_default_str();
-  sub->add_option("--noise", opt->chain.noise_fraction,
-                  "Virtual measurement: Gaussian noise sigma as a fraction of each channel's largest magnitude")
-      ->capture_default_str();
-  sub->add_option("--seed", opt->chain.seed, "Virtual measurement: seed of the noise")->capture_default_str();
+  add_number_option(*sub, "--sample-rate", opt->chain.sample_rate_Hz, "Virtual measurement: sampling rate [Hz]");
+  add_number_option(*sub, "--anti-alias", opt->chain.anti_alias_cutoff_Hz,
+                    "Virtual measurement: cut-off [Hz] of the 2nd-order Butterworth anti-alias filter; 0 = none");
+  add_number_option(*sub, "--noise", opt->chain.noise_fraction,
+                    "Virtual measurement: Gaussian noise sigma as a fraction of each channel's largest magnitude");
+  add_integer_option(*sub, "--seed", opt->chain.seed, "Virtual measurement: seed of the noise");
   sub->add_option("--channels", opt->channels, "Virtual measurement: channels to record")->capture_default_str();
   sub->add_flag("--json", opt->json, "Print the summary as one JSON object");
   add_mkdir_flag(*sub, opt->mkdir);

@@ -1,10 +1,10 @@
 #include "hertzdash/io/csv_table.hpp"
 
+#include "hertzdash/io/decimal_number.hpp"
+
 #include <algorithm>
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <fstream>
+#include <optional>
 
 namespace hertzdash {
 
@@ -108,13 +108,9 @@ const std::string& CsvTable::text(std::size_t row, const std::string& column) co
 
 double CsvTable::number(std::size_t row, const std::string& column) const {
   const std::string& s = text(row, column);
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE || std::isnan(v)) {
-    throw DataError(where(row, column) + ": '" + s + "' is not a number");
-  }
-  return v;
+  const std::optional<double> v = parse_decimal(s);
+  if (!v) throw DataError(where(row, column) + ": '" + s + "' is not " + decimal_number_format);
+  return *v;
 }
 
 double CsvTable::number_or(std::size_t row, const std::string& column, double fallback) const {

@@ -1,6 +1,7 @@
 #include "hertzdash/simulation/run_reports.hpp"
 
 #include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/calibrate_restitution.hpp"
@@ -21,9 +22,7 @@ namespace {
 // Parameters are text; numbers and booleans go into JSON as such.
 nlohmann::ordered_json json_value(const std::string& text) {
   if (text == "true" || text == "false") return text == "true";
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (!text.empty() && end == text.c_str() + text.size() && std::isfinite(v)) return v;
+  if (const std::optional<double> v = parse_decimal(text)) return *v;
   return text;
 }
 

@@ -6,6 +6,12 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 #include <unistd.h>
 
 using hertzdash::test::run_cli;
@@ -83,6 +89,14 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
        "omitted when --viscous-time-constant is given"},
       {"--ball-yield-stress 0", "--ball-yield-stress", "> 0 or inf"},
       {"--ball-yield-stress nan", "--ball-yield-stress", "> 0 or inf"},
+      // Issue 19: hexadecimal was read (0x10 as 16), an empty text as 0, and "1e" named no range.
+      {"--mass 0x10", "--mass = '0x10'", "a decimal number"},
+      {"--mass 0x10", "--mass", "> 0"},
+      {"--mass 1e", "--mass = '1e'", "> 0"},
+      {"--ball-nu ''", "--ball-nu = ''", "(-1, 0.5)"},
+      {"--rod-nu ''", "--rod-nu = ''", "(-1, 0.5)"},
+      {"--max-step ''", "--max-step = ''", ">= 0"},
+      {"--height 0x1p-5", "--height = '0x1p-5'", ">= 0"},
   };
   const auto trace = std::filesystem::temp_directory_path() / ("hertzdash_bad_" + std::to_string(::getpid()) + ".csv");
   for (const BadInput& c : cases) {
@@ -144,10 +158,113 @@ TEST_CASE("CLI restitution: an iterated --omega-n exits 2 naming the option and 
   }
 }
 
+TEST_CASE("CLI: an unknown or missing subcommand exits 2 and lists the subcommands", "[cli]") {
+  // Issue 19: `hertzdash frobnicate` said "A subcommand is required".
+  const std::string listed = "simulate, models, restitution, bounce, fit, sweep (hertzdash --help)";
+  const auto unknown = run_cli("frobnicate --mass 1");
+  CHECK(unknown.exit_code == 2);
+  CHECK(unknown.err == "hertzdash: unknown subcommand 'frobnicate': the subcommands are " + listed + "\n");
+  CHECK(unknown.out.empty());
+  const auto none = run_cli("");
+  CHECK(none.exit_code == 2);
+  CHECK(none.err == "hertzdash: a subcommand is required: " + listed + "\n");
+  // A subcommand's own missing option is still named.
+  const auto fit = run_cli("fit");
+  CHECK(fit.exit_code == 2);
+  CHECK(fit.err.find("--trace is required") != std::string::npos);
+}
+
 TEST_CASE("CLI: an option value that is not a number exits 2 naming the option", "[cli]") {
   const auto r = run_cli("simulate --mass heavy");
   CHECK(r.exit_code == 2);
-  CHECK(r.err.find("--mass") != std::string::npos);
+  CHECK(r.err == "hertzdash: invalid --mass = 'heavy': must be a decimal number (digits with an optional sign, point "
+                 "and exponent: 0.02, -1.5e-3, 2E9) and a finite number > 0 (kg)\n");
+}
+
+namespace {
+
+// The subcommands `hertzdash --help` lists.
+std::vector<std::string> subcommands() {
+  const auto r = run_cli("--help");
+  std::vector<std::string> names;
+  std::istringstream lines(r.out.substr(r.out.find("Subcommands:")));
+  std::string line;
+  std::getline(lines, line);
+  while (std::getline(lines, line))
+    if (std::istringstream words(line); words >> line) names.push_back(line);
+  return names;
+}
+
+// The options of `hertzdash <subcommand> --help` whose value has the type `type` (FLOAT, UINT).
+std::vector<std::string> options_of_type(const std::string& subcommand, const std::string& type) {
+  const auto r = run_cli(subcommand + " --help");
+  std::vector<std::string> flags;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string flag, value;
+    if (words >> flag >> value && flag.rfind("--", 0) == 0 && (value == type || value.rfind(type + "=", 0) == 0))
+      flags.push_back(flag);
+  }
+  return flags;
+}
+
+// A scratch directory removed afterwards.
+struct Scratch {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("hertzdash_bad_numbers_" + std::to_string(::getpid()));
+  Scratch() { std::filesystem::create_directories(path); }
+  ~Scratch() { std::filesystem::remove_all(path); }
+};
+
+}  // namespace
+
+TEST_CASE("CLI: every numeric option of every subcommand refuses text that is not a decimal number", "[cli][numbers]") {
+  // Issue 19: CLI11 read 0x10 as 16 and an empty text as 0. Every FLOAT and UINT option of every
+  // subcommand in --help is given each text below: exit 2, a message naming the option, the
+  // text and what it must be, nothing on stdout and no output file.
+  const Scratch dir;
+  const std::string trace = (dir.path / "trace.csv").string(), out = (dir.path / "out.csv").string();
+  REQUIRE(run_cli("simulate --trace " + trace + " --trace-format measured").exit_code == 0);
+  std::ofstream(dir.path / "case.toml") << "[grid]\nheight = [0.01]\n";
+  // What each subcommand needs to run, with an output file in the scratch directory.
+  const std::map<std::string, std::string> needs{
+      {"simulate", "--trace " + out},
+      {"fit", "--trace " + trace + " --curves " + out},
+      {"sweep", (dir.path / "case.toml").string() + " --quiet --out " + out},
+  };
+  // The options that apply only with another: given with it, so that the refusal is theirs.
+  const std::map<std::string, std::string> context{
+      {"--rod-elements", "--rod-model elastic"},       {"--rod-damping-ratio", "--rod-model elastic"},
+      {"--cell-stiffness", "--rod-model elastic"},     {"--cell-damping-ratio", "--rod-model elastic"},
+      {"--hemisphere-mass", "--rod-model elastic"},    {"--viscous-time-constant", "--damping kuwabara-kono"},
+      {"--reference-velocity", "--damping kuwabara-kono"}, {"--sample-rate", "--trace-format measured"},
+      {"--anti-alias", "--trace-format measured"},     {"--noise", "--trace-format measured"},
+      {"--seed", "--trace-format measured"},           {"--dt", "--integrator rk4"},
+  };
+  std::size_t tried = 0;
+  for (const std::string& sub : subcommands()) {
+    for (const auto& [type, expected] : {std::pair<std::string, std::string>{"FLOAT", "a decimal number"},
+                                         std::pair<std::string, std::string>{"UINT", "a decimal integer in [0, "}}) {
+      for (const std::string& flag : options_of_type(sub, type)) {
+        for (const std::string text : {"0x10", "1e", "", " 1", "1,5", "0x1p-1", "Inf"}) {
+          const std::string args = sub + " " + (needs.count(sub) ? needs.at(sub) + " " : "") +
+                                   (context.count(flag) ? context.at(flag) + " " : "") + flag + " '" + text + "'";
+          const auto r = run_cli(args);
+          INFO("hertzdash " << args << "\n  stderr: " << r.err);
+          CHECK(r.exit_code == 2);
+          CHECK(r.err.find("invalid " + flag + " = '" + text + "': must be " + expected) != std::string::npos);
+          // The option's own range follows the format: "... 2E9) and > 0 ...".
+          if (type == "FLOAT") CHECK(r.err.find("2E9) and ") != std::string::npos);
+          CHECK(r.out.empty());
+          CHECK_FALSE(std::filesystem::exists(out));
+          ++tried;
+        }
+      }
+    }
+  }
+  // simulate alone has 30 numeric options; fit, bounce, restitution and sweep add theirs.
+  CHECK(tried > 7 * 30);
 }
 
 TEST_CASE("CLI: a malformed data table exits 2 naming the file, line and column", "[cli][data]") {
