@@ -38,7 +38,7 @@ convergence: build
 # figures and the article's \uq macros, overwriting those of `make figures`.
 uncertainty: build
 	$(BUILD)/validation/uncertainty --full --out $(FIGURES) --generated paper/generated
-	for gp in validation/uncertainty/*.gp; do gnuplot -d -c $$gp $(FIGURES); done
+	for gp in validation/uncertainty/*.gp; do validation/draw_figure.sh $$gp $(FIGURES) || exit 1; done
 
 # The article: every study and figure, then latexmk in paper/. The date in the PDF
 # is the last commit's (SOURCE_DATE_EPOCH), so the same commit gives the same PDF.
@@ -57,7 +57,7 @@ bench: build
 	ms=$$(( ($$(date +%s%N) - start) / 1000000 )); \
 	$(BUILD)/bench/work_precision_peers --full --out $(FIGURES) --generated paper/generated --performance-page docs/performance.md \
 	  --figures-ms $$ms
-	gnuplot -d -c bench/work_precision_peers/work_precision_peers.gp $(FIGURES)
+	validation/draw_figure.sh bench/work_precision_peers/work_precision_peers.gp $(FIGURES)
 
 clean:
 	rm -rf $(BUILD)

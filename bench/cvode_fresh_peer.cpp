@@ -13,6 +13,7 @@
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -21,7 +22,12 @@ namespace hertzdash::bench {
 namespace {
 
 void check(int flag, const char* call) {
-  if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + call + " failed with " + CVodeGetReturnFlagName(flag));
+  if (flag < 0) {
+    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS: ours to free
+    const std::string text = std::string("CVODE: ") + call + " failed with " + (name ? name : "?");
+    std::free(name);
+    throw std::runtime_error(text);
+  }
 }
 template <class T> T check_ptr(T p, const char* call) {
   if (p == nullptr) throw std::runtime_error(std::string("CVODE: ") + call + " returned NULL");

@@ -6,6 +6,7 @@
 // (validation/identification/identification_fit.gp draws two).
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
+#include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
 #include "hertzdash/simulation/virtual_measurement.hpp"
@@ -23,7 +24,7 @@ struct FitCommandOptions {
   RunOptions run;
   std::string trace_path, fit = "ball-E,restitution", channels, curves_path;
   double resample_Hz = 0;
-  bool compare_laws = false, json = false;
+  bool compare_laws = false, json = false, mkdir = false;
 };
 
 // AIC differences below 2 do not prefer one model over another (Burnham and Anderson).
@@ -93,8 +94,10 @@ Command add_fit_command(CLI::App& app) {
   sub->add_flag("--compare-laws", opt->compare_laws, "Fit every registered damping law and rank them by AIC");
   sub->add_option("--curves", opt->curves_path, "Write the trace, the fitted model and the residuals to this CSV file");
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
+  add_mkdir_flag(*sub, opt->mkdir);
 
   return {sub, [opt]() {
+            prepare_output_file("--curves", opt->curves_path, opt->mkdir);
             TraceFitSettings settings;
             settings.parameters = parse_fit_parameters(opt->fit);
             if (!opt->channels.empty()) settings.channels = parse_channels(opt->channels, "--channels");

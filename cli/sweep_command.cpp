@@ -6,6 +6,7 @@
 // run writes, byte for byte apart from the timing line.
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
+#include "cli/output_files.hpp"
 #include "cli/process_group.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/simulation/sweep_run.hpp"
@@ -26,7 +27,7 @@ namespace {
 struct SweepCommandOptions {
   std::string case_path, out, summary;
   unsigned threads = 0;
-  bool quiet = false;
+  bool quiet = false, mkdir = false;
 };
 
 // Set by SIGINT/SIGTERM while the runs run; a second signal ends the program at once (nothing
@@ -90,6 +91,8 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   const std::filesystem::path out = opt.out.empty() ? default_sweep_output(c) : std::filesystem::path(opt.out);
   const bool summary = c.summary || !opt.summary.empty();
   const std::filesystem::path summary_out = opt.summary.empty() ? summary_path(out) : std::filesystem::path(opt.summary);
+  prepare_output_file(opt.out.empty() ? "[output] file" : "--out", out.string(), opt.mkdir);
+  if (summary) prepare_output_file(opt.summary.empty() ? "[output] summary" : "--summary", summary_out.string(), opt.mkdir);
 
   std::vector<std::size_t> mine;
   for (std::size_t run = static_cast<std::size_t>(group.rank()); run < c.size(); run += static_cast<std::size_t>(group.size()))
@@ -153,6 +156,7 @@ Command add_sweep_command(CLI::App& app) {
   add_integer_option(*sub, "--threads", opt->threads,
                      "Threads per process; 0 (the default): the machine's cores shared among the job's processes on it");
   sub->add_flag("--quiet", opt->quiet, "No progress line");
+  add_mkdir_flag(*sub, opt->mkdir);
   return {sub, [opt]() { return run_sweep_command(*opt); }};
 }
 

@@ -1,32 +1,122 @@
 #include "hertzdash/io/atomic_file.hpp"
 
+#include "hertzdash/io/remove_on_signal.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <charconv>
 #include <cstdio>
-#include <fstream>
+#include <fcntl.h>
 #include <stdexcept>
+#include <system_error>
 #include <unistd.h>
 
 namespace hertzdash {
 
-void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
-  namespace fs = std::filesystem;
-  if (path.has_parent_path()) fs::create_directories(path.parent_path());
-  const fs::path tmp = path.string() + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << content;
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + path.string());
-    }
+namespace {
+
+namespace fs = std::filesystem;
+
+/// `what` names the path as given, and where its symbolic links led.
+[[noreturn]] void fail(const std::string& what, const std::string& reason) {
+  throw std::runtime_error("cannot write " + what + ": " + reason);
+}
+
+std::string reason_of(int error) { return std::generic_category().message(error); }
+
+/// Writes all of `content` to `fd`; 0, or the errno of the failure.
+int write_all(int fd, const std::string& content) {
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errno;
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+/// The descriptor N of this process that `target` (/proc/PID/fd/N, PID ours) names, else -1.
+int own_descriptor(const fs::path& target) {
+  const fs::path own = fs::path("/proc") / std::to_string(::getpid()) / "fd";
+  if (target.parent_path() != own) return -1;
+  const std::string n = target.filename().string();
+  int fd = -1;
+  const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), fd);
+  return ec == std::errc() && end == n.data() + n.size() ? fd : -1;
+}
+
+struct Target {
+  fs::path path;       // symbolic links followed, parent directory canonical
+  std::string what;    // the path as given, and the link's target if one was followed
+  bool write_through;  // not a regular file (or not yet existing): no temporary, no rename
+};
+
+/// Where a write to `path` lands. A path under /proc (where /dev/stdout and /dev/fd lead) names
+/// an open file: it is written through whatever it is.
+Target resolve(const fs::path& path) {
+  fs::path p = fs::absolute(path);
+  std::string what = path.string();
+  for (int links = 0;; ++links) {
+    if (links > 0) what = path.string() + " (-> " + p.string() + ")";
+    if (links > 40) fail(what, reason_of(ELOOP));
+    std::error_code ec;
+    const fs::path parent = fs::canonical(p.parent_path(), ec);
+    if (ec == std::errc::no_such_file_or_directory)
+      fail(what, "the directory " + p.parent_path().string() + " does not exist");
+    if (ec) fail(what, p.parent_path().string() + ": " + ec.message());
+    p = parent / p.filename();
+    if (p.native().starts_with("/proc/")) return {p, what, true};
+    if (fs::symlink_status(p, ec).type() != fs::file_type::symlink) break;
+    const fs::path next = fs::read_symlink(p, ec);
+    if (ec) fail(what, ec.message());
+    p = next.is_absolute() ? next : parent / next;
   }
   std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw std::runtime_error("cannot write " + path.string() + ": " + ec.message());
+  switch (fs::status(p, ec).type()) {
+    case fs::file_type::not_found:
+    case fs::file_type::regular: return {p, what, false};
+    case fs::file_type::directory: fail(what, reason_of(EISDIR));
+    default:
+      if (ec) fail(what, ec.message());
+      return {p, what, true};
   }
+}
+
+void write_through(const Target& t, const std::string& content) {
+  if (const int fd = own_descriptor(t.path); fd >= 0) {
+    std::fflush(nullptr);  // what the program printed to that descriptor comes first
+    if (const int error = write_all(fd, content)) fail(t.what, reason_of(error));
+    return;
+  }
+  const int fd = ::open(t.path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) fail(t.what, reason_of(errno));
+  int error = write_all(fd, content);
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) fail(t.what, reason_of(error));
+}
+
+std::atomic<unsigned> temporaries{0};
+
+void write_by_rename(const Target& t, const std::string& content) {
+  const fs::path tmp = t.path.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(temporaries++);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) fail(t.what, reason_of(errno));
+  const RemoveOnSignal registered(tmp);
+  int error = write_all(fd, content);
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error == 0 && ::rename(tmp.c_str(), t.path.c_str()) != 0) error = errno;
+  if (error == 0) return;
+  ::unlink(tmp.c_str());
+  fail(t.what, reason_of(error));
+}
+
+}  // namespace
+
+void write_file_atomically(const fs::path& path, const std::string& content) {
+  const Target t = resolve(path);
+  if (t.write_through) write_through(t, content);
+  else write_by_rename(t, content);
 }
 
 }  // namespace hertzdash

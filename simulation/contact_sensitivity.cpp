@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -20,7 +21,12 @@ namespace {
 constexpr int Ns = 4;  // sensitivity parameters q = (K, tau, m, v0)
 
 void check(int flag, const char* call) {
-  if (flag < 0) throw std::runtime_error(std::string("CVODES: ") + call + " failed with " + CVodeGetReturnFlagName(flag));
+  if (flag < 0) {
+    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS: ours to free
+    const std::string text = std::string("CVODES: ") + call + " failed with " + (name ? name : "?");
+    std::free(name);
+    throw std::runtime_error(text);
+  }
 }
 template <class T> T* check_ptr(T* p, const char* call) {
   if (p == nullptr) throw std::runtime_error(std::string("CVODES: ") + call + " returned NULL");

@@ -87,7 +87,13 @@ TEST_CASE("CLI sweep: where the files go, and the summary", "[cli][sweep]") {
   dir.write("cases/speeds.toml",
             "[grid]\nimpact-velocity = [0.5, 1.0]\n[output]\nfile = \"out/speeds-rows.csv\"\nsummary = true\n");
   // [output] file is relative to the case file's folder; summary = true adds NAME.summary.csv.
+  // Its folder is not created unless --mkdir (docs/output-files.md).
   auto r = run_in(dir.path, "sweep cases/speeds.toml --quiet");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains("invalid [output] file = cases/out/speeds-rows.csv: must be a file in an existing "
+                                    "directory (cases/out does not exist; --mkdir creates it)"));
+  CHECK_FALSE(fs::exists(dir.path / "cases/out"));
+  r = run_in(dir.path, "sweep cases/speeds.toml --quiet --mkdir");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   CHECK(data_rows(slurp(dir.path / "cases/out/speeds-rows.csv")) == 2);

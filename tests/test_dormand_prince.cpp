@@ -10,35 +10,20 @@
 #include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/simulation/parallel_sweep.hpp"
 #include "undamped_hertz_errors.hpp"
+#include "tests/allocation_count.hpp"
 
 #include "harmonic_oscillator.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <new>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-// Every allocation of this test program is counted, so a test can show that an
-// integration allocates nothing. (The replacement pairs malloc with free; GCC cannot
-// see that through inlining and would warn of a mismatch.)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<long> allocations{0};
-}
-void* operator new(std::size_t n) {
-  ++allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -142,14 +127,47 @@ TEST_CASE("dopri5: the paper's law converges to the same restitution as CVODE at
   CHECK(std::abs(e_dp - e_cv) < 1e-8);
 }
 
+TEST_CASE("allocation count: every form of operator new is counted", "[dopri5]") {
+  // The test below asserts zero allocations; this shows the count sees each form: plain,
+  // array, nothrow and over-aligned news add one each (6). The pointers go through a volatile
+  // so that the compiler may not elide the pairs.
+  struct alignas(64) Wide {
+    double v[8];
+  };
+  static void* volatile sink;
+  const long before = hertzdash::test::allocation_count();
+  int* a = new int(1);
+  sink = a;
+  int* b = new int[3];
+  sink = b;
+  int* c = new (std::nothrow) int(2);
+  sink = c;
+  Wide* d = new Wide();
+  sink = d;
+  Wide* e = new Wide[2];
+  sink = e;
+  Wide* f = new (std::nothrow) Wide();
+  sink = f;
+  CHECK(hertzdash::test::allocation_count() - before == 6);
+  CHECK(sink == f);
+  CHECK(reinterpret_cast<std::uintptr_t>(d) % 64 == 0);
+  CHECK(reinterpret_cast<std::uintptr_t>(e) % 64 == 0);
+  delete a;
+  delete[] b;
+  delete c;
+  delete d;
+  delete[] e;
+  delete f;
+}
+
 TEST_CASE("dopri5: an impact allocates nothing", "[dopri5]") {
   const DropTestModel model(steel_contact_setup(9.80665));
   DropTest<HongoPaper> sys(model);
   auto y = sys.initial_state();
   NullObserver obs;
-  const long before = allocations.load();
+  const long before = hertzdash::test::allocation_count();
   const IntegrationStats st = integrate_dormand_prince(sys, y, 0.0, 1.0, {1e-9, 1e-13}, obs);
-  const long during = allocations.load() - before;
+  const long during = hertzdash::test::allocation_count() - before;
   REQUIRE(st.stopped_by_event);
   CHECK(during == 0);
 }

@@ -113,7 +113,7 @@ TEST_CASE("a trace in the measurements directory is overlaid on Fig. 5", "[pipel
   const std::string log = (scratch / "log.txt").string();
   const std::string command = "HERTZDASH_DATA_DIR='" + (scratch / "data").string() + "' '" +
                               (build / "validation" / "paper_figures").string() + "' --out '" + out.string() +
-                              "' --reduced > '" + log + "' 2>&1 && gnuplot -d -c '" +
+                              "' --reduced > '" + log + "' 2>&1 && '" + (source / "validation" / "draw_figure.sh").string() + "' '" +
                               (source / "validation" / "paper_figures" / "fig5.gp").string() + "' '" + out.string() +
                               "' >> '" + log + "' 2>&1";
   const int status = std::system(command.c_str());

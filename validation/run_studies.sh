@@ -5,7 +5,8 @@
 # validation or bench: the work-precision study lives with the peers it times);
 # each writes CSV into OUT_DIR and LaTeX fragments into OUT_DIR/../generated. Then every
 # gnuplot script <layer>/<study>/<figure>.gp is run as
-#   gnuplot -d -c <figure>.gp OUT_DIR
+#   validation/draw_figure.sh <figure>.gp OUT_DIR   (gnuplot -d -c <figure>.gp OUT_DIR, drawn
+#                                                    under temporary names, then renamed)
 # and writes OUT_DIR/<figure>.pdf and OUT_DIR/<figure>.png from OUT_DIR/<figure>*.csv,
 # so restyling a plot never re-runs a simulation. <layer>/<study>/outputs.txt lists
 # what each study must produce (checked by tests/test_figures_pipeline.cpp on a
@@ -43,7 +44,7 @@ done
 for gp in "$root"/validation/*/*.gp "$root"/bench/*/*.gp; do
   [ -e "$gp" ] || continue
   echo "== figure $(basename "$gp" .gp)"
-  gnuplot -d -c "$gp" "$out"
+  "$here/draw_figure.sh" "$gp" "$out"
 done
 seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.3f", b - a }')
 printf '== all figures in %s (%.1f s)\n' "$out" "$seconds"

@@ -129,6 +129,8 @@ def test_simulate_many_broadcasts_scalars_and_length_one_arrays():
     (dict(damping="no-such-law"), "--damping", "hongo"),
     (dict(integrator="rk5"), "--integrator", "rk4"),
     (dict(rtol=-1.0), "--rtol", "in (0, 1)"),
+    (dict(integrator="rk4", rtol=1e-6), "--rtol", "given only with --integrator cvode"),
+    (dict(integrator="rk4", dt=0.01), "--dt", "at most"),
     (dict(rod_elements=10), "--rod-model", "elastic when --rod-elements is given"),
     (dict(rod_model="elastic", rod_elements=2.5), "--rod-elements", "an integer in [1, 400]"),
     (dict(rod_model="elastic", cell_damping_ratio=1.0), "--cell-damping-ratio", "[0, 1)"),
@@ -319,6 +321,20 @@ def test_a_peak_pressure_beyond_yield_is_a_warning():
         r = hertzdash.simulate(ball_yield_stress=float("inf"))
     assert not [w for w in caught if "yield" in str(w.message)]
     assert r["exceeds_yield_onset"] is False and r["yield_onset_pressure_Pa"] is None
+
+
+def test_a_deformation_not_small_against_the_ball_is_a_warning():
+    # The steel rod from 0.3 m deforms the 12.7 mm ball by 0.71 mm (x/R = 0.056): the sphere
+    # departs from Hertz's paraboloid by x/(4R) = 1.4 % > 1 % at the contact's edge. The warning
+    # is the program's stderr line and an entry of the result's "warnings".
+    with pytest.warns(UserWarning, match="maximum deformation") as record:
+        r = hertzdash.simulate(height=0.3, ball_yield_stress=float("inf"))
+    message = next(str(w.message) for w in record if "maximum deformation" in str(w.message))
+    assert r["exceeds_small_deformation"] is True
+    assert [w["message"] for w in r["warnings"] if w["code"] == "large_deformation"] == [message]
+    stderr = subprocess.run([BIN, "simulate", "--height", "0.3", "--ball-yield-stress", "inf"],
+                            capture_output=True, text=True).stderr
+    assert stderr == "hertzdash: warning: " + message + "\n"
 
 
 def test_virtual_measurement_and_fit_are_the_programs(tmp_path):

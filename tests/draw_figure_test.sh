@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# validation/draw_figure.sh: a figure is replaced only by a complete one (docs/output-files.md).
+#   tests/draw_figure_test.sh SOURCE_DIR
+# 1. a script that succeeds replaces the previous PNG with a real one (PNG signature);
+# 2. a script that fails after its plot leaves the previous PNG and no temporary;
+# 3. SIGTERM while gnuplot is drawing (a pause after the output is opened) leaves the previous
+#    PNG and no temporary, and ends the wrapper with 143.
+# Before the wrapper, gnuplot wrote OUT/fig.png in place: cases 2 and 3 left a new or empty file.
+set -uo pipefail
+source_dir=${1:?usage: draw_figure_test.sh SOURCE_DIR}
+draw="$source_dir/validation/draw_figure.sh"
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+failures=0
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+
+write_script() {  # NAME, then gnuplot lines after the output is set
+  local name=$1
+  shift
+  {
+    echo "call '$source_dir/validation/output.gnuplot' ARG1.'/fig' 'png' 2.0 1.5"
+    printf '%s\n' "$@"
+  } > "$scratch/$name.gp"
+}
+previous() { printf 'previous figure\n' > "$scratch/out/fig.png"; }
+check_previous_kept() {  # CASE
+  printf 'previous figure\n' | cmp -s - "$scratch/out/fig.png" || fail "$1: the previous figure was replaced"
+  local left
+  left=$(find "$scratch/out" -name '*.tmp.*' | wc -l)
+  [ "$left" -eq 0 ] || fail "$1: $left temporaries left"
+}
+
+mkdir -p "$scratch/out"
+write_script good "plot x"
+write_script bad "plot x" "this_is_not_a_command"
+write_script slow "plot x" "pause 30"
+
+previous
+"$draw" "$scratch/good.gp" "$scratch/out" || fail "good: exit $?"
+[ "$(head -c 4 "$scratch/out/fig.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "good: fig.png is not a PNG"
+
+previous
+"$draw" "$scratch/bad.gp" "$scratch/out" 2>/dev/null && fail "bad: exit 0"
+check_previous_kept bad
+
+previous
+"$draw" "$scratch/slow.gp" "$scratch/out" &
+pid=$!
+for _ in $(seq 200); do  # until gnuplot has opened its temporary output (at most 20 s)
+  [ -n "$(find "$scratch/out" -name 'fig.png.tmp.*')" ] && break
+  sleep 0.1
+done
+[ -n "$(find "$scratch/out" -name 'fig.png.tmp.*')" ] || fail "slow: no temporary output appeared"
+kill -TERM "$pid"
+wait "$pid"
+status=$?
+[ "$status" -eq 143 ] || fail "slow: exit $status, not 143"
+check_previous_kept slow
+
+[ "$failures" -eq 0 ] && echo "draw_figure.sh: all checks passed"
+exit $((failures > 0))

@@ -1,0 +1,116 @@
+// The CLI's output files (docs/output-files.md): /dev/stdout and pipes written through, a
+// missing directory refused (exit 2, option and directory named, nothing created) unless
+// --mkdir, a directory refused; for every command that writes a file.
+#include "cli_runner.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using hertzdash::test::run_cli;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Scratch {
+  fs::path path = fs::temp_directory_path() / ("hertzdash_outputs_" + std::to_string(::getpid()));
+  Scratch() {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~Scratch() { fs::remove_all(path); }
+};
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+constexpr const char* trace_header = "t_s,x_m,xdot_mps,force_N";
+
+}  // namespace
+
+TEST_CASE("CLI simulate --trace /dev/stdout: the trace, then the summary, on standard output", "[cli][output]") {
+  // stdout is a regular file here (run_cli redirects it): the trace is written through the
+  // descriptor, so the summary printed after it follows it instead of overwriting it.
+  const auto r = run_cli("simulate --rod steel --height 0.02 --trace /dev/stdout");
+  REQUIRE(r.exit_code == 0);
+  const std::size_t trace = r.out.find(trace_header), summary = r.out.find("hertzdash simulate: damping law");
+  CHECK(trace != std::string::npos);
+  CHECK(summary != std::string::npos);
+  CHECK(trace < summary);
+  CHECK_FALSE(contains(r.err, "error"));
+}
+
+TEST_CASE("CLI simulate --trace /dev/stdout into a pipe", "[cli][output]") {
+  // The old code renamed a file over /dev/stdout (as root) or failed; through a pipe, the
+  // trace's rows arrive whole (each data row has 11 fields).
+  FILE* pipe = ::popen(HERTZDASH_BIN " simulate --rod steel --height 0.02 --trace /dev/stdout --json", "r");
+  REQUIRE(pipe != nullptr);
+  std::string out;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(contains(out, trace_header));
+  CHECK(contains(out, "\"e_effective\""));
+  CHECK(fs::is_symlink("/dev/stdout"));
+}
+
+TEST_CASE("CLI: a missing output directory exits 2 naming the option and the directory, creates nothing",
+          "[cli][output]") {
+  const Scratch s;
+  const std::string missing = (s.path / "new" / "sub").string();
+  std::FILE* f = std::fopen((s.path / "case.toml").c_str(), "w");
+  std::fputs("[base]\nrod = \"steel\"\n[grid]\nheight = [0.01, 0.02]\n", f);
+  std::fclose(f);
+  const std::string trace = (s.path / "trace.csv").string();
+  REQUIRE(run_cli("simulate --trace-format measured --trace " + trace).exit_code == 0);
+  const struct {
+    std::string args, option;
+  } cases[] = {
+      {"simulate --trace " + missing + "/t.csv", "--trace"},
+      {"simulate --trace-format measured --trace " + missing + "/t.csv", "--trace"},
+      {"fit --trace " + trace + " --curves " + missing + "/c.csv", "--curves"},
+      {"sweep " + (s.path / "case.toml").string() + " --quiet --out " + missing + "/s.csv", "--out"},
+      {"sweep " + (s.path / "case.toml").string() + " --quiet --summary " + missing + "/s.csv", "--summary"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto r = run_cli(c.args);
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.err, "invalid " + c.option + " = " + missing));
+    CHECK(contains(r.err, missing + " does not exist; --mkdir creates it"));
+    CHECK_FALSE(fs::exists(s.path / "new"));
+  }
+  CHECK_FALSE(fs::exists(s.path / "case.csv"));  // the sweep wrote nothing
+}
+
+TEST_CASE("CLI --mkdir creates the missing directories of every output file", "[cli][output]") {
+  const Scratch s;
+  std::FILE* f = std::fopen((s.path / "case.toml").c_str(), "w");
+  std::fputs("[base]\nrod = \"steel\"\n[grid]\nheight = [0.01, 0.02]\n", f);
+  std::fclose(f);
+  const fs::path trace = s.path / "a" / "b" / "trace.csv";
+  REQUIRE(run_cli("simulate --trace-format measured --mkdir --trace " + trace.string()).exit_code == 0);
+  CHECK(fs::is_regular_file(trace));
+  const fs::path curves = s.path / "c" / "curves.csv";
+  CHECK(run_cli("fit --mkdir --trace " + trace.string() + " --curves " + curves.string()).exit_code == 0);
+  CHECK(fs::is_regular_file(curves));
+  const fs::path out = s.path / "d" / "runs.csv", summary = s.path / "e" / "summary.csv";
+  CHECK(run_cli("sweep " + (s.path / "case.toml").string() + " --quiet --mkdir --out " + out.string() + " --summary " +
+                summary.string())
+            .exit_code == 0);
+  CHECK(fs::is_regular_file(out));
+  CHECK(fs::is_regular_file(summary));
+}
+
+TEST_CASE("CLI: an output path that is a directory exits 2 and says so", "[cli][output]") {
+  const Scratch s;
+  const auto r = run_cli("simulate --trace " + s.path.string());
+  CHECK(r.exit_code == 2);
+  CHECK(r.err == "hertzdash: invalid --trace = " + s.path.string() + ": must be a file, not a directory\n");
+  CHECK(fs::is_empty(s.path));
+}

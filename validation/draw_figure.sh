@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Draw one figure script so that a failure or a kill never leaves a partial or empty figure in
+# place of the previous one (docs/output-files.md):
+#   validation/draw_figure.sh SCRIPT.gp OUT_DIR
+# gnuplot writes in place, so output.gnuplot appends figure_suffix (set here to .tmp.PID) to
+# every output name; once the whole script has succeeded, each OUT_DIR/NAME.EXT.tmp.PID is
+# renamed over OUT_DIR/NAME.EXT. On failure, SIGINT, SIGTERM or SIGHUP the temporaries are
+# removed and the previous figures stay.
+set -euo pipefail
+usage="usage: draw_figure.sh SCRIPT.gp OUT_DIR"
+script=${1:?$usage}
+out=${2:?$usage}
+[ $# -eq 2 ] || { echo "$usage" >&2; exit 2; }
+suffix=".tmp.$$"
+gnuplot_pid=
+cleanup() {
+  [ -z "$gnuplot_pid" ] || kill "$gnuplot_pid" 2>/dev/null || true
+  rm -f -- "$out"/*"$suffix"
+}
+trap cleanup EXIT
+trap 'exit 129' HUP
+trap 'exit 130' INT
+trap 'exit 143' TERM
+# In the background and waited for, so that a signal is handled at once, not after gnuplot.
+gnuplot -d -e "figure_suffix='$suffix'" -c "$script" "$out" &
+gnuplot_pid=$!
+wait "$gnuplot_pid"
+gnuplot_pid=
+for tmp in "$out"/*"$suffix"; do
+  [ -e "$tmp" ] || continue
+  mv -f -- "$tmp" "${tmp%"$suffix"}"
+done
