@@ -367,3 +367,41 @@ TEST_CASE("CLI: data tables with a UTF-8 byte-order mark or CRLF line ends read 
   // The results and the inputs are the same; only the data directory's path could differ, and it is not printed.
   CHECK(marked.out == plain.out);
 }
+
+TEST_CASE("CLI sweep: each bad case file exits 2 naming the key, its line and what it must be, and writes no file",
+          "[cli][sweep]") {
+  // The case file's rows of the bad-input matrix (tests/test_sweep.cpp holds the reader's own).
+  struct BadCase {
+    const char* text;
+    const char* message;  // must appear in stderr
+  };
+  const BadCase cases[] = {
+      {"[base]\nmass = 0x10\n", "invalid base.mass (case.toml line 2) = 0x10: must be a decimal number"},
+      {"[base]\nmass = 0o10\n", "invalid base.mass (case.toml line 2) = 0o10: must be a decimal number"},
+      {"[base]\nmass = 0b10\n", "invalid base.mass (case.toml line 2) = 0b10: must be a decimal number"},
+      {"[base]\nmass = nan\n", "invalid base.mass (case.toml line 2) = nan: must be a decimal number"},
+      {"[base]\nmass = \"0.5\"\n", "invalid base.mass (case.toml line 2) = \"0.5\": must be a number"},
+      {"[grid]\nheight = [0.01, 0x10]\n", "invalid grid.height (case.toml line 2) = 0x10: must be a decimal number"},
+      {"[grid]\nheight = { from = 0.01, to = inf, count = 3 }\n", "grid.height.to (case.toml line 2) = inf: must be a finite number"},
+      {"[grid]\nheight = { from = 0.01, to = 0.02, count = 0x3 }\n", "grid.height.count (case.toml line 2) = 0x3: must be a decimal number"},
+      {"[sample]\ncount = 4\nball-E = { distribution = \"uniform\", min = 0x10, max = 2e9 }\n",
+       "sample.ball-E.min (case.toml line 3) = 0x10: must be a decimal number"},
+      {"[base]\nmass = 1\nmass = 2\n", "case.toml:3:"},                      // TOML itself: a key twice
+      {"[base]\nheight = 1\n[grid]\nheight = [1, 2]\n", "grid.height (case.toml line 4) = a second value"},
+      {"[base]\nheigth = 0.01\n", "invalid base.heigth (case.toml line 2) = an unknown option"},
+      {"[base\n", "case.toml:1:"},
+  };
+  const Scratch dir;
+  const auto out = dir.path / "out.csv";
+  for (const BadCase& c : cases) {
+    std::ofstream(dir.path / "case.toml") << c.text;
+    // Run in the scratch directory, so that the messages name case.toml as given.
+    const auto r = run_cli("sweep case.toml --quiet --out " + out.string(), "cd " + dir.path.string() + " &&");
+    INFO(c.text << "\n  stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.message) != std::string::npos);
+    CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(out));
+    CHECK_FALSE(std::filesystem::exists(dir.path / "case.csv"));
+  }
+}
