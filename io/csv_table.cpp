@@ -3,6 +3,7 @@
 #include "hertzdash/io/decimal_number.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <fstream>
 #include <optional>
 #include <string_view>
@@ -73,8 +74,9 @@ void check_size(const std::filesystem::path& path) {
 
 CsvTable CsvTable::read(const std::filesystem::path& path) {
   check_size(path);
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw DataError("cannot read " + path.string());
+  if (!in) throw DataError(path.string() + ": cannot read: " + std::generic_category().message(errno));
   CsvTable t;
   t.path_ = path.string();
   std::string line;

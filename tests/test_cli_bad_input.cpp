@@ -405,3 +405,59 @@ TEST_CASE("CLI sweep: each bad case file exits 2 naming the key, its line and wh
     CHECK_FALSE(std::filesystem::exists(dir.path / "case.csv"));
   }
 }
+
+TEST_CASE("CLI: each subcommand's own bad input exits 2, names the option and what it must be, writes no file",
+          "[cli]") {
+  // The rows of the matrix beyond simulate's and bounce's tables above and the numbers of every
+  // option (the FLOAT/UINT test). In the arguments OUT is an output file that must not appear, DIR
+  // the scratch directory, TRACE a measured trace in it and CASE a case file.
+  const Scratch dir;
+  const std::string out = (dir.path / "out.csv").string(), trace = (dir.path / "trace.csv").string();
+  REQUIRE(run_cli("simulate --trace " + trace + " --trace-format measured").exit_code == 0);
+  std::ofstream(dir.path / "case.toml") << "[grid]\nheight = [0.01]\n";
+  const BadInput cases[] = {
+      {"models --bogus", "--bogus", "not expected"},
+      {"models extra", "extra", "not expected"},
+      {"simulate --mass", "--mass", "1 required FLOAT missing"},
+      {"simulate --trace OUT --trace-format bogus", "--trace-format", "one of: model, measured"},
+      {"simulate --trace-format measured", "--trace-format", "given with --trace FILE"},
+      {"simulate --trace OUT --trace-format measured --channels colour", "--channels", "distinct channels from: force_N"},
+      {"simulate --trace OUT --noise 0.1", "--noise", "given only with --trace-format measured"},
+      {"simulate --trace OUT --trace-format measured --noise 2", "--noise", "in [0, 1]"},
+      {"simulate --trace OUT --trace-format measured --sample-rate 0", "--sample-rate", "> 0"},
+      {"simulate --trace OUT --trace-format measured --anti-alias 1e9", "--anti-alias", "0 (no filter) or a cut-off in"},
+      {"restitution --restitution 0", "--restitution", "in (0, 1]"},
+      {"restitution --target-restitution 0", "--target-restitution", "in (0, 1]"},
+      {"restitution --target-restitution 1.5", "--target-restitution", "in (0, 1]"},
+      {"fit --curves OUT", "--trace", "is required"},
+      {"fit --trace DIR/missing.csv --curves OUT", "missing.csv", "cannot read: No such file"},
+      {"fit --trace TRACE --curves OUT --fit ball-colour", "--fit", "NAME:LOWER:UPPER with NAME one of"},
+      {"fit --trace TRACE --curves OUT --fit ball-E:1e9:0x10", "--fit", "two decimal numbers"},
+      {"fit --trace TRACE --curves OUT --fit ball-E:3e9:1e9", "--fit", "LOWER < UPPER"},
+      {"fit --trace TRACE --curves OUT --channels colour", "--channels", "distinct channels"},
+      {"fit --trace TRACE --curves OUT --resample -1", "--resample", "> 0"},
+      {"fit --trace TRACE --curves OUT --rtol 1e-9", "--rtol", "not expected"},
+      {"sweep --out OUT", "case", "is required"},
+      {"sweep DIR/missing.toml --out OUT", "missing.toml", "cannot read the case file"},
+      {"sweep CASE --out OUT --threads -1", "--threads", "a decimal integer in [0, 4294967295]"},
+      {"sweep CASE --out OUT --bogus", "--bogus", "not expected"},
+  };
+  for (const BadInput& c : cases) {
+    std::string args;
+    const std::pair<std::string, std::string> tokens[] = {
+        {"OUT", out}, {"DIR", dir.path.string()}, {"TRACE", trace}, {"CASE", (dir.path / "case.toml").string()}};
+    std::istringstream words(c.args);
+    for (std::string word; words >> word;) {
+      for (const auto& [token, text] : tokens)
+        if (word.rfind(token, 0) == 0) word = text + word.substr(token.size());
+      args += (args.empty() ? "" : " ") + word;
+    }
+    const auto r = run_cli(args);
+    INFO("hertzdash " << args << "\n  stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.parameter) != std::string::npos);
+    CHECK(r.err.find(c.range) != std::string::npos);
+    CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+}
