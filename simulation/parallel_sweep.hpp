@@ -18,26 +18,30 @@
 // nothing. The first exception thrown by a body stops the hand-out of new chunks and is rethrown
 // after all threads joined. A `cancel` flag set (by a signal handler, say) stops the hand-out
 // likewise; the caller sees how far it got from the flag and its own results.
+#include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
 namespace hertzdash {
 
 struct SweepOptions {
-  unsigned threads = 0;          ///< 0: std::thread::hardware_concurrency()
+  unsigned threads = 0;          ///< 0: default_sweep_threads()
   std::size_t chunk = 256;       ///< indices handed out at once
   std::string label = "sweep";   ///< shown in the progress line
   bool progress = true;          ///< report progress (a redrawn line on a terminal)
@@ -45,9 +49,22 @@ struct SweepOptions {
   const std::atomic<bool>* cancel = nullptr;  ///< stop handing out work once set
 };
 
+/// The threads of a sweep that does not say: $HERTZDASH_THREADS if set (a whole number from 1 to
+/// 4096; the studies of `make figures` have no option of their own), else the machine's cores.
+inline unsigned default_sweep_threads() {
+  const char* env = std::getenv("HERTZDASH_THREADS");
+  if (env == nullptr || *env == '\0') return std::max(1u, std::thread::hardware_concurrency());
+  const std::string_view text(env);
+  unsigned n = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (ec != std::errc() || end != text.data() + text.size() || n < 1 || n > 4096)
+    throw InvalidParameter("HERTZDASH_THREADS", std::string(text), "a whole number from 1 to 4096 (threads of a sweep)");
+  return n;
+}
+
 /// The number of worker threads `options` asks for (at least 1).
 inline unsigned sweep_threads(const SweepOptions& options) {
-  return std::max(1u, options.threads ? options.threads : std::thread::hardware_concurrency());
+  return options.threads ? options.threads : default_sweep_threads();
 }
 
 namespace sweep_detail {

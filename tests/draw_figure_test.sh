@@ -14,12 +14,14 @@ trap 'rm -rf "$scratch"' EXIT
 failures=0
 fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
 
-write_script() {  # NAME, then gnuplot lines after the output is set
-  local name=$1
+write_script() {  # NAME, then gnuplot lines after the output is set (in a loop over formats,
+  local name=$1    # as the figure scripts do: output.gnuplot runs inside brackets)
   shift
   {
-    echo "call '$source_dir/validation/output.gnuplot' ARG1.'/fig' 'png' 2.0 1.5"
-    printf '%s\n' "$@"
+    echo "do for [format in 'png'] {"
+    echo "  call '$source_dir/validation/output.gnuplot' ARG1.'/fig' format 2.0 1.5"
+    printf '  %s\n' "$@"
+    echo "}"
   } > "$scratch/$name.gp"
 }
 previous() { printf 'previous figure\n' > "$scratch/out/fig.png"; }

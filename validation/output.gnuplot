@@ -4,7 +4,7 @@
 # png: pngcairo at 150 pixels per inch, fonts and lines scaled to match (for the README).
 # figure_suffix, when defined (validation/draw_figure.sh sets it to .tmp.PID), is appended to
 # the file name: the figure is drawn under a temporary name and renamed once complete.
-if (!exists('figure_suffix')) figure_suffix = ''
+if (!exists('figure_suffix')) { figure_suffix = '' }
 fig_width_in = real(ARG3)
 fig_height_in = real(ARG4)
 if (ARG2 eq 'pdf') {
