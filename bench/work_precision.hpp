@@ -3,6 +3,7 @@
 // GSL and naive CVODE, and the parallel-sweep throughput, run by the program
 // bench/work_precision_peers: with full repeats for `make bench`, briefly for `make figures`.
 #include <filesystem>
+#include <vector>
 
 namespace hertzdash::bench {
 
@@ -13,7 +14,8 @@ struct WorkPrecisionConfig {
   int repeats = 5;                      ///< timed repeats; the median is reported
   bool half_decades = true;             ///< tolerances every half decade (else every decade)
   long sweep_impacts = 20000;           ///< impacts in the parallel-sweep throughput run
-  std::filesystem::path performance_page;  ///< if set, its generated performance block (docs/performance.md) is refreshed
+  /// Pages whose generated performance block (docs/performance.md, README.md) is refreshed.
+  std::vector<std::filesystem::path> performance_pages;
   double figures_seconds = 0;           ///< measured wall time of `make figures` (0: not measured)
 };
 

@@ -10,12 +10,13 @@
 // measurement code is bench/work_precision.cpp.
 //
 //   work_precision_peers --out DIR [--generated DIR] [--reduced]
-//   work_precision_peers --full --out DIR --generated DIR [--performance-page docs/performance.md] [--figures-ms MS]
+//   work_precision_peers --full --out DIR --generated DIR [--performance-page PAGE]... [--figures-ms MS]
 //
 // `make figures` runs it briefly, like every study (validation/run_studies.sh), so
 // the figure stays current; --reduced is quicker still, for the pipeline test.
 // `make bench` runs it with --full: many more repeats, the table and ratios printed,
-// and (with --performance-page) the generated block of docs/performance.md refreshed; --figures-ms
+// and (with --performance-page, once per page) the generated block of docs/performance.md and
+// README.md refreshed; --figures-ms
 // is the measured wall time of `make figures` from a built tree, reported there.
 //
 // Writes OUT/work_precision_peers.csv and OUT/work_precision_peers_drop.csv
@@ -40,16 +41,16 @@ int main(int argc, char** argv) {
     else if (arg == "--generated" && i + 1 < argc) c.generated_dir = argv[++i];
     else if (arg == "--reduced") reduced = true;
     else if (arg == "--full") full = true;
-    else if (arg == "--performance-page" && i + 1 < argc) c.performance_page = argv[++i];
+    else if (arg == "--performance-page" && i + 1 < argc) c.performance_pages.push_back(argv[++i]);
     else if (arg == "--figures-ms" && i + 1 < argc) {
       const std::optional<double> ms = hertzdash::parse_decimal(argv[++i]);
       if (ms && *ms > 0) c.figures_seconds = *ms / 1000.0;
       else bad = true;
     } else bad = true;
   }
-  if (bad || c.out_dir.empty() || (reduced && full) || (!full && (!c.performance_page.empty() || c.figures_seconds > 0))) {
+  if (bad || c.out_dir.empty() || (reduced && full) || (!full && (!c.performance_pages.empty() || c.figures_seconds > 0))) {
     std::cerr << "usage: " << argv[0] << " --out DIR [--generated DIR] [--reduced]\n"
-              << "       " << argv[0] << " --full --out DIR --generated DIR [--performance-page docs/performance.md] [--figures-ms MS, a decimal number > 0]\n";
+              << "       " << argv[0] << " --full --out DIR --generated DIR [--performance-page PAGE]... [--figures-ms MS, a decimal number > 0]\n";
     return 2;
   }
   if (c.generated_dir.empty()) c.generated_dir = c.out_dir.parent_path() / "generated";
