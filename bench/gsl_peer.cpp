@@ -34,12 +34,6 @@ int gsl_rhs(double t, const double y[], double dydt[], void* params) {
   return GSL_SUCCESS;
 }
 
-/// Cubic Hermite on [0, 1] with values p0, p1 and end slopes m0, m1 (already times the step).
-double hermite(double s, double p0, double m0, double p1, double m1) {
-  const double s2 = s * s, s3 = s2 * s;
-  return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
-}
-
 class GslRk8pd final : public ImpactSolver {
  public:
   explicit GslRk8pd(double tol) {
@@ -93,10 +87,10 @@ class GslRk8pd final : public ImpactSolver {
       double lo = 0, hi = 1;
       while ((hi - lo) * dt > 1e-15) {
         const double mid = 0.5 * (lo + hi);
-        (beyond(hermite(mid, ya[0], dt * ya[1], y[0], dt * y[1])) ? hi : lo) = mid;
+        (beyond(cubic_hermite(mid, ya[0], dt * ya[1], y[0], dt * y[1])) ? hi : lo) = mid;
       }
-      const double x = hermite(hi, ya[0], dt * fa[0], y[0], dt * fb[0]);
-      const double v = hermite(hi, ya[1], dt * fa[1], y[1], dt * fb[1]);
+      const double x = cubic_hermite(hi, ya[0], dt * fa[0], y[0], dt * fb[0]);
+      const double v = cubic_hermite(hi, ya[1], dt * fa[1], y[1], dt * fb[1]);
       y[0] = x, y[1] = v;
       t = t0 + hi * dt;
       return;

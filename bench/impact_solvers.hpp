@@ -2,19 +2,27 @@
 // The solvers the work-precision benchmark compares, behind one small interface.
 //
 // hertzdash's own integrators run through ImpactSimulator (the library path users
-// call). The peers -- Boost.Odeint runge_kutta_dopri5 with dense output, GSL odeiv2
-// rk8pd, and CVODE created afresh per impact -- are written the way a user would
-// write them with those libraries, on the same right-hand side
-// (DropTest<HongoPaper>::rhs, the model's own), and live only in bench/: the
-// library never links them.
+// call). The peers are written the way a knowledgeable user would write them with
+// those libraries, and live only in bench/: the library never links them. Two groups:
+//   - physical variables: Boost.Odeint runge_kutta_dopri5 with dense output, GSL
+//     odeiv2 rk8pd, and CVODE created afresh per impact, on the same right-hand side
+//     (DropTest<HongoPaper>::rhs, the model's own);
+//   - regularised variables: Boost.Odeint bulirsch_stoer (controlled, and
+//     bulirsch_stoer_dense_out), runge_kutta_dopri5 (controlled, dense output) and GSL
+//     rk8pd, handed exactly hertzdash's regularised contact
+//     (RegularizedContact<HongoPaper>::rhs: the polynomial right-hand side in
+//     u = x^{1/2}, v = x', t against tau), the fall in closed form as hertzdash does,
+//     and the same separation event (u falls through 0).
 //
 // Every solver reports the effective restitution (rebound over approach speed at
 // separation, x = 0 decreasing) and the right-hand-side evaluations it spent.
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/drop_test.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/model/regularized_contact.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <memory>
@@ -63,6 +71,51 @@ struct PeerImpact {
   double fall_time_s;            ///< free fall from rest to contact [s] (0 if starting at onset)
 };
 
+/// What every regularised peer starts one impact from: hertzdash's regularised contact
+/// for the set-up (at onset: the fall from rest is closed-form, v0 = sqrt(2 g h)), its
+/// onset state (u, v, t) = (0, v0, 0), and the tau scale T/(2 X*^{1/2}), T = X*/v0, that
+/// sizes first steps.
+struct RegularizedPeerImpact {
+  explicit RegularizedPeerImpact(const DropTestSetup& setup)
+      : v0_mps(approach_speed(setup)),
+        sys(ImpactConditions{hertz_stiffness(setup), setup.mass_kg, v0_mps, setup.restitution}, setup.damping,
+            setup.gravity_mps2),
+        y0(sys.initial_state()) {
+    const double X = hertz_impact_scale_m(hertz_stiffness(setup), setup.mass_kg, v0_mps);
+    tau_scale = (X / v0_mps) / (2 * std::sqrt(X));
+  }
+  RegularizedPeerImpact(const RegularizedPeerImpact&) = delete;
+  RegularizedPeerImpact& operator=(const RegularizedPeerImpact&) = delete;
+
+  double v0_mps;
+  RegularizedContact<HongoPaper> sys;
+  RegularizedContact<HongoPaper>::State y0;
+  double tau_scale = 0;
+};
+
+/// Cubic Hermite on [0, 1] with values p0, p1 and end slopes m0, m1 (already times the step).
+inline double cubic_hermite(double s, double p0, double m0, double p1, double m1) {
+  const double s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
+}
+
+/// The separation on a step [lo, hi] of the regularised contact over which u fell
+/// through 0: Newton's method on a continuous extension at(tau) -> (u, v, ...), whose
+/// derivative du/dtau = v is its own second component, kept inside the step, to
+/// rounding. Returns tau there.
+template <class At>
+double newton_separation(const At& at, double lo, double hi) {
+  double tau = hi;
+  for (int i = 0; i < 30; ++i) {
+    const auto y = at(tau);
+    const double next = std::clamp(tau - y[0] / y[1], lo, hi);
+    const double change = std::abs(next - tau);
+    tau = next;
+    if (change <= 4e-16 * std::abs(tau)) break;
+  }
+  return tau;
+}
+
 /// hertzdash's ImpactSimulator with `kind`; for a fixed-step integrator `tol_or_dt` is the step [s].
 std::unique_ptr<ImpactSolver> make_hertzdash_solver(IntegratorKind kind, double tol_or_dt);
 /// Boost.Odeint runge_kutta_dopri5, dense output, bisection on the dense output for the events.
@@ -71,5 +124,16 @@ std::unique_ptr<ImpactSolver> make_odeint_dopri5(double tol);
 std::unique_ptr<ImpactSolver> make_gsl_rk8pd(double tol);
 /// CVODE (Adams) created, used with its root finder and freed for every impact.
 std::unique_ptr<ImpactSolver> make_cvode_fresh(double tol);
+/// Boost.Odeint bulirsch_stoer on the regularised contact; the separation on the cubic
+/// Hermite interpolant of the crossing step (two evaluations for the slopes of v).
+std::unique_ptr<ImpactSolver> make_odeint_bs_regularized(double tol);
+/// Boost.Odeint bulirsch_stoer_dense_out on the regularised contact; the separation on its dense output.
+std::unique_ptr<ImpactSolver> make_odeint_bs_dense_regularized(double tol);
+/// Boost.Odeint runge_kutta_dopri5 (controlled, dense output) on the regularised contact;
+/// the separation on its dense output.
+std::unique_ptr<ImpactSolver> make_odeint_dopri5_regularized(double tol);
+/// GSL odeiv2 rk8pd on the regularised contact; the separation on the cubic Hermite
+/// interpolant of the crossing step (two evaluations for the slopes of v).
+std::unique_ptr<ImpactSolver> make_gsl_rk8pd_regularized(double tol);
 
 }  // namespace hertzdash::bench

@@ -5,6 +5,7 @@
 // With --target-interval-restitution it first finds the input e whose first interval ratio is
 // the target: the e the paper should have put into its dashpot.
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
@@ -57,14 +58,11 @@ Command add_bounce_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "bounce", "A drop and the bounces after it: the paper's restitution from impact intervals beside velocity ratios");
   add_run_options(*sub, opt->run);
-  sub->add_option("--bounces", opt->bounces, "Impacts to follow, the first included (3 give one interval ratio)")
-      ->capture_default_str();
-  sub->add_option("--min-rebound-velocity", opt->bounce.min_rebound_velocity_mps,
-                  "End the sequence after a rebound slower than this [m/s]")
-      ->capture_default_str();
-  sub->add_option_function<double>(
-      "--target-interval-restitution", [opt](double v) { opt->interval_target = v; },
-      "Calibrate: find the input e whose first interval ratio is this, in (0,1]");
+  add_number_option(*sub, "--bounces", opt->bounces, "Impacts to follow, the first included (3 give one interval ratio)");
+  add_number_option(*sub, "--min-rebound-velocity", opt->bounce.min_rebound_velocity_mps,
+                    "End the sequence after a rebound slower than this [m/s]");
+  add_number_option(*sub, "--target-interval-restitution", opt->interval_target,
+                    "Calibrate: find the input e whose first interval ratio is this, in (0,1]");
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
 
   return {sub, [opt]() {

@@ -5,6 +5,7 @@
 // AIC; --curves writes the trace, the fitted model and the residuals for a figure
 // (validation/identification/identification_fit.gp draws two).
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
@@ -89,8 +90,7 @@ Command add_fit_command(CLI::App& app) {
                       fittable_option_names() + "; the starting values are the run options (or the paper's)")
       ->capture_default_str();
   sub->add_option("--channels", opt->channels, "Channels of the trace to fit (default: all it has)");
-  sub->add_option("--resample", opt->resample_Hz, "Average the trace into bins of 1/RATE first [Hz]; 0 = as sampled")
-      ->capture_default_str();
+  add_number_option(*sub, "--resample", opt->resample_Hz, "Average the trace into bins of 1/RATE first [Hz]; 0 = as sampled");
   sub->add_flag("--compare-laws", opt->compare_laws, "Fit every registered damping law and rank them by AIC");
   sub->add_option("--curves", opt->curves_path, "Write the trace, the fitted model and the residuals to this CSV file");
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");

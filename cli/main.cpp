@@ -2,12 +2,33 @@
 // Exit codes: 0 success, 2 invalid input (the message names the parameter and
 // its valid range), 1 any other failure. No output file is left half-written.
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <iostream>
+#include <string>
 #include <vector>
+
+namespace {
+
+// The subcommands' names, for the message when none or an unknown one is given.
+std::string subcommand_names(const CLI::App& app) {
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  return names;
+}
+
+// The first argument that is not an option: the subcommand asked for, or empty.
+std::string first_word(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (argv[i][0] != '-') return argv[i];
+  return {};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"hertzdash: Hertz spring + nonlinear dashpot impact models (Hongo et al.)"};
@@ -25,21 +46,29 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    for (const auto& command : commands)
+      if (command.subcommand->parsed()) return command.run();
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::RequiredError& e) {
+    if (!app.get_subcommands().empty()) {
+      std::cerr << "hertzdash: " << e.what() << "\n";
+    } else if (const std::string word = first_word(argc, argv); !word.empty()) {
+      std::cerr << "hertzdash: unknown subcommand '" << word << "': the subcommands are " << subcommand_names(app)
+                << " (hertzdash --help)\n";
+    } else {
+      std::cerr << "hertzdash: a subcommand is required: " << subcommand_names(app) << " (hertzdash --help)\n";
+    }
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "hertzdash: " << e.what() << "\n";
     return 2;
-  }
-  try {
-    for (const auto& command : commands)
-      if (command.subcommand->parsed()) return command.run();
   } catch (const hertzdash::InvalidParameter& e) {
-    std::cerr << "hertzdash: " << e.what() << "\n";
+    std::cerr << "hertzdash: " << hertzdash::cli::refusal_message(e) << "\n";
     return 2;
   } catch (const hertzdash::DataError& e) {
     std::cerr << "hertzdash: bad data file: " << e.what() << "\n";

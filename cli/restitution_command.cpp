@@ -4,6 +4,7 @@
 // tension clamp. With --target-restitution it instead solves for the input e that
 // makes the effective restitution equal the target (GSL Brent root finder).
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
@@ -31,9 +32,8 @@ Command add_restitution_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "restitution", "Effective restitution of a damping law, rigid wall, no gravity (contact phase only)");
   add_run_options(*sub, opt->run);
-  sub->add_option_function<double>(
-      "--target-restitution", [opt](double v) { opt->target = v; },
-      "Calibrate: find the input e whose effective restitution is this, in (0,1]");
+  add_number_option(*sub, "--target-restitution", opt->target,
+                    "Calibrate: find the input e whose effective restitution is this, in (0,1]");
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
 
   return {sub, [opt]() {

@@ -1,5 +1,6 @@
 #include "cli/setup_options.hpp"
 
+#include "cli/number_options.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
 
 #include <iostream>
@@ -16,8 +17,10 @@ void add_run_options(CLI::App& app, RunOptions& options, RunOption::Group group)
           T& value = options.*field;
           if constexpr (std::is_same_v<T, bool>) {
             app.add_flag(flag, value, o.help);
-          } else if constexpr (std::is_same_v<T, std::optional<double>> || std::is_same_v<T, std::optional<std::string>>) {
-            app.add_option_function<typename T::value_type>(flag, [&value](const auto& v) { value = v; }, o.help);
+          } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) {
+            add_number_option(app, flag, value, o.help);
+          } else if constexpr (std::is_same_v<T, std::optional<std::string>>) {
+            app.add_option_function<std::string>(flag, [&value](const std::string& v) { value = v; }, o.help);
           } else {
             app.add_option(flag, value, o.help)->capture_default_str();
           }

@@ -1,5 +1,6 @@
 // `hertzdash simulate`: one drop test of the paper's set-up, any law, any integrator.
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/io/csv_writer.hpp"
@@ -74,7 +75,6 @@ void print_text(const SimulateRun& r) {
     line("energy_dissipated_material_J", e->energy_dissipated_material_J);
     line("energy_balance_error_J", e->energy_balance_error_J);
   }
-  if (!s.separated) std::cout << "  note: the rod did not separate (it came to rest on the ball)\n";
 }
 
 void write_trace(const SimulateRun& r, const std::string& path) {
@@ -102,14 +102,12 @@ Command add_simulate_command(CLI::App& app) {
                   "model: every integrator step, all state columns; measured: a virtual experiment in the measured-trace "
                   "format (data/measurements/README.md), labelled synthetic")
       ->capture_default_str();
-  sub->add_option("--sample-rate", opt->chain.sample_rate_Hz, "Virtual measurement: sampling rate [Hz]")->capture_default_str();
-  sub->add_option("--anti-alias", opt->chain.anti_alias_cutoff_Hz,
-                  "Virtual measurement: cut-off [Hz] of the 2nd-order Butterworth anti-alias filter; 0 = none")
-      ->capture_default_str();
-  sub->add_option("--noise", opt->chain.noise_fraction,
-                  "Virtual measurement: Gaussian noise sigma as a fraction of each channel's largest magnitude")
-      ->capture_default_str();
-  sub->add_option("--seed", opt->chain.seed, "Virtual measurement: seed of the noise")->capture_default_str();
+  add_number_option(*sub, "--sample-rate", opt->chain.sample_rate_Hz, "Virtual measurement: sampling rate [Hz]");
+  add_number_option(*sub, "--anti-alias", opt->chain.anti_alias_cutoff_Hz,
+                    "Virtual measurement: cut-off [Hz] of the 2nd-order Butterworth anti-alias filter; 0 = none");
+  add_number_option(*sub, "--noise", opt->chain.noise_fraction,
+                    "Virtual measurement: Gaussian noise sigma as a fraction of each channel's largest magnitude");
+  add_integer_option(*sub, "--seed", opt->chain.seed, "Virtual measurement: seed of the noise");
   sub->add_option("--channels", opt->channels, "Virtual measurement: channels to record")->capture_default_str();
   sub->add_flag("--json", opt->json, "Print the summary as one JSON object");
   add_mkdir_flag(*sub, opt->mkdir);
@@ -118,7 +116,6 @@ Command add_simulate_command(CLI::App& app) {
             check_trace_options(*sub, *opt);
             prepare_output_file("--trace", opt->trace_path, opt->mkdir);
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
-            report_fallback(r.solver.integrator, r.summary.integrator_used, r.fallback_reason);
             if (opt->trace_format == "measured") {
               write_measured_trace(opt->trace_path, virtual_measurement(r, opt->run.rod, opt->chain),
                                    "hertzdash simulate: a SYNTHETIC virtual measurement of the model (not a measurement)",
@@ -127,9 +124,7 @@ Command add_simulate_command(CLI::App& app) {
                 std::cerr << "hertzdash: note: " << n << "\n";
             } else if (!opt->trace_path.empty())
               write_trace(r, opt->trace_path);
-            if (const std::string n = stability_note(r); !n.empty()) std::cerr << "hertzdash: note: " << n << "\n";
-            if (const std::string w = resolution_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
-            if (const std::string w = yield_warning(r); !w.empty()) std::cerr << "hertzdash: warning: " << w << "\n";
+            for (const RunDiagnostic& d : run_diagnostics(r)) std::cerr << "hertzdash: " << d.kind << ": " << d.message << "\n";
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";
             else print_text(r);
             return 0;

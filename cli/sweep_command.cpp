@@ -5,6 +5,7 @@
 // over the ranks); rank 0 gathers the outputs and errors and writes the same files the threaded
 // run writes, byte for byte apart from the timing line.
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/process_group.hpp"
 #include "hertzdash/io/atomic_file.hpp"
@@ -152,8 +153,8 @@ Command add_sweep_command(CLI::App& app) {
   sub->add_option("--summary", opt->summary,
                   "Also write the summary of every output here (default with [output] summary = true: "
                   "the CSV's name with .summary.csv)");
-  sub->add_option("--threads", opt->threads,
-                  "Threads per process (default: the machine's cores shared among the job's processes on it)");
+  add_integer_option(*sub, "--threads", opt->threads,
+                     "Threads per process; 0 (the default): the machine's cores shared among the job's processes on it");
   sub->add_flag("--quiet", opt->quiet, "No progress line");
   add_mkdir_flag(*sub, opt->mkdir);
   return {sub, [opt]() { return run_sweep_command(*opt); }};

@@ -1,27 +1,46 @@
 #include "hertzdash/io/csv_table.hpp"
 
+#include "hertzdash/io/decimal_number.hpp"
+
 #include <algorithm>
 #include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <fstream>
+#include <optional>
+#include <string_view>
+#include <system_error>
 
 namespace hertzdash {
 
 namespace {
 
+constexpr const char* blanks = " \t\r";
+constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
+
 std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
+  const auto b = s.find_first_not_of(blanks);
   if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+  return s.substr(b, s.find_last_not_of(blanks) - b + 1);
 }
 
+struct Fields {
+  std::vector<std::string> texts;
+  std::vector<std::size_t> columns;  // 0-based offset of each field's first non-blank character
+  bool terminated = true;            // false: a quoted field runs to the end of the line
+};
+
 // Split one line on commas; a field in double quotes may contain commas ("" is a quote).
-std::vector<std::string> split(const std::string& line, bool& ok) {
-  std::vector<std::string> out;
+Fields split(const std::string& line) {
+  Fields out;
   std::string field;
+  std::size_t start = 0;
   bool quoted = false;
-  ok = true;
+  auto close_field = [&](std::size_t end) {
+    const auto first = line.find_first_not_of(blanks, start);
+    out.texts.push_back(trim(field));
+    out.columns.push_back(first < end ? first : start);
+    field.clear();
+    start = end + 1;
+  };
   for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
     if (quoted) {
@@ -31,49 +50,67 @@ std::vector<std::string> split(const std::string& line, bool& ok) {
     } else if (c == '"') {
       quoted = true;
     } else if (c == ',') {
-      out.push_back(trim(field)), field.clear();
+      close_field(i);
     } else {
       field += c;
     }
   }
-  ok = !quoted;
-  out.push_back(trim(field));
+  close_field(line.size());
+  out.terminated = !quoted;
   return out;
+}
+
+// Refuse a file beyond max_table_bytes before reading it (one that grows while it is read, or a
+// pipe, is stopped at the limit by the reader).
+void check_size(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > max_table_bytes)
+    throw DataError(path.string() + ": " + std::to_string(size) + " bytes; a data table is at most 16 MiB (" +
+                    std::to_string(max_table_bytes) + " bytes)");
 }
 
 }  // namespace
 
 CsvTable CsvTable::read(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw DataError("cannot read " + path.string());
+  check_size(path);
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw DataError(path.string() + ": cannot read: " + std::generic_category().message(errno));
   CsvTable t;
   t.path_ = path.string();
   std::string line;
-  std::size_t n = 0;
+  std::size_t n = 0, bytes = 0;
   while (std::getline(in, line)) {
     ++n;
+    bytes += line.size() + 1;
+    if (bytes > max_table_bytes + 1)  // + 1: the last line may have no line end
+      throw DataError(t.path_ + ": more than " + std::to_string(max_table_bytes) +
+                      " bytes; a data table is at most 16 MiB (read so far)");
+    if (n == 1 && line.rfind(byte_order_mark, 0) == 0) line.erase(0, byte_order_mark.size());
     const std::string s = trim(line);
     if (s.empty()) continue;
     if (s[0] == '#') {
       if (t.columns_.empty()) t.comments_.push_back(trim(s.substr(1)));
       continue;
     }
-    bool ok = true;
-    auto fields = split(s, ok);
-    if (!ok) throw DataError(t.path_ + ":" + std::to_string(n) + ": unterminated quoted field");
+    Fields fields = split(line);
+    if (!fields.terminated) throw DataError(t.path_ + ":" + std::to_string(n) + ": unterminated quoted field");
     if (t.columns_.empty()) {
-      t.columns_ = std::move(fields);
+      t.columns_ = std::move(fields.texts);
       continue;
     }
-    if (fields.size() != t.columns_.size()) {
+    if (fields.texts.size() != t.columns_.size()) {
       throw DataError(t.path_ + ":" + std::to_string(n) + ": expected " + std::to_string(t.columns_.size()) +
                       " fields (" + std::to_string(t.columns_.size()) + " columns), got " +
-                      std::to_string(fields.size()));
+                      std::to_string(fields.texts.size()));
     }
-    t.rows_.push_back(std::move(fields));
+    t.rows_.push_back(std::move(fields.texts));
+    t.field_columns_.push_back(std::move(fields.columns));
     t.line_numbers_.push_back(n);
   }
-  if (t.columns_.empty()) throw DataError(t.path_ + ": no header row");
+  if (t.columns_.empty())
+    throw DataError(t.path_ + ": the table is empty (no header row" + (n == 0 ? ", no lines" : "") + ")");
   return t;
 }
 
@@ -90,6 +127,21 @@ void CsvTable::require_columns(const std::vector<std::string>& names) const {
   for (const auto& name : names) column_index(name);
 }
 
+void CsvTable::require_rows() const {
+  if (rows_.empty()) throw DataError(path_ + ": the table is empty (a header row and no rows below it)");
+}
+
+void CsvTable::require_unique(const std::string& column) const {
+  const std::size_t c = column_index(column);
+  std::map<std::string_view, std::size_t> first;  // value -> its first row
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const auto [it, inserted] = first.emplace(rows_[r][c], r);
+    if (!inserted)
+      throw DataError(where(r, column) + ": '" + rows_[r][c] + "' again (first on line " +
+                      std::to_string(line_numbers_[it->second]) + "); each " + column + " appears once");
+  }
+}
+
 std::size_t CsvTable::column_index(const std::string& name) const {
   const auto it = std::find(columns_.begin(), columns_.end(), name);
   if (it == columns_.end()) throw DataError(path_ + ": missing column '" + name + "'");
@@ -99,7 +151,8 @@ std::size_t CsvTable::column_index(const std::string& name) const {
 std::string CsvTable::row_location(std::size_t row) const { return path_ + ":" + std::to_string(line_numbers_.at(row)); }
 
 std::string CsvTable::where(std::size_t row, const std::string& column) const {
-  return row_location(row) + ": column '" + column + "'";
+  return row_location(row) + ":" + std::to_string(field_columns_.at(row).at(column_index(column)) + 1) + ": column '" +
+         column + "'";
 }
 
 const std::string& CsvTable::text(std::size_t row, const std::string& column) const {
@@ -108,17 +161,23 @@ const std::string& CsvTable::text(std::size_t row, const std::string& column) co
 
 double CsvTable::number(std::size_t row, const std::string& column) const {
   const std::string& s = text(row, column);
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE || std::isnan(v)) {
-    throw DataError(where(row, column) + ": '" + s + "' is not a number");
-  }
+  const std::optional<double> v = parse_decimal(s);
+  if (!v) throw DataError(where(row, column) + ": '" + s + "' is not " + decimal_number_format);
+  return *v;
+}
+
+double CsvTable::number(std::size_t row, const std::string& column, const ValueRange& range) const {
+  const double v = number(row, column);
+  if (!range.contains(v)) throw DataError(where(row, column) + ": " + text(row, column) + " is not " + range.text);
   return v;
 }
 
 double CsvTable::number_or(std::size_t row, const std::string& column, double fallback) const {
   return text(row, column).empty() ? fallback : number(row, column);
+}
+
+double CsvTable::number_or(std::size_t row, const std::string& column, double fallback, const ValueRange& range) const {
+  return text(row, column).empty() ? fallback : number(row, column, range);
 }
 
 std::size_t CsvTable::find_row(const std::string& column, const std::string& value) const {

@@ -1,6 +1,10 @@
 #pragma once
 // Reading the CSV files under data/: '#' comment lines, one header row, then rows
-// with exactly as many fields. Every error names the file, the line and the column.
+// with exactly as many fields. A UTF-8 byte-order mark and CRLF line ends are accepted; a
+// file larger than max_table_bytes is refused before it is read. Numbers are decimal
+// (io/decimal_number.hpp). Every error names the file, and where it applies the line and
+// column: "FILE:LINE:COL: column 'NAME': ...".
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -14,9 +18,18 @@ class DataError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The largest table read: 16 MiB, a thousand times the largest table the project ships.
+inline constexpr std::uintmax_t max_table_bytes = std::uintmax_t{16} << 20;
+
+/// The values a field may take, and how a message says so ("> 0", "in (0, 1]").
+struct ValueRange {
+  bool (*contains)(double);
+  const char* text;
+};
+
 class CsvTable {
  public:
-  /// Read and check the file; throws DataError if it is missing or malformed.
+  /// Read and check the file; throws DataError if it is missing, too large or malformed.
   static CsvTable read(const std::filesystem::path& path);
 
   const std::vector<std::string>& columns() const { return columns_; }
@@ -28,12 +41,20 @@ class CsvTable {
 
   /// Throws DataError if the table lacks any of these columns.
   void require_columns(const std::vector<std::string>& names) const;
+  /// Throws DataError if the table has no rows below its header.
+  void require_rows() const;
+  /// Throws DataError naming both lines if two rows have the same value in `column` (a key).
+  void require_unique(const std::string& column) const;
   /// Field as text.
   const std::string& text(std::size_t row, const std::string& column) const;
   /// Field as a number; throws DataError naming file, line and column if it is not one.
   double number(std::size_t row, const std::string& column) const;
+  /// Field as a number in `range`; throws DataError naming file, line, column and the range if not.
+  double number(std::size_t row, const std::string& column, const ValueRange& range) const;
   /// Field as a number, or `fallback` if the field is empty.
   double number_or(std::size_t row, const std::string& column, double fallback) const;
+  /// Field as a number in `range`, or `fallback` if the field is empty.
+  double number_or(std::size_t row, const std::string& column, double fallback, const ValueRange& range) const;
   /// The first row whose `column` equals `value`; throws DataError if there is none.
   std::size_t find_row(const std::string& column, const std::string& value) const;
   /// "FILE:LINE" of a row, for messages about its content.
@@ -47,6 +68,7 @@ class CsvTable {
   std::vector<std::string> comments_;
   std::vector<std::string> columns_;
   std::vector<std::vector<std::string>> rows_;
+  std::vector<std::vector<std::size_t>> field_columns_;  ///< the 1-based column where each field starts
   std::vector<std::size_t> line_numbers_;
 };
 

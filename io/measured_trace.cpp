@@ -2,6 +2,7 @@
 
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/decimal_number.hpp"
 
 #include <fmt/format.h>
 
@@ -67,10 +68,9 @@ MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
   m.source = required("source");
   m.rod = required("rod");
   const std::string h = required("height_m");
-  char* end = nullptr;
-  m.height_m = std::strtod(h.c_str(), &end);
-  if (end != h.c_str() + h.size() || !(m.height_m > 0) || !std::isfinite(m.height_m))
-    throw DataError(file + ": header 'height_m: " + h + "' must be a finite number > 0 (m)");
+  m.height_m = parse_decimal(h).value_or(NAN);
+  if (!(m.height_m > 0))
+    throw DataError(file + ": header 'height_m: " + h + "' must be a decimal number > 0 (m)");
   if (const auto s = fields.find("synthetic"); s != fields.end()) {
     if (s->second != "true" && s->second != "false")
       throw DataError(file + ": header 'synthetic: " + s->second + "' must be true or false");
@@ -89,20 +89,12 @@ MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
   if (column_of.size() < 2) throw DataError(file + ": needs a time column and at least one measured quantity column");
   if (t.rows() < 2) throw DataError(file + ": needs at least two samples");
 
-  auto value = [&](std::size_t r, const std::string& column, double fallback) {
-    const double v = t.number_or(r, column, fallback);
-    if (std::isinf(v))
-      throw DataError(fmt::format("{}: column '{}', sample {}: '{}' is not a finite number (an empty field marks a "
-                                  "sample not measured)",
-                                  file, column, r + 1, t.text(r, column)));
-    return v;
-  };
   auto column = [&](const std::string& quantity, std::vector<double>& out) {
     const auto it = column_of.find(quantity);
     if (it == column_of.end()) return;
     const double factor = find_column_unit(it->second)->si_factor;
     out.reserve(t.rows());
-    for (std::size_t r = 0; r < t.rows(); ++r) out.push_back(factor * value(r, it->second, NAN));
+    for (std::size_t r = 0; r < t.rows(); ++r) out.push_back(factor * t.number_or(r, it->second, NAN));
   };
   column("t_s", m.t_s);
   for (std::size_t r = 0; r < m.t_s.size(); ++r) {

@@ -45,6 +45,20 @@ inline double hertz_yield_onset_pressure_Pa(double yield_stress_Pa, double nu) {
   return hertz_yield_onset_factor(nu) * yield_stress_Pa;
 }
 
+/// Hertz theory replaces the sphere by the paraboloid z = r^2 / (2R). At the edge of the
+/// contact, r = a = sqrt(R x), the sphere lies at R - sqrt(R^2 - a^2) = (a^2 / 2R)(1 + a^2/(4R^2)
+/// + ...): the relative departure of the true profile from the assumed one is, to first order,
+///   a^2 / (4 R^2) = x / (4 R)   [-]
+/// for a deformation x [m] of a sphere of radius R [m]. It measures how far the contact is from
+/// the small-deformation limit the theory is derived in (a << R).
+inline double hertz_profile_error(double deformation_m, double sphere_radius_m) {
+  return deformation_m / (4 * sphere_radius_m);
+}
+
+/// The profile error above which a run is flagged as outside the small-deformation limit:
+/// 1 %, i.e. a/R = 0.2, x/R = 0.04. (The paper's steel rod from 20 mm: x/R = 0.019, 0.5 %.)
+inline constexpr double hertz_profile_error_limit = 0.01;
+
 /// Closed forms of the undamped Hertz impact (no gravity) at approach speed v0 [m/s]
 /// for a mass m [kg]; energy balance (1/2) m v0^2 = (2/5) K X^{5/2} gives the
 /// maximum deformation, and the half-period integral gives the contact time.

@@ -13,8 +13,10 @@ class InvalidParameter : public std::invalid_argument {
  public:
   InvalidParameter(const std::string& name, const std::string& value, const std::string& range)
       : std::invalid_argument("invalid " + name + " = " + value + ": must be " + range),
-        parameter(name) {}
+        parameter(name),
+        valid_range(range) {}
   std::string parameter;
+  std::string valid_range;  ///< what the value must be (the message's "must be ...")
 };
 
 std::string format_value(double v);

@@ -40,6 +40,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <tuple>
 
 namespace hertzdash {
 
@@ -72,9 +73,17 @@ class RegularizedContact {
   double force(const State& y) const { return force_at(y[0], y[1]); }
 
   void rhs(double, const State& y, State& dy) const {
-    dy[0] = y[1];
-    dy[1] = 2.0 * y[0] * (gravity_mps2_ - force(y) * inverse_mass_);
-    dy[2] = 2.0 * y[0];
+    const auto [du, dv, dt] = tau_derivatives(y[0], y[1], force(y));
+    dy = State{du, dv, dt};
+  }
+
+  /// The same right-hand side over any scalar type (y[0] = u, y[1] = v; y[2] = t does
+  /// not enter: autonomous), as (du, dv, dt)/dtau, for a law that writes its force as a
+  /// polynomial in u: the Taylor integrator evaluates it on power series.
+  template <class Y>
+    requires RootPolynomialLaw<Law>
+  auto polynomial_rhs(const Y& y) const {
+    return tau_derivatives(y[0], y[1], law_.force_of_root(y[0], y[1]));
   }
 
   void events(double, const State& y, Events& g) const {
@@ -92,6 +101,12 @@ class RegularizedContact {
   }
 
  private:
+  /// (du, dv, dt)/dtau at (u, v) with the force F there.
+  template <class U, class V, class F>
+  auto tau_derivatives(const U& u, const V& v, const F& force) const {
+    return std::tuple{v, 2.0 * u * (gravity_mps2_ - force * inverse_mass_), 2.0 * u};
+  }
+
   /// The force at (u, v) [N]: the law's polynomial in u if it declares one
   /// (RootPolynomialLaw; smooth through u = 0), else force(u^2, v).
   double force_at(double u, double v) const {

@@ -135,10 +135,7 @@ void warn(const std::string& message) {
 }
 
 void warn_about(const SimulateRun& run) {
-  warn(fallback_note(run.solver.integrator, run.summary.integrator_used, run.fallback_reason));
-  warn(stability_note(run));
-  warn(resolution_warning(run));
-  warn(yield_warning(run));
+  for (const RunDiagnostic& d : run_diagnostics(run)) warn(d.message);
 }
 
 // ---- the functions ----

@@ -59,6 +59,8 @@ inline std::vector<ChungOoiTest> load_chung_ooi_tests(const std::filesystem::pat
   const CsvTable t = CsvTable::read(dir / "parameters.csv");
   t.require_columns({"test", "description", "E_Pa", "nu", "density_kgpm3", "radius_m", "counterpart",
                      "relative_speed_mps", "effective_radius_m", "effective_mass_kg", "source"});
+  t.require_rows();
+  t.require_unique("test");
   std::vector<ChungOoiTest> tests;
   for (std::size_t r = 0; r < t.rows(); ++r) {
     const std::string& counterpart = t.text(r, "counterpart");

@@ -19,6 +19,7 @@
 #include "hertzdash/simulation/physical_impact.hpp"
 #include "hertzdash/simulation/regularized_impact.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
+#include "hertzdash/simulation/step_resolution.hpp"
 #include "hertzdash/simulation/viscous_time_constant.hpp"
 
 #include <algorithm>
@@ -126,6 +127,7 @@ template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
   if constexpr (MaterialTimeConstantLaw<Law>)
     if (!setup.damping.viscous_time_constant_s) return run<Law>(with_calibrated_time_constant<Law>(setup), trace);
+  validate_fixed_step(setup, settings_);
   ImpactSummary s;
   s.integrator_used = integrator_used(settings_.integrator, impact_needs<Law>(setup));
   with_integrator_row(s.integrator_used, [&]<class Row>(std::type_identity<Row>) {
@@ -149,6 +151,7 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<Trace
     s.contact_time_s = s.t_separation_s - s.t_onset_s;
     s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;
   }
+  require_finite_results(s);
   return s;
 }
 

@@ -19,11 +19,13 @@
 #include "hertzdash/integrators/extrapolation.hpp"
 #include "hertzdash/integrators/fixed_step.hpp"
 #include "hertzdash/integrators/rk4.hpp"
+#include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
 
 #include <array>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -194,6 +196,29 @@ struct Gbs8Regularized {
   }
 };
 
+/// Taylor series (orders from the tolerance, coefficients by recurrence from the law's
+/// force_of_root) on the regularised contact, events located on the series: for laws
+/// whose force is a polynomial in u = x^{1/2}.
+struct TaylorRegularized {
+  static constexpr IntegratorTraits traits{.kind = IntegratorKind::taylor_regularized, .name = "taylor-regularized",
+                                           .step_control = StepControl::adaptive,
+                                           .variables = Variables::regularized,
+                                           .needs_root_polynomial = true,
+                                           .fallback_for_other_laws = IntegratorKind::dopri5_regularized,
+                                           .physical_counterpart = IntegratorKind::dopri5};
+  template <OdeSystem S, class Observer>
+  static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
+                                    IntegratorWorkspace&, Observer& observer) {
+    if constexpr (PolynomialOdeSystem<S>) {
+      return integrate_taylor(sys, y, t0, t1, TaylorOptions{.rtol = s.rtol, .atol = s.atol}, observer);
+    } else {
+      // Instantiated for every law by the run-time dispatch (with_integrator_row), never
+      // reached: integrator_used sends a law without the polynomial form to the fall-back.
+      throw std::logic_error("taylor-regularized needs a system with a polynomial right-hand side");
+    }
+  }
+};
+
 }  // namespace integrator_rows
 
 /// The table, in the order of IntegratorKind.
@@ -204,7 +229,8 @@ using IntegratorTable = std::tuple<
     integrator_rows::Dopri5,
     integrator_rows::Dopri5Regularized,
     integrator_rows::CvodeRegularized,
-    integrator_rows::Gbs8Regularized>;
+    integrator_rows::Gbs8Regularized,
+    integrator_rows::TaylorRegularized>;
 
 /// Every integrator, in table order.
 inline constexpr auto all_integrator_kinds = []<class... Row>(std::type_identity<std::tuple<Row...>>) {

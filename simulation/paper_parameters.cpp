@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace hertzdash {
@@ -72,6 +73,18 @@ std::filesystem::path default_data_dir() {
                            "; set HERTZDASH_DATA_DIR to the directory that holds them (the source tree's data/)");
 }
 
+namespace {
+
+// The ranges of the tables' values, checked where they are read so that a bad value is blamed
+// on its file, line and column (not on the command-line option it is the default of).
+constexpr ValueRange positive{[](double v) { return v > 0; }, "> 0"};
+constexpr ValueRange non_negative{[](double v) { return v >= 0; }, ">= 0"};
+constexpr ValueRange restitution{[](double v) { return v > 0 && v <= 1; }, "in (0, 1]"};
+constexpr ValueRange poisson_ratio{[](double v) { return v > -1 && v < 0.5; }, "in (-1, 0.5)"};
+constexpr ValueRange damping_ratio{[](double v) { return v >= 0 && v < 1; }, "in [0, 1)"};
+
+}  // namespace
+
 PaperParameters load_paper_parameters(const std::filesystem::path& dir) {
   const CsvTable t1 = CsvTable::read(dir / "table1_dimensions.csv");
   const CsvTable t2 = CsvTable::read(dir / "table2_restitution.csv");
@@ -81,26 +94,46 @@ PaperParameters load_paper_parameters(const std::filesystem::path& dir) {
   t2.require_columns({"rod", "e", "e_second", "zeta_printed", "provenance"});
   t3.require_columns({"body", "natural_frequency_hz", "E_Pa", "E_min_Pa", "E_max_Pa", "provenance"});
   as.require_columns({"parameter", "value", "unit", "provenance"});
-  auto assumed = [&](const std::string& name) { return as.number(as.find_row("parameter", name), "value"); };
+  for (const auto& [table, key] : {std::pair{&t1, "body"}, {&t2, "rod"}, {&t3, "body"}, {&as, "parameter"}}) {
+    table->require_rows();
+    table->require_unique(key);
+  }
+  auto assumed = [&](const std::string& name, const ValueRange& range) {
+    return as.number(as.find_row("parameter", name), "value", range);
+  };
 
   PaperParameters p;
-  p.gravity_mps2 = assumed("gravity_mps2");
-  p.uncertain_inputs = read_uncertain_inputs(as);
-  p.rig = RigAssumptions{assumed("load_cell_stiffness_N_per_m"), assumed("load_cell_damping_ratio"),
-                         assumed("rod_damping_ratio")};
+  p.gravity_mps2 = assumed("gravity_mps2", non_negative);
+  p.rig = RigAssumptions{assumed("load_cell_stiffness_N_per_m", positive), assumed("load_cell_damping_ratio", damping_ratio),
+                         assumed("rod_damping_ratio", damping_ratio)};
   const std::size_t b1 = t1.find_row("body", "nylon-ball"), b3 = t3.find_row("body", "nylon-ball");
-  p.ball = BallData{t1.number(b1, "diameter_m"), t1.number(b1, "length_m"), t1.number(b1, "mass_kg"),
-                    assumed("nylon_E_Pa"),       t3.number(b3, "E_min_Pa"),  t3.number(b3, "E_max_Pa"),
-                    assumed("nylon_nu"),         assumed("ball_radius_m"),   assumed("nylon_yield_stress_Pa"),
-                    assumed("nylon_yield_stress_min_Pa"), assumed("nylon_yield_stress_max_Pa")};
+  p.ball = BallData{t1.number(b1, "diameter_m", positive),
+                    t1.number(b1, "length_m", positive),
+                    t1.number(b1, "mass_kg", positive),
+                    assumed("nylon_E_Pa", positive),
+                    t3.number(b3, "E_min_Pa", positive),
+                    t3.number(b3, "E_max_Pa", positive),
+                    assumed("nylon_nu", poisson_ratio),
+                    assumed("ball_radius_m", positive),
+                    assumed("nylon_yield_stress_Pa", positive),
+                    assumed("nylon_yield_stress_min_Pa", positive),
+                    assumed("nylon_yield_stress_max_Pa", positive)};
   for (std::size_t r = 0; r < t2.rows(); ++r) {
     const std::string& name = t2.text(r, "rod");
     const std::size_t r1 = t1.find_row("body", name), r3 = t3.find_row("body", name);
     const bool steel = name.rfind("steel", 0) == 0;
-    p.rods.push_back(RodData{name, t1.number(r1, "diameter_m"), t1.number(r1, "length_m"), t1.number(r1, "mass_kg"),
-                             t2.number(r, "e"), t2.number_or(r, "e_second", NAN), t2.number(r, "zeta_printed"), t3.number(r3, "natural_frequency_hz"),
-                             t3.number(r3, "E_Pa"), assumed(steel ? "steel_nu" : "duralumin_nu")});
+    p.rods.push_back(RodData{name,
+                             t1.number(r1, "diameter_m", positive),
+                             t1.number(r1, "length_m", positive),
+                             t1.number(r1, "mass_kg", positive),
+                             t2.number(r, "e", restitution),
+                             t2.number_or(r, "e_second", NAN, restitution),
+                             t2.number(r, "zeta_printed", non_negative),
+                             t3.number(r3, "natural_frequency_hz", positive),
+                             t3.number(r3, "E_Pa", positive),
+                             assumed(steel ? "steel_nu" : "duralumin_nu", poisson_ratio)});
   }
+  p.uncertain_inputs = read_uncertain_inputs(as);  // after the values' own ranges, which say more
   return p;
 }
 

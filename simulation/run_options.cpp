@@ -3,6 +3,7 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
+#include "hertzdash/simulation/step_resolution.hpp"
 
 #include <fmt/format.h>
 
@@ -15,16 +16,21 @@ namespace hertzdash {
 
 namespace {
 
+// Which integrators read which setting: the integrator table.
+bool reads_step(const IntegratorTraits& r) { return r.step_control == StepControl::fixed_step; }
+bool reads_tolerances(const IntegratorTraits& r) { return r.step_control == StepControl::adaptive; }
+bool reads_max_step(const IntegratorTraits& r) {
+  return r.step_control == StepControl::adaptive && r.variables == Variables::physical;
+}
+bool reads_cvode_method(const IntegratorTraits& r) { return r.reads_cvode_method; }
+
 std::vector<RunOption> make_run_options() {
   using R = RunOptions;
   using G = RunOption::Group;
-  // Which integrators read which setting: the integrator table.
-  const std::string fixed = integrator_names([](const IntegratorTraits& r) { return r.step_control == StepControl::fixed_step; });
-  const std::string adaptive = integrator_names([](const IntegratorTraits& r) { return r.step_control == StepControl::adaptive; });
-  const std::string timed = integrator_names([](const IntegratorTraits& r) {
-    return r.step_control == StepControl::adaptive && r.variables == Variables::physical;
-  });
-  const std::string cvode = integrator_names([](const IntegratorTraits& r) { return r.reads_cvode_method; });
+  const std::string fixed = integrator_names(reads_step);
+  const std::string adaptive = integrator_names(reads_tolerances);
+  const std::string timed = integrator_names(reads_max_step);
+  const std::string cvode = integrator_names(reads_cvode_method);
   return {
       {"rod", &R::rod, "Rod of Tables 1-3: steel, duralumin-a, duralumin-b, duralumin-c", G::setup},
       {"height", &R::height_m, "Drop height h [m], free fall from rest", G::setup, "m"},
@@ -77,14 +83,18 @@ std::vector<RunOption> make_run_options() {
        G::setup, "kg"},
       {"accelerometer", &R::accelerometer,
        "End face carrying the accelerometer: top (the free end, the default) or bottom (the struck face)", G::setup},
-      {"integrator", &R::integrator, "One of: " + integrator_names(), G::solver},
-      {"dt", &R::dt_s, "Fixed step [s] > 0 (" + fixed + "; a run needing more than 1e9 steps does not start)", G::solver, "s"},
+      {"integrator", &R::integrator, "One of: " + integrator_names() + " (default: cvode)", G::solver},
+      {"dt", &R::dt_s,
+       "Fixed step [s] > 0 and at most t_H / " + std::to_string(min_steps_per_hertz_contact) +
+           ", t_H the impact's undamped Hertz contact time (" + fixed +
+           "; default: 1e-6; a run needing more than 1e9 steps does not start)",
+       G::solver, "s"},
       {"no-event-location", &R::no_event_location,
        "Handle events at the end of the step that crosses them (" + fixed + "; convergence studies)", G::solver},
-      {"rtol", &R::rtol, "Relative tolerance in (0, 1) (" + adaptive + ")", G::solver},
-      {"atol", &R::atol, "Absolute tolerance [m, m/s] in (0, 1) (" + adaptive + ")", G::solver},
-      {"cvode-method", &R::cvode_method, "CVODE method: adams or bdf (" + cvode + ")", G::solver},
-      {"max-step", &R::max_step_s, "Largest step [s]; 0 = no limit (" + timed + ")", G::solver, "s"},
+      {"rtol", &R::rtol, "Relative tolerance in (0, 1) (" + adaptive + "; default: 1e-8)", G::solver},
+      {"atol", &R::atol, "Absolute tolerance [m, m/s] in (0, 1) (" + adaptive + "; default: 1e-12)", G::solver},
+      {"cvode-method", &R::cvode_method, "CVODE method: adams or bdf (" + cvode + "; default: adams)", G::solver},
+      {"max-step", &R::max_step_s, "Largest step [s] >= 0; 0 = no limit (" + timed + "; default: 0)", G::solver, "s"},
   };
 }
 
@@ -208,15 +218,37 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
 SolverSettings resolve_solver(const RunOptions& o) {
   SolverSettings s;
   s.integrator = parse_integrator(o.integrator);
-  s.dt_s = o.dt_s;
+  s.dt_s = o.dt_s.value_or(s.dt_s);
   s.locate_events = !o.no_event_location;
-  s.rtol = o.rtol;
-  s.atol = o.atol;
-  s.max_step_s = o.max_step_s;
-  if (o.cvode_method == "adams") s.cvode_method = CvodeMethod::adams;
-  else if (o.cvode_method == "bdf") s.cvode_method = CvodeMethod::bdf;
-  else throw InvalidParameter("--cvode-method", o.cvode_method, "one of: adams, bdf");
+  s.rtol = o.rtol.value_or(s.rtol);
+  s.atol = o.atol.value_or(s.atol);
+  s.max_step_s = o.max_step_s.value_or(s.max_step_s);
+  if (const std::string method = o.cvode_method.value_or("adams"); method == "adams") s.cvode_method = CvodeMethod::adams;
+  else if (method == "bdf") s.cvode_method = CvodeMethod::bdf;
+  else throw InvalidParameter("--cvode-method", method, "one of: adams, bdf");
   validate(s);
+  // A setting the chosen integrator does not read is an error: it would be silently ignored.
+  const IntegratorTraits& row = integrator_traits(s.integrator);
+  auto text = [](const std::optional<double>& v) { return v ? format_value(*v) : std::string(); };
+  const struct {
+    const char* option;
+    bool given;
+    std::string value;
+    bool (*reads)(const IntegratorTraits&);
+  } given[] = {
+      {"--dt", o.dt_s.has_value(), text(o.dt_s), reads_step},
+      {"--no-event-location", o.no_event_location, "true", reads_step},
+      {"--rtol", o.rtol.has_value(), text(o.rtol), reads_tolerances},
+      {"--atol", o.atol.has_value(), text(o.atol), reads_tolerances},
+      {"--cvode-method", o.cvode_method.has_value(), o.cvode_method.value_or(""), reads_cvode_method},
+      {"--max-step", o.max_step_s.has_value(), text(o.max_step_s), reads_max_step},
+  };
+  for (const auto& g : given)
+    if (g.given && !g.reads(row))
+      throw InvalidParameter(g.option, g.value,
+                             fmt::format("given only with --integrator {} (the integrators that read it); "
+                                         "--integrator is {}",
+                                         integrator_names(g.reads), row.name));
   return s;
 }
 

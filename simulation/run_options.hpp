@@ -45,12 +45,14 @@ struct RunOptions {
   std::optional<double> hemisphere_mass_kg;      ///< [kg]
   std::optional<std::string> accelerometer;      ///< top or bottom end face
   // The solver (simulation/solver_settings.hpp).
+  // Unset: SolverSettings' default. A setting given for an integrator that does not read it
+  // is an error (resolve_solver), not silently ignored.
   std::string integrator = "cvode";
-  double dt_s = 1e-6;
-  bool no_event_location = false;
-  double rtol = 1e-8, atol = 1e-12;
-  std::string cvode_method = "adams";
-  double max_step_s = 0;
+  std::optional<double> dt_s;                ///< fixed step [s] (euler, rk4)
+  bool no_event_location = false;            ///< euler, rk4
+  std::optional<double> rtol, atol;          ///< adaptive integrators
+  std::optional<std::string> cvode_method;   ///< cvode, cvode-regularized
+  std::optional<double> max_step_s;          ///< adaptive integrators in physical variables [s]
 };
 
 /// One option: its name (the command line's --name; Python's keyword, '-' read as '_'),

@@ -1,6 +1,7 @@
 #include "hertzdash/simulation/run_reports.hpp"
 
 #include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/calibrate_restitution.hpp"
@@ -21,9 +22,7 @@ namespace {
 // Parameters are text; numbers and booleans go into JSON as such.
 nlohmann::ordered_json json_value(const std::string& text) {
   if (text == "true" || text == "false") return text == "true";
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (!text.empty() && end == text.c_str() + text.size() && std::isfinite(v)) return v;
+  if (const std::optional<double> v = parse_decimal(text)) return *v;
   return text;
 }
 
@@ -84,6 +83,35 @@ std::string yield_warning(const SimulateRun& run) {
                      p0 / 1e6, hertz_yield_onset_factor(s.ball.nu), onset / 1e6, s.ball_yield_stress_Pa, s.ball.nu);
 }
 
+std::string deformation_warning(const SimulateRun& run) {
+  const double x = run.summary.max_deformation_m, R = run.setup.ball_radius_m;
+  const double error = hertz_profile_error(x, R);
+  if (!(error > hertz_profile_error_limit)) return {};
+  return fmt::format("the maximum deformation {:.4g} mm is {:.3g} % of the ball radius {:.4g} mm (contact radius a = "
+                     "{:.3g} R): the sphere departs from the paraboloid Hertz theory assumes by {:.3g} % at the contact's "
+                     "edge, more than {:g} %; the small-deformation contact law is outside its range (model/hertz.hpp)",
+                     1e3 * x, 100 * x / R, 1e3 * R, std::sqrt(x / R), 100 * error, 100 * hertz_profile_error_limit);
+}
+
+std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run) {
+  const std::pair<RunDiagnostic, bool> all[] = {
+      {{"note", "integrator_fallback", fallback_note(run.solver.integrator, run.summary.integrator_used, run.fallback_reason)},
+       true},
+      {{"note", "stability_limit", stability_note(run)}, true},
+      {{"warning", "under_resolved", resolution_warning(run)}, true},
+      {{"warning", "yield_onset", yield_warning(run)}, true},
+      {{"warning", "large_deformation", deformation_warning(run)}, true},
+      {{"warning", "not_separated",
+        "the rod did not separate from the ball within the simulated time (it came to rest on it); e_effective, "
+        "rebound velocity and contact time are not defined"},
+       !run.summary.separated},
+  };
+  std::vector<RunDiagnostic> out;
+  for (const auto& [d, applies] : all)
+    if (applies && !d.message.empty()) out.push_back(d);
+  return out;
+}
+
 nlohmann::ordered_json to_json(const SimulateRun& run) {
   const ImpactSummary& s = run.summary;
   nlohmann::ordered_json j;
@@ -95,6 +123,8 @@ nlohmann::ordered_json to_json(const SimulateRun& run) {
   const double yield_onset = hertz_yield_onset_pressure_Pa(run.setup.ball_yield_stress_Pa, run.setup.ball.nu);
   j["yield_onset_pressure_Pa"] = std::isfinite(yield_onset) ? nlohmann::ordered_json(yield_onset) : nlohmann::ordered_json(nullptr);
   j["exceeds_yield_onset"] = s.peak_contact_pressure_Pa > yield_onset;
+  j["hertz_profile_error"] = hertz_profile_error(s.max_deformation_m, run.setup.ball_radius_m);
+  j["exceeds_small_deformation"] = hertz_profile_error(s.max_deformation_m, run.setup.ball_radius_m) > hertz_profile_error_limit;
   j["contact_time_s"] = s.contact_time_s;
   j["impact_velocity_mps"] = s.impact_velocity_mps;
   j["rebound_velocity_mps"] = s.rebound_velocity_mps;
@@ -107,6 +137,10 @@ nlohmann::ordered_json to_json(const SimulateRun& run) {
   j["rhs_evaluations"] = s.work.rhs_evaluations;
   j["events"] = s.work.events;
   j["integrator_used"] = to_string(s.integrator_used);
+  nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
+  for (const RunDiagnostic& d : run_diagnostics(run))
+    warnings.push_back({{"kind", d.kind}, {"code", d.code}, {"message", d.message}});
+  j["warnings"] = warnings;
   if (const auto& it = s.omega_n_iteration) {
     j["omega_n_fixed_point"] = {{"iterations", it->iterations},
                                 {"converged", it->converged},

@@ -53,7 +53,26 @@ std::string resolution_warning(const SimulateRun& run);
 /// Empty otherwise.
 std::string yield_warning(const SimulateRun& run);
 
-/// `simulate --json`: the summary, "law_coefficients", "inputs", "schema_version", "git_revision".
+/// The warning every front end shows when the maximum deformation x is not small against the
+/// ball radius R: the paraboloid Hertz assumes departs from the sphere by more than
+/// hertz_profile_error_limit at the contact's edge (model/hertz.hpp). Empty otherwise.
+std::string deformation_warning(const SimulateRun& run);
+
+/// One note or warning about a run, as every front end reports it: the command line on stderr
+/// ("hertzdash: <kind>: <message>"), Python as a UserWarning, JSON in "warnings".
+struct RunDiagnostic {
+  std::string kind;     ///< "note" (how the run was made) or "warning" (a result to distrust)
+  std::string code;     ///< integrator_fallback, stability_limit, under_resolved, yield_onset,
+                        ///< large_deformation, not_separated
+  std::string message;
+};
+
+/// Every note and warning of a run, in that order: fallback_note, stability_note,
+/// resolution_warning, yield_warning, deformation_warning, and a rod that did not separate.
+std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run);
+
+/// `simulate --json`: the summary, "law_coefficients", "warnings" (run_diagnostics), "inputs",
+/// "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const SimulateRun& run);
 
 /// The run's contact recorded as a virtual experiment (simulation/virtual_measurement.hpp), with

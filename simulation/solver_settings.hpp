@@ -7,7 +7,16 @@
 namespace hertzdash {
 
 /// The integrators, one per row of the integrator table (same order).
-enum class IntegratorKind { euler, rk4, cvode, dopri5, dopri5_regularized, cvode_regularized, gbs8_regularized };
+enum class IntegratorKind {
+  euler,
+  rk4,
+  cvode,
+  dopri5,
+  dopri5_regularized,
+  cvode_regularized,
+  gbs8_regularized,
+  taylor_regularized,
+};
 
 struct SolverSettings {
   IntegratorKind integrator = IntegratorKind::cvode;

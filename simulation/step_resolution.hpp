@@ -17,12 +17,19 @@
 // Euler is first order with an error of about 6/N, so it needs thousands of steps;
 // RK4 with located events is of order 1.5 to 2.5 but with small constants; RK4
 // without event location knows the contact time only to a step (error ~ 1/(2N)).
+#include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/impact_summary.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <utility>
 
 namespace hertzdash {
 
@@ -36,6 +43,46 @@ inline constexpr double step_resolution_target_error = 1e-3;
 constexpr long min_steps_per_contact(IntegratorKind integrator, bool locate_events) {
   const IntegratorTraits& row = integrator_traits(integrator);
   return locate_events ? row.min_steps_per_contact_located : row.min_steps_per_contact_unlocated;
+}
+
+/// Fewest fixed steps per undamped Hertz contact time a run may take: the coarsest resolution
+/// the convergence study measures (N = 5). Below it the contact is not represented at all
+/// (--dt 0.01 on the steel rod, 0.01 steps per t_H, gave e_effective 2.8e4; --dt 1e308 gave 0).
+inline constexpr long min_steps_per_hertz_contact = 5;
+
+/// Throws InvalidParameter naming --dt when a fixed-step integrator's step exceeds
+/// t_H / min_steps_per_hertz_contact, t_H the undamped Hertz contact time of the set-up
+/// (model/hertz.hpp: t_H ~= 2.9432 X / v0). Adaptive integrators: nothing to check; the
+/// elastic rod neither: it steps at min(--dt, its stability limit), a fraction of the rod's
+/// wave transit, and under_resolved_contact() reports the resolution it reached.
+inline void validate_fixed_step(const DropTestSetup& setup, const SolverSettings& solver) {
+  if (integrator_traits(solver.integrator).step_control != StepControl::fixed_step || setup.elastic_rod) return;
+  const double v0 = approach_speed(setup);
+  const double t_hertz = undamped_hertz_impact(hertz_stiffness(setup), setup.mass_kg, v0).contact_time_s;
+  const double dt_max = t_hertz / static_cast<double>(min_steps_per_hertz_contact);
+  if (!(solver.dt_s <= dt_max))
+    throw InvalidParameter("--dt", format_value(solver.dt_s),
+                           fmt::format("> 0 and at most {:.4g} s for this impact: t_H / {}, t_H = {:.4g} s its undamped "
+                                       "Hertz contact time at {:.4g} m/s (coarser steps do not resolve the contact; "
+                                       "the convergence study needs {} steps per t_H with {} for errors below {:g} %)",
+                                       dt_max, min_steps_per_hertz_contact, t_hertz, v0,
+                                       min_steps_per_contact(solver.integrator, solver.locate_events),
+                                       integrator_traits(solver.integrator).name, 100 * step_resolution_target_error));
+}
+
+/// Throws std::runtime_error when an impact's summary holds a non-finite number (a run that
+/// diverged): results are errors, never silent inf or NaN.
+inline void require_finite_results(const ImpactSummary& s) {
+  const std::pair<const char*, double> results[] = {{"e_effective", s.e_effective},
+                                                    {"peak_force_N", s.peak_force_N},
+                                                    {"max_deformation_m", s.max_deformation_m},
+                                                    {"contact_time_s", s.contact_time_s},
+                                                    {"rebound_velocity_mps", s.rebound_velocity_mps}};
+  for (const auto& [name, value] : results)
+    if (!std::isfinite(value))
+      throw std::runtime_error(fmt::format("the run diverged: {} = {} (a non-finite result); a finer --dt or a tighter "
+                                           "--rtol may resolve it",
+                                           name, value));
 }
 
 /// How finely a fixed step resolved the contact of a run.

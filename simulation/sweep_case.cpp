@@ -43,11 +43,16 @@ class CaseReader {
     return s.str();
   }
 
-  // A number: a TOML float, or a decimal integer (0x10, 0o7, 0b1 are refused: numbers are decimal).
+  // A number: a TOML float other than nan (inf is a value: a rigid rod-E, an open distribution
+  // bound), or a decimal integer (0x10, 0o7, 0b1 are refused: numbers are decimal).
   double number(const std::string& key, const toml::node& node) const {
-    if (const auto* f = node.as_floating_point()) return f->get();
+    if (const auto* f = node.as_floating_point()) {
+      if (std::isnan(f->get())) fail(key, node, describe(node), "a decimal number (nan is not a number)");
+      return f->get();
+    }
     if (const auto* i = node.as_integer()) {
-      if (static_cast<unsigned>(i->flags()) & 3u) fail(key, node, describe(node), "a decimal number (no hexadecimal, octal or binary)");
+      if (i->flags() != toml::value_flags::none)  // format_as_binary, _octal or _hexadecimal
+        fail(key, node, describe(node), "a decimal number (no hexadecimal, octal or binary)");
       return static_cast<double>(i->get());
     }
     fail(key, node, describe(node), "a number");

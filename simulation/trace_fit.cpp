@@ -1,6 +1,7 @@
 #include "hertzdash/simulation/trace_fit.hpp"
 
 #include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/gsl_root.hpp"
 #include "hertzdash/simulation/impact_history.hpp"
@@ -506,11 +507,9 @@ std::vector<FitParameter> parse_fit_parameters(const std::string& list) {
       const std::string bounds = item.substr(colon + 1);
       const std::size_t mid = bounds.find(':');
       auto number = [&](const std::string& text) {
-        char* stop = nullptr;
-        const double v = std::strtod(text.c_str(), &stop);
-        if (text.empty() || stop != text.c_str() + text.size() || std::isnan(v))
-          throw InvalidParameter("--fit", item, "NAME:LOWER:UPPER with two numbers, LOWER < UPPER");
-        return v;
+        const std::optional<double> v = parse_option_number(text);
+        if (!v) throw InvalidParameter("--fit", item, "NAME:LOWER:UPPER with two decimal numbers, LOWER < UPPER");
+        return *v;
       };
       if (mid == std::string::npos) throw InvalidParameter("--fit", item, "NAME:LOWER:UPPER with two numbers, LOWER < UPPER");
       p.lower = number(bounds.substr(0, mid));

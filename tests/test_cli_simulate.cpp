@@ -24,9 +24,10 @@ TEST_CASE("CLI simulate --json: fields, units and inputs", "[cli]") {
   for (const auto& [key, value] : j.items()) keys.push_back(key);
   CHECK(keys == std::vector<std::string>{"schema_version", "e_effective", "peak_force_N", "max_deformation_m",
                                          "peak_contact_pressure_Pa", "yield_onset_pressure_Pa", "exceeds_yield_onset",
-                                         "contact_time_s", "impact_velocity_mps", "rebound_velocity_mps", "separated",
-                                         "K_N_per_m_1_5", "law_coefficients", "steps", "rhs_evaluations", "events",
-                                         "integrator_used", "inputs", "git_revision"});
+                                         "hertz_profile_error", "exceeds_small_deformation", "contact_time_s",
+                                         "impact_velocity_mps", "rebound_velocity_mps", "separated", "K_N_per_m_1_5",
+                                         "law_coefficients", "steps", "rhs_evaluations", "events", "integrator_used",
+                                         "warnings", "inputs", "git_revision"});
   CHECK(j["schema_version"].get<int>() == 1);
   const auto& law = j["law_coefficients"];
   CHECK(law.contains("zeta"));

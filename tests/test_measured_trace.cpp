@@ -81,14 +81,21 @@ TEST_CASE("malformed traces are rejected with a message naming the file and the 
   };
   rejects("# rod: steel\n# height_m: 0.02\nt_s,force_N\n0,0\n1e-4,1\n", "'# source: ...'");
   rejects("# source: x\n# height_m: 0.02\nt_s,force_N\n0,0\n1e-4,1\n", "'# rod: ...'");
-  rejects("# source: x\n# rod: steel\n# height_m: -1\nt_s,force_N\n0,0\n1e-4,1\n", "must be a finite number > 0");
+  rejects("# source: x\n# rod: steel\n# height_m: -1\nt_s,force_N\n0,0\n1e-4,1\n", "must be a decimal number > 0");
+  rejects("# source: x\n# rod: steel\n# height_m: 0x1p-5\nt_s,force_N\n0,0\n1e-4,1\n", "must be a decimal number > 0");
+  rejects("# source: x\n# rod: steel\n# height_m: inf\nt_s,force_N\n0,0\n1e-4,1\n", "must be a decimal number > 0");
   rejects(synthetic_header + "time,force_N\n0,0\n1e-4,1\n", "unknown column 'time'");
   rejects(synthetic_header + "force_N,accel_g\n0,0\n1e-4,1\n", "missing the time column (t_s, t_ms or t_us)");
   rejects(synthetic_header + "t_s,force_lbf\n0,0\n1e-4,1\n", "unknown column 'force_lbf'");
   rejects(synthetic_header + "t_s\n0\n1e-4\n", "at least one measured quantity");
   rejects(synthetic_header + "t_s,force_N\n0,0\n", "at least two samples");
   rejects(synthetic_header + "t_s,force_N\n0,0\n0,1\n", "the time must increase strictly (sample 2)");
-  rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,abc\n", "'abc' is not a number");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,abc\n", "'abc' is not a decimal number");
+  // Issue 19: strtod read hexadecimal (0x1p-1 = 0.5) and inf; numbers are decimal only.
+  rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,0x1p-1\n", "'0x1p-1' is not a decimal number");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,inf\n", "'inf' is not a decimal number");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,-inf\n", "'-inf' is not a decimal number");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n0x1p-5,1\n", "'0x1p-5' is not a decimal number");
   rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4\n", "expected 2 fields");
 }
 

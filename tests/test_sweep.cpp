@@ -111,6 +111,14 @@ restitution = { distribution = "normal", mean = 0.831, sd = 0.003, max = 0.835 }
 TEST_CASE("Bad case files are refused naming the key, its line and what is allowed", "[sweep]") {
   const std::vector<std::pair<std::string, std::string>> cases{
       {"[base]\nheight = 0x10\n", "base.height (bad.toml line 2) = 0x10: must be a decimal number"},
+      {"[base]\nmass = 0o7\n", "base.mass (bad.toml line 2) = 0o7: must be a decimal number"},
+      {"[base]\nmass = 0b1\n", "base.mass (bad.toml line 2) = 0b1: must be a decimal number"},
+      {"[base]\nmass = nan\n", "base.mass (bad.toml line 2) = nan: must be a decimal number"},
+      {"[grid]\nmass = [0.5, -nan]\n", "grid.mass (bad.toml line 2) = nan: must be a decimal number"},
+      {"[grid]\nheight = { from = 0.01, to = 0x1, count = 3 }\n", "grid.height.to (bad.toml line 2) = 0x1: must be a decimal number"},
+      {"[grid]\nheight = { from = 0.01, to = inf, count = 3 }\n", "grid.height.to (bad.toml line 2) = inf: must be a finite number"},
+      {"[sample]\ncount = 0x10\nball-E = { distribution = \"uniform\", min = 1, max = 2 }\n", "sample.count (bad.toml line 2) = 0x10: must be a decimal number"},
+      {"[sample]\ncount = 3\nball-E = { distribution = \"uniform\", min = nan, max = 2 }\n", "sample.ball-E.min (bad.toml line 3) = nan: must be a decimal number"},
       {"[base]\nheihgt = 1\n", "base.heihgt (bad.toml line 2)"},
       {"[bass]\n", "case.bass"},
       {"[base]\nrod = 3\n", "base.rod (bad.toml line 2) = 3: must be a string"},

@@ -96,7 +96,7 @@ TEST_CASE("Input distributions: a malformed row names the file and the parameter
   refused(load_with(row + "uniform,,,0.39,0.41,", row + "uniform,,,0.39,,"), "needs column 'upper'");
   refused(load_with(row + "uniform,,,0.39,0.41,", row + "uniform,,,0.41,0.39,"), "greater than min");
   refused(load_with(row + "uniform,,,0.39,0.41,", row + "uniform,0.4,,0.39,0.41,"), "takes no 'location'");
-  refused(load_with(row + "uniform,,,0.39,0.41,", row + "normal,0.40,abc,,,"), "'abc' is not a number");
+  refused(load_with(row + "uniform,,,0.39,0.41,", row + "normal,0.40,abc,,,"), "'abc' is not a decimal number");
   refused(load_with(row + "uniform,,,0.39,0.41,", row + "normal,0.40,-0.01,,,"), "nylon_nu.sd");
   refused(load_with(row + "uniform,,,0.39,0.41,", row + "lognormal,0,0.1,,,"), "median (location) > 0");
   refused(load_with(row + "uniform,,,0.39,0.41,", row + "uniform,,,0.20,0.30,"), "outside its distribution");

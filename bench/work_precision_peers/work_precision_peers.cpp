@@ -24,10 +24,11 @@
 // and GENERATED/work_precision_peers_table.tex. The timings depend on the machine
 // (named in the files); the errors and evaluation counts do not.
 #include "bench/work_precision.hpp"
+#include "hertzdash/io/decimal_number.hpp"
 
-#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -40,12 +41,15 @@ int main(int argc, char** argv) {
     else if (arg == "--reduced") reduced = true;
     else if (arg == "--full") full = true;
     else if (arg == "--performance-page" && i + 1 < argc) c.performance_page = argv[++i];
-    else if (arg == "--figures-ms" && i + 1 < argc) c.figures_seconds = std::atof(argv[++i]) / 1000.0;
-    else bad = true;
+    else if (arg == "--figures-ms" && i + 1 < argc) {
+      const std::optional<double> ms = hertzdash::parse_decimal(argv[++i]);
+      if (ms && *ms > 0) c.figures_seconds = *ms / 1000.0;
+      else bad = true;
+    } else bad = true;
   }
   if (bad || c.out_dir.empty() || (reduced && full) || (!full && (!c.performance_page.empty() || c.figures_seconds > 0))) {
     std::cerr << "usage: " << argv[0] << " --out DIR [--generated DIR] [--reduced]\n"
-              << "       " << argv[0] << " --full --out DIR --generated DIR [--performance-page docs/performance.md] [--figures-ms MS]\n";
+              << "       " << argv[0] << " --full --out DIR --generated DIR [--performance-page docs/performance.md] [--figures-ms MS, a decimal number > 0]\n";
     return 2;
   }
   if (c.generated_dir.empty()) c.generated_dir = c.out_dir.parent_path() / "generated";

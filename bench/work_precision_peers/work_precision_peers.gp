@@ -24,8 +24,15 @@ do for [kind in 'pdf png'] {
   set style line 28 lc rgb '#5dade2' lw 2.0 dt 1 pt 11 ps 0.6   # hertzdash-dopri5-regularized
   set style line 29 lc rgb '#bb8fce' lw 1.6 dt 1 pt 13 ps 0.6   # hertzdash-cvode-regularized
   set style line 30 lc rgb '#000000' lw 2.2 dt 1 pt 15 ps 0.6   # hertzdash-gbs8-regularized
+  # Peers on the regularised contact: dotted-dashed, open points.
+  set style line 31 lc rgb '#d35400' lw 1.6 dt 4 pt 10 ps 0.6   # odeint-bs-regularized
+  set style line 32 lc rgb '#f5b041' lw 1.6 dt 4 pt 12 ps 0.6   # odeint-bs-dense-regularized
+  set style line 33 lc rgb '#e67e22' lw 1.6 dt 4 pt 14 ps 0.6   # odeint-dopri5-regularized
+  set style line 34 lc rgb '#922b21' lw 1.6 dt 4 pt 4 ps 0.5    # gsl-rk8pd-regularized
 
-  solvers = 'hertzdash-dopri5 hertzdash-cvode hertzdash-rk4 odeint-dopri5 gsl-rk8pd cvode-fresh 27 hertzdash-dopri5-regularized hertzdash-cvode-regularized hertzdash-gbs8-regularized'
+  solvers = 'hertzdash-dopri5 hertzdash-cvode hertzdash-rk4 odeint-dopri5 gsl-rk8pd cvode-fresh 27 hertzdash-dopri5-regularized hertzdash-cvode-regularized hertzdash-gbs8-regularized odeint-bs-regularized odeint-bs-dense-regularized odeint-dopri5-regularized gsl-rk8pd-regularized'
+  # Legend titles: '-regularized' shortened to '-reg'.
+  short(s) = strstrt(s, '-regularized') > 0 ? s[1:strstrt(s, '-regularized') - 1].'-reg' : s
   pick(s, c) = (strcol(1) eq s) ? column(c) : NaN
 
   set logscale xy
@@ -44,11 +51,11 @@ do for [kind in 'pdf png'] {
   set xtics 10
   set title '(a) contact phase, steel, h = 20 mm'
   eval quad_panel(1)
-  plot for [i in '10 8 1 2 3 4 5 6 9'] contact using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
+  plot for [i in '10 8 1 2 3 4 5 6 9 11 12 13 14'] contact using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i notitle
   set title '(b) full drop'
   eval quad_panel(2)
-  plot for [i in '10 8 1 2 3 4 5 6 9'] drop using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
+  plot for [i in '10 8 1 2 3 4 5 6 9 11 12 13 14'] drop using (pick(word(solvers, i+0), 5)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i notitle
 
   set xlabel 'rtol (atol = 10^{-4} rtol)'
@@ -56,19 +63,19 @@ do for [kind in 'pdf png'] {
   set xtics 100
   set title '(c) contact phase'
   eval quad_panel(3)
-  plot for [i in '10 8 1 9 2 4 5 6'] contact using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
+  plot for [i in '10 8 1 9 2 4 5 6 11 12 13 14'] contact using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i notitle, \
        x with lines ls 27 notitle
   set title '(d) full drop'
   eval quad_panel(4)
-  plot for [i in '10 8 1 9 2 4 5 6'] drop using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
+  plot for [i in '10 8 1 9 2 4 5 6 11 12 13 14'] drop using (pick(word(solvers, i+0), 2)):(pick(word(solvers, i+0), 3)) \
        with linespoints ls 20 + i notitle, \
        x with lines ls 27 notitle
   eval quad_key_row
   eval key_panel
   eval key_row
-  set key maxrows 5
-  plot for [i in '10 8 1 2 3 4 5 6 9'] NaN with linespoints ls 20 + i title word(solvers, i+0), \
+  set key maxrows 5 width -3 at graph -0.02, 0.5
+  plot for [i in '10 8 1 2 3 4 5 6 9 11 12 13 14'] NaN with linespoints ls 20 + i title short(word(solvers, i+0)), \
        NaN with lines ls 27 title 'error = tolerance'
   unset multiplot
 }

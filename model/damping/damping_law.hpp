@@ -70,15 +70,38 @@ concept DampingLaw = requires(const L& law, const ImpactConditions& c, const Dam
   { law.coefficients() } -> std::same_as<std::vector<NamedValue>>;
 };
 
+namespace detail {
+/// A stand-in for the scalar types force_of_root is evaluated over: a ring over the
+/// reals (+, - and * among its values and with doubles, / by a double), nothing more --
+/// double, and the truncated power series of the Taylor integrator
+/// (integrators/power_series.hpp). Declared only, for the concept below.
+struct RingScalar {};
+RingScalar operator+(RingScalar, RingScalar);
+RingScalar operator-(RingScalar, RingScalar);
+RingScalar operator*(RingScalar, RingScalar);
+RingScalar operator-(RingScalar);
+RingScalar operator*(double, RingScalar);
+RingScalar operator*(RingScalar, double);
+RingScalar operator/(RingScalar, double);
+RingScalar operator+(double, RingScalar);
+RingScalar operator+(RingScalar, double);
+RingScalar operator-(double, RingScalar);
+RingScalar operator-(RingScalar, double);
+}  // namespace detail
+
 /// Optional for a law: a force that is a polynomial in (x^{1/2}, xdot) -- Hertz, the
 /// paper's law, the Hunt-Crossley family, Kelvin-Voigt -- declares it by offering
 /// `force_of_root(u, xdot)` = force(u^2, xdot) for u = x^{1/2} >= 0, written as that
-/// polynomial in u (no square root). Its smooth continuation to u < 0 is what makes
-/// the contact in regularising variables (model/regularized_contact.hpp) smooth
-/// through onset and separation.
+/// polynomial in u (no square root), once, as a template over the scalar type:
+///   template <class T> auto force_of_root(const T& u, const T& xdot) const { return K_ * u * (u * u + c_ * xdot); }
+/// using only +, - and * (and doubles), so that it also evaluates on power series (the
+/// Taylor integrator generates the Taylor coefficients of the contact from it). Its
+/// smooth continuation to u < 0 is what makes the contact in regularising variables
+/// (model/regularized_contact.hpp) smooth through onset and separation.
 template <class L>
-concept RootPolynomialLaw = DampingLaw<L> && requires(const L& law, double u) {
+concept RootPolynomialLaw = DampingLaw<L> && requires(const L& law, double u, detail::RingScalar r) {
   { law.force_of_root(u, u) } -> std::same_as<double>;
+  { law.force_of_root(r, r) } -> std::same_as<detail::RingScalar>;
 };
 
 /// Optional for a law: damping set by a material time constant A [s]

@@ -31,7 +31,8 @@ class HertzProportionalDashpot {
   /// F = K x^{3/2} (1 + chi xdot) [N]
   double force(double x, double xdot) const noexcept { return K_ * x * std::sqrt(x) * (1.0 + chi_ * xdot); }
   /// The same at u = x^{1/2}: K u^3 (1 + chi xdot) [N] (RootPolynomialLaw)
-  double force_of_root(double u, double xdot) const noexcept { return K_ * u * u * u * (1.0 + chi_ * xdot); }
+  template <class T>
+  auto force_of_root(const T& u, const T& xdot) const noexcept { return K_ * u * u * u * (1.0 + chi_ * xdot); }
 
   std::vector<NamedValue> coefficients() const {
     return {{"chi_s_per_m", chi_}, {"damping_coefficient_N_s_per_m_2_5", K_ * chi_}};

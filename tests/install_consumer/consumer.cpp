@@ -23,7 +23,8 @@ class MyHertzSpring {
                                            "any impact", true};
   MyHertzSpring(const hertzdash::ImpactConditions& c, const hertzdash::DampingSettings&) : K_(c.K) {}
   double force(double x, double) const noexcept { return K_ * x * std::sqrt(x); }
-  double force_of_root(double u, double) const noexcept { return K_ * u * u * u; }  // polynomial in u = x^{1/2}
+  template <class T>  // polynomial in u = x^{1/2}, over any scalar type (double, power series)
+  auto force_of_root(const T& u, const T&) const noexcept { return K_ * u * u * u; }
   std::vector<hertzdash::NamedValue> coefficients() const { return {}; }
 
  private:

@@ -129,6 +129,8 @@ def test_simulate_many_broadcasts_scalars_and_length_one_arrays():
     (dict(damping="no-such-law"), "--damping", "hongo"),
     (dict(integrator="rk5"), "--integrator", "rk4"),
     (dict(rtol=-1.0), "--rtol", "in (0, 1)"),
+    (dict(integrator="rk4", rtol=1e-6), "--rtol", "given only with --integrator cvode"),
+    (dict(integrator="rk4", dt=0.01), "--dt", "at most"),
     (dict(rod_elements=10), "--rod-model", "elastic when --rod-elements is given"),
     (dict(rod_model="elastic", rod_elements=2.5), "--rod-elements", "an integer in [1, 400]"),
     (dict(rod_model="elastic", cell_damping_ratio=1.0), "--cell-damping-ratio", "[0, 1)"),
@@ -321,6 +323,20 @@ def test_a_peak_pressure_beyond_yield_is_a_warning():
     assert r["exceeds_yield_onset"] is False and r["yield_onset_pressure_Pa"] is None
 
 
+def test_a_deformation_not_small_against_the_ball_is_a_warning():
+    # The steel rod from 0.3 m deforms the 12.7 mm ball by 0.71 mm (x/R = 0.056): the sphere
+    # departs from Hertz's paraboloid by x/(4R) = 1.4 % > 1 % at the contact's edge. The warning
+    # is the program's stderr line and an entry of the result's "warnings".
+    with pytest.warns(UserWarning, match="maximum deformation") as record:
+        r = hertzdash.simulate(height=0.3, ball_yield_stress=float("inf"))
+    message = next(str(w.message) for w in record if "maximum deformation" in str(w.message))
+    assert r["exceeds_small_deformation"] is True
+    assert [w["message"] for w in r["warnings"] if w["code"] == "large_deformation"] == [message]
+    stderr = subprocess.run([BIN, "simulate", "--height", "0.3", "--ball-yield-stress", "inf"],
+                            capture_output=True, text=True).stderr
+    assert stderr == "hertzdash: warning: " + message + "\n"
+
+
 def test_virtual_measurement_and_fit_are_the_programs(tmp_path):
     # virtual_measurement() writes the file `simulate --trace-format measured` writes, byte for
     # byte, and fit() returns `fit --json`; the recovered E and e lie within 2 sigma of the truth
@@ -350,3 +366,86 @@ def test_fit_refuses_solver_options_and_bad_lists(tmp_path):
         hertzdash.fit(str(trace), rtol=1e-9)
     with pytest.raises(ValueError, match="--fit"):
         hertzdash.fit(str(trace), fit="ball-colour")
+
+
+@pytest.fixture(scope="module")
+def measured_trace(tmp_path_factory):
+    path = tmp_path_factory.mktemp("measured") / "trace.csv"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        hertzdash.virtual_measurement(str(path))
+    return path
+
+
+# The Python rows of the bad-input matrix (issue 19): every function that refuses input, each
+# with the command line that does the same. OUT marks the output file's place in both.
+OUT = object()
+BAD_INPUT = [
+    ("simulate", [], dict(ball_yield_stress=0.0), ["simulate"], "--ball-yield-stress", "> 0 or inf"),
+    ("trace", [], dict(mass=-1.0), ["simulate", "--trace", OUT], "--mass", "> 0"),
+    ("restitution", [], dict(restitution=1.5), ["restitution"], "--restitution", "in (0, 1]"),
+    ("calibrate_restitution", [1.5], {}, ["restitution", "--target-restitution", "1.5"], "--target-restitution",
+     "in (0, 1]"),
+    ("bounce", [], dict(bounces=2.5), ["bounce"], "--bounces", "an integer in [1, 1000]"),
+    ("bounce", [], dict(min_rebound_velocity=math.nan), ["bounce"], "--min-rebound-velocity", ">= 0"),
+    ("virtual_measurement", [OUT], dict(sample_rate=0.0), ["simulate", "--trace", OUT, "--trace-format", "measured"],
+     "--sample-rate", "> 0"),
+    ("virtual_measurement", [OUT], dict(noise=2.0), ["simulate", "--trace", OUT, "--trace-format", "measured"],
+     "--noise", "in [0, 1]"),
+    ("virtual_measurement", [OUT], dict(anti_alias=-1.0), ["simulate", "--trace", OUT, "--trace-format", "measured"],
+     "--anti-alias", "0 (no filter) or a cut-off in (0, 500000] Hz"),
+    ("virtual_measurement", [OUT], dict(channels="force_N,colour"),
+     ["simulate", "--trace", OUT, "--trace-format", "measured"], "--channels", "distinct channels from: force_N"),
+    ("virtual_measurement", [OUT], dict(mass=math.nan), ["simulate", "--trace", OUT, "--trace-format", "measured"],
+     "--mass", "a finite number > 0 (kg)"),
+    ("fit", [], dict(curves=OUT, resample=-1.0), ["fit", "--curves", OUT], "--resample", "> 0"),
+    ("fit", [], dict(curves=OUT, fit="ball-E:1e9:0x10"), ["fit", "--curves", OUT], "--fit",
+     "NAME:LOWER:UPPER with two decimal numbers"),
+    ("fit", [], dict(curves=OUT, mass=-1.0), ["fit", "--curves", OUT], "--mass", "a finite number > 0 (kg)"),
+    ("fit", [], dict(curves=OUT, channels="colour"), ["fit", "--curves", OUT], "--channels", "distinct channels"),
+]
+
+
+@pytest.mark.parametrize("function, args, keywords, command, option, valid", BAD_INPUT,
+                         ids=[f"{row[0]}-{row[4]}" for row in BAD_INPUT])
+def test_each_refusal_is_a_value_error_naming_the_option_and_range_with_no_file(
+        tmp_path, measured_trace, function, args, keywords, command, option, valid):
+    out = tmp_path / "out.csv"
+    place = lambda v: str(out) if v is OUT else v  # noqa: E731
+    args = [place(a) for a in args] + ([str(measured_trace)] if function == "fit" else [])
+    keywords = {k: place(v) for k, v in keywords.items()}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(ValueError) as error:
+            getattr(hertzdash, function)(*args, **keywords)
+    text = str(error.value)
+    assert f"invalid {option} = " in text and valid in text, text
+    assert not out.exists()
+    # The program refuses the same input with the same message, and writes no file either.
+    line = [place(c) for c in command] + (["--trace", str(measured_trace)] if function == "fit" else [])
+    for key, value in keywords.items():
+        if key not in ("curves",):
+            line += ["--" + key.replace("_", "-"), str(value)]
+    r = subprocess.run([BIN, *line], capture_output=True, text=True)
+    assert r.returncode == 2, r.stderr
+    assert r.stderr == "hertzdash: " + text + "\n"
+    assert r.stdout == ""
+    assert not out.exists()
+
+
+def test_a_bad_data_table_is_a_value_error_naming_file_line_and_column(tmp_path):
+    # The tables are read once per process: a fresh interpreter reads a copy with a second steel row.
+    data = tmp_path / "data"
+    data.mkdir()
+    for f in os.listdir(os.path.join(SOURCE, "data")):
+        if f.endswith(".csv"):
+            with open(os.path.join(SOURCE, "data", f), "rb") as src:
+                (data / f).write_bytes(src.read())
+    with open(data / "table1_dimensions.csv", "a") as t:
+        t.write("steel,0.0250,0.200,0.5,a second row\n")
+    env = dict(os.environ, HERTZDASH_DATA_DIR=str(data))
+    r = subprocess.run([sys.executable, "-c", "import hertzdash; hertzdash.simulate()"], capture_output=True,
+                       text=True, env=env)
+    assert r.returncode != 0
+    expected = f"ValueError: bad data file: {data}/table1_dimensions.csv:9:1: column 'body': 'steel' again"
+    assert expected in r.stderr, r.stderr

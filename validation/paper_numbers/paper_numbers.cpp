@@ -37,6 +37,7 @@
 // force law, g acting throughout, free fall from rest.
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/io/atomic_file.hpp"
@@ -113,7 +114,7 @@ double percent_change(double value, double baseline) { return 100.0 * (value - b
 /// A signed number for a table cell: "+1.23", "-0.45", "0.00" (a minus sign in math mode).
 std::string signed_cell(double v, int decimals) {
   std::string s = fmt::format("{:+.{}f}", v, decimals);
-  if (std::stod(s) == 0.0) return fmt::format("{:.{}f}", 0.0, decimals);
+  if (parse_decimal(s) == 0.0) return fmt::format("{:.{}f}", 0.0, decimals);
   return s[0] == '-' ? "$-$" + s.substr(1) : s;
 }
 

@@ -77,7 +77,8 @@ class HongoPaper {
 
   double force(double x, double xdot) const noexcept { return K_ * std::sqrt(x) * (x + tau_ * xdot); }
   /// The same at u = x^{1/2}: K u (u^2 + tau xdot) [N] (RootPolynomialLaw)
-  double force_of_root(double u, double xdot) const noexcept { return K_ * u * (u * u + tau_ * xdot); }
+  template <class T>
+  auto force_of_root(const T& u, const T& xdot) const noexcept { return K_ * u * (u * u + tau_ * xdot); }
 
   /// tau = 2 zeta / omega_n [s], so that c_e = K tau x^{1/2} (eq. 5): the law's one
   /// coefficient besides K.

@@ -40,7 +40,8 @@ class KelvinVoigt {
 
   double force(double x, double xdot) const noexcept { return k_ * x + c_ * xdot; }
   /// The same at u = x^{1/2}: k u^2 + c xdot [N] (RootPolynomialLaw)
-  double force_of_root(double u, double xdot) const noexcept { return k_ * u * u + c_ * xdot; }
+  template <class T>
+  auto force_of_root(const T& u, const T& xdot) const noexcept { return k_ * u * u + c_ * xdot; }
 
   std::vector<NamedValue> coefficients() const {
     return {{"k_N_per_m", k_}, {"zeta", zeta_}, {"c_N_s_per_m", c_}};

@@ -47,7 +47,8 @@ class KuwabaraKono {
 
   double force(double x, double xdot) const noexcept { return K_ * std::sqrt(x) * (x + A_ * xdot); }
   /// The same at u = x^{1/2}: K u (u^2 + A xdot) [N] (RootPolynomialLaw)
-  double force_of_root(double u, double xdot) const noexcept { return K_ * u * (u * u + A_ * xdot); }
+  template <class T>
+  auto force_of_root(const T& u, const T& xdot) const noexcept { return K_ * u * (u * u + A_ * xdot); }
 
   std::vector<NamedValue> coefficients() const {
     return {{"viscous_time_constant_s", A_}, {"damping_number_beta", beta_}};

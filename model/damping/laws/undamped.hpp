@@ -20,7 +20,8 @@ class Undamped {
   Undamped(const ImpactConditions& c, const DampingSettings&) : K_(c.K) {}
   double force(double x, double /*xdot*/) const noexcept { return K_ * x * std::sqrt(x); }
   /// The same at u = x^{1/2}: K u^3 [N] (RootPolynomialLaw)
-  double force_of_root(double u, double /*xdot*/) const noexcept { return K_ * u * u * u; }
+  template <class T>
+  auto force_of_root(const T& u, const T& /*xdot*/) const noexcept { return K_ * u * u * u; }
   std::vector<NamedValue> coefficients() const { return {}; }
 
  private:

@@ -1,0 +1,219 @@
+#pragma once
+// Adaptive Taylor-series integrator for polynomial right-hand sides, with events
+// located on the series.
+//
+// Method (Jorba and Zou, Experimental Mathematics 14 (2005) 99-117): for an autonomous
+// y' = f(y) with f a polynomial, the Taylor coefficients y_k of the solution at the
+// step's start follow from y_0 = y by the recurrence y_{k+1} = f(y)_k / (k + 1), with f
+// evaluated on truncated power series (power_series.hpp): O(p^2) work per product in f
+// for order p, no right-hand-side evaluation in the usual sense. One step of size h
+// is then y(t + s) = sum_{k <= p} y_k s^k.
+//   Order from the tolerance: p = ceil(-ln(rtol) / 2) + 1 within [6, 30], so that the
+// step size below, in units of the series' radius of convergence, does not depend on
+// the tolerance (Jorba and Zou's optimal order: rtol^{1/p} ~ e^{-2}).
+//   Step from the coefficients' decay: with ||.|| the weighted RMS norm of
+// dormand_prince.hpp (scales atol + rtol |y|, at the step's start), the last two terms
+// of the series are held to the tolerance, h = min over j in {p-1, p} of
+// ||y_j||^{-1/j} (lower orders if both vanish): the first neglected term is then about h/rho times the last (rho the
+// radius of convergence), so the local error is a fixed fraction of the tolerance and
+// the global error proportional to it. No step is ever rejected.
+//
+// Events: after each step, a g_i that went from > 0 to <= 0 is located by Illinois
+// regula falsi on the series itself (the dense output is the method's own solution, to
+// its order; no evaluation), the state there is the series' value, and the events
+// located there are fired (integrators/event_landing.hpp). The step is cut at the
+// event: the observer sees the event point as a step end. After `continue`, the rest of
+// the step is read from the same series (no new coefficients); after `restart` the
+// method restarts there; `stop` ends the integration there.
+//
+// Only for systems that offer the polynomial form of their right-hand side,
+// `polynomial_rhs(y)` over any ring scalar type returning a std::tuple of the
+// components of y' (PolynomialOdeSystem below), e.g. the regularised contact
+// (model/regularized_contact.hpp) of a law declaring force_of_root.
+//
+// Work reported: one right-hand-side evaluation per Taylor coefficient of the state
+// (p per step), the closest equivalent of the other integrators' count.
+// No allocation: all state is fixed-size on the stack.
+#include "hertzdash/integrators/dormand_prince.hpp"  // weighted_rms scales
+#include "hertzdash/integrators/event_landing.hpp"
+#include "hertzdash/integrators/power_series.hpp"
+#include "hertzdash/ode/ode_system.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+
+namespace hertzdash {
+
+struct TaylorOptions {
+  double rtol = 1e-8;        ///< relative tolerance, > 0
+  double atol = 1e-12;       ///< absolute tolerance (state units), > 0
+  long max_steps = 1000000;  ///< steps before giving up
+};
+
+/// A system whose right-hand side is an autonomous polynomial, offered over any ring
+/// scalar type: polynomial_rhs(y) -> std::tuple of dimension components of y'.
+template <class S>
+concept PolynomialOdeSystem = OdeSystem<S> && (S::dimension > 0) &&
+                              requires(const S& s, const std::array<SeriesVariable, S::dimension>& y) {
+                                { std::tuple_size<decltype(s.polynomial_rhs(y))>::value } -> std::convertible_to<std::size_t>;
+                                requires std::tuple_size_v<decltype(s.polynomial_rhs(y))> == S::dimension;
+                              };
+
+/// The Taylor order the integrator uses at relative tolerance rtol.
+inline int taylor_order(double rtol) {
+  return std::clamp(static_cast<int>(std::ceil(-0.5 * std::log(rtol))) + 1, 6, series_capacity - 2);
+}
+
+namespace detail {
+
+template <PolynomialOdeSystem S, class Observer>
+class TaylorRun {
+  using State = typename S::State;
+  using Events = typename S::Events;
+  static constexpr int n = S::dimension;
+  using Leaves = std::array<SeriesVariable, n>;
+  using Rhs = decltype(std::declval<const S&>().polynomial_rhs(std::declval<const Leaves&>()));
+
+ public:
+  TaylorRun(S& sys, State& y, double t0, double t_end, const TaylorOptions& opt, Observer& observer)
+      : sys_(sys), y_(y), t_(t0), t_end_(t_end), opt_(opt), observer_(observer), order_(taylor_order(opt.rtol)),
+        rhs_(sys.polynomial_rhs(leaves())) {}
+  TaylorRun(const TaylorRun&) = delete;  // rhs_ reads coefficients_ through pointers
+  TaylorRun& operator=(const TaylorRun&) = delete;
+
+  IntegrationStats run() {
+    sys_.events(t_, y_, g_);
+    observer_.on_step(t_, y_);
+    for (long steps = 0; t_ < t_end_; ++steps) {
+      if (steps >= opt_.max_steps) throw std::runtime_error("integrate_taylor: too many steps");
+      generate_coefficients();
+      const double h = std::min(step_size(), t_end_ - t_);
+      if (!(h > 0)) throw std::runtime_error("integrate_taylor: step size " + std::to_string(h));
+      if (finish_step(h)) return stats_;
+    }
+    stats_.t_final = t_;
+    return stats_;
+  }
+
+ private:
+  Leaves leaves() const {
+    Leaves l;
+    for (int i = 0; i < n; ++i) l[i] = SeriesVariable{coefficients_[i].data()};
+    return l;
+  }
+
+  /// The Taylor coefficients at (t_, y_), orders 0..order_.
+  void generate_coefficients() {
+    for (int i = 0; i < n; ++i) coefficients_[i][0] = y_[i];
+    for (int k = 0; k < order_; ++k) {
+      const double inverse = 1.0 / (k + 1);
+      [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ((std::get<I>(rhs_).update(k), coefficients_[I][k + 1] = std::get<I>(rhs_)[k] * inverse), ...);
+      }(std::make_index_sequence<n>{});
+    }
+    stats_.rhs_evaluations += order_;
+  }
+
+  /// h = min over j in {p-1, p} of ||y_j||^{-1/j} (weighted RMS norm, scales at y_); if
+  /// both vanish (a series with gaps, such as u ~ v0 tau + O(tau^6) at onset without
+  /// gravity), the highest nonzero coefficient below them sets h the same way.
+  double step_size() const {
+    double h = std::numeric_limits<double>::infinity();
+    for (int j = order_; j >= 1; --j) {
+      double sum = 0;
+      for (int i = 0; i < n; ++i) {
+        const double r = coefficients_[i][j] / (opt_.atol + opt_.rtol * std::abs(y_[i]));
+        sum += r * r;
+      }
+      if (sum > 0) h = std::min(h, std::pow(std::sqrt(sum / n), -1.0 / j));
+      if (j <= order_ - 1 && std::isfinite(h)) break;
+    }
+    if (!std::isfinite(h)) throw std::runtime_error("integrate_taylor: no step size (the series is constant)");
+    return h;
+  }
+
+  /// The series' value s after the step's start (Horner).
+  State at(double s) const {
+    State y = y_;
+    for (int i = 0; i < n; ++i) {
+      double sum = coefficients_[i][order_];
+      for (int k = order_ - 1; k >= 0; --k) sum = sum * s + coefficients_[i][k];
+      y[i] = sum;
+    }
+    return y;
+  }
+
+  /// Advance over the step of size h from (t_, y_), cut at every event located in it;
+  /// true if an event stopped the integration.
+  bool finish_step(double h) {
+    const double t_start = t_;
+    const bool to_end = h == t_end_ - t_start;
+    double a = 0;  // the part of the step already done
+    for (;;) {
+      const State y_end = at(h);
+      Events g_end;
+      sys_.events(t_start + h, y_end, g_end);
+      if (!any_event_crossed(g_, g_end)) {
+        move_to(to_end ? t_end_ : t_start + h, y_end);
+        g_ = g_end;
+        return false;
+      }
+      // Locate on the rest of the step, [a, h] after t_start.
+      struct Rest {
+        const TaylorRun* run;
+        double a, length;
+        State at(double theta) const { return run->at(a + theta * length); }
+      } const rest{this, a, h - a};
+      const auto crossings = locate_event_crossings(sys_, t_start + a, h - a, g_, g_end, rest);
+      const double s = a + crossings.earliest * (h - a);
+      const Events g_before = g_;
+      move_to(t_start + s, at(s));
+      const EventAction action =
+          fire_landed_events(sys_, t_, y_, g_, g_before, t_start + a, h - a, crossings, stats_, observer_);
+      if (action == EventAction::stop) return true;
+      if (action == EventAction::restart) {
+        rhs_ = sys_.polynomial_rhs(leaves());  // the system may have changed form
+        return false;
+      }
+      if (s >= h) return false;
+      a = s;
+    }
+  }
+
+  void move_to(double t, const State& y) {
+    t_ = t;
+    y_ = y;
+    ++stats_.steps;
+    observer_.on_step(t_, y_);
+  }
+
+  S& sys_;
+  State& y_;
+  double t_, t_end_;
+  const TaylorOptions& opt_;
+  Observer& observer_;
+  int order_;
+  std::array<std::array<double, series_capacity + 1>, n> coefficients_{};
+  Rhs rhs_;
+  IntegrationStats stats_;
+  Events g_;  ///< event functions at (t_, y_)
+};
+
+}  // namespace detail
+
+/// Integrate `sys` from (t0, y) towards t_end with the Taylor-series method; y is updated in place.
+template <PolynomialOdeSystem S, IntegrationObserver<typename S::State> Observer>
+IntegrationStats integrate_taylor(S& sys, typename S::State& y, double t0, double t_end, const TaylorOptions& opt,
+                                  Observer& observer) {
+  if (!(opt.rtol > 0)) throw std::invalid_argument("integrate_taylor: rtol must be > 0");
+  if (!(opt.atol > 0)) throw std::invalid_argument("integrate_taylor: atol must be > 0");
+  return detail::TaylorRun<S, Observer>(sys, y, t0, t_end, opt, observer).run();
+}
+
+}  // namespace hertzdash
