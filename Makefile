@@ -3,8 +3,14 @@
 BUILD   ?= build
 JOBS    ?= $(shell nproc)
 FIGURES ?= paper/figures
+# Instrumented builds, each in a folder of its own (docs/reliability.md).
+SANITIZE_BUILD ?= build-sanitize
+FUZZ_BUILD     ?= build-fuzz
+FUZZ_SECONDS   ?= 60
+# Extra CMake arguments for every configuration, e.g. CMAKE_ARGS=-DCMAKE_CXX_COMPILER_LAUNCHER=ccache
+CMAKE_ARGS     ?=
 
-.PHONY: all deps configure build test figures convergence uncertainty paper bench clean
+.PHONY: all deps configure build test figures convergence uncertainty paper bench sanitize fuzz clean
 
 all: build
 
@@ -13,7 +19,7 @@ deps:
 	@tools/install-deps.sh debian-packages.txt debian-packages-paper.txt
 
 $(BUILD)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
 
 configure: deps $(BUILD)/CMakeCache.txt
 
@@ -59,5 +65,27 @@ bench: build
 	  --performance-page README.md --figures-ms $$ms
 	validation/draw_figure.sh bench/work_precision_peers/work_precision_peers.gp $(FIGURES)
 
+# The whole ctest suite under AddressSanitizer + UndefinedBehaviorSanitizer, every report fatal
+# (cmake/sanitizers.cmake). Leaks are checked (LSan) but for the Python interpreter's and Open MPI's
+# (tests/CMakeLists.txt, tests/lsan-suppressions.txt). -O1 with assertions on: -O3 took several
+# minutes and 2.5 GB for one template-heavy file under ASan.
+sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O1 -DHERTZDASH_SANITIZE=ON \
+	  $(CMAKE_ARGS)
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && \
+	  ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:check_initialization_order=1:strict_init_order=1 \
+	  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan-suppressions.txt \
+	  ctest --output-on-failure -j $(JOBS)
+
+# libFuzzer (clang) on the CSV table, measured-trace and case-file readers, FUZZ_SECONDS each
+# (fuzz/run.sh: seed corpora from data/, fuzz/seeds/ and the docs' case files).
+fuzz: deps
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DHERTZDASH_FUZZ=ON \
+	  -DHERTZDASH_WITH_MPI=OFF $(CMAKE_ARGS)
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target csv_table_fuzzer measured_trace_fuzzer sweep_case_fuzzer
+	fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)

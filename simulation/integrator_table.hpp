@@ -272,7 +272,7 @@ static_assert([] {
 template <class F>
 void with_integrator_row(IntegratorKind kind, F&& f) {
   [&]<class... Row>(std::type_identity<std::tuple<Row...>>) {
-    ((kind == Row::traits.kind && (f(std::type_identity<Row>{}), true)) || ...);
+    static_cast<void>(((kind == Row::traits.kind && (f(std::type_identity<Row>{}), true)) || ...));
   }(std::type_identity<IntegratorTable>{});
 }
 
