@@ -94,21 +94,21 @@ std::string deformation_warning(const SimulateRun& run) {
 }
 
 std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run) {
-  const std::pair<RunDiagnostic, bool> all[] = {
-      {{"note", "integrator_fallback", fallback_note(run.solver.integrator, run.summary.integrator_used, run.fallback_reason)},
-       true},
-      {{"note", "stability_limit", stability_note(run)}, true},
-      {{"warning", "under_resolved", resolution_warning(run)}, true},
-      {{"warning", "yield_onset", yield_warning(run)}, true},
-      {{"warning", "large_deformation", deformation_warning(run)}, true},
-      {{"warning", "not_separated",
-        "the rod did not separate from the ball within the simulated time (it came to rest on it); e_effective, "
-        "rebound velocity and contact time are not defined"},
-       !run.summary.separated},
+  const std::string not_separated =
+      run.summary.separated ? std::string()
+                            : "the rod did not separate from the ball within the simulated time (it came to rest on "
+                              "it); e_effective, rebound velocity and contact time are not defined";
+  const RunDiagnostic all[] = {
+      {"note", "integrator_fallback", fallback_note(run.solver.integrator, run.summary.integrator_used, run.fallback_reason)},
+      {"note", "stability_limit", stability_note(run)},
+      {"warning", "under_resolved", resolution_warning(run)},
+      {"warning", "yield_onset", yield_warning(run)},
+      {"warning", "large_deformation", deformation_warning(run)},
+      {"warning", "not_separated", not_separated},
   };
   std::vector<RunDiagnostic> out;
-  for (const auto& [d, applies] : all)
-    if (applies && !d.message.empty()) out.push_back(d);
+  for (const RunDiagnostic& d : all)
+    if (!d.message.empty()) out.push_back(d);
   return out;
 }
 
@@ -123,8 +123,9 @@ nlohmann::ordered_json to_json(const SimulateRun& run) {
   const double yield_onset = hertz_yield_onset_pressure_Pa(run.setup.ball_yield_stress_Pa, run.setup.ball.nu);
   j["yield_onset_pressure_Pa"] = std::isfinite(yield_onset) ? nlohmann::ordered_json(yield_onset) : nlohmann::ordered_json(nullptr);
   j["exceeds_yield_onset"] = s.peak_contact_pressure_Pa > yield_onset;
-  j["hertz_profile_error"] = hertz_profile_error(s.max_deformation_m, run.setup.ball_radius_m);
-  j["exceeds_small_deformation"] = hertz_profile_error(s.max_deformation_m, run.setup.ball_radius_m) > hertz_profile_error_limit;
+  const double profile_error = hertz_profile_error(s.max_deformation_m, run.setup.ball_radius_m);
+  j["hertz_profile_error"] = profile_error;
+  j["exceeds_small_deformation"] = profile_error > hertz_profile_error_limit;
   j["contact_time_s"] = s.contact_time_s;
   j["impact_velocity_mps"] = s.impact_velocity_mps;
   j["rebound_velocity_mps"] = s.rebound_velocity_mps;
