@@ -2,6 +2,7 @@
 // followed, FIFOs and devices written through, errno in the messages, no temporaries left
 // behind by a failure or by SIGTERM (io/remove_on_signal.hpp).
 #include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/output_directories.hpp"
 #include "hertzdash/io/remove_on_signal.hpp"
 #include "cli_runner.hpp"
 
@@ -233,4 +234,39 @@ TEST_CASE("atomic file: an unregistered file survives SIGTERM", "[atomic_file]")
   ::waitpid(child, &status, 0);
   CHECK(WIFSIGNALED(status));
   CHECK(fs::exists(kept));
+}
+
+TEST_CASE("output directories: the missing ones are found outermost first and created as mkdir -p does",
+          "[atomic_file]") {
+  const Scratch s;
+  const fs::path file = s.path / "a" / "b" / "out.csv";
+  CHECK(hertzdash::missing_parent_directories(file) == std::vector<fs::path>{s.path / "a", s.path / "a" / "b"});
+  CHECK(s.names().empty());  // looking creates nothing
+  hertzdash::create_parent_directories(file);
+  CHECK(fs::is_directory(s.path / "a" / "b"));
+  CHECK(hertzdash::missing_parent_directories(file).empty());
+  CHECK(hertzdash::missing_parent_directories("relative.csv").empty());  // the working directory exists
+}
+
+TEST_CASE("output directories: a file or a link loop in the way is an error with the system's reason",
+          "[atomic_file]") {
+  // std::filesystem::create_directories threw filesystem_error for these ("File exists",
+  // "Too many levels of symbolic links") with a text of its own; the reason is now errno's.
+  const Scratch s;
+  std::ofstream(s.path / "file") << "x";
+  fs::create_symlink("loop", s.path / "loop");
+  auto message = [](const fs::path& p) {
+    try {
+      hertzdash::create_parent_directories(p);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(message(s.path / "file" / "x" / "out.csv") ==
+        "cannot create directory " + (s.path / "file" / "x").string() + ": Not a directory");
+  CHECK(message(s.path / "file" / "out.csv") == "cannot write into " + (s.path / "file").string() + ": it is not a directory");
+  CHECK(message(s.path / "loop" / "x" / "out.csv") ==
+        "cannot create directory " + (s.path / "loop" / "x").string() + ": Too many levels of symbolic links");
+  CHECK(s.names() == std::vector<std::string>{"file", "loop"});
 }
