@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <climits>
 #include <csignal>
 #include <fcntl.h>
 #include <filesystem>
@@ -269,4 +270,42 @@ TEST_CASE("output directories: a file or a link loop in the way is an error with
   CHECK(message(s.path / "loop" / "x" / "out.csv") ==
         "cannot create directory " + (s.path / "loop" / "x").string() + ": Too many levels of symbolic links");
   CHECK(s.names() == std::vector<std::string>{"file", "loop"});
+}
+
+TEST_CASE("atomic file: a name of NAME_MAX bytes is written; its temporary's name is cut short", "[atomic_file]") {
+  // NAME.tmp.PID.N is up to 20 bytes longer than NAME: with NAME at NAME_MAX (255) bytes the
+  // temporary's name was too long (ENAMETOOLONG) and the write failed. Also a UTF-8 name whose
+  // cut falls inside a character (2-byte 'é' repeated: 254 bytes, then 'x').
+  const Scratch s;
+  for (const std::string& name : {std::string(NAME_MAX, 'a'), [] {
+                                    std::string n;
+                                    while (n.size() < NAME_MAX - 1) n += "\xC3\xA9";
+                                    return n + "x";
+                                  }()}) {
+    REQUIRE(name.size() == NAME_MAX);
+    const fs::path p = s.path / name;
+    CHECK(message_of(p, "x\n").empty());
+    CHECK(slurp(p) == "x\n");
+    CHECK(s.names() == std::vector<std::string>{name});
+    fs::remove(p);
+  }
+}
+
+TEST_CASE("atomic file: a replaced file keeps its permissions", "[atomic_file]") {
+  // The temporary was created 0666 less the umask and renamed over the file: a private 0600
+  // file became 0644, an executable 0755 lost its x bits. A new file still gets 0666 & ~umask.
+  const Scratch s;
+  const fs::path p = s.path / "out.csv";
+  for (const mode_t mode : {mode_t{0600}, mode_t{0755}, mode_t{0640}}) {
+    std::ofstream(p) << "previous\n";
+    REQUIRE(::chmod(p.c_str(), mode) == 0);
+    CHECK(message_of(p, "new\n").empty());
+    CHECK((stat_of(p).st_mode & 07777) == mode);
+    CHECK(slurp(p) == "new\n");
+  }
+  const mode_t umask_now = ::umask(022);
+  ::umask(umask_now);
+  const fs::path fresh = s.path / "fresh.csv";
+  CHECK(message_of(fresh, "x\n").empty());
+  CHECK((stat_of(fresh).st_mode & 07777) == (0666 & ~umask_now));
 }
