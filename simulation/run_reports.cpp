@@ -372,6 +372,7 @@ nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper) 
   nlohmann::ordered_json failures = nlohmann::ordered_json::array();
   for (const auto& [law, why] : run.failures) failures.push_back({{"law", law}, {"error", why}});
   j["failures"] = failures;
+  j["warnings"] = to_json(fit_diagnostics(run, paper));
   j["git_revision"] = git_revision();
   return j;
 }
@@ -401,26 +402,34 @@ void write_fit_curves(const TraceFit& f, const MeasuredTrace& trace, const std::
   csv.save(path);
 }
 
-std::vector<std::string> fit_warnings(const FitRun& run) {
-  std::vector<std::string> w;
-  if (run.trace.synthetic)
-    w.push_back("the trace says 'synthetic: true': it is not a measurement");
+std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParameters& paper) {
+  std::vector<RunDiagnostic> w;
+  auto warn = [&w](const char* code, std::string message) { w.push_back({"warning", code, std::move(message), {}}); };
+  if (run.trace.synthetic) warn("synthetic_trace", "the trace says 'synthetic: true': it is not a measurement");
   for (const TraceFit& f : run.fits) {
     const std::string law = run.fits.size() > 1 ? " (" + f.law + ")" : "";
     if (!f.converged)
-      w.push_back(fmt::format("the fit{} did not converge ({}): the estimates are where it stopped", law, f.stop_reason));
+      warn("not_converged",
+           fmt::format("the fit{} did not converge ({}): the estimates are where it stopped", law, f.stop_reason));
     if (!f.identifiable)
-      w.push_back(fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (limit {:g}), "
-                              "a correlation beyond {:g} or an infinite standard error; fit fewer parameters or add a "
-                              "channel",
-                              law, f.condition_number, identifiable_condition_limit, identifiable_correlation_limit));
+      warn("not_identifiable",
+           fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (limit {:g}), a "
+                       "correlation beyond {:g} or an infinite standard error; fit fewer parameters or add a channel",
+                       law, f.condition_number, identifiable_condition_limit, identifiable_correlation_limit));
     for (const FittedParameter& p : f.parameters)
       if (p.at_bound)
-        w.push_back(fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law, p.estimate));
+        warn("at_bound", fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law,
+                                     p.estimate));
     if (f.reduced_chi_square > 2)
-      w.push_back(fmt::format("the model{} does not explain the trace to its noise: reduced chi-square {:.3g} (about 1 "
-                              "if it did); the standard errors are scaled by it",
-                              law, f.reduced_chi_square));
+      warn("poor_fit", fmt::format("the model{} does not explain the trace to its noise: reduced chi-square {:.3g} "
+                                   "(about 1 if it did); the standard errors are scaled by it",
+                                   law, f.reduced_chi_square));
+    DropTestSetup s = resolve_setup(f.fitted_options, paper);
+    s.impact_velocity_mps = approach_speed(s);  // the fit's model starts at contact onset
+    for (RunDiagnostic& d : impact_diagnostic_list(f.model_summary, s, f.model_solver, {})) {
+      d.message = "the fitted model" + law + ": " + d.message;
+      w.push_back(std::move(d));
+    }
   }
   return w;
 }

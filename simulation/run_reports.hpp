@@ -74,8 +74,8 @@ FitRun run_fit(const std::string& trace_path, const RunOptions& base, const Pape
 nlohmann::ordered_json to_json(const TraceFit& fit, const PaperParameters& paper);
 
 /// `fit --json`: "trace" (path, source, rod, height_m, synthetic, samples), "fits" (one law, or
-/// every law ranked by AIC, best first), "failures" (laws that could not be fitted),
-/// "schema_version", "git_revision".
+/// every law ranked by AIC, best first), "failures" (laws that could not be fitted), "warnings"
+/// (fit_diagnostics), "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
 
 /// `fit --curves`: the trace, the fitted model and the residual of every channel of `fit`, one
@@ -83,9 +83,11 @@ nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
 /// under a header naming the trace and the estimates.
 void write_fit_curves(const TraceFit& fit, const MeasuredTrace& trace, const std::filesystem::path& path);
 
-/// The warnings every front end shows for a fit (not identifiable, a parameter at its bound, a
-/// model that does not explain the trace to its noise, a synthetic trace), one per line; empty if none.
-std::vector<std::string> fit_warnings(const FitRun& run);
+/// The warnings every front end shows for a fit: a synthetic trace (synthetic_trace), and per
+/// fit one that did not converge (not_converged), is not identifiable (not_identifiable), has a
+/// parameter at its bound (at_bound), does not explain the trace to its noise (poor_fit), and
+/// the diagnostics of the fitted model's impact (simulation/diagnostic_codes.hpp).
+std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParameters& paper);
 
 /// A law's effective restitution in the rigid-wall contact phase (no gravity), or, given a
 /// target, the input e that makes it the target (simulation/calibrate_restitution.hpp).
