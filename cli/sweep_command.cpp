@@ -140,9 +140,9 @@ int run_sweep_command(const SweepCommandOptions& opt) {
                            summary ? " and " + summary_out.string() : "");
   if (summary) std::cout << sweep_summary_text(c, all);
   if (const std::string counts = diagnostic_counts_text(all); !counts.empty())
-    std::cerr << fmt::format("hertzdash: warning: {} of {} (the warnings column says which; docs/json-output.md "
-                             "explains each code)\n",
-                             counts, c.size());
+    std::cerr << fmt::format("hertzdash: warning: runs with warnings, per code (of {}): {} (the warnings column says "
+                             "which; docs/json-output.md explains each code)\n",
+                             c.size(), counts);
   if (failed == 0) return 0;
   const auto first = std::find_if(all.errors.begin(), all.errors.end(), [](const std::string& e) { return !e.empty(); });
   std::cerr << fmt::format("hertzdash: {} of {} runs failed (the error column says why); run {}: {}\n", failed, c.size(),

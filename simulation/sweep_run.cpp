@@ -165,7 +165,7 @@ std::string diagnostic_counts_text(const SweepResults& results) {
   for (std::size_t k = 0; k < counts.size(); ++k) {
     if (counts[k] == 0) continue;
     if (!out.empty()) out += ", ";
-    out += fmt::format("{} run{} {}", counts[k], counts[k] == 1 ? "" : "s", diagnostic_table[k].name);
+    out += fmt::format("{} {}", diagnostic_table[k].name, counts[k]);
   }
   return out;
 }
@@ -203,8 +203,8 @@ std::string sweep_summary_table(const SweepCase& c, const SweepResults& results)
                 "interpolate between order statistics, Hyndman & Fan type 7)",
                 case_parameters(c), columns);
   const std::string counts = diagnostic_counts_text(results);
-  csv.add_comment("warnings: " + (counts.empty() ? std::string("none") : counts) + " (of " +
-                  std::to_string(results.errors.size()) + " runs; the rows' warnings column says which)");
+  csv.add_comment(fmt::format("warnings, runs per code (of {}): {} (the rows' warnings column says which)",
+                              results.errors.size(), counts.empty() ? "none" : counts));
   for (const SummaryRow& s : summarise(c, results)) {
     std::vector<CsvWriter::Cell> row(s.group.begin(), s.group.end());
     row.emplace_back(s.output);

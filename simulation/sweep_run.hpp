@@ -29,7 +29,7 @@ struct SweepResults {
 /// Per code of diagnostic_table, the runs whose result carries it.
 std::array<std::size_t, diagnostic_table.size()> diagnostic_counts(const SweepResults& results);
 
-/// "N runs <code>, ..." over the codes some run carries; empty if none.
+/// "<code> N, ..." over the codes some run carries; empty if none.
 std::string diagnostic_counts_text(const SweepResults& results);
 
 /// Run the runs `runs` of the case (indices into [0, c.size())), in the order given, over the
@@ -48,7 +48,8 @@ std::string sweep_table(const SweepCase& c, const SweepResults& results, const s
 /// Per output (and per value of every text or true/false grid option, e.g. per damping law):
 /// runs, failed, mean, sd, min, q05, q25, median, q75, q95, max of the runs that gave a value.
 /// Quantiles interpolate linearly between order statistics (Hyndman & Fan type 7, as NumPy).
-/// A comment line above the columns counts the runs per diagnostic code ("warnings: ...").
+/// A comment line above the columns counts the runs per diagnostic code ("warnings, runs per
+/// code (of N): under_resolved 2, ...").
 std::string sweep_summary_table(const SweepCase& c, const SweepResults& results);
 
 /// The summary as aligned text for a terminal.
