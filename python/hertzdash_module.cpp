@@ -400,13 +400,17 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   py::array_t<bool> separated(static_cast<py::ssize_t>(n));
   for (std::size_t i = 0; i < n; ++i) separated.mutable_at(static_cast<py::ssize_t>(i)) = results[i].separated;
   out["separated"] = separated;
-  // Each point's codes (space-separated, as the sweep's warnings column), and one warning per code.
+  // Each point's codes (the "code"s of simulate()'s "warnings"), and one warning per code.
   py::list codes;
   DiagnosticSet any;
   for (const ImpactSummary& r : results) {
-    codes.append(diagnostic_names(r.diagnostics));
+    py::list point;
     for (const DiagnosticInfo& d : diagnostic_table)
-      if (r.diagnostics.has(d.code)) any.add(d.code);
+      if (r.diagnostics.has(d.code)) {
+        point.append(std::string(d.name));
+        any.add(d.code);
+      }
+    codes.append(point);
   }
   out["warnings"] = codes;
   for (const DiagnosticInfo& d : diagnostic_table) {
