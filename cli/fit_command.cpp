@@ -105,7 +105,7 @@ Command add_fit_command(CLI::App& app) {
             const PaperParameters paper = load_paper_parameters();
             const FitRun r = run_fit(opt->trace_path, opt->run, paper, settings, opt->compare_laws);
             if (r.fits.empty()) throw std::runtime_error("no damping law could be fitted to the trace");
-            for (const std::string& w : fit_warnings(r)) std::cerr << "hertzdash: warning: " << w << "\n";
+            report_diagnostics(fit_diagnostics(r, paper));
             create_output_directories(opt->curves_path, opt->mkdir);
             if (!opt->curves_path.empty()) write_fit_curves(r.fits.front(), r.trace, opt->curves_path);
             if (opt->json) std::cout << to_json(r, paper).dump(2) << "\n";

@@ -116,20 +116,20 @@ Command add_simulate_command(CLI::App& app) {
             check_trace_options(*sub, *opt);
             prepare_output_file("--trace", opt->trace_path, opt->mkdir);
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
+            std::string trace_note;
             if (opt->trace_format == "measured") {
               const MeasuredTrace measurement = virtual_measurement(r, opt->run.rod, opt->chain);
               create_output_directories(opt->trace_path, opt->mkdir);
               write_measured_trace(opt->trace_path, measurement,
                                    "hertzdash simulate: a SYNTHETIC virtual measurement of the model (not a measurement)",
                                    virtual_measurement_parameters(r, opt->chain));
-              if (const std::string n = virtual_measurement_note(r, opt->chain); !n.empty())
-                std::cerr << "hertzdash: note: " << n << "\n";
+              trace_note = virtual_measurement_note(r, opt->chain);
             } else if (!opt->trace_path.empty()) {
               create_output_directories(opt->trace_path, opt->mkdir);
               write_trace(r, opt->trace_path);
             }
-            for (const RunDiagnostic& d : run_diagnostics(r)) std::cerr << "hertzdash: " << d.kind << ": " << d.message << "\n";
-            if (opt->json) std::cout << to_json(r).dump(2) << "\n";
+            report_diagnostics(run_diagnostics(r, trace_note));
+            if (opt->json) std::cout << to_json(r, trace_note).dump(2) << "\n";
             else print_text(r);
             return 0;
           }};
