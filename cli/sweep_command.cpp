@@ -131,7 +131,9 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   const std::string timing =
       fmt::format("timing: {:.3f} s on {} process{} x {} thread{}, {:.3g} runs/s", seconds, group.size(),
                   group.size() > 1 ? "es" : "", threads, threads > 1 ? "s" : "", static_cast<double>(c.size()) / seconds);
+  create_output_directories(out.string(), opt.mkdir);
   write_file_atomically(out, sweep_table(c, all, timing));
+  if (summary) create_output_directories(summary_out.string(), opt.mkdir);
   if (summary) write_file_atomically(summary_out, sweep_summary_table(c, all));
 
   std::size_t failed = 0;
@@ -157,9 +159,9 @@ Command add_sweep_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "sweep", "Run a case file's grid or sample of simulate runs (docs/sweep.md); under mpirun on every process");
   sub->add_option("case", opt->case_path, "The case file (TOML)")->required();
-  sub->add_option("--out", opt->out,
+  add_output_file_option(*sub, "--out", opt->out,
                   "The CSV of one row per run (default: the case's [output] file, else the case file's name with .csv)");
-  sub->add_option("--summary", opt->summary,
+  add_output_file_option(*sub, "--summary", opt->summary,
                   "Also write the summary of every output here (default with [output] summary = true: "
                   "the CSV's name with .summary.csv)");
   add_integer_option(*sub, "--threads", opt->threads,

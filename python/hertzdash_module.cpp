@@ -387,7 +387,6 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   {
     py::gil_scoped_release release;
     SweepOptions sweep{.threads = threads, .label = "hertzdash.simulate_many", .progress = false};
-    sweep.chunk = std::max<std::size_t>(1, n / (4 * sweep_threads(sweep)));  // every thread gets work
     parallel_sweep(
         n, solver, [&](ImpactSimulator& sim, std::size_t i) { results[i] = sim.run(setups[i], base.damping); }, sweep);
   }

@@ -92,7 +92,11 @@ std::vector<RunOption> make_run_options() {
       {"no-event-location", &R::no_event_location,
        "Handle events at the end of the step that crosses them (" + fixed + "; convergence studies)", G::solver},
       {"rtol", &R::rtol, "Relative tolerance in (0, 1) (" + adaptive + "; default: 1e-8)", G::solver},
-      {"atol", &R::atol, "Absolute tolerance [m, m/s] in (0, 1) (" + adaptive + "; default: 1e-12)", G::solver},
+      {"atol", &R::atol,
+       "Absolute tolerance relative to the impact's scales, in (0, 1): X for lengths, v0 for speeds, t_H for times "
+       "(X, t_H the undamped Hertz maximum compression and contact time at the impact speed v0; " + adaptive +
+           "; default: 1e-12)",
+       G::solver},
       {"cvode-method", &R::cvode_method, "CVODE method: adams or bdf (" + cvode + "; default: adams)", G::solver},
       {"max-step", &R::max_step_s, "Largest step [s] >= 0; 0 = no limit (" + timed + "; default: 0)", G::solver, "s"},
   };

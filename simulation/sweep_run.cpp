@@ -132,8 +132,6 @@ SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs,
   r.diagnostics.assign(runs.size(), DiagnosticSet{});
   std::vector<const SweepOutput*> outputs;
   for (const std::string& name : c.outputs) outputs.push_back(find_sweep_output(name));
-  SweepOptions o = options;
-  o.chunk = std::clamp<std::size_t>(runs.size() / (8 * sweep_threads(options)), 1, options.chunk);  // every thread gets work
   parallel_for_chunks(
       runs.size(), [] { return SimulatorCache{}; },
       [&](SimulatorCache& simulators, std::size_t j) {
@@ -148,7 +146,7 @@ SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs,
           r.errors[j] = e.what();
         }
       },
-      o);
+      options);
   return r;
 }
 

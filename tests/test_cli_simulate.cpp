@@ -111,8 +111,8 @@ TEST_CASE("CLI simulate --trace: contact phase under a provenance header", "[cli
   }
   bool has_revision = false, has_mass = false;
   for (const auto& c : t.comments()) {
-    has_revision |= c.rfind("git_revision: ", 0) == 0;
-    has_mass |= c == "mass_kg = 0.778";
+    has_revision |= c.text.rfind("git_revision: ", 0) == 0;
+    has_mass |= c.text == "mass_kg = 0.778";
   }
   CHECK(has_revision);
   CHECK(has_mass);
