@@ -521,7 +521,7 @@ PYBIND11_MODULE(hertzdash, m) {
             .c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },
         "laws() -> list of dict\n\nThe registered damping laws: name, citation, formula, coefficients, validity, "
-        "force_continuous_at_onset (`hertzdash models --json`).");
+        "force_continuous_at_onset, dissipative (`hertzdash models --json`).");
   m.def("paper_parameters", &py_paper_parameters,
         "paper_parameters() -> dict\n\nThe paper's Tables 1-3 and the stated assumptions as the library reads them "
         "(data/*.csv): rods (name, diameter_m, length_m, mass_kg, restitution, zeta_printed, natural_frequency_hz, "
