@@ -521,7 +521,7 @@ PYBIND11_MODULE(hertzdash, m) {
             .c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },
         "laws() -> list of dict\n\nThe registered damping laws: name, citation, formula, coefficients, validity, "
-        "force_continuous_at_onset (`hertzdash models --json`).");
+        "force_continuous_at_onset, dissipative (`hertzdash models --json`).");
   m.def("paper_parameters", &py_paper_parameters,
         "paper_parameters() -> dict\n\nThe paper's Tables 1-3 and the stated assumptions as the library reads them "
         "(data/*.csv): rods (name, diameter_m, length_m, mass_kg, restitution, zeta_printed, natural_frequency_hz, "
@@ -535,8 +535,9 @@ PYBIND11_MODULE(hertzdash, m) {
          "GIL released; threads=0: all cores). Numeric set-up options may be 1-D arrays of one common length "
          "(scalars and length-1 arrays broadcast); the solver options are one setting for all. Returns arrays "
          "e_effective, peak_force_N, max_deformation_m, contact_time_s, impact_velocity_mps, rebound_velocity_mps "
-         "and separated (bool), element i equal to simulate() of point i. A bad value raises ValueError naming "
-         "the option and the point.\n\n" +
+         "and separated (bool), element i equal to simulate() of point i, and warnings (a list per point of the "
+         "codes of simulate()'s warnings; one UserWarning per code says how many points carry it). A bad value "
+         "raises ValueError naming the option and the point; a result that contradicts the model, RuntimeError.\n\n" +
          options)
             .c_str());
 }

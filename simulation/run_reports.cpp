@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <type_traits>
 
 namespace hertzdash {
 
@@ -436,13 +437,16 @@ std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParamet
 
 nlohmann::ordered_json registered_laws_json() {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const LawInfo& l : registered_laws())
+  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
+    const LawInfo& l = Law::info;
     list.push_back({{"name", l.name},
                     {"citation", l.citation},
                     {"formula", l.formula},
                     {"coefficients", l.coefficients},
                     {"validity", l.validity},
-                    {"force_continuous_at_onset", l.force_continuous_at_onset}});
+                    {"force_continuous_at_onset", l.force_continuous_at_onset},
+                    {"dissipative", !ConservativeLaw<Law>}});
+  });
   return list;
 }
 
