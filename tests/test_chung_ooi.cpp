@@ -101,7 +101,7 @@ TEST_CASE("Chung & Ooi: the textbook numbers of tests 1 and 2 from the closed fo
 }
 
 TEST_CASE("Chung & Ooi: both tests through the simulator meet the closed forms to 1e-6", "[chung-ooi]") {
-  // CVODE keeps each step's local error below rtol |y| + atol, so after N steps the global
+  // CVODE keeps each step's local error below rtol |y| + atol_i, so after N steps the global
   // relative error is at most about N rtol (tests/test_undamped_hertz_closed_form.cpp); events
   // are located to near roundoff. At rtol 1e-10 with N ~ 100 steps that is ~1e-8; the issue asks
   // for 1e-6, and both bounds are checked. The paper's law at e = 1 has zeta = 0, so its force is
@@ -113,7 +113,7 @@ TEST_CASE("Chung & Ooi: both tests through the simulator meet the closed forms t
     const UndampedHertzImpact u = closed_form(s);
     SolverSettings solver;
     solver.rtol = 1e-10;
-    solver.atol = 1e-10 * std::min(u.max_deformation_m, *s.impact_velocity_mps);
+    solver.atol = 1e-10;  // of each component's scale, X = x_max and v0
     ImpactSimulator simulator(solver);
     const ImpactSummary r = simulator.run(s, "none");
     REQUIRE(r.separated);
