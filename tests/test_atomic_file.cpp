@@ -272,7 +272,7 @@ TEST_CASE("output directories: a file or a link loop in the way is an error with
   CHECK(s.names() == std::vector<std::string>{"file", "loop"});
 }
 
-TEST_CASE("atomic file: a name of NAME_MAX bytes is written; its temporary's name is cut short", "[atomic_file]") {
+TEST_CASE("atomic file: a name of NAME_MAX bytes is written, its temporary's name cut short", "[atomic_file]") {
   // NAME.tmp.PID.N is up to 20 bytes longer than NAME: with NAME at NAME_MAX (255) bytes the
   // temporary's name was too long (ENAMETOOLONG) and the write failed. Also a UTF-8 name whose
   // cut falls inside a character (2-byte 'é' repeated: 254 bytes, then 'x').
