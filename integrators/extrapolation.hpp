@@ -73,14 +73,16 @@ double extrapolation_step(const S& sys, double t, const typename S::State& y, co
   }
   evaluations += 16;
   // Aitken-Neville in place: after pass k, T[j] holds T_{j+1,k+1} (1-based indices).
-  State order6;
-  for (int k = 1; k < 4; ++k) {
+  auto pass = [&](int k) {
     for (int j = 3; j >= k; --j) {
       const double r = static_cast<double>(n[j]) / n[j - k];
       T[j] += (T[j] - T[j - 1]) / (r * r - 1);
     }
-    if (k == 2) order6 = T[3];
-  }
+  };
+  pass(1);
+  pass(2);
+  const State order6 = T[3];
+  pass(3);
   y1 = T[3];
   return weighted_rms(State(T[3] - order6), y, y1, rtol, atol);
 }

@@ -171,7 +171,7 @@ void CsvTable::require_unique(const std::string& column) const {
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     const auto [it, inserted] = first.emplace(rows_[r][c], r);
     if (!inserted)
-      throw DataError(where(r, column) + ": '" + rows_[r][c] + "' again (first on line " +
+      throw DataError(field_location(r, column) + ": '" + rows_[r][c] + "' again (first on line " +
                       std::to_string(line_numbers_[it->second]) + "); each " + column + " appears once");
   }
 }
@@ -184,7 +184,7 @@ std::size_t CsvTable::column_index(const std::string& name) const {
 
 std::string CsvTable::row_location(std::size_t row) const { return path_ + ":" + std::to_string(line_numbers_.at(row)); }
 
-std::string CsvTable::where(std::size_t row, const std::string& column) const {
+std::string CsvTable::field_location(std::size_t row, const std::string& column) const {
   return row_location(row) + ":" + std::to_string(field_columns_.at(row).at(column_index(column)) + 1) + ": column '" +
          column + "'";
 }
@@ -196,13 +196,13 @@ const std::string& CsvTable::text(std::size_t row, const std::string& column) co
 double CsvTable::number(std::size_t row, const std::string& column) const {
   const std::string& s = text(row, column);
   const std::optional<double> v = parse_decimal(s);
-  if (!v) throw DataError(where(row, column) + ": " + decimal_refusal(s));
+  if (!v) throw DataError(field_location(row, column) + ": " + decimal_refusal(s));
   return *v;
 }
 
 double CsvTable::number(std::size_t row, const std::string& column, const ValueRange& range) const {
   const double v = number(row, column);
-  if (!range.contains(v)) throw DataError(where(row, column) + ": " + text(row, column) + " is not " + range.text);
+  if (!range.contains(v)) throw DataError(field_location(row, column) + ": " + text(row, column) + " is not " + range.text);
   return v;
 }
 

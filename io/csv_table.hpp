@@ -64,10 +64,11 @@ class CsvTable {
   std::size_t find_row(const std::string& column, const std::string& value) const;
   /// "FILE:LINE" of a row, for messages about its content.
   std::string row_location(std::size_t row) const;
+  /// "FILE:LINE:COL: column 'NAME'" of a field, for messages about its value.
+  std::string field_location(std::size_t row, const std::string& column) const;
 
  private:
   std::size_t column_index(const std::string& name) const;
-  std::string where(std::size_t row, const std::string& column) const;
 
   std::string path_;
   std::vector<Comment> comments_;

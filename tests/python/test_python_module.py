@@ -75,7 +75,7 @@ def test_trace_on_a_uniform_grid():
     # The grid interpolates CVODE's accepted steps (h ~ 7e-6 s ~ t_c/180 at the defaults).
     # Reference: RK4 with a 1e-7 s step, on the same grid: its error, ~(h w)^4 with
     # w = pi/t_c ~ 2500 rad/s, is ~4e-15 of the amplitudes. What remains is
-    #  - CVODE's global error at its default rtol 1e-8, atol 1e-12 m: ~1e-7 of x_max and
+    #  - CVODE's global error at its default rtol 1e-8, atol 1e-12 (of X, v0): ~1e-7 of x_max and
     #    ~4e-7 of v0 (it falls with rtol: 2.5e-8 and 3e-8 at rtol 1e-10); the cubic Hermite
     #    interpolation's own part, ~(h w)^4/384 ~ 2e-10, is far below it;
     #  - the force, interpolated linearly: ~(h w)^2/8 ~ 4e-5 of the peak where it is smooth,
