@@ -13,15 +13,16 @@ namespace hertzdash {
 
 /// Largest --rtol whose e_effective error stays below step_resolution_target_error (0.1 %, the
 /// fixed steps' target). Measured (the steel rod from 20 mm with the paper's law, and duralumin-b
-/// from 50 mm with hunt-crossley; reference: each integrator at rtol 1e-12), the worst relative
-/// error of e_effective over cvode, dopri5, cvode-regularized, dopri5-regularized,
-/// gbs8-regularized and taylor-regularized is 5.8 % at rtol 1e-2 (dopri5), 0.27 % at 1e-3
-/// (cvode) and 0.025 % at 1e-4 (cvode): 1e-4 meets the target with a margin of 4, 1e-3 does not.
-/// A larger --rtol is flagged loose_tolerance.
+/// from 50 mm with hunt-crossley; reference: each integrator at rtol 1e-12; atol at its default,
+/// scaled to the impact), the worst relative error of e_effective over cvode, dopri5,
+/// cvode-regularized, dopri5-regularized, gbs8-regularized and taylor-regularized is 5.8 % at
+/// rtol 1e-2 (dopri5), 0.23 % at 1e-3 (gbs8-regularized) and 0.057 % at 1e-4
+/// (cvode-regularized): 1e-4 meets the target, 1e-3 does not (docs/reliability.md has the
+/// table). A larger --rtol is flagged loose_tolerance.
 inline constexpr double loose_rtol_limit = 1e-4;
 
-/// The same measurement bounds the error of e_effective by 6 rtol (5.8 % at 1e-2, 2.7 rtol at
-/// 1e-3, 2.5 at 1e-4); restitution_limit() allows 10 rtol.
+/// The same measurement bounds the error of e_effective by 6 rtol (5.8 rtol at 1e-2, 2.3 at
+/// 1e-3, 5.7 at 1e-4); restitution_limit() allows 10 rtol.
 inline constexpr double restitution_error_per_rtol = 10;
 
 /// The largest e_effective a run of `solver` may report: 1 plus its accuracy, which is
