@@ -17,6 +17,13 @@
 // to their operands. So the Taylor coefficients of y' = f(y) follow by the recurrence
 //   y_{k+1} = f(y)_k / (k + 1),
 // with O(p^2) work for order p per product in f.
+//
+// derivative(a) is the series of da/ds (coefficient j is (j + 1) a_{j+1}): its update(k)
+// needs coefficient k + 1 of the leaves, so it applies once the state's series is
+// complete (the Taylor integrator's event functions, such as the rate of a force), and
+// it loses one order: a node's `lost_orders` says how many (an expression over order-p
+// leaves is known to order p - lost_orders).
+#include <algorithm>
 #include <array>
 #include <concepts>
 #include <type_traits>
@@ -33,6 +40,7 @@ concept SeriesExpression = std::remove_cvref_t<E>::is_series_expression;
 /// A leaf: the coefficients of one state component, owned by the integrator.
 struct SeriesVariable {
   static constexpr bool is_series_expression = true;
+  static constexpr int lost_orders = 0;
   const double* c;
   double operator[](int j) const { return c[j]; }
   void update(int) {}
@@ -43,6 +51,7 @@ namespace series_detail {
 template <class A>
 struct Scaled {  // s a
   static constexpr bool is_series_expression = true;
+  static constexpr int lost_orders = A::lost_orders;
   double s;
   A a;
   double operator[](int j) const { return s * a[j]; }
@@ -52,6 +61,7 @@ struct Scaled {  // s a
 template <class A>
 struct Shifted {  // s + a: the constant enters coefficient 0 only
   static constexpr bool is_series_expression = true;
+  static constexpr int lost_orders = A::lost_orders;
   double s;
   A a;
   double operator[](int j) const { return j == 0 ? s + a[0] : a[j]; }
@@ -61,6 +71,7 @@ struct Shifted {  // s + a: the constant enters coefficient 0 only
 template <class A, class B>
 struct Sum {
   static constexpr bool is_series_expression = true;
+  static constexpr int lost_orders = std::max(A::lost_orders, B::lost_orders);
   A a;
   B b;
   double operator[](int j) const { return a[j] + b[j]; }
@@ -73,6 +84,7 @@ struct Sum {
 template <class A, class B>
 struct Difference {
   static constexpr bool is_series_expression = true;
+  static constexpr int lost_orders = std::max(A::lost_orders, B::lost_orders);
   A a;
   B b;
   double operator[](int j) const { return a[j] - b[j]; }
@@ -85,6 +97,7 @@ struct Difference {
 template <class A, class B>
 struct Product {
   static constexpr bool is_series_expression = true;
+  static constexpr int lost_orders = std::max(A::lost_orders, B::lost_orders);
   A a;
   B b;
   std::array<double, series_capacity + 1> c{};
@@ -105,6 +118,18 @@ struct Product {
   }
 };
 
+template <class A>
+struct Derivative {  // da/ds
+  static constexpr bool is_series_expression = true;
+  static constexpr int lost_orders = A::lost_orders + 1;
+  A a;
+  double operator[](int j) const { return (j + 1) * a[j + 1]; }
+  void update(int k) {
+    if (k == 0) a.update(0);
+    a.update(k + 1);
+  }
+};
+
 template <class E>
 using Node = std::remove_cvref_t<E>;
 
@@ -114,6 +139,12 @@ template <class A>
 inline constexpr bool is_scaled<Scaled<A>> = true;
 
 }  // namespace series_detail
+
+/// The series of da/ds (see above: for complete leaves only; one order lost).
+template <SeriesExpression A>
+auto derivative(A&& a) {
+  return series_detail::Derivative<series_detail::Node<A>>{a};
+}
 
 template <SeriesExpression A, SeriesExpression B>
 auto operator+(A&& a, B&& b) {

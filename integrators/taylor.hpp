@@ -19,21 +19,29 @@
 // radius of convergence), so the local error is a fixed fraction of the tolerance and
 // the global error proportional to it. No step is ever rejected.
 //
-// Events: after each step, a g_i that went from > 0 to <= 0 is located by Illinois
-// regula falsi on the series itself (the dense output is the method's own solution, to
-// its order; no evaluation), the state there is the series' value, and the events
-// located there are fired (integrators/event_landing.hpp). The step is cut at the
-// event: the observer sees the event point as a step end. After `continue`, the rest of
-// the step is read from the same series (no new coefficients); after `restart` the
-// method restarts there; `stop` ends the integration there.
+// Events: after each step, the system's event functions at the step's end say which
+// g_i went from > 0 to <= 0. Only for those, the step's series of g_i itself is
+// generated (the system's polynomial_events evaluated on the state's series, one order
+// less for an event that is a rate, power_series.hpp's derivative) and its root found
+// by safeguarded Newton on that polynomial (Horner with the derivative; a few
+// iterations of 2p operations, no evaluation of the system); the state there is the
+// series' value, and the events located there are fired
+// (integrators/event_landing.hpp). The step is cut at the event: the observer sees the
+// event point as a step end. After `continue`, the rest of the step is read from the
+// same series (no new coefficients); after `restart` the method restarts there; `stop`
+// ends the integration there. Where the series of g_i and the system's g_i disagree on a
+// sign at an end of the step (an event function the system differences, say), the
+// root is that end.
 //
-// Only for systems that offer the polynomial form of their right-hand side,
-// `polynomial_rhs(y)` over any ring scalar type returning a std::tuple of the
-// components of y' (PolynomialOdeSystem below), e.g. the regularised contact
+// Only for systems that offer the polynomial form of their right-hand side and event
+// functions, `polynomial_rhs(y)` and `polynomial_events(y)` over any ring scalar type
+// with a derivative, returning std::tuples of the components of y' and of the events
+// (PolynomialOdeSystem below), e.g. the regularised contact
 // (model/regularized_contact.hpp) of a law declaring force_of_root.
 //
 // Work reported: one right-hand-side evaluation per Taylor coefficient of the state
-// (p per step), the closest equivalent of the other integrators' count.
+// (p per step), the closest equivalent of the other integrators' count; the event
+// series are not counted.
 // No allocation: all state is fixed-size on the stack.
 #include "hertzdash/integrators/dormand_prince.hpp"  // weighted_rms scales
 #include "hertzdash/integrators/event_landing.hpp"
@@ -58,12 +66,15 @@ struct TaylorOptions {
 };
 
 /// A system whose right-hand side is an autonomous polynomial, offered over any ring
-/// scalar type: polynomial_rhs(y) -> std::tuple of dimension components of y'.
+/// scalar type: polynomial_rhs(y) -> std::tuple of dimension components of y', and its
+/// event functions likewise, polynomial_events(y) -> std::tuple of event_count components
+/// (equal to events(), or to what events() approximates).
 template <class S>
 concept PolynomialOdeSystem = OdeSystem<S> && (S::dimension > 0) &&
                               requires(const S& s, const std::array<SeriesVariable, S::dimension>& y) {
                                 { std::tuple_size<decltype(s.polynomial_rhs(y))>::value } -> std::convertible_to<std::size_t>;
                                 requires std::tuple_size_v<decltype(s.polynomial_rhs(y))> == S::dimension;
+                                requires std::tuple_size_v<decltype(s.polynomial_events(y))> == S::event_count;
                               };
 
 /// The Taylor order the integrator uses at relative tolerance rtol.
@@ -79,12 +90,16 @@ class TaylorRun {
   using Events = typename S::Events;
   static constexpr int n = S::dimension;
   using Leaves = std::array<SeriesVariable, n>;
+  static constexpr int m = S::event_count;
+  static_assert(m <= 32, "event_series_ready_ holds a bit per event");
   using Rhs = decltype(std::declval<const S&>().polynomial_rhs(std::declval<const Leaves&>()));
+  using EventSeries = decltype(std::declval<const S&>().polynomial_events(std::declval<const Leaves&>()));
 
  public:
   TaylorRun(S& sys, State& y, double t0, double t_end, const TaylorOptions& opt, Observer& observer)
       : sys_(sys), y_(y), t_(t0), t_end_(t_end), opt_(opt), observer_(observer), order_(taylor_order(opt.rtol)),
-        rhs_(sys.polynomial_rhs(leaves())), atol_(absolute_tolerance(sys, y, opt.atol)) {}
+        rhs_(sys.polynomial_rhs(leaves())), atol_(absolute_tolerance(sys, y, opt.atol)),
+        event_series_(sys.polynomial_events(leaves())) {}
   TaylorRun(const TaylorRun&) = delete;  // rhs_ reads coefficients_ through pointers
   TaylorRun& operator=(const TaylorRun&) = delete;
 
@@ -119,24 +134,94 @@ class TaylorRun {
       }(std::make_index_sequence<n>{});
     }
     stats_.rhs_evaluations += order_;
+    event_series_ready_ = 0;
   }
 
   /// h = min over j in {p-1, p} of ||y_j||^{-1/j} (weighted RMS norm, scales at y_); if
   /// both vanish (a series with gaps, such as u ~ v0 tau + O(tau^6) at onset without
-  /// gravity), the highest nonzero coefficient below them sets h the same way.
+  /// gravity), the highest nonzero coefficient below them sets h the same way. As
+  /// exp(-max_j ln(||y_j||^2) / (2j)): a logarithm per order and one exponential.
   double step_size() const {
-    double h = std::numeric_limits<double>::infinity();
+    constexpr double none = -std::numeric_limits<double>::infinity();
+    double log_inverse_h = none;
     for (int j = order_; j >= 1; --j) {
       double sum = 0;
       for (int i = 0; i < n; ++i) {
         const double r = coefficients_[i][j] / (atol_[i] + opt_.rtol * std::abs(y_[i]));
         sum += r * r;
       }
-      if (sum > 0) h = std::min(h, std::pow(std::sqrt(sum / n), -1.0 / j));
-      if (j <= order_ - 1 && std::isfinite(h)) break;
+      if (sum > 0) log_inverse_h = std::max(log_inverse_h, std::log(sum / n) / (2 * j));
+      if (j <= order_ - 1 && log_inverse_h > none) break;
     }
-    if (!std::isfinite(h)) throw std::runtime_error("integrate_taylor: no step size (the series is constant)");
-    return h;
+    if (!(log_inverse_h > none)) throw std::runtime_error("integrate_taylor: no step size (the series is constant)");
+    return std::exp(-log_inverse_h);
+  }
+
+  /// The series of event I over this step: coefficients 0..order_ - lost orders.
+  template <std::size_t I>
+  void generate_event_series() {
+    auto& e = std::get<I>(event_series_);
+    const int order = order_ - std::tuple_element_t<I, EventSeries>::lost_orders;
+    for (int k = 0; k <= order; ++k) {
+      e.update(k);
+      event_coefficients_[I][k] = e[k];
+    }
+    event_orders_[I] = order;
+  }
+
+  /// g_i(s) on this step's series, and its derivative (Horner).
+  std::pair<double, double> event_at(int i, double s) const {
+    const auto& c = event_coefficients_[i];
+    double g = c[event_orders_[i]], dg = 0;
+    for (int k = event_orders_[i] - 1; k >= 0; --k) {
+      dg = dg * s + g;
+      g = g * s + c[k];
+    }
+    return {g, dg};
+  }
+
+  /// The root of g_i on [lo, hi] (s after the step's start) where g_i falls through 0 by
+  /// the system's events: Newton on the series from the secant through the ends, kept in
+  /// the bracket (bisection where a Newton step leaves it), to |change| <= tol. An end
+  /// where the series already has the sign of the other is the root.
+  double locate_on_series(int i, double lo, double hi, double tol) {
+    if (!(event_series_ready_ >> i & 1u)) {
+      [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ((static_cast<int>(I) == i ? generate_event_series<I>() : void()), ...);
+      }(std::make_index_sequence<m>{});
+      event_series_ready_ |= 1u << i;
+    }
+    const double g_lo = event_at(i, lo).first, g_hi = event_at(i, hi).first;
+    if (!(g_lo > 0)) return lo;
+    if (g_hi > 0) return hi;
+    double s = lo + (hi - lo) * g_lo / (g_lo - g_hi);
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      const auto [g, dg] = event_at(i, s);
+      if (g > 0) lo = s;
+      else hi = s;
+      double next = s - g / dg;
+      if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
+      const double change = std::abs(next - s);
+      s = next;
+      if (change <= tol || hi - lo <= tol) break;
+    }
+    return s;
+  }
+
+  /// Every crossing on the rest [a, h] of the step (g_a at a, g_end at h), as
+  /// locate_event_crossings (event_landing.hpp) reports them: fractions of the rest.
+  EventCrossings<m> locate_crossings(double t_start, double a, double h, const Events& g_a, const Events& g_end) {
+    EventCrossings<m> c;
+    const double rest = h - a;
+    const double tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t_start + a), rest);
+    c.theta_tol = tol / rest;
+    for (int i = 0; i < m; ++i) {
+      c.theta[i] = 2.0;
+      if (!(g_a[i] > 0 && g_end[i] <= 0)) continue;
+      c.theta[i] = (locate_on_series(i, a, h, tol) - a) / rest;
+      c.earliest = std::min(c.earliest, c.theta[i]);
+    }
+    return c;
   }
 
   /// The series' value s after the step's start (Horner).
@@ -166,12 +251,7 @@ class TaylorRun {
         return false;
       }
       // Locate on the rest of the step, [a, h] after t_start.
-      struct Rest {
-        const TaylorRun* run;
-        double a, length;
-        State at(double theta) const { return run->at(a + theta * length); }
-      } const rest{this, a, h - a};
-      const auto crossings = locate_event_crossings(sys_, t_start + a, h - a, g_, g_end, rest);
+      const auto crossings = locate_crossings(t_start, a, h, g_, g_end);
       const double s = a + crossings.earliest * (h - a);
       const Events g_before = g_;
       move_to(t_start + s, at(s));
@@ -181,6 +261,7 @@ class TaylorRun {
       if (action == EventAction::restart) {
         rhs_ = sys_.polynomial_rhs(leaves());  // the system may have changed form
         atol_ = absolute_tolerance(sys_, y_, opt_.atol);  // and its scales
+        event_series_ = sys_.polynomial_events(leaves());
         return false;
       }
       if (s >= h) return false;
@@ -204,6 +285,10 @@ class TaylorRun {
   std::array<std::array<double, series_capacity + 1>, n> coefficients_{};
   Rhs rhs_;
   State atol_;  ///< absolute tolerance of each component (since the last restart)
+  EventSeries event_series_;
+  std::array<std::array<double, series_capacity + 1>, m> event_coefficients_{};
+  std::array<int, m> event_orders_{};
+  unsigned event_series_ready_ = 0;  ///< bit i: event i's series is this step's
   IntegrationStats stats_;
   Events g_;  ///< event functions at (t_, y_)
 };

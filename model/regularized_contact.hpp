@@ -93,6 +93,17 @@ class RegularizedContact {
     return tau_derivatives(y[0], y[1], law_.force_of_root(y[0], y[1]));
   }
 
+  /// The events over the same scalar types, for the Taylor integrator's location on the
+  /// series: (u, v, dF/dtau, t_obs - t), the rate exact where events() differences it.
+  /// `derivative(s)` (the derivative of a series along tau, integrators/power_series.hpp) is
+  /// the scalar type's own, found by argument-dependent lookup.
+  template <class Y>
+    requires RootPolynomialLaw<Law>
+  auto polynomial_events(const Y& y) const {
+    const double t_obs = t_obs_s_.value_or(1.0), t_sign = t_obs_s_ ? -1.0 : 0.0;  // as events(): 1 if unset
+    return std::tuple{y[0], y[1], derivative(law_.force_of_root(y[0], y[1])), t_obs + t_sign * y[2]};
+  }
+
   void events(double, const State& y, Events& g) const {
     const double u = std::max(y[0], 0.0), v = y[1];
     const double du = 1e-6 * std::max(u, 1e-6 * u_scale_), dv = 1e-6 * v0_mps_;

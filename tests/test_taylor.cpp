@@ -32,8 +32,12 @@ struct Riccati {
   auto polynomial_rhs(const Y& y) const {
     return std::tuple{y[0] * y[0]};
   }
+  template <class Y>
+  auto polynomial_events(const Y& y) const {
+    return std::tuple{2.0 - y[0]};
+  }
   void rhs(double, const State& y, State& dy) const { dy[0] = std::get<0>(polynomial_rhs(y)); }
-  void events(double, const State& y, Events& g) const { g = {2.0 - y[0]}; }
+  void events(double, const State& y, Events& g) const { g = {std::get<0>(polynomial_events(y))}; }
   EventAction handle_event(int, double, const State&) const { return EventAction::stop; }
 };
 
@@ -82,6 +86,22 @@ TEST_CASE("power series: the recurrence gives the Taylor coefficients of 1/(1 - 
     c[k + 1] = std::get<0>(f)[k] / (k + 1);
   }
   for (int k = 0; k <= 20; ++k) CHECK(c[k] == 1.0);
+}
+
+TEST_CASE("power series: derivative(y^2) of 1/(1 - t) has coefficients (j + 1)(j + 2), one order lost", "[taylor]") {
+  // With y_j = 1 for all j, (y^2)_j = j + 1 (the Cauchy product of j + 1 ones), so
+  // d(y^2)/dt = 2 y y' = 2/(1 - t)^3 has coefficients (j + 1)(j + 2): exact in floating
+  // point. Coefficient j needs y_{j+1}, hence one order lost.
+  std::array<double, series_capacity + 1> c{};
+  c.fill(1.0);
+  const std::array<SeriesVariable, 1> y{SeriesVariable{c.data()}};
+  auto rate = derivative(y[0] * y[0]);
+  STATIC_REQUIRE(decltype(rate)::lost_orders == 1);
+  STATIC_REQUIRE(decltype(y[0] * y[0])::lost_orders == 0);
+  for (int k = 0; k < 20; ++k) {
+    rate.update(k);
+    CHECK(rate[k] == (k + 1.0) * (k + 2.0));
+  }
 }
 
 TEST_CASE("taylor: the event y = 2 of y' = y^2 located on the series at t = 1/2", "[taylor]") {
