@@ -132,7 +132,7 @@ class DropTest {
 
   /// The scales of an impact at approach speed v0 [m/s].
   void set_state_scale(double v0) {
-    state_scale_ << undamped_hertz_impact(model_.K, model_.mass_kg, v0).max_deformation_m, v0;
+    state_scale_ << undamped_hertz_max_deformation_m(model_.K, model_.mass_kg, v0), v0;
   }
 
   /// The law's force at x >= 0, with the tension clamp applied.

@@ -43,8 +43,10 @@ struct GivenScaleInputs {
 void validate(const DropTestSetup& s, const GivenScaleInputs& given = {});
 
 /// The least undamped Hertz deformation a set-up may have [m]: a picometre, a hundredth of an
-/// atom's size, below which no continuum contact model applies (and the integrators' absolute
-/// tolerances would exceed the whole motion).
+/// atom's size, below which no continuum contact model applies. A physical bound, not a
+/// numerical one: the integrators' absolute tolerances are relative to the impact's own scales
+/// (ode/ode_system.hpp, state_scale), so smaller impacts would integrate as accurately; what
+/// double precision itself cannot hold (X^{5/2}, m v0^2 under- or overflowing) lies far beyond.
 inline constexpr double min_hertz_deformation_m = 1e-12;
 
 /// The impact's own scale is one the Hertz model describes: the undamped Hertz deformation

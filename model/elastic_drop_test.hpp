@@ -116,7 +116,7 @@ class ElasticDropTest {
   int size() const { return 2 * (N_ + 1) + 4; }
   /// The characteristic magnitude of each state component (see "Scales" above).
   State state_scale() const {
-    const double X = undamped_hertz_impact(model_.K, model_.setup.mass_kg, v_scale_mps_).max_deformation_m;
+    const double X = undamped_hertz_max_deformation_m(model_.K, model_.setup.mass_kg, v_scale_mps_);
     State s(size());
     for (int j = 0; j <= N_; ++j) s[u(j)] = X, s[v(j)] = v_scale_mps_;
     s[w()] = X;

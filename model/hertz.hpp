@@ -69,4 +69,11 @@ struct UndampedHertzImpact {
 };
 UndampedHertzImpact undamped_hertz_impact(double K, double mass_kg, double v0_mps);
 
+/// The undamped maximum deformation X of undamped_hertz_impact alone [m] (one pow), for the
+/// state scales the systems compute at every impact.
+double undamped_hertz_max_deformation_m(double K, double mass_kg, double v0_mps);
+
+/// The undamped contact time over X / v0, (4/5) B(2/5, 1/2) = 2.9432 [-] (computed once).
+double undamped_hertz_contact_time_factor();
+
 }  // namespace hertzdash

@@ -67,8 +67,8 @@ class RegularizedContact {
       : law_(c, s), inverse_mass_(1.0 / c.mass_kg), gravity_mps2_(gravity_mps2), t_obs_s_(t_obs_s), v0_mps_(c.v0_mps) {
     // Scales of the impact for the difference steps: u* = X*^{1/2}, X* = (m v0^2 / K)^{2/5}, and v0.
     u_scale_ = std::sqrt(hertz_impact_scale_m(c.K, c.mass_kg, c.v0_mps));
-    const UndampedHertzImpact h = undamped_hertz_impact(c.K, c.mass_kg, c.v0_mps);
-    state_scale_ = State{std::sqrt(h.max_deformation_m), c.v0_mps, h.contact_time_s};
+    const double X = undamped_hertz_max_deformation_m(c.K, c.mass_kg, c.v0_mps);
+    state_scale_ = State{std::sqrt(X), c.v0_mps, undamped_hertz_contact_time_factor() * X / c.v0_mps};
   }
 
   /// Onset: u = 0, v = v0, t = 0.

@@ -201,7 +201,7 @@ Measurement measure_fixed_step(const ConvergenceProblem& p, double dt_s, bool lo
 /// CVODE (Adams or BDF) at relative tolerance rtol and absolute tolerance rtol of the
 /// impact's scales (X_scale for x, v0 for x': DropTest::state_scale), the same relative
 /// accuracy for a deformation of the size of the maximum and a speed of the size of v0.
-inline CvodeOptions cvode_options(const ConvergenceProblem& p, CvodeMethod method, double rtol) {
+inline CvodeOptions cvode_options(CvodeMethod method, double rtol) {
   CvodeOptions o;
   o.method = method;
   o.rtol = rtol;
@@ -211,7 +211,7 @@ inline CvodeOptions cvode_options(const ConvergenceProblem& p, CvodeMethod metho
 
 template <DampingLaw Law>
 Measurement measure_cvode(const ConvergenceProblem& p, CvodeMethod method, double rtol, double min_timing_s = 0) {
-  CvodeIntegrator cvode(DropTest<Law>::dimension, DropTest<Law>::event_count, cvode_options(p, method, rtol));
+  CvodeIntegrator cvode(DropTest<Law>::dimension, DropTest<Law>::event_count, cvode_options(method, rtol));
   // CVODE locates the onset whatever the gap: a fixed 1 % of the contact time.
   return measure_physical<Law>(
       p, 0.01 * p.tc_scale_s,

@@ -39,7 +39,7 @@ TEST_CASE("The speed at which the undamped Hertz deformation reaches the ball ra
 }
 
 TEST_CASE("A deformation below a picometre is refused: no continuum contact model applies", "[scale]") {
-  // X ~ v0^{4/5}: X = 1e-12 m for the steel rod at v0 = sqrt(4K (1e-12)^{5/2} / (5 m)) = 1.9e-14 m/s.
+  // X ~ v0^{4/5}: X = 1e-12 m for the steel rod at v0 = sqrt(4K (1e-12)^{5/2} / (5 m)) = 1.9e-11 m/s.
   DropTestSetup s = paper_setup(load_paper_parameters(), "steel", 0.02);
   const double v_min = std::sqrt(4.0 * hertz_stiffness(s) * std::pow(min_hertz_deformation_m, 2.5) / (5.0 * s.mass_kg));
   s.impact_velocity_mps = 1.01 * v_min;
