@@ -68,7 +68,7 @@ Command add_bounce_command(CLI::App& app) {
   return {sub, [opt]() {
             opt->bounce.impacts = parse_bounces(opt->bounces);
             const BounceRun r = run_bounce(opt->run, load_paper_parameters(), opt->bounce, opt->interval_target);
-            report_fallback(r.solver.integrator, r.sequence.integrator_used, r.fallback_reason);
+            report_diagnostics(run_diagnostics(r));
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";
             else print_text(r);
             return 0;

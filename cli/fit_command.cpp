@@ -92,7 +92,7 @@ Command add_fit_command(CLI::App& app) {
   sub->add_option("--channels", opt->channels, "Channels of the trace to fit (default: all it has)");
   add_number_option(*sub, "--resample", opt->resample_Hz, "Average the trace into bins of 1/RATE first [Hz]; 0 = as sampled");
   sub->add_flag("--compare-laws", opt->compare_laws, "Fit every registered damping law and rank them by AIC");
-  sub->add_option("--curves", opt->curves_path, "Write the trace, the fitted model and the residuals to this CSV file");
+  add_output_file_option(*sub, "--curves", opt->curves_path, "Write the trace, the fitted model and the residuals to this CSV file");
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
   add_mkdir_flag(*sub, opt->mkdir);
 
@@ -105,7 +105,8 @@ Command add_fit_command(CLI::App& app) {
             const PaperParameters paper = load_paper_parameters();
             const FitRun r = run_fit(opt->trace_path, opt->run, paper, settings, opt->compare_laws);
             if (r.fits.empty()) throw std::runtime_error("no damping law could be fitted to the trace");
-            for (const std::string& w : fit_warnings(r)) std::cerr << "hertzdash: warning: " << w << "\n";
+            report_diagnostics(fit_diagnostics(r, paper));
+            create_output_directories(opt->curves_path, opt->mkdir);
             if (!opt->curves_path.empty()) write_fit_curves(r.fits.front(), r.trace, opt->curves_path);
             if (opt->json) std::cout << to_json(r, paper).dump(2) << "\n";
             else print_text(r);

@@ -74,8 +74,12 @@ CLI::Option* add_integer_option(CLI::App& app, const std::string& flag, unsigned
 std::string refusal_message(const InvalidParameter& e) {
   const auto it = not_numbers().find(e.parameter);
   if (it == not_numbers().end()) return e.what();
-  return InvalidParameter(e.parameter, "'" + it->second + "'", std::string(decimal_number_format) + " and " + e.valid_range)
-      .what();
+  const std::string quoted = "'" + it->second + "'";
+  if (decimal_error(it->second) == DecimalError::out_of_range)
+    return InvalidParameter(e.parameter, quoted + " (out of range of double)",
+                            std::string("a decimal number of ") + double_range_text + ", and " + e.valid_range)
+        .what();
+  return InvalidParameter(e.parameter, quoted, std::string(decimal_number_format) + " and " + e.valid_range).what();
 }
 
 }  // namespace hertzdash::cli

@@ -1,19 +1,30 @@
 #pragma once
-// The output files of a command: --mkdir, and the check, before any work, that each output
-// path can be written (docs/output-files.md). Without --mkdir a missing parent directory is
-// bad input (exit 2, the option and the missing directory named); nothing is created silently.
+// The output files of a command (docs/output-files.md): the options that name them (an empty
+// path is refused), --mkdir, the check before any work that each path can be written, and the
+// creation of the missing directories right before the write. Without --mkdir a missing parent
+// directory is bad input (exit 2, the option and the missing directory named); with it, bad
+// input of any kind still leaves no new directory: nothing is created until the output is.
 #include <CLI/CLI.hpp>
 
 #include <string>
 
 namespace hertzdash::cli {
 
+/// Add the output file option `flag` to `sub`, bound to `path`; an empty path given is refused
+/// (InvalidParameter naming the option).
+CLI::Option* add_output_file_option(CLI::App& sub, const std::string& flag, std::string& path, const std::string& help);
+
 /// Add --mkdir to `sub`, bound to `make_directories`.
 void add_mkdir_flag(CLI::App& sub, bool& make_directories);
 
-/// Check the output file `path` given by `option` (a no-op for an empty path): its parent
-/// directory exists, or is created when `make_directories`; the path is not a directory.
-/// Throws InvalidParameter naming the option otherwise.
+/// Check the output file `path` given by `option` (a no-op for an empty path: none asked for):
+/// it is not a directory, and its parent directory exists, or is missing and can be created
+/// and `make_directories` says so. Creates nothing. Throws InvalidParameter naming the option.
 void prepare_output_file(const std::string& option, const std::string& path, bool make_directories);
+
+/// Right before writing `path` (a no-op for an empty path): create its missing parent
+/// directories if `make_directories`. Throws std::runtime_error "cannot create directory P:
+/// REASON" on failure (exit 1).
+void create_output_directories(const std::string& path, bool make_directories);
 
 }  // namespace hertzdash::cli

@@ -39,7 +39,7 @@ Command add_restitution_command(CLI::App& app) {
   return {sub, [opt]() {
             const RestitutionRun r = run_restitution(opt->run, load_paper_parameters(), opt->target);
             const IntegratorKind asked = r.solver.integrator;
-            report_fallback(asked, r.integrator_used, r.fallback_reason);
+            report_diagnostics(run_diagnostics(r));
             if (opt->json) {
               std::cout << to_json(r).dump(2) << "\n";
               return 0;

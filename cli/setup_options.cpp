@@ -1,7 +1,6 @@
 #include "cli/setup_options.hpp"
 
 #include "cli/number_options.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
 
 #include <iostream>
 #include <type_traits>
@@ -34,9 +33,8 @@ void add_run_options(CLI::App& app, RunOptions& options) {
   add_run_options(app, options, RunOption::Group::solver);
 }
 
-void report_fallback(IntegratorKind asked, IntegratorKind used, const std::string& why) {
-  if (const std::string note = fallback_note(asked, used, why); !note.empty())
-    std::cerr << "hertzdash: note: " << note << "\n";
+void report_diagnostics(const std::vector<RunDiagnostic>& diagnostics) {
+  for (const RunDiagnostic& d : diagnostics) std::cerr << "hertzdash: " << d.kind << ": " << d.message << "\n";
 }
 
 }  // namespace hertzdash::cli

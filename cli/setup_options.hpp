@@ -2,12 +2,14 @@
 // The command-line options of a run: every option of the library's table
 // (simulation/run_options.hpp) as --name, bound to one RunOptions. Parsing only: the
 // library validates (resolve_setup, resolve_solver) and names the option in its message.
+#include "hertzdash/simulation/diagnostic_messages.hpp"
 #include "hertzdash/simulation/run_options.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace hertzdash::cli {
 
@@ -17,7 +19,7 @@ void add_run_options(CLI::App& app, RunOptions& options, RunOption::Group group)
 /// Both groups: the set-up's options, then the solver's.
 void add_run_options(CLI::App& app, RunOptions& options);
 
-/// When the integrator that ran is not the one asked for, say so and why on stderr.
-void report_fallback(IntegratorKind asked, IntegratorKind used, const std::string& why);
+/// Each note and warning on stderr: "hertzdash: <kind>: <message>".
+void report_diagnostics(const std::vector<RunDiagnostic>& diagnostics);
 
 }  // namespace hertzdash::cli

@@ -97,7 +97,7 @@ Command add_simulate_command(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
   CLI::App* sub = app.add_subcommand("simulate", "Simulate one drop of a rod onto the nylon hemisphere");
   add_run_options(*sub, opt->run);
-  sub->add_option("--trace", opt->trace_path, "Write the contact-phase time series to this CSV file");
+  add_output_file_option(*sub, "--trace", opt->trace_path, "Write the contact-phase time series to this CSV file");
   sub->add_option("--trace-format", opt->trace_format,
                   "model: every integrator step, all state columns; measured: a virtual experiment in the measured-trace "
                   "format (data/measurements/README.md), labelled synthetic")
@@ -116,16 +116,20 @@ Command add_simulate_command(CLI::App& app) {
             check_trace_options(*sub, *opt);
             prepare_output_file("--trace", opt->trace_path, opt->mkdir);
             const SimulateRun r = run_simulate(opt->run, load_paper_parameters(), !opt->trace_path.empty());
+            std::string trace_note;
             if (opt->trace_format == "measured") {
-              write_measured_trace(opt->trace_path, virtual_measurement(r, opt->run.rod, opt->chain),
+              const MeasuredTrace measurement = virtual_measurement(r, opt->run.rod, opt->chain);
+              create_output_directories(opt->trace_path, opt->mkdir);
+              write_measured_trace(opt->trace_path, measurement,
                                    "hertzdash simulate: a SYNTHETIC virtual measurement of the model (not a measurement)",
                                    virtual_measurement_parameters(r, opt->chain));
-              if (const std::string n = virtual_measurement_note(r, opt->chain); !n.empty())
-                std::cerr << "hertzdash: note: " << n << "\n";
-            } else if (!opt->trace_path.empty())
+              trace_note = virtual_measurement_note(r, opt->chain);
+            } else if (!opt->trace_path.empty()) {
+              create_output_directories(opt->trace_path, opt->mkdir);
               write_trace(r, opt->trace_path);
-            for (const RunDiagnostic& d : run_diagnostics(r)) std::cerr << "hertzdash: " << d.kind << ": " << d.message << "\n";
-            if (opt->json) std::cout << to_json(r).dump(2) << "\n";
+            }
+            report_diagnostics(run_diagnostics(r, trace_note));
+            if (opt->json) std::cout << to_json(r, trace_note).dump(2) << "\n";
             else print_text(r);
             return 0;
           }};

@@ -69,8 +69,9 @@ std::filesystem::path summary_path(const std::filesystem::path& out) {
 
 // Put this rank's results (runs rank, rank + size, ...) into the whole case's order.
 SweepResults assemble(const std::vector<std::vector<double>>& values, const std::vector<std::string>& errors,
-                      std::size_t runs, std::size_t outputs) {
-  SweepResults all{.outputs = outputs, .values = std::vector<double>(runs * outputs), .errors = std::vector<std::string>(runs)};
+                      const std::vector<std::vector<double>>& diagnostics, std::size_t runs, std::size_t outputs) {
+  SweepResults all{.outputs = outputs, .values = std::vector<double>(runs * outputs), .errors = std::vector<std::string>(runs),
+                   .diagnostics = std::vector<DiagnosticSet>(runs)};
   const std::size_t size = values.size();
   for (std::size_t r = 0; r < size; ++r) {
     std::size_t j = 0, begin = 0;
@@ -79,6 +80,7 @@ SweepResults assemble(const std::vector<std::vector<double>>& values, const std:
                   all.values.begin() + static_cast<std::ptrdiff_t>(run * outputs));
       const std::size_t end = errors[r].find('\0', begin);
       all.errors[run] = errors[r].substr(begin, end - begin);
+      all.diagnostics[run] = DiagnosticSet::from_bits(static_cast<std::uint16_t>(diagnostics[r][j]));
       begin = end + 1;
     }
   }
@@ -119,14 +121,19 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   for (const std::string& e : results.errors) errors += e + '\0';
   const std::vector<std::vector<double>> values = group.gather(results.values);
   const std::vector<std::string> error_parts = group.gather(errors);
+  std::vector<double> codes;  // the diagnostic bits travel as doubles (exact below 2^53)
+  for (const DiagnosticSet d : results.diagnostics) codes.push_back(d.bits());
+  const std::vector<std::vector<double>> code_parts = group.gather(codes);
   if (group.rank() != 0) return 0;
 
-  const SweepResults all = assemble(values, error_parts, c.size(), c.outputs.size());
+  const SweepResults all = assemble(values, error_parts, code_parts, c.size(), c.outputs.size());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string timing =
       fmt::format("timing: {:.3f} s on {} process{} x {} thread{}, {:.3g} runs/s", seconds, group.size(),
                   group.size() > 1 ? "es" : "", threads, threads > 1 ? "s" : "", static_cast<double>(c.size()) / seconds);
+  create_output_directories(out.string(), opt.mkdir);
   write_file_atomically(out, sweep_table(c, all, timing));
+  if (summary) create_output_directories(summary_out.string(), opt.mkdir);
   if (summary) write_file_atomically(summary_out, sweep_summary_table(c, all));
 
   std::size_t failed = 0;
@@ -134,6 +141,10 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   std::cout << fmt::format("hertzdash sweep: {} runs, {} failed; wrote {}{}\n", c.size(), failed, out.string(),
                            summary ? " and " + summary_out.string() : "");
   if (summary) std::cout << sweep_summary_text(c, all);
+  if (const std::string counts = diagnostic_counts_text(all); !counts.empty())
+    std::cerr << fmt::format("hertzdash: warning: runs with warnings, per code (of {}): {} (the warnings column says "
+                             "which; docs/json-output.md explains each code)\n",
+                             c.size(), counts);
   if (failed == 0) return 0;
   const auto first = std::find_if(all.errors.begin(), all.errors.end(), [](const std::string& e) { return !e.empty(); });
   std::cerr << fmt::format("hertzdash: {} of {} runs failed (the error column says why); run {}: {}\n", failed, c.size(),
@@ -148,9 +159,9 @@ Command add_sweep_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "sweep", "Run a case file's grid or sample of simulate runs (docs/sweep.md); under mpirun on every process");
   sub->add_option("case", opt->case_path, "The case file (TOML)")->required();
-  sub->add_option("--out", opt->out,
+  add_output_file_option(*sub, "--out", opt->out,
                   "The CSV of one row per run (default: the case's [output] file, else the case file's name with .csv)");
-  sub->add_option("--summary", opt->summary,
+  add_output_file_option(*sub, "--summary", opt->summary,
                   "Also write the summary of every output here (default with [output] summary = true: "
                   "the CSV's name with .summary.csv)");
   add_integer_option(*sub, "--threads", opt->threads,

@@ -8,7 +8,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
     const hertzdash::CsvTable t = hertzdash::CsvTable::read(hertzdash::fuzz::input_file(data, size));
-    (void)t.comment_fields();
+    (void)t.comment_field("source");
     for (std::size_t r = 0; r < t.rows(); ++r)
       for (const std::string& c : t.columns()) {
         (void)t.text(r, c);

@@ -50,6 +50,7 @@ int events_thunk(realtype t, N_Vector y, realtype* g, void* user_data) {
 struct CvodeIntegrator::Impl {
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
+  N_Vector atol = nullptr;  ///< absolute tolerance of each component, refilled at every restart
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
   SUNNonlinearSolver NLS = nullptr;
@@ -65,6 +66,7 @@ struct CvodeIntegrator::Impl {
     if (NLS) SUNNonlinSolFree(NLS);
     if (LS) SUNLinSolFree(LS);
     if (A) SUNMatDestroy(A);
+    if (atol) N_VDestroy(atol);
     if (y) N_VDestroy(y);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -81,10 +83,12 @@ CvodeIntegrator::CvodeIntegrator(int dimension, int event_count, const CvodeOpti
   check(SUNContext_Create(nullptr, &d.ctx), "SUNContext_Create");
   d.y = check_ptr(N_VNew_Serial(dimension, d.ctx), "N_VNew_Serial");
   N_VConst(0.0, d.y);
+  d.atol = check_ptr(N_VClone(d.y), "N_VClone");
+  N_VConst(options.atol, d.atol);
   d.mem = check_ptr(CVodeCreate(options.method == CvodeMethod::adams ? CV_ADAMS : CV_BDF, d.ctx), "CVodeCreate");
   check(CVodeInit(d.mem, rhs_thunk, 0.0, d.y), "CVodeInit");
   check(CVodeSetUserData(d.mem, &callbacks_), "CVodeSetUserData");
-  check(CVodeSStolerances(d.mem, options.rtol, options.atol), "CVodeSStolerances");
+  check(CVodeSVtolerances(d.mem, options.rtol, d.atol), "CVodeSVtolerances");
   check(CVodeSetMaxNumSteps(d.mem, options.max_num_steps), "CVodeSetMaxNumSteps");
   if (options.max_step > 0) check(CVodeSetMaxStep(d.mem, options.max_step), "CVodeSetMaxStep");
   if (options.method == CvodeMethod::adams) {
@@ -117,11 +121,13 @@ void CvodeIntegrator::check_dimensions(int dimension, int event_count) const {
   }
 }
 
-void CvodeIntegrator::restart(double t, const double* y) {
+void CvodeIntegrator::restart(double t, const double* y, const double* atol) {
   Impl& d = *impl_;
   double* yv = N_VGetArrayPointer(d.y);
-  for (int i = 0; i < d.dimension; ++i) yv[i] = y[i];
+  double* av = N_VGetArrayPointer(d.atol);
+  for (int i = 0; i < d.dimension; ++i) yv[i] = y[i], av[i] = atol[i];
   check(CVodeReInit(d.mem, t, d.y), "CVodeReInit");
+  check(CVodeSVtolerances(d.mem, options_.rtol, d.atol), "CVodeSVtolerances");  // copies d.atol
   d.stop_time = NAN;
 }
 

@@ -4,7 +4,10 @@
 // Method: variable-order, variable-step Adams-Moulton (orders 1-12, fixed-point
 // corrector) or BDF (orders 1-5, Newton with a difference-quotient Jacobian: dense,
 // or banded for a system that declares `static constexpr int jacobian_half_bandwidth`,
-// the largest |i - j| of a non-zero df_i/dy_j that matters for convergence). Local error control: ||e_i|| <= rtol |y_i| + atol in the WRMS norm.
+// the largest |i - j| of a non-zero df_i/dy_j that matters for convergence). Local error
+// control: ||e_i|| <= rtol |y_i| + atol_i in the WRMS norm, atol_i = atol x the system's
+// scale of component i (ode/ode_system.hpp, absolute_tolerance), set with
+// CVodeSVtolerances at the start and at every restart (no allocation after the first).
 // Events: CVODE's root finding on the system's event functions with direction
 // -1 (g decreasing through zero). After an event whose action is `restart`,
 // the integrator restarts with CVodeReInit at the event point, so no step
@@ -28,7 +31,7 @@ const char* to_string(CvodeMethod m);
 struct CvodeOptions {
   CvodeMethod method = CvodeMethod::adams;
   double rtol = 1e-8;          ///< relative tolerance, > 0
-  double atol = 1e-12;         ///< absolute tolerance (state units), > 0
+  double atol = 1e-12;         ///< absolute tolerance relative to the system's state scales, > 0
   double max_step = 0.0;       ///< largest step [s]; 0 means no limit
   long max_num_steps = 1000000;  ///< steps of one integrate() call, over its restarts; more: std::runtime_error
   int band_half_width = -1;    ///< BDF: banded Jacobian with this half-bandwidth; < 0: dense
@@ -61,8 +64,9 @@ class CvodeIntegrator {
   IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t_end, Observer& observer);
 
  private:
-  // Non-template core: restart at (t, y), take one step towards t_end.
-  void restart(double t, const double* y);
+  // Non-template core: restart at (t, y) with absolute tolerances atol (one per
+  // component), take one step towards t_end.
+  void restart(double t, const double* y, const double* atol);
   /// Returns +1 on a root return, 0 on an ordinary step, and 2 at the stop time.
   int step(double t_end, double& t, double* y);
   const int* roots_found();
@@ -96,7 +100,7 @@ IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double
 
   IntegrationStats total;
   double t = t0;
-  restart(t, y.data());
+  restart(t, y.data(), absolute_tolerance(sys, y, options_.atol).data());
   observer.on_step(t, y);
   long steps = 0;
   while (t < t_end) {
@@ -122,7 +126,7 @@ IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double
     }
     if (restart_needed) {
       total.add_work(work_since_restart());
-      restart(t, y.data());
+      restart(t, y.data(), absolute_tolerance(sys, y, options_.atol).data());
     }
   }
   total.add_work(work_since_restart());

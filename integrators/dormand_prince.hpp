@@ -16,12 +16,14 @@
 //   continuous weights b_i(theta) satisfy the order-4 conditions at every theta.
 //
 // Step control: the error estimate e = y1 - y1* is measured in the weighted RMS
-// norm ||e|| = sqrt(mean_i (e_i / (atol + rtol max(|y0_i|, |y1_i|)))^2); a step is
+// norm ||e|| = sqrt(mean_i (e_i / (atol_i + rtol max(|y0_i|, |y1_i|)))^2), atol_i = atol
+// x the system's scale of component i (ode/ode_system.hpp, absolute_tolerance); a step is
 // accepted when ||e|| <= 1 and the next step is h 0.9 ||e||^{-1/5}, limited to
 // [0.2 h, 5 h] (no growth right after a rejection). After two rejections at one
 // point the shrink uses the order those two attempts show (|e| ~ h^p, p in
 // [0.5, 5]) instead of 5. The first step, and the first after every restart, is
-// sized by Hairer-Norsett-Wanner I, II.4 (one extra evaluation).
+// sized by Hairer-Norsett-Wanner I, II.4 (one extra evaluation), in the same norm.
+// The scales are read at the start and after every restart.
 //
 // Singular points. A right-hand side is often only continuous where an event
 // restarts it: the contact force grows like sqrt(t - t_on) after onset and, for a
@@ -62,7 +64,7 @@ namespace hertzdash {
 
 struct DormandPrinceOptions {
   double rtol = 1e-8;        ///< relative tolerance, > 0
-  double atol = 1e-12;       ///< absolute tolerance (state units), > 0
+  double atol = 1e-12;       ///< absolute tolerance relative to the system's state scales, > 0
   double max_step = 0.0;     ///< largest step [s]; 0 means no limit
   long max_steps = 1000000;  ///< accepted plus rejected steps before giving up
   /// The right-hand side may be singular where an event restarts it or lands a step
@@ -124,10 +126,10 @@ void dormand_prince_step(const S& sys, double t, const typename S::State& y, dou
   sys.rhs(t + h, w.y1, w.k7);
 }
 
-/// Weighted RMS norm of v with weights atol + rtol max(|a_i|, |b_i|).
+/// Weighted RMS norm of v with weights atol_i + rtol max(|a_i|, |b_i|).
 template <class State>
-double weighted_rms(const State& v, const State& a, const State& b, double rtol, double atol) {
-  const auto scale = (atol + rtol * a.cwiseAbs().cwiseMax(b.cwiseAbs()).array());
+double weighted_rms(const State& v, const State& a, const State& b, double rtol, const State& atol) {
+  const auto scale = (atol.array() + rtol * a.cwiseAbs().cwiseMax(b.cwiseAbs()).array());
   return std::sqrt((v.array() / scale).square().mean());
 }
 
@@ -149,24 +151,26 @@ struct DormandPrinceDense {
   }
 };
 
-/// First step size (Hairer-Norsett-Wanner I, II.4): one explicit Euler trial step.
+/// First step size (Hairer-Norsett-Wanner I, II.4): one explicit Euler trial step; norms
+/// weighted by atol_i + rtol |y_i|.
 template <OdeSystem S>
 double dormand_prince_initial_step(const S& sys, double t, const typename S::State& y, const typename S::State& f0,
-                                   double span, const DormandPrinceOptions& opt, long& rhs_evaluations) {
+                                   double span, double rtol, const typename S::State& atol, double max_step,
+                                   long& rhs_evaluations) {
   using State = typename S::State;
-  const double d0 = weighted_rms(y, y, y, opt.rtol, opt.atol);
-  const double d1 = weighted_rms(f0, y, y, opt.rtol, opt.atol);
+  const double d0 = weighted_rms(y, y, y, rtol, atol);
+  const double d1 = weighted_rms(f0, y, y, rtol, atol);
   double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 * span : 0.01 * d0 / d1;
   h0 = std::min(h0, span);
   const State y1 = y + h0 * f0;
   State f1;
   sys.rhs(t + h0, y1, f1);
   ++rhs_evaluations;
-  const double d2 = weighted_rms(State(f1 - f0), y, y, opt.rtol, opt.atol) / h0;
+  const double d2 = weighted_rms(State(f1 - f0), y, y, rtol, atol) / h0;
   const double dmax = std::max(d1, d2);
   const double h1 = dmax <= 1e-15 ? std::max(1e-6 * span, 1e-3 * h0) : std::pow(0.01 / dmax, 0.2);
   double h = std::min({100 * h0, h1, span});
-  if (opt.max_step > 0) h = std::min(h, opt.max_step);
+  if (max_step > 0) h = std::min(h, max_step);
   return h;
 }
 
@@ -258,7 +262,7 @@ class DormandPrinceRun {
     stats_.rhs_evaluations += 6;
     using T = DormandPrinceTableau;
     const State err = h * (T::e1 * w_.k1 + T::e3 * w_.k3 + T::e4 * w_.k4 + T::e5 * w_.k5 + T::e6 * w_.k6 + T::e7 * w_.k7);
-    return weighted_rms(err, y_, w_.y1, opt_.rtol, opt_.atol);
+    return weighted_rms(err, y_, w_.y1, opt_.rtol, atol_);
   }
 
   /// One step of length h into w_ and two of h/2 into half1_, half2_; the
@@ -272,7 +276,7 @@ class DormandPrinceRun {
     half2_.k1 = half1_.k7;
     dormand_prince_step(sys_, t_ + 0.5 * h, half1_.y1, 0.5 * h, half2_);
     stats_.rhs_evaluations += 18;
-    return weighted_rms(State(half2_.y1 - w_.y1), y_, half2_.y1, opt_.rtol, opt_.atol);
+    return weighted_rms(State(half2_.y1 - w_.y1), y_, half2_.y1, opt_.rtol, atol_);
   }
 
   /// Move to the end t_new of the accepted step `ws` from (t_, y_).
@@ -338,12 +342,15 @@ class DormandPrinceRun {
     }
   }
 
-  /// (Re)start the method at (t_, y_): nothing carries over but the state.
+  /// (Re)start the method at (t_, y_): nothing carries over but the state; the
+  /// system's scales are read afresh.
   void restart() {
     t_restart_ = t_;
+    atol_ = absolute_tolerance(sys_, y_, opt_.atol);
     sys_.rhs(t_, y_, w_.k1);
     ++stats_.rhs_evaluations;
-    h_ = dormand_prince_initial_step(sys_, t_, y_, w_.k1, t_end_ - t_, opt_, stats_.rhs_evaluations);
+    h_ = dormand_prince_initial_step(sys_, t_, y_, w_.k1, t_end_ - t_, opt_.rtol, atol_, opt_.max_step,
+                                     stats_.rhs_evaluations);
   }
 
   S& sys_;
@@ -355,6 +362,7 @@ class DormandPrinceRun {
   Observer& observer_;
   IntegrationStats stats_;
   Events g_;                      ///< event functions at (t_, y_)
+  State atol_;                    ///< absolute tolerance of each component (since the last restart)
   Step w_, half1_, half2_;        ///< w_.k1 = f(t_, y_) between steps
   DormandPrinceDense<State> dense_;
 };

@@ -10,7 +10,7 @@
 //   T_{j,k+1} = T_jk + (T_jk - T_{j-1,k}) / ((n_j / n_{j-k})^2 - 1),
 // gives T_44 of order 8 (propagated: local extrapolation) and T_43 of order 6, whose
 // difference estimates the error: ||T_44 - T_43|| in the weighted RMS norm of
-// dormand_prince.hpp, accepted when <= 1; next step H 0.9 err^{-1/7}, within
+// dormand_prince.hpp (absolute tolerances from the system's scales), accepted when <= 1; next step H 0.9 err^{-1/7}, within
 // [0.2 H, 4 H] (no growth right after a rejection). f(t, y) is shared by the four
 // sequences, and f at the new point is the next step's first evaluation: an accepted
 // step costs 1 + 3 + 5 + 7 + 1 = 17 evaluations.
@@ -45,7 +45,7 @@ namespace hertzdash {
 
 struct ExtrapolationOptions {
   double rtol = 1e-8;        ///< relative tolerance, > 0
-  double atol = 1e-12;       ///< absolute tolerance (state units), > 0
+  double atol = 1e-12;       ///< absolute tolerance relative to the system's state scales, > 0
   double max_step = 0.0;     ///< largest step (units of the independent variable); 0: no limit
   long max_steps = 1000000;  ///< accepted plus rejected steps before giving up
 };
@@ -56,7 +56,7 @@ namespace detail {
 /// weighted RMS of T_44 - T_43. Adds 16 to `evaluations`.
 template <OdeSystem S>
 double extrapolation_step(const S& sys, double t, const typename S::State& y, const typename S::State& f0, double H,
-                          double rtol, double atol, typename S::State& y1, long& evaluations) {
+                          double rtol, const typename S::State& atol, typename S::State& y1, long& evaluations) {
   using State = typename S::State;
   constexpr std::array<int, 4> n{2, 4, 6, 8};
   std::array<State, 4> T;
@@ -73,14 +73,16 @@ double extrapolation_step(const S& sys, double t, const typename S::State& y, co
   }
   evaluations += 16;
   // Aitken-Neville in place: after pass k, T[j] holds T_{j+1,k+1} (1-based indices).
-  State order6;
-  for (int k = 1; k < 4; ++k) {
+  auto pass = [&](int k) {
     for (int j = 3; j >= k; --j) {
       const double r = static_cast<double>(n[j]) / n[j - k];
       T[j] += (T[j] - T[j - 1]) / (r * r - 1);
     }
-    if (k == 2) order6 = T[3];
-  }
+  };
+  pass(1);
+  pass(2);
+  const State order6 = T[3];
+  pass(3);
   y1 = T[3];
   return weighted_rms(State(T[3] - order6), y, y1, rtol, atol);
 }
@@ -114,7 +116,7 @@ class ExtrapolationRun {
       if (attempts >= opt_.max_steps) throw std::runtime_error("integrate_extrapolation: too many steps");
       double H = std::min(H_, t_end_ - t_);
       if (opt_.max_step > 0) H = std::min(H, opt_.max_step);
-      const double err = extrapolation_step(sys_, t_, y_, f_, H, opt_.rtol, opt_.atol, y1_, stats_.rhs_evaluations);
+      const double err = extrapolation_step(sys_, t_, y_, f_, H, opt_.rtol, atol_, y1_, stats_.rhs_evaluations);
       if (!(err <= 1.0)) {
         if (!std::isfinite(err)) throw std::runtime_error("integrate_extrapolation: non-finite error estimate");
         H_ = H * std::max(min_factor, safety * std::pow(err, -1.0 / 7));
@@ -168,7 +170,7 @@ class ExtrapolationRun {
     while (t_star - t_ > 0) {
       const double d = t_star - t_;
       H = std::min(H, d);
-      const double err = extrapolation_step(sys_, t_, y_, f_, H, opt_.rtol, opt_.atol, y1_, stats_.rhs_evaluations);
+      const double err = extrapolation_step(sys_, t_, y_, f_, H, opt_.rtol, atol_, y1_, stats_.rhs_evaluations);
       if (!(err <= 1.0)) {
         if (!std::isfinite(err)) throw std::runtime_error("integrate_extrapolation: non-finite error estimate");
         H *= std::max(min_factor, safety * std::pow(err, -1.0 / 7));
@@ -183,13 +185,15 @@ class ExtrapolationRun {
     }
   }
 
-  /// (Re)start at (t_, y_): f there and a first step from the Hairer-Norsett-Wanner
-  /// heuristic (sized for order 5, so on the safe side; the step grows 4x per step).
+  /// (Re)start at (t_, y_): the system's scales read afresh, f there and a first step from
+  /// the Hairer-Norsett-Wanner heuristic (sized for order 5, so on the safe side; the step
+  /// grows 4x per step).
   void restart() {
+    atol_ = absolute_tolerance(sys_, y_, opt_.atol);
     sys_.rhs(t_, y_, f_);
     ++stats_.rhs_evaluations;
-    const DormandPrinceOptions first{opt_.rtol, opt_.atol, opt_.max_step};
-    H_ = dormand_prince_initial_step(sys_, t_, y_, f_, t_end_ - t_, first, stats_.rhs_evaluations);
+    H_ = dormand_prince_initial_step(sys_, t_, y_, f_, t_end_ - t_, opt_.rtol, atol_, opt_.max_step,
+                                     stats_.rhs_evaluations);
   }
 
   S& sys_;
@@ -201,6 +205,7 @@ class ExtrapolationRun {
   IntegrationStats stats_;
   Events g_;      ///< event functions at (t_, y_)
   State f_, y1_;  ///< f(t_, y_); the result of the last step tried
+  State atol_;    ///< absolute tolerance of each component (since the last restart)
 };
 
 }  // namespace detail

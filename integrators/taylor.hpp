@@ -17,7 +17,8 @@
 // contact workload at rtol 1e-6..1e-12, 0.6 took 7-14 % less time than 0.5 at equal
 // error, 0.7 and 0.8 no less than 0.6, with less regular errors).
 //   Step from the coefficients' decay: with ||.|| the weighted RMS norm of
-// dormand_prince.hpp (scales atol + rtol |y|, at the step's start), the last two terms
+// dormand_prince.hpp (scales atol_i + rtol |y_i| at the step's start, atol_i = atol x the
+// system's scale of component i, read at the start and after every restart), the last two terms
 // of the series are held to the tolerance, h = min over j in {p-1, p} of
 // ||y_j||^{-1/j} (lower orders if both vanish): the first neglected term is then about h/rho times the last (rho the
 // radius of convergence), so the local error is a fixed fraction of the tolerance and
@@ -65,7 +66,7 @@ namespace hertzdash {
 
 struct TaylorOptions {
   double rtol = 1e-8;        ///< relative tolerance, > 0
-  double atol = 1e-12;       ///< absolute tolerance (state units), > 0
+  double atol = 1e-12;       ///< absolute tolerance relative to the system's state scales, > 0
   long max_steps = 1000000;  ///< steps before giving up
 };
 
@@ -102,7 +103,8 @@ class TaylorRun {
  public:
   TaylorRun(S& sys, State& y, double t0, double t_end, const TaylorOptions& opt, Observer& observer)
       : sys_(sys), y_(y), t_(t0), t_end_(t_end), opt_(opt), observer_(observer), order_(taylor_order(opt.rtol)),
-        rhs_(sys.polynomial_rhs(leaves())), event_series_(sys.polynomial_events(leaves())) {}
+        rhs_(sys.polynomial_rhs(leaves())), atol_(absolute_tolerance(sys, y, opt.atol)),
+        event_series_(sys.polynomial_events(leaves())) {}
   TaylorRun(const TaylorRun&) = delete;  // rhs_ reads coefficients_ through pointers
   TaylorRun& operator=(const TaylorRun&) = delete;
 
@@ -150,7 +152,7 @@ class TaylorRun {
     for (int j = order_; j >= 1; --j) {
       double sum = 0;
       for (int i = 0; i < n; ++i) {
-        const double r = coefficients_[i][j] / (opt_.atol + opt_.rtol * std::abs(y_[i]));
+        const double r = coefficients_[i][j] / (atol_[i] + opt_.rtol * std::abs(y_[i]));
         sum += r * r;
       }
       if (sum > 0) log_inverse_h = std::max(log_inverse_h, std::log(sum / n) / (2 * j));
@@ -276,6 +278,7 @@ class TaylorRun {
       if (action == EventAction::stop) return true;
       if (action == EventAction::restart) {
         rhs_ = sys_.polynomial_rhs(leaves());  // the system may have changed form
+        atol_ = absolute_tolerance(sys_, y_, opt_.atol);  // and its scales
         event_series_ = sys_.polynomial_events(leaves());
         return false;
       }
@@ -299,6 +302,7 @@ class TaylorRun {
   int order_;
   std::array<std::array<double, series_capacity + 1>, n> coefficients_{};
   Rhs rhs_;
+  State atol_;  ///< absolute tolerance of each component (since the last restart)
   EventSeries event_series_;
   std::array<std::array<double, series_capacity + 1>, m> event_coefficients_{};
   std::array<int, m> event_orders_{};

@@ -5,9 +5,11 @@
 #include <atomic>
 #include <cerrno>
 #include <charconv>
+#include <climits>
 #include <cstdio>
 #include <fcntl.h>
 #include <stdexcept>
+#include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
 
@@ -98,15 +100,46 @@ void write_through(const Target& t, const std::string& content) {
 
 std::atomic<unsigned> temporaries{0};
 
+/// NAME.tmp.PID.N beside `target`, within NAME_MAX bytes: a long NAME is cut short (at a UTF-8
+/// character's start); PID.N alone keeps the name unique.
+fs::path temporary_path(const fs::path& target) {
+  const std::string suffix = ".tmp." + std::to_string(::getpid()) + "." + std::to_string(temporaries++);
+  std::string base = target.filename().string();
+  if (base.size() + suffix.size() > NAME_MAX) {
+    base.resize(NAME_MAX - suffix.size());
+    while (!base.empty() && (static_cast<unsigned char>(base.back()) & 0xC0) == 0x80) base.pop_back();
+    if (!base.empty() && static_cast<unsigned char>(base.back()) >= 0xC0) base.pop_back();  // a cut character's lead
+  }
+  return target.parent_path() / (base + suffix);
+}
+
+/// Flush the directory `dir`'s entries to the disk, so that a rename in it survives a power cut.
+/// Best effort: a file system that cannot sync a directory (EINVAL) has nothing to flush.
+void sync_directory(const fs::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
 void write_by_rename(const Target& t, const std::string& content) {
-  const fs::path tmp = t.path.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(temporaries++);
+  const fs::path tmp = temporary_path(t.path);
+  const RemoveOnSignal registered(tmp);  // before the file exists: no moment when a signal would orphan it
+  struct stat previous {};
+  const bool replacing = ::stat(t.path.c_str(), &previous) == 0;
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) fail(t.what, reason_of(errno));
-  const RemoveOnSignal registered(tmp);
-  int error = write_all(fd, content);
+  // The file replaced keeps its permissions (0600 stays 0600, 0755 stays 0755); a new one has
+  // 0666 less the umask. Owner and group are the writer's.
+  int error = replacing && ::fchmod(fd, previous.st_mode & 07777) != 0 ? errno : 0;
+  if (error == 0) error = write_all(fd, content);
+  if (error == 0 && ::fsync(fd) != 0) error = errno;  // the data on disk before the name points to it
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error == 0 && ::rename(tmp.c_str(), t.path.c_str()) != 0) error = errno;
-  if (error == 0) return;
+  if (error == 0) {
+    sync_directory(t.path.parent_path());
+    return;
+  }
   ::unlink(tmp.c_str());
   fail(t.what, reason_of(error));
 }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <fstream>
+#include <istream>
+#include <map>
 #include <optional>
 #include <string_view>
 #include <system_error>
@@ -61,13 +63,35 @@ Fields split(const std::string& line) {
 }
 
 // Refuse a file beyond max_table_bytes before reading it (one that grows while it is read, or a
-// pipe, is stopped at the limit by the reader).
+// pipe, is stopped at the limit by read_bounded).
 void check_size(const std::filesystem::path& path) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (!ec && size > max_table_bytes)
     throw DataError(path.string() + ": " + std::to_string(size) + " bytes; a data table is at most 16 MiB (" +
                     std::to_string(max_table_bytes) + " bytes)");
+}
+
+// The whole of `in`, refused as soon as it exceeds max_table_bytes: at most that and one chunk
+// are ever held, however long a line is.
+std::string read_bounded(std::istream& in, const std::string& path) {
+  std::string content;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    content.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (content.size() > max_table_bytes)
+      throw DataError(path + ": more than " + std::to_string(max_table_bytes) +
+                      " bytes; a data table is at most 16 MiB (read so far)");
+  }
+  if (in.bad()) throw DataError(path + ": cannot read: " + std::generic_category().message(errno));
+  return content;
+}
+
+// The 1-based column of a comment line's text, after the '#' and blanks.
+std::size_t comment_column(std::string_view line) {
+  const std::size_t hash = line.find('#');
+  const std::size_t text = line.find_first_not_of(blanks, hash + 1);
+  return (text == std::string_view::npos ? hash + 1 : text) + 1;
 }
 
 }  // namespace
@@ -79,24 +103,29 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
   if (!in) throw DataError(path.string() + ": cannot read: " + std::generic_category().message(errno));
   CsvTable t;
   t.path_ = path.string();
-  std::string line;
-  std::size_t n = 0, bytes = 0;
-  while (std::getline(in, line)) {
+  const std::string content = read_bounded(in, t.path_);
+  std::size_t n = 0;
+  for (std::size_t begin = 0; begin < content.size();) {
+    const std::size_t end = std::min(content.find('\n', begin), content.size());
+    std::string line = content.substr(begin, end - begin);
+    begin = end + 1;
     ++n;
-    bytes += line.size() + 1;
-    if (bytes > max_table_bytes + 1)  // + 1: the last line may have no line end
-      throw DataError(t.path_ + ": more than " + std::to_string(max_table_bytes) +
-                      " bytes; a data table is at most 16 MiB (read so far)");
     if (n == 1 && line.rfind(byte_order_mark, 0) == 0) line.erase(0, byte_order_mark.size());
     const std::string s = trim(line);
     if (s.empty()) continue;
     if (s[0] == '#') {
-      if (t.columns_.empty()) t.comments_.push_back(trim(s.substr(1)));
+      if (t.columns_.empty()) t.comments_.push_back({trim(s.substr(1)), n, comment_column(line)});
       continue;
     }
     Fields fields = split(line);
     if (!fields.terminated) throw DataError(t.path_ + ":" + std::to_string(n) + ": unterminated quoted field");
     if (t.columns_.empty()) {
+      for (std::size_t c = 0; c < fields.texts.size(); ++c)
+        for (std::size_t d = 0; d < c; ++d)
+          if (fields.texts[d] == fields.texts[c])
+            throw DataError(t.path_ + ":" + std::to_string(n) + ":" + std::to_string(fields.columns[c] + 1) + ": column '" +
+                            fields.texts[c] + "' again (first at column " + std::to_string(fields.columns[d] + 1) +
+                            "); each column name appears once");
       t.columns_ = std::move(fields.texts);
       continue;
     }
@@ -114,13 +143,18 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
   return t;
 }
 
-std::map<std::string, std::string> CsvTable::comment_fields() const {
-  std::map<std::string, std::string> fields;
-  for (const std::string& line : comments_) {
-    const auto colon = line.find(':');
-    if (colon != std::string::npos) fields[trim(line.substr(0, colon))] = trim(line.substr(colon + 1));
+std::optional<std::string> CsvTable::comment_field(const std::string& key) const {
+  const Comment* found = nullptr;
+  for (const Comment& c : comments_) {
+    const auto colon = c.text.find(':');
+    if (colon == std::string::npos || trim(c.text.substr(0, colon)) != key) continue;
+    if (found)
+      throw DataError(path_ + ":" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": header key '" + key +
+                      "' again (first on line " + std::to_string(found->line) + "); each header key appears once");
+    found = &c;
   }
-  return fields;
+  if (!found) return std::nullopt;
+  return trim(found->text.substr(found->text.find(':') + 1));
 }
 
 void CsvTable::require_columns(const std::vector<std::string>& names) const {
@@ -137,7 +171,7 @@ void CsvTable::require_unique(const std::string& column) const {
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     const auto [it, inserted] = first.emplace(rows_[r][c], r);
     if (!inserted)
-      throw DataError(where(r, column) + ": '" + rows_[r][c] + "' again (first on line " +
+      throw DataError(field_location(r, column) + ": '" + rows_[r][c] + "' again (first on line " +
                       std::to_string(line_numbers_[it->second]) + "); each " + column + " appears once");
   }
 }
@@ -150,7 +184,7 @@ std::size_t CsvTable::column_index(const std::string& name) const {
 
 std::string CsvTable::row_location(std::size_t row) const { return path_ + ":" + std::to_string(line_numbers_.at(row)); }
 
-std::string CsvTable::where(std::size_t row, const std::string& column) const {
+std::string CsvTable::field_location(std::size_t row, const std::string& column) const {
   return row_location(row) + ":" + std::to_string(field_columns_.at(row).at(column_index(column)) + 1) + ": column '" +
          column + "'";
 }
@@ -162,13 +196,13 @@ const std::string& CsvTable::text(std::size_t row, const std::string& column) co
 double CsvTable::number(std::size_t row, const std::string& column) const {
   const std::string& s = text(row, column);
   const std::optional<double> v = parse_decimal(s);
-  if (!v) throw DataError(where(row, column) + ": '" + s + "' is not " + decimal_number_format);
+  if (!v) throw DataError(field_location(row, column) + ": " + decimal_refusal(s));
   return *v;
 }
 
 double CsvTable::number(std::size_t row, const std::string& column, const ValueRange& range) const {
   const double v = number(row, column);
-  if (!range.contains(v)) throw DataError(where(row, column) + ": " + text(row, column) + " is not " + range.text);
+  if (!range.contains(v)) throw DataError(field_location(row, column) + ": " + text(row, column) + " is not " + range.text);
   return v;
 }
 

@@ -6,7 +6,7 @@
 // column: "FILE:LINE:COL: column 'NAME': ...".
 #include <cstdint>
 #include <filesystem>
-#include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,10 +34,15 @@ class CsvTable {
 
   const std::vector<std::string>& columns() const { return columns_; }
   std::size_t rows() const { return rows_.size(); }
-  /// The comment lines before the header, without the leading '#'.
-  const std::vector<std::string>& comments() const { return comments_; }
-  /// The comment lines of the form "key: value", as key -> value (both trimmed).
-  std::map<std::string, std::string> comment_fields() const;
+  /// A comment line before the header, without the leading '#' (trimmed), where it is.
+  struct Comment {
+    std::string text;
+    std::size_t line, column;  ///< 1-based; the column where `text` starts
+  };
+  const std::vector<Comment>& comments() const { return comments_; }
+  /// The value (trimmed) of the comment line "key: value" before the header, if there is one;
+  /// throws DataError naming FILE:LINE:COL if two lines give `key`.
+  std::optional<std::string> comment_field(const std::string& key) const;
 
   /// Throws DataError if the table lacks any of these columns.
   void require_columns(const std::vector<std::string>& names) const;
@@ -59,13 +64,14 @@ class CsvTable {
   std::size_t find_row(const std::string& column, const std::string& value) const;
   /// "FILE:LINE" of a row, for messages about its content.
   std::string row_location(std::size_t row) const;
+  /// "FILE:LINE:COL: column 'NAME'" of a field, for messages about its value.
+  std::string field_location(std::size_t row, const std::string& column) const;
 
  private:
   std::size_t column_index(const std::string& name) const;
-  std::string where(std::size_t row, const std::string& column) const;
 
   std::string path_;
-  std::vector<std::string> comments_;
+  std::vector<Comment> comments_;
   std::vector<std::string> columns_;
   std::vector<std::vector<std::string>> rows_;
   std::vector<std::vector<std::size_t>> field_columns_;  ///< the 1-based column where each field starts

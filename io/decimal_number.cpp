@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <system_error>
 
 namespace hertzdash {
@@ -41,15 +42,48 @@ bool is_unsigned_decimal(std::string_view text) {
 
 }  // namespace
 
-std::optional<double> parse_decimal(std::string_view text) {
+namespace {
+
+struct Parsed {
+  std::optional<double> value;
+  DecimalError error = DecimalError::not_decimal;  // when there is no value
+};
+
+Parsed parse(std::string_view text) {
   const bool negative = !text.empty() && text.front() == '-';
   // std::from_chars takes a minus sign but no plus sign.
   const std::string_view body = !text.empty() && (text.front() == '+' || negative) ? text.substr(1) : text;
-  if (!is_unsigned_decimal(body)) return std::nullopt;
+  if (!is_unsigned_decimal(body)) return {};
   double v = 0;
+  // result_out_of_range: an overflow, or a nonzero number that rounds to zero; subnormals are read.
   const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), v, std::chars_format::general);
-  if (ec != std::errc() || end != body.data() + body.size() || !std::isfinite(v)) return std::nullopt;
-  return negative ? -v : v;
+  if (ec == std::errc::result_out_of_range) return {std::nullopt, DecimalError::out_of_range};
+  if (ec != std::errc() || end != body.data() + body.size() || !std::isfinite(v)) return {};
+  return {negative ? -v : v};
+}
+
+}  // namespace
+
+std::optional<double> parse_decimal(std::string_view text) { return parse(text).value; }
+
+std::optional<DecimalError> decimal_error(std::string_view text) {
+  const Parsed p = parse(text);
+  if (p.value) return std::nullopt;
+  return p.error;
+}
+
+std::string decimal_refusal(std::string_view text) {
+  std::string message = "'";  // built piece by piece: GCC 12 warns (-Wrestrict) of "'" + std::string(text)
+  message += text;
+  if (decimal_error(text) == DecimalError::out_of_range) {
+    message += "' is out of range of double (";
+    message += double_range_text;
+    message += ')';
+  } else {
+    message += "' is not ";
+    message += decimal_number_format;
+  }
+  return message;
 }
 
 std::optional<double> parse_option_number(std::string_view text) {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace hertzdash {
@@ -55,12 +56,11 @@ std::string allowed_columns() {
 MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
   const CsvTable t = CsvTable::read(path);
   const std::string file = path.string();
-  const auto fields = t.comment_fields();
   auto required = [&](const std::string& key) {
-    const auto it = fields.find(key);
-    if (it == fields.end() || it->second.empty())
+    const std::optional<std::string> value = t.comment_field(key);
+    if (!value || value->empty())
       throw DataError(file + ": missing header line '# " + key + ": ...' (see data/measurements/README.md)");
-    return it->second;
+    return *value;
   };
 
   MeasuredTrace m;
@@ -69,12 +69,13 @@ MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
   m.rod = required("rod");
   const std::string h = required("height_m");
   m.height_m = parse_decimal(h).value_or(NAN);
+  if (decimal_error(h) == DecimalError::out_of_range)
+    throw DataError(file + ": header 'height_m: " + h + "': " + decimal_refusal(h));
   if (!(m.height_m > 0))
     throw DataError(file + ": header 'height_m: " + h + "' must be a decimal number > 0 (m)");
-  if (const auto s = fields.find("synthetic"); s != fields.end()) {
-    if (s->second != "true" && s->second != "false")
-      throw DataError(file + ": header 'synthetic: " + s->second + "' must be true or false");
-    m.synthetic = s->second == "true";
+  if (const std::optional<std::string> s = t.comment_field("synthetic")) {
+    if (*s != "true" && *s != "false") throw DataError(file + ": header 'synthetic: " + *s + "' must be true or false");
+    m.synthetic = *s == "true";
   }
 
   // Each column is a quantity with its unit (t_us, force_kN, ...), read into SI; one column per quantity.

@@ -18,6 +18,11 @@
 //   3 force_zero: with the tension clamp, g = F (separation where the force
 //     reaches zero, stop); else inactive
 // At onset the law's coefficients are fixed from that impact's approach speed.
+//
+// Scales (state_scale, the integrators' absolute tolerances, ode/ode_system.hpp): x ~ X,
+// the undamped Hertz maximum compression at the impact speed, and x' ~ v0, the impact
+// speed (model/hertz.hpp, undamped_hertz_impact); before the first contact the approach
+// speed of the set-up, from each onset on that impact's own.
 #include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
@@ -55,7 +60,9 @@ class DropTest {
   using State = Eigen::Matrix<double, 2, 1>;
   using Events = std::array<double, event_count>;
 
-  explicit DropTest(const DropTestModel& model) : model_(model) {}  ///< keeps a copy
+  explicit DropTest(const DropTestModel& model) : model_(model) {  ///< keeps a copy
+    set_state_scale(approach_speed(model.setup));
+  }
 
   /// Initial state: released from rest at height h, or (with an impact velocity)
   /// at contact onset, already calibrated for that impact.
@@ -73,6 +80,8 @@ class DropTest {
   bool in_contact() const { return law_.has_value(); }
   const Law& law() const { return *law_; }
   const DropTestModel& model() const { return model_; }
+  /// (X [m], v0 [m/s]) of the coming or current impact (see "Scales" above).
+  State state_scale() const { return state_scale_; }
 
   /// Contact force [N], compressive positive; zero in flight.
   double contact_force(const State& y) const { return law_ ? force_at(std::max(y[0], 0.0), y[1]) : 0.0; }
@@ -118,6 +127,12 @@ class DropTest {
     // Scales of the impact: X* = (m v0^2 / K)^{2/5} and v0.
     x_scale_m_ = hertz_impact_scale_m(model_.K, model_.mass_kg, v0);
     v_scale_mps_ = v0;
+    set_state_scale(v0);
+  }
+
+  /// The scales of an impact at approach speed v0 [m/s].
+  void set_state_scale(double v0) {
+    state_scale_ << undamped_hertz_impact(model_.K, model_.mass_kg, v0).max_deformation_m, v0;
   }
 
   /// The law's force at x >= 0, with the tension clamp applied.
@@ -129,6 +144,7 @@ class DropTest {
   DropTestModel model_;
   std::optional<Law> law_;
   double x_scale_m_ = 0.0, v_scale_mps_ = 0.0;  ///< per impact, for difference steps
+  State state_scale_;                           ///< per impact, for absolute tolerances
 };
 
 }  // namespace hertzdash

@@ -30,8 +30,17 @@ struct DropTestSetup {
   std::optional<ElasticRodSetup> elastic_rod;
 };
 
+/// Which of the inputs that set the impact's scale a user gave (an impact velocity, when set,
+/// is always given); the others are defaults. A refusal of the scale names an input the user
+/// gave and marks the defaults among the values it lists. All true (the default): a C++
+/// caller's set-up, every value its own.
+struct GivenScaleInputs {
+  bool height = true, gravity = true, mass = true, ball_radius = true, ball_E = true, rod_E = true, ball_nu = true,
+       rod_nu = true;
+};
+
 /// Throws InvalidParameter naming the CLI option and its valid range; includes validate_hertz_scale.
-void validate(const DropTestSetup& s);
+void validate(const DropTestSetup& s, const GivenScaleInputs& given = {});
 
 /// The least undamped Hertz deformation a set-up may have [m]: a picometre, a hundredth of an
 /// atom's size, below which no continuum contact model applies (and the integrators' absolute
@@ -40,10 +49,14 @@ inline constexpr double min_hertz_deformation_m = 1e-12;
 
 /// The impact's own scale is one the Hertz model describes: the undamped Hertz deformation
 /// X = (5 m v0^2 / (4 K))^{2/5} (model/hertz.hpp) is finite, below the ball radius R (the
-/// small-deformation assumption; the message gives the approach speed v0 = sqrt(4 K R^{5/2} / (5 m))
-/// at which X = R) and at least min_hertz_deformation_m. Throws InvalidParameter naming
-/// --impact-velocity, or --height when the speed comes from a fall.
-void validate_hertz_scale(const DropTestSetup& s);
+/// small-deformation assumption) and at least min_hertz_deformation_m. Otherwise throws
+/// InvalidParameter naming the first input of these the user gave, with the bound on it where
+/// one input alone sets it: --impact-velocity (v0 = sqrt(4 K X^{5/2} / (5 m)) at X = R or
+/// X = min_hertz_deformation_m), --height (v0^2 / 2g), --gravity (v0^2 / 2h), --mass
+/// (4 K X^{5/2} / (5 v0^2)); then --ball-radius, --ball-E, --rod-E, --ball-nu, --rod-nu (which
+/// enter through K and R). The message lists the inputs that together give X, "(default)" after
+/// each the user did not give.
+void validate_hertz_scale(const DropTestSetup& s, const GivenScaleInputs& given = {});
 
 /// Hertz stiffness of the set-up, eq. (3) [N/m^{3/2}].
 double hertz_stiffness(const DropTestSetup& s);

@@ -26,6 +26,10 @@
 //   1 max_compression: in contact g = x' (observation)
 //   2 peak_force: in contact g = dF/dt where F > 0, else -1 (observation)
 //   3 force_zero: in contact with the tension clamp g = F (ends contact like 0); else inactive
+// Scales (state_scale, the integrators' absolute tolerances, ode/ode_system.hpp), of the
+// current or last impact at approach speed v0: displacements u_j and w ~ X, the undamped
+// Hertz maximum compression at v0 (model/hertz.hpp); velocities v_j and w' ~ v0; the
+// dissipated energies D_c and D_m ~ (1/2) m v0^2, the impact's kinetic energy.
 // By default the run ends at the first separation. follow_impacts(n, v_min) follows the
 // flights and the next n - 1 impacts (the rod still ringing, the hemisphere still moving on
 // its cell); each impact calibrates the law afresh from its approach speed x' at onset, as the
@@ -110,6 +114,16 @@ class ElasticDropTest {
   /// The law of the current impact (in contact), or of the last one.
   const Law& law() const { return *law_; }
   int size() const { return 2 * (N_ + 1) + 4; }
+  /// The characteristic magnitude of each state component (see "Scales" above).
+  State state_scale() const {
+    const double X = undamped_hertz_impact(model_.K, model_.setup.mass_kg, v_scale_mps_).max_deformation_m;
+    State s(size());
+    for (int j = 0; j <= N_; ++j) s[u(j)] = X, s[v(j)] = v_scale_mps_;
+    s[w()] = X;
+    s[wdot()] = v_scale_mps_;
+    s[dissipated_contact()] = s[dissipated_material()] = 0.5 * model_.setup.mass_kg * v_scale_mps_ * v_scale_mps_;
+    return s;
+  }
 
   /// At onset: every node at the approach speed, nothing strained, the hemisphere at rest.
   State initial_state() const {

@@ -30,6 +30,9 @@
 //     peak force by O(1e-12) relative. A difference along tau instead is exactly zero
 //     over a span at the undamped turning point, where a root finder meets a flat zero.
 //   3 observation time: g = t_obs - t, if an observation time is set (observation)
+// Scales (state_scale, the integrators' absolute tolerances, ode/ode_system.hpp): u ~ X^{1/2},
+// v ~ v0, t ~ t_H, with X and t_H the undamped Hertz maximum compression and contact time
+// at v0 (model/hertz.hpp, undamped_hertz_impact).
 #include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/force_rate.hpp"
@@ -64,12 +67,16 @@ class RegularizedContact {
       : law_(c, s), inverse_mass_(1.0 / c.mass_kg), gravity_mps2_(gravity_mps2), t_obs_s_(t_obs_s), v0_mps_(c.v0_mps) {
     // Scales of the impact for the difference steps: u* = X*^{1/2}, X* = (m v0^2 / K)^{2/5}, and v0.
     u_scale_ = std::sqrt(hertz_impact_scale_m(c.K, c.mass_kg, c.v0_mps));
+    const UndampedHertzImpact h = undamped_hertz_impact(c.K, c.mass_kg, c.v0_mps);
+    state_scale_ = State{std::sqrt(h.max_deformation_m), c.v0_mps, h.contact_time_s};
   }
 
   /// Onset: u = 0, v = v0, t = 0.
   State initial_state() const { return State{0.0, v0_mps_, 0.0}; }
 
   const Law& law() const { return law_; }
+  /// (X^{1/2} [m^{1/2}], v0 [m/s], t_H [s]) (see "Scales" above).
+  State state_scale() const { return state_scale_; }
   double force(const State& y) const { return force_at(y[0], y[1]); }
 
   void rhs(double, const State& y, State& dy) const {
@@ -131,6 +138,7 @@ class RegularizedContact {
   std::optional<double> t_obs_s_;
   double v0_mps_;
   double u_scale_;  ///< X*^{1/2} [m^{1/2}], for the difference step in u
+  State state_scale_;
 };
 
 }  // namespace hertzdash

@@ -14,11 +14,21 @@
 // size up to a compile-time capacity, stored inline, so a step allocates nothing). A
 // system of runtime size sizes the derivative it writes: rhs() starts with
 // dy.resize(y.size()); integrators size their work vectors from the state they are given.
+//
+// Scales. A system may also offer `State state_scale() const`: the characteristic
+// magnitude of each state component in its own units (say X [m] for a deformation, v0
+// [m/s] for a speed), all > 0 and finite. An adaptive integrator's absolute tolerance
+// for component i is then atol x scale_i, so its `atol` is dimensionless and the same
+// run written in other units (or at another impact speed or mass with the same
+// dimensionless motion) takes the same steps. Integrators read the scales at the start
+// and after every restart (a new impact may bring new scales); a system without them
+// gets scale 1 (atol in the state's own units).
 #include <Eigen/Core>
 
 #include <array>
 #include <concepts>
 #include <cstddef>
+#include <stdexcept>
 #include <type_traits>
 
 namespace hertzdash {
@@ -48,6 +58,20 @@ template <class E>
   requires std::is_enum_v<E>
 constexpr int event_index(E e) {
   return static_cast<int>(e);
+}
+
+/// The absolute tolerance of each component of the state y of `sys`: atol x the system's
+/// state_scale() (see "Scales" above), or atol for a system without scales.
+template <OdeSystem S>
+typename S::State absolute_tolerance(const S& sys, const typename S::State& y, double atol) {
+  if constexpr (requires { { sys.state_scale() } -> std::convertible_to<typename S::State>; }) {
+    const typename S::State scale = sys.state_scale();
+    if (scale.size() != y.size() || !(scale.array() > 0).all() || !scale.allFinite())
+      throw std::invalid_argument("state_scale: every component's scale must be positive and finite");
+    return atol * scale;
+  } else {
+    return S::State::Constant(y.size(), atol);
+  }
 }
 
 /// Receives every accepted step and every fired event (after the system handled it).

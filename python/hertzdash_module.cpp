@@ -134,8 +134,8 @@ void warn(const std::string& message) {
   if (!message.empty() && PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
 }
 
-void warn_about(const SimulateRun& run) {
-  for (const RunDiagnostic& d : run_diagnostics(run)) warn(d.message);
+void warn_about(const std::vector<RunDiagnostic>& diagnostics) {
+  for (const RunDiagnostic& d : diagnostics) warn(d.message);
 }
 
 // ---- the functions ----
@@ -147,7 +147,7 @@ py::dict py_simulate(const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     run = run_simulate(options, paper());
   }
-  warn_about(run);
+  warn_about(run_diagnostics(run));
   return to_python(to_json(run));
 }
 
@@ -170,7 +170,7 @@ py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
     }
     samples = grid_step ? uniform_trace(run.trace, *grid_step) : run.trace;
   }
-  warn_about(run);
+  warn_about(run_diagnostics(run));
   py::dict out;
   for (const TraceColumn& c : trace_column_table) {
     py::array_t<double> column(static_cast<py::ssize_t>(samples.size()));
@@ -188,7 +188,7 @@ py::dict py_restitution(const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     run = run_restitution(options, paper());
   }
-  warn(fallback_note(run.solver.integrator, run.integrator_used, run.fallback_reason));
+  warn_about(run_diagnostics(run));
   return to_python(to_json(run));
 }
 
@@ -199,7 +199,7 @@ py::dict calibrate(double target, const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     run = run_restitution(options, paper(), target);
   }
-  warn(fallback_note(run.solver.integrator, run.integrator_used, run.fallback_reason));
+  warn_about(run_diagnostics(run));
   return to_python(to_json(run));
 }
 
@@ -213,7 +213,7 @@ py::dict py_bounce(double bounces, double min_rebound_velocity, std::optional<do
     py::gil_scoped_release release;
     run = run_bounce(options, paper(), bounce, target_interval_restitution);
   }
-  warn(fallback_note(run.solver.integrator, run.sequence.integrator_used, run.fallback_reason));
+  warn_about(run_diagnostics(run));
   return to_python(to_json(run));
 }
 
@@ -234,9 +234,9 @@ py::dict py_virtual_measurement(const std::string& path, double sample_rate, dou
                          "hertzdash simulate: a SYNTHETIC virtual measurement of the model (not a measurement)",
                          virtual_measurement_parameters(run, chain));
   }
-  warn_about(run);
-  warn(virtual_measurement_note(run, chain));
-  return to_python(to_json(run));
+  const std::string note = virtual_measurement_note(run, chain);
+  warn_about(run_diagnostics(run, note));
+  return to_python(to_json(run, note));
 }
 
 // fit: `hertzdash fit --json`; only the set-up's options are keywords (the fit chooses its solver).
@@ -261,7 +261,7 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
     run = run_fit(trace, options, paper(), settings, compare_laws);
     if (!curves.empty() && !run.fits.empty()) write_fit_curves(run.fits.front(), run.trace, curves);
   }
-  for (const std::string& w : fit_warnings(run)) warn(w);
+  warn_about(fit_diagnostics(run, paper()));
   return to_python(to_json(run, paper()));
 }
 
@@ -387,7 +387,6 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   {
     py::gil_scoped_release release;
     SweepOptions sweep{.threads = threads, .label = "hertzdash.simulate_many", .progress = false};
-    sweep.chunk = std::max<std::size_t>(1, n / (4 * sweep_threads(sweep)));  // every thread gets work
     parallel_sweep(
         n, solver, [&](ImpactSimulator& sim, std::size_t i) { results[i] = sim.run(setups[i], base.damping); }, sweep);
   }
@@ -400,6 +399,27 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   py::array_t<bool> separated(static_cast<py::ssize_t>(n));
   for (std::size_t i = 0; i < n; ++i) separated.mutable_at(static_cast<py::ssize_t>(i)) = results[i].separated;
   out["separated"] = separated;
+  // Each point's codes (the "code"s of simulate()'s "warnings"), and one warning per code.
+  py::list codes;
+  DiagnosticSet any;
+  for (const ImpactSummary& r : results) {
+    py::list point;
+    for (const DiagnosticInfo& d : diagnostic_table)
+      if (r.diagnostics.has(d.code)) {
+        point.append(std::string(d.name));
+        any.add(d.code);
+      }
+    codes.append(point);
+  }
+  out["warnings"] = codes;
+  for (const DiagnosticInfo& d : diagnostic_table) {
+    if (!any.has(d.code)) continue;
+    const auto count = std::count_if(results.begin(), results.end(),
+                                     [&](const ImpactSummary& r) { return r.diagnostics.has(d.code); });
+    warn(fmt::format("{} of {} points: {} (the point's entry of 'warnings' says which; "
+                     "hertzdash.simulate() at a point gives the message)",
+                     count, n, d.name));
+  }
   return out;
 }
 
@@ -501,7 +521,7 @@ PYBIND11_MODULE(hertzdash, m) {
             .c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },
         "laws() -> list of dict\n\nThe registered damping laws: name, citation, formula, coefficients, validity, "
-        "force_continuous_at_onset (`hertzdash models --json`).");
+        "force_continuous_at_onset, dissipative (`hertzdash models --json`).");
   m.def("paper_parameters", &py_paper_parameters,
         "paper_parameters() -> dict\n\nThe paper's Tables 1-3 and the stated assumptions as the library reads them "
         "(data/*.csv): rods (name, diameter_m, length_m, mass_kg, restitution, zeta_printed, natural_frequency_hz, "
@@ -515,8 +535,9 @@ PYBIND11_MODULE(hertzdash, m) {
          "GIL released; threads=0: all cores). Numeric set-up options may be 1-D arrays of one common length "
          "(scalars and length-1 arrays broadcast); the solver options are one setting for all. Returns arrays "
          "e_effective, peak_force_N, max_deformation_m, contact_time_s, impact_velocity_mps, rebound_velocity_mps "
-         "and separated (bool), element i equal to simulate() of point i. A bad value raises ValueError naming "
-         "the option and the point.\n\n" +
+         "and separated (bool), element i equal to simulate() of point i, and warnings (a list per point of the "
+         "codes of simulate()'s warnings; one UserWarning per code says how many points carry it). A bad value "
+         "raises ValueError naming the option and the point; a result that contradicts the model, RuntimeError.\n\n" +
          options)
             .c_str());
 }

@@ -1,5 +1,6 @@
 #include "hertzdash/simulation/bounce_sequence.hpp"
 
+#include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/elastic_bounces.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
@@ -27,7 +28,8 @@ void run_rigid_bounces(const DropTestSetup& setup, std::string_view law, const S
     if (n == 0) out.integrator_used = r.integrator_used;
     out.work.add_work(r.work);
     BounceImpact b{.onset_time_s = t_onset, .approach_speed_mps = r.impact_velocity_mps,
-                   .peak_force_N = r.peak_force_N, .max_deformation_m = r.max_deformation_m, .separated = r.separated};
+                   .peak_force_N = r.peak_force_N, .max_deformation_m = r.max_deformation_m, .separated = r.separated,
+                   .diagnostics = r.diagnostics};
     if (r.separated) {
       b.contact_time_s = r.contact_time_s;
       b.separation_time_s = t_onset + r.contact_time_s;
@@ -74,6 +76,21 @@ void validate(const BounceOptions& o) {
   require_non_negative("--min-rebound-velocity", o.min_rebound_velocity_mps, "m/s");
 }
 
+ImpactSummary bounce_impact_summary(const BounceImpact& b, const DropTestSetup& setup, IntegratorKind used) {
+  ImpactSummary s;
+  s.K = hertz_stiffness(setup);
+  s.impact_velocity_mps = b.approach_speed_mps;
+  s.rebound_velocity_mps = b.rebound_speed_mps;
+  s.peak_force_N = b.peak_force_N;
+  s.max_deformation_m = b.max_deformation_m;
+  s.peak_contact_pressure_Pa = hertz_peak_pressure_Pa(s.K, setup.ball_radius_m, b.max_deformation_m);
+  s.contact_time_s = b.contact_time_s;
+  s.separated = b.separated;
+  s.integrator_used = used;
+  s.diagnostics = b.diagnostics;
+  return s;
+}
+
 std::vector<double> interval_ratios(const std::vector<double>& t) {
   std::vector<double> r;
   for (std::size_t n = 0; n + 2 < t.size(); ++n) r.push_back((t[n + 2] - t[n + 1]) / (t[n + 1] - t[n]));
@@ -113,6 +130,8 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
                                  options, integrate, out);
       }
     });
+    for (BounceImpact& b : out.impacts)
+      b.diagnostics = impact_diagnostics(bounce_impact_summary(b, s, out.integrator_used), s, solver);
   });
   for (const BounceImpact& b : out.impacts) {
     out.onset_times_s.push_back(b.onset_time_s);

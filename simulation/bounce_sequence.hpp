@@ -25,6 +25,8 @@
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/simulation/calibrate_restitution.hpp"
+#include "hertzdash/simulation/diagnostic_codes.hpp"
+#include "hertzdash/simulation/impact_summary.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
 
 #include <optional>
@@ -56,6 +58,7 @@ struct BounceImpact {
   double approach_speed_mps = 0, rebound_speed_mps = 0;
   double peak_force_N = 0, max_deformation_m = 0;
   bool separated = false;  ///< false: the rod came to rest on the ball in this impact
+  DiagnosticSet diagnostics;  ///< the impact's notes and warnings (simulation/result_checks.hpp)
 };
 
 struct BounceSequence {
@@ -80,6 +83,11 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
 /// (InvalidParameter("--target-interval-restitution", ...) when out of reach).
 RestitutionCalibration calibrate_interval_restitution(const DropTestSetup& setup, std::string_view law,
                                                       const SolverSettings& solver, double target);
+
+/// An impact of the sequence of `setup` as an ImpactSummary: the fields the diagnostics and
+/// their messages read (K, approach and rebound speeds, peak force and pressure, deformation,
+/// separation, diagnostics, integrator_used).
+ImpactSummary bounce_impact_summary(const BounceImpact& b, const DropTestSetup& setup, IntegratorKind used);
 
 /// The interval ratios of the onset times t (size n gives n - 2 ratios).
 std::vector<double> interval_ratios(const std::vector<double>& onset_times_s);

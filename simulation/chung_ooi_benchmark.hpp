@@ -21,8 +21,12 @@
 // hertz_stiffness() then gives K = (4/3) E* sqrt(R*), the benchmark's. The curves are read
 // in SI units (the files hold um or us against kN).
 #include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/table_ranges.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,8 +34,11 @@
 #include <fstream>
 #include <functional>
 #include <limits>
-#include <sstream>
+#include <optional>
+#include <numbers>
 #include <string>
+#include <string_view>
+#include <tuple>
 #include <vector>
 
 namespace hertzdash {
@@ -54,8 +61,13 @@ inline std::filesystem::path chung_ooi_data_dir(const std::filesystem::path& dat
   return data_dir / "external" / "chung-ooi-2011";
 }
 
-/// The tests of parameters.csv in `dir`; throws DataError naming file, line and column of a defect.
+/// The tests of parameters.csv in `dir`; throws DataError naming file, line and column of a
+/// defect: a value out of its range (E, density, radii, speed, masses > 0, nu in (-1, 0.5)), an
+/// unknown counterpart, or an effective radius or mass other than the one the sphere's radius,
+/// density and counterpart give (R* = R/2, m* = m/2 for two identical spheres; R, m on a flat;
+/// m = density (4/3) pi R^3), to 1e-12 relative.
 inline std::vector<ChungOoiTest> load_chung_ooi_tests(const std::filesystem::path& dir = chung_ooi_data_dir()) {
+  using namespace table_ranges;
   const CsvTable t = CsvTable::read(dir / "parameters.csv");
   t.require_columns({"test", "description", "E_Pa", "nu", "density_kgpm3", "radius_m", "counterpart",
                      "relative_speed_mps", "effective_radius_m", "effective_mass_kg", "source"});
@@ -65,12 +77,24 @@ inline std::vector<ChungOoiTest> load_chung_ooi_tests(const std::filesystem::pat
   for (std::size_t r = 0; r < t.rows(); ++r) {
     const std::string& counterpart = t.text(r, "counterpart");
     if (counterpart != "rigid-flat" && counterpart != "identical-sphere")
-      throw DataError((dir / "parameters.csv").string() + ": counterpart '" + counterpart +
-                      "' is neither rigid-flat nor identical-sphere");
-    tests.push_back({t.text(r, "test"), t.text(r, "description"), Material{t.number(r, "E_Pa"), t.number(r, "nu")},
-                     t.number(r, "density_kgpm3"), t.number(r, "radius_m"), counterpart == "rigid-flat",
-                     t.number(r, "relative_speed_mps"), t.number(r, "effective_radius_m"),
-                     t.number(r, "effective_mass_kg")});
+      throw DataError(t.row_location(r) + ": counterpart '" + counterpart + "' is neither rigid-flat nor identical-sphere");
+    const ChungOoiTest test{t.text(r, "test"),
+                            t.text(r, "description"),
+                            Material{t.number(r, "E_Pa", positive), t.number(r, "nu", poisson_ratio)},
+                            t.number(r, "density_kgpm3", positive),
+                            t.number(r, "radius_m", positive),
+                            counterpart == "rigid-flat",
+                            t.number(r, "relative_speed_mps", positive),
+                            t.number(r, "effective_radius_m", positive),
+                            t.number(r, "effective_mass_kg", positive)};
+    const double share = test.rigid_flat ? 1.0 : 0.5;  // of the sphere's radius and mass
+    const double mass_kg = test.density_kgpm3 * 4.0 / 3.0 * std::numbers::pi * std::pow(test.radius_m, 3);
+    for (const auto& [column, value, expected] : {std::tuple{"effective_radius_m", test.effective_radius_m, share * test.radius_m},
+                                                  std::tuple{"effective_mass_kg", test.effective_mass_kg, share * mass_kg}})
+      if (!(std::abs(value - expected) <= 1e-12 * expected))
+        throw DataError(fmt::format("{}: {} is not {:.17g}, what radius_m, density_kgpm3 and the counterpart {} give",
+                                    t.field_location(r, column), t.text(r, column), expected, counterpart));
+    tests.push_back(test);
   }
   return tests;
 }
@@ -96,21 +120,31 @@ struct CurvePoint {
   double force_N;
 };
 
-/// A digitised curve of the benchmark: two whitespace-separated columns, um or us against kN,
-/// returned in m or s against N. Throws DataError on a line that is not two numbers.
+/// A digitised curve of the benchmark: two columns separated by blanks, um or us against kN,
+/// returned in m or s against N. Numbers are decimal (io/decimal_number.hpp). Throws DataError
+/// naming FILE:LINE (and :COL for a field that is not a decimal number or is out of the range of
+/// a double) on a line that is not two numbers.
 inline std::vector<CurvePoint> read_digitised_curve(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw DataError("cannot read " + file.string());
+  constexpr const char* blanks = " \t\r";
   std::vector<CurvePoint> points;
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::istringstream fields(line);
-    double a = 0, f = 0;
-    std::string rest;
-    if (!(fields >> a >> f) || (fields >> rest))
-      throw DataError(file.string() + ":" + std::to_string(n) + ": expected two numbers, got '" + line + "'");
-    points.push_back({a * 1e-6, f * 1e3});
+    const std::string where = file.string() + ":" + std::to_string(n);
+    std::vector<double> values;
+    for (std::size_t begin = line.find_first_not_of(blanks); begin != std::string::npos;) {
+      const std::size_t end = std::min(line.find_first_of(blanks, begin), line.size());
+      const std::string_view field = std::string_view(line).substr(begin, end - begin);
+      const std::optional<double> v = parse_decimal(field);
+      if (!v) throw DataError(where + ":" + std::to_string(begin + 1) + ": " + decimal_refusal(field));
+      values.push_back(*v);
+      begin = line.find_first_not_of(blanks, end);
+    }
+    if (values.empty()) continue;
+    if (values.size() != 2)
+      throw DataError(where + ": expected two numbers, got " + std::to_string(values.size()) + ": '" + line + "'");
+    points.push_back({values[0] * 1e-6, values[1] * 1e3});
   }
   if (points.empty()) throw DataError(file.string() + ": no points");
   return points;

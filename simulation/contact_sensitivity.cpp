@@ -133,8 +133,8 @@ ContactPhaseSensitivities contact_phase_sensitivities(const ContactPhaseParamete
   check(CVodeInit(c.mem, rhs, 0.0, c.y), "CVodeInit");
   check(CVodeSetUserData(c.mem, &model), "CVodeSetUserData");
   N_Vector atol = check_ptr(N_VClone(c.y), "N_VClone");
-  N_VGetArrayPointer(atol)[0] = options.atol_x_m;
-  N_VGetArrayPointer(atol)[1] = options.atol_v_mps;
+  N_VGetArrayPointer(atol)[0] = options.atol * undamped_hertz_impact(p.K, p.mass_kg, p.v0_mps).max_deformation_m;
+  N_VGetArrayPointer(atol)[1] = options.atol * p.v0_mps;
   const int tol_flag = CVodeSVtolerances(c.mem, options.rtol, atol);
   N_VDestroy(atol);
   check(tol_flag, "CVodeSVtolerances");

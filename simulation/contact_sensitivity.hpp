@@ -51,7 +51,9 @@ struct ContactPhaseSensitivities {
 
 struct ContactSensitivityOptions {
   double rtol = 1e-10;
-  double atol_x_m = 1e-16, atol_v_mps = 1e-12;  ///< ~1e-12 of x_max ~ 1e-4 m and of v0 ~ 0.6 m/s
+  /// Absolute tolerance relative to the impact's scales (as SolverSettings::atol): atol X for
+  /// x and atol v0 for x', X the undamped Hertz maximum compression at v0.
+  double atol = 1e-12;
 };
 
 /// Integrates the contact phase with CVODES forward sensitivities up to separation.

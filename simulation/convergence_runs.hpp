@@ -198,13 +198,14 @@ Measurement measure_fixed_step(const ConvergenceProblem& p, double dt_s, bool lo
       min_timing_s);
 }
 
-/// CVODE (Adams or BDF) at relative tolerance rtol, absolute tolerance rtol * X_scale
-/// (the same relative accuracy for a deformation of the size of the maximum).
+/// CVODE (Adams or BDF) at relative tolerance rtol and absolute tolerance rtol of the
+/// impact's scales (X_scale for x, v0 for x': DropTest::state_scale), the same relative
+/// accuracy for a deformation of the size of the maximum and a speed of the size of v0.
 inline CvodeOptions cvode_options(const ConvergenceProblem& p, CvodeMethod method, double rtol) {
   CvodeOptions o;
   o.method = method;
   o.rtol = rtol;
-  o.atol = rtol * p.X_scale_m;
+  o.atol = rtol;
   return o;
 }
 

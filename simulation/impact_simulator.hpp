@@ -18,6 +18,7 @@
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/physical_impact.hpp"
 #include "hertzdash/simulation/regularized_impact.hpp"
+#include "hertzdash/simulation/result_checks.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
 #include "hertzdash/simulation/step_resolution.hpp"
 #include "hertzdash/simulation/viscous_time_constant.hpp"
@@ -108,7 +109,7 @@ DropTestSetup with_calibrated_time_constant(const DropTestSetup& setup) {
   SolverSettings accurate;
   accurate.integrator = IntegratorKind::gbs8_regularized;
   accurate.rtol = 1e-12;
-  accurate.atol = 1e-12 * std::min({std::sqrt(X), v, X / v});
+  accurate.atol = 1e-12;  // of the impact's scales
   ImpactSimulator simulator(accurate);
   DropTestSetup trial = c;
   const double A = solve_viscous_time_constant_s(
@@ -152,6 +153,8 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<Trace
     s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;
   }
   require_finite_results(s);
+  require_physical_restitution(s, settings_, Law::info, !ConservativeLaw<Law>);
+  s.diagnostics = impact_diagnostics(s, setup, settings_);
   return s;
 }
 

@@ -3,6 +3,7 @@
 // contact phase a run records on request.
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/ode/ode_system.hpp"
+#include "hertzdash/simulation/diagnostic_codes.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
 
 #include <array>
@@ -59,6 +60,7 @@ struct ImpactSummary {
   IntegratorKind integrator_used = IntegratorKind::cvode;  ///< set by ImpactSimulator::run: the one asked for, or its fall-back
   std::optional<OmegaNIteration> omega_n_iteration;  ///< iterated omega_n variants only
   std::optional<ElasticRodReport> elastic_rod;       ///< --rod-model elastic only; the velocities above are the centre of mass's
+  DiagnosticSet diagnostics;  ///< set by ImpactSimulator::run: the result's notes and warnings (simulation/result_checks.hpp)
 };
 
 /// One sample of the contact phase (the --trace columns). Downward positive; for the elastic

@@ -2,6 +2,7 @@
 
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/table_ranges.hpp"
 
 #include <dlfcn.h>
 
@@ -73,19 +74,8 @@ std::filesystem::path default_data_dir() {
                            "; set HERTZDASH_DATA_DIR to the directory that holds them (the source tree's data/)");
 }
 
-namespace {
-
-// The ranges of the tables' values, checked where they are read so that a bad value is blamed
-// on its file, line and column (not on the command-line option it is the default of).
-constexpr ValueRange positive{[](double v) { return v > 0; }, "> 0"};
-constexpr ValueRange non_negative{[](double v) { return v >= 0; }, ">= 0"};
-constexpr ValueRange restitution{[](double v) { return v > 0 && v <= 1; }, "in (0, 1]"};
-constexpr ValueRange poisson_ratio{[](double v) { return v > -1 && v < 0.5; }, "in (-1, 0.5)"};
-constexpr ValueRange damping_ratio{[](double v) { return v >= 0 && v < 1; }, "in [0, 1)"};
-
-}  // namespace
-
 PaperParameters load_paper_parameters(const std::filesystem::path& dir) {
+  using namespace table_ranges;
   const CsvTable t1 = CsvTable::read(dir / "table1_dimensions.csv");
   const CsvTable t2 = CsvTable::read(dir / "table2_restitution.csv");
   const CsvTable t3 = CsvTable::read(dir / "table3_properties.csv");

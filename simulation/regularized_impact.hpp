@@ -24,7 +24,8 @@
 // the ball, 20 undamped contact times after onset (as the physical run).
 // Not for the tension clamp (no_tension: contact ends where F reaches zero, an event
 // this system does not have); the integrator table falls back to the physical variables there.
-// Tolerances: rtol as given; atol applies to u [m^{1/2}], v [m/s] and t [s] alike.
+// Tolerances: rtol as given; atol relative to the scales X^{1/2}, v0 and t_H of u, v and t
+// (RegularizedContact::state_scale).
 // The integrator is a callable integrate(system, y, tau0, tau1, observer) ->
 // IntegrationStats over the system ContactUntil<Law> below.
 #include "hertzdash/model/drop_test_setup.hpp"

@@ -33,7 +33,7 @@ std::vector<RunOption> make_run_options() {
   const std::string cvode = integrator_names(reads_cvode_method);
   return {
       {"rod", &R::rod, "Rod of Tables 1-3: steel, duralumin-a, duralumin-b, duralumin-c", G::setup},
-      {"height", &R::height_m, "Drop height h [m], free fall from rest", G::setup, "m"},
+      {"height", &R::height_m, "Drop height h [m], free fall from rest (default: 0.02)", G::setup, "m"},
       {"impact-velocity", &R::impact_velocity_mps, "Approach speed at contact onset [m/s]; overrides --height", G::setup, "mps"},
       {"mass", &R::mass_kg, "Rod mass [kg] (default: Table 1)", G::setup, "kg"},
       {"restitution", &R::restitution, "Input coefficient of restitution e in (0,1] (default: Table 2; 1 = undamped)",
@@ -92,7 +92,11 @@ std::vector<RunOption> make_run_options() {
       {"no-event-location", &R::no_event_location,
        "Handle events at the end of the step that crosses them (" + fixed + "; convergence studies)", G::solver},
       {"rtol", &R::rtol, "Relative tolerance in (0, 1) (" + adaptive + "; default: 1e-8)", G::solver},
-      {"atol", &R::atol, "Absolute tolerance [m, m/s] in (0, 1) (" + adaptive + "; default: 1e-12)", G::solver},
+      {"atol", &R::atol,
+       "Absolute tolerance relative to the impact's scales, in (0, 1): X for lengths, v0 for speeds, t_H for times "
+       "(X, t_H the undamped Hertz maximum compression and contact time at the impact speed v0; " + adaptive +
+           "; default: 1e-12)",
+       G::solver},
       {"cvode-method", &R::cvode_method, "CVODE method: adams or bdf (" + cvode + "; default: adams)", G::solver},
       {"max-step", &R::max_step_s, "Largest step [s] >= 0; 0 = no limit (" + timed + "; default: 0)", G::solver, "s"},
   };
@@ -174,7 +178,7 @@ const RunOption* find_run_option(std::string_view name) {
 }
 
 DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
-  DropTestSetup s = paper_setup(paper, o.rod, o.height_m);
+  DropTestSetup s = paper_setup(paper, o.rod, o.height_m.value_or(default_height_m));
   if (o.impact_velocity_mps) s.impact_velocity_mps = *o.impact_velocity_mps;
   if (o.mass_kg) s.mass_kg = *o.mass_kg;
   if (o.restitution) s.restitution = *o.restitution;
@@ -196,7 +200,14 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
     s.damping.reference_velocity_mps = *o.reference_velocity_mps;
   }
   s.elastic_rod = resolve_elastic_rod(o, paper);
-  validate(s);
+  validate(s, {.height = o.height_m.has_value(),
+               .gravity = o.gravity_mps2.has_value(),
+               .mass = o.mass_kg.has_value(),
+               .ball_radius = o.ball_radius_m.has_value(),
+               .ball_E = o.ball_E_Pa.has_value(),
+               .rod_E = o.rod_E_Pa.has_value(),
+               .ball_nu = o.ball_nu.has_value(),
+               .rod_nu = o.rod_nu.has_value()});
   bool time_constant_law = false;  // rejects an unknown law before any work
   with_damping_law(o.damping, [&]<class Law>(std::type_identity<Law>) { time_constant_law = MaterialTimeConstantLaw<Law>; });
   for (const auto& [name, value] : {std::pair{"--viscous-time-constant", o.viscous_time_constant_s},

@@ -16,12 +16,15 @@
 
 namespace hertzdash {
 
+/// The drop height of a run that gives none [m]: the paper's 20 mm.
+inline constexpr double default_height_m = 0.02;
+
 /// What a user asked for: the paper's drop test of one rod, with overrides, and a solver.
 /// An unset override keeps the paper's value (Tables 1-3, data/assumptions.csv).
 struct RunOptions {
   // The set-up.
   std::string rod = "steel";                     ///< a rod of Tables 1-3
-  double height_m = 0.02;                        ///< drop height h [m]
+  std::optional<double> height_m;                ///< drop height h [m] (unset: default_height_m)
   std::optional<double> impact_velocity_mps;     ///< approach speed at onset [m/s]; overrides height_m
   std::optional<double> mass_kg;                 ///< rod mass [kg]
   std::optional<double> restitution;             ///< input e in (0, 1]

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <type_traits>
 
 namespace hertzdash {
 
@@ -34,6 +35,14 @@ void add_inputs_and_revision(nlohmann::ordered_json& j, const Parameters& inputs
   j["git_revision"] = git_revision();
 }
 
+// The names of a set's codes, as a JSON array.
+nlohmann::ordered_json codes_json(DiagnosticSet set) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const DiagnosticInfo& d : diagnostic_table)
+    if (set.has(d.code)) list.push_back(d.name);
+  return list;
+}
+
 }  // namespace
 
 SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper, bool record_trace) {
@@ -48,71 +57,13 @@ SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper
   return r;
 }
 
-std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::string& why) {
-  if (used == asked) return {};
-  return fmt::format("--integrator {} fell back to {}: {}", to_string(asked), to_string(used), why);
-}
-
-std::string stability_note(const SimulateRun& run) {
-  const auto& e = run.summary.elastic_rod;
-  if (!e || !(e->step_used_s > 0) || !(e->step_used_s < run.solver.dt_s)) return {};
-  return fmt::format("the elastic rod's fastest mode limits {} to steps of {:.6g} s; it ran with that step instead of "
-                     "--dt {:.6g} s",
-                     to_string(run.summary.integrator_used), e->step_used_s, run.solver.dt_s);
-}
-
-std::string resolution_warning(const SimulateRun& run) {
-  const auto res = under_resolved_contact(run.summary, run.setup.mass_kg, run.solver);
-  if (!res) return {};
-  return fmt::format(
-      "the fixed step resolved the contact with only {:.0f} steps per undamped Hertz contact time (t_H = {:.6g} s, "
-      "--dt {:.6g} s); the convergence study needs at least {} steps per t_H with {} ({}) for errors below {:g} % "
-      "(docs/convergence.md)",
-      res->steps_per_contact, res->hertz_contact_time_s, run.solver.dt_s, res->required,
-      to_string(run.solver.integrator), run.solver.locate_events ? "events located" : "--no-event-location",
-      100 * step_resolution_target_error);
-}
-
-std::string yield_warning(const SimulateRun& run) {
-  const DropTestSetup& s = run.setup;
-  const double p0 = run.summary.peak_contact_pressure_Pa, onset = hertz_yield_onset_pressure_Pa(s.ball_yield_stress_Pa, s.ball.nu);
-  if (!(p0 > onset)) return {};
-  return fmt::format("the Hertz peak pressure {:.4g} MPa exceeds the onset of yield in the hemisphere, {:.3g} Y = {:.4g} "
-                     "MPa (--ball-yield-stress {:.4g} Pa, --ball-nu {:.3g}): the contact may deform plastically, which "
-                     "the elastic contact law does not model (docs/bounce.md)",
-                     p0 / 1e6, hertz_yield_onset_factor(s.ball.nu), onset / 1e6, s.ball_yield_stress_Pa, s.ball.nu);
-}
-
-std::string deformation_warning(const SimulateRun& run) {
-  const double x = run.summary.max_deformation_m, R = run.setup.ball_radius_m;
-  const double error = hertz_profile_error(x, R);
-  if (!(error > hertz_profile_error_limit)) return {};
-  return fmt::format("the maximum deformation {:.4g} mm is {:.3g} % of the ball radius {:.4g} mm (contact radius a = "
-                     "{:.3g} R): the sphere departs from the paraboloid Hertz theory assumes by {:.3g} % at the contact's "
-                     "edge, more than {:g} %; the small-deformation contact law is outside its range (model/hertz.hpp)",
-                     1e3 * x, 100 * x / R, 1e3 * R, std::sqrt(x / R), 100 * error, 100 * hertz_profile_error_limit);
-}
-
-std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run) {
-  const std::string not_separated =
-      run.summary.separated ? std::string()
-                            : "the rod did not separate from the ball within the simulated time (it came to rest on "
-                              "it); e_effective, rebound velocity and contact time are not defined";
-  const RunDiagnostic all[] = {
-      {"note", "integrator_fallback", fallback_note(run.solver.integrator, run.summary.integrator_used, run.fallback_reason)},
-      {"note", "stability_limit", stability_note(run)},
-      {"warning", "under_resolved", resolution_warning(run)},
-      {"warning", "yield_onset", yield_warning(run)},
-      {"warning", "large_deformation", deformation_warning(run)},
-      {"warning", "not_separated", not_separated},
-  };
-  std::vector<RunDiagnostic> out;
-  for (const RunDiagnostic& d : all)
-    if (!d.message.empty()) out.push_back(d);
+std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run, const std::string& trace_note) {
+  std::vector<RunDiagnostic> out = impact_diagnostic_list(run.summary, run.setup, run.solver, run.fallback_reason);
+  if (!trace_note.empty()) out.push_back({"note", "interpolated_samples", trace_note, {}});
   return out;
 }
 
-nlohmann::ordered_json to_json(const SimulateRun& run) {
+nlohmann::ordered_json to_json(const SimulateRun& run, const std::string& trace_note) {
   const ImpactSummary& s = run.summary;
   nlohmann::ordered_json j;
   j["schema_version"] = json_schema_version;
@@ -138,10 +89,7 @@ nlohmann::ordered_json to_json(const SimulateRun& run) {
   j["rhs_evaluations"] = s.work.rhs_evaluations;
   j["events"] = s.work.events;
   j["integrator_used"] = to_string(s.integrator_used);
-  nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
-  for (const RunDiagnostic& d : run_diagnostics(run))
-    warnings.push_back({{"kind", d.kind}, {"code", d.code}, {"message", d.message}});
-  j["warnings"] = warnings;
+  j["warnings"] = to_json(run_diagnostics(run, trace_note));
   if (const auto& it = s.omega_n_iteration) {
     j["omega_n_fixed_point"] = {{"iterations", it->iterations},
                                 {"converged", it->converged},
@@ -189,11 +137,21 @@ RestitutionRun run_restitution(const RunOptions& options, const PaperParameters&
     r.e_input = c.e_input;
     r.e_effective = c.e_effective;
     r.iterations = c.iterations;
+    DropTestSetup found = r.setup;
+    found.restitution = c.e_input;
+    r.summary = simulator.run(found, r.law);  // the run at the input found, for its diagnostics
   } else {
     r.e_input = r.setup.restitution;
-    r.e_effective = simulator.run(r.setup, r.law).e_effective;
+    r.summary = simulator.run(r.setup, r.law);
+    r.e_effective = r.summary.e_effective;
   }
   return r;
+}
+
+std::vector<RunDiagnostic> run_diagnostics(const RestitutionRun& run) {
+  DropTestSetup s = run.setup;
+  s.restitution = run.e_input;
+  return impact_diagnostic_list(run.summary, s, run.solver, run.fallback_reason);
 }
 
 nlohmann::ordered_json to_json(const RestitutionRun& run) {
@@ -207,6 +165,7 @@ nlohmann::ordered_json to_json(const RestitutionRun& run) {
   j["e_effective"] = run.e_effective;
   if (run.iterations) j["iterations"] = *run.iterations;
   j["integrator_used"] = to_string(run.integrator_used);
+  j["warnings"] = to_json(run_diagnostics(run));
   j["git_revision"] = git_revision();
   return j;
 }
@@ -232,6 +191,39 @@ BounceRun run_bounce(const RunOptions& options, const PaperParameters& paper, co
   return r;
 }
 
+namespace {
+
+// Codes about how a run was made rather than about one impact's result.
+bool run_level(Diagnostic d) {
+  return d == Diagnostic::integrator_fallback || d == Diagnostic::stability_limit || d == Diagnostic::loose_tolerance;
+}
+
+}  // namespace
+
+std::vector<RunDiagnostic> run_diagnostics(const BounceRun& run) {
+  const BounceSequence& b = run.sequence;
+  std::vector<RunDiagnostic> out;
+  std::vector<ImpactSummary> impacts;
+  DiagnosticSet any;
+  for (const BounceImpact& i : b.impacts) {
+    impacts.push_back(bounce_impact_summary(i, run.setup, b.integrator_used));
+    for (const DiagnosticInfo& d : diagnostic_table)
+      if (i.diagnostics.has(d.code)) any.add(d.code);
+  }
+  for (const DiagnosticInfo& d : diagnostic_table)
+    if (run_level(d.code) && any.has(d.code))
+      out.push_back({std::string(d.kind), std::string(d.name),
+                     diagnostic_message(d.code, impacts.front(), run.setup, run.solver, run.fallback_reason), {}});
+  for (std::size_t n = 0; n < impacts.size(); ++n)
+    for (const DiagnosticInfo& d : diagnostic_table)
+      if (!run_level(d.code) && d.code != Diagnostic::not_separated && impacts[n].diagnostics.has(d.code))
+        out.push_back({std::string(d.kind), std::string(d.name),
+                       fmt::format("impact {}: {}", n, diagnostic_message(d.code, impacts[n], run.setup, run.solver,
+                                                                           run.fallback_reason)),
+                       static_cast<int>(n)});
+  return out;
+}
+
 nlohmann::ordered_json to_json(const BounceRun& run) {
   const BounceSequence& b = run.sequence;
   nlohmann::ordered_json j;
@@ -253,7 +245,8 @@ nlohmann::ordered_json to_json(const BounceRun& run) {
                        {"rebound_speed_mps", i.rebound_speed_mps},
                        {"peak_force_N", i.peak_force_N},
                        {"max_deformation_m", i.max_deformation_m},
-                       {"separated", i.separated}});
+                       {"separated", i.separated},
+                       {"warnings", codes_json(i.diagnostics)}});
   j["impacts"] = impacts;
   j["onset_times_s"] = b.onset_times_s;
   j["e_from_intervals"] = b.e_from_intervals;
@@ -263,6 +256,7 @@ nlohmann::ordered_json to_json(const BounceRun& run) {
   j["steps"] = b.work.steps;
   j["rhs_evaluations"] = b.work.rhs_evaluations;
   j["integrator_used"] = to_string(b.integrator_used);
+  j["warnings"] = to_json(run_diagnostics(run));
   add_inputs_and_revision(j, run.inputs);
   return j;
 }
@@ -379,6 +373,7 @@ nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper) 
   nlohmann::ordered_json failures = nlohmann::ordered_json::array();
   for (const auto& [law, why] : run.failures) failures.push_back({{"law", law}, {"error", why}});
   j["failures"] = failures;
+  j["warnings"] = to_json(fit_diagnostics(run, paper));
   j["git_revision"] = git_revision();
   return j;
 }
@@ -408,39 +403,50 @@ void write_fit_curves(const TraceFit& f, const MeasuredTrace& trace, const std::
   csv.save(path);
 }
 
-std::vector<std::string> fit_warnings(const FitRun& run) {
-  std::vector<std::string> w;
-  if (run.trace.synthetic)
-    w.push_back("the trace says 'synthetic: true': it is not a measurement");
+std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParameters& paper) {
+  std::vector<RunDiagnostic> w;
+  auto warn = [&w](const char* code, std::string message) { w.push_back({"warning", code, std::move(message), {}}); };
+  if (run.trace.synthetic) warn("synthetic_trace", "the trace says 'synthetic: true': it is not a measurement");
   for (const TraceFit& f : run.fits) {
     const std::string law = run.fits.size() > 1 ? " (" + f.law + ")" : "";
     if (!f.converged)
-      w.push_back(fmt::format("the fit{} did not converge ({}): the estimates are where it stopped", law, f.stop_reason));
+      warn("not_converged",
+           fmt::format("the fit{} did not converge ({}): the estimates are where it stopped", law, f.stop_reason));
     if (!f.identifiable)
-      w.push_back(fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (limit {:g}), "
-                              "a correlation beyond {:g} or an infinite standard error; fit fewer parameters or add a "
-                              "channel",
-                              law, f.condition_number, identifiable_condition_limit, identifiable_correlation_limit));
+      warn("not_identifiable",
+           fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (limit {:g}), a "
+                       "correlation beyond {:g} or an infinite standard error; fit fewer parameters or add a channel",
+                       law, f.condition_number, identifiable_condition_limit, identifiable_correlation_limit));
     for (const FittedParameter& p : f.parameters)
       if (p.at_bound)
-        w.push_back(fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law, p.estimate));
+        warn("at_bound", fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law,
+                                     p.estimate));
     if (f.reduced_chi_square > 2)
-      w.push_back(fmt::format("the model{} does not explain the trace to its noise: reduced chi-square {:.3g} (about 1 "
-                              "if it did); the standard errors are scaled by it",
-                              law, f.reduced_chi_square));
+      warn("poor_fit", fmt::format("the model{} does not explain the trace to its noise: reduced chi-square {:.3g} "
+                                   "(about 1 if it did); the standard errors are scaled by it",
+                                   law, f.reduced_chi_square));
+    DropTestSetup s = resolve_setup(f.fitted_options, paper);
+    s.impact_velocity_mps = approach_speed(s);  // the fit's model starts at contact onset
+    for (RunDiagnostic& d : impact_diagnostic_list(f.model_summary, s, f.model_solver, {})) {
+      d.message = "the fitted model" + law + ": " + d.message;
+      w.push_back(std::move(d));
+    }
   }
   return w;
 }
 
 nlohmann::ordered_json registered_laws_json() {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const LawInfo& l : registered_laws())
+  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
+    const LawInfo& l = Law::info;
     list.push_back({{"name", l.name},
                     {"citation", l.citation},
                     {"formula", l.formula},
                     {"coefficients", l.coefficients},
                     {"validity", l.validity},
-                    {"force_continuous_at_onset", l.force_continuous_at_onset}});
+                    {"force_continuous_at_onset", l.force_continuous_at_onset},
+                    {"dissipative", !ConservativeLaw<Law>}});
+  });
   return list;
 }
 

@@ -5,6 +5,7 @@
 // docs/json-output.md; json_schema_version changes whenever a key is renamed or removed.
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/simulation/bounce_sequence.hpp"
+#include "hertzdash/simulation/diagnostic_messages.hpp"
 #include "hertzdash/simulation/impact_summary.hpp"
 #include "hertzdash/simulation/run_options.hpp"
 #include "hertzdash/simulation/trace_fit.hpp"
@@ -35,45 +36,13 @@ struct SimulateRun {
 /// Resolve, validate and run (throws InvalidParameter for bad options).
 SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper, bool record_trace = false);
 
-/// "--integrator X fell back to Y: why" when the integrator that ran is not the one asked
-/// for, else empty: the note every front end shows (the command line on stderr, Python as a
-/// warning).
-std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::string& why);
+/// Every note and warning of a run (impact_diagnostic_list of its summary), and with
+/// `trace_note` (virtual_measurement_note, or empty) an `interpolated_samples` note after them.
+std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run, const std::string& trace_note = {});
 
-/// The note every front end shows when the elastic rod's stability limit shortened a fixed
-/// step below --dt (simulation/elastic_impact.hpp), else empty.
-std::string stability_note(const SimulateRun& run);
-
-/// The warning every front end shows when a fixed step resolved the contact with fewer steps
-/// than the convergence study asks for (simulation/step_resolution.hpp), else empty.
-std::string resolution_warning(const SimulateRun& run);
-
-/// The warning every front end shows when the Hertz peak pressure exceeds the onset of yield
-/// of the hemisphere (hertz_yield_onset_factor(nu) Y, model/hertz.hpp): the elastic contact model does not hold there.
-/// Empty otherwise.
-std::string yield_warning(const SimulateRun& run);
-
-/// The warning every front end shows when the maximum deformation x is not small against the
-/// ball radius R: the paraboloid Hertz assumes departs from the sphere by more than
-/// hertz_profile_error_limit at the contact's edge (model/hertz.hpp). Empty otherwise.
-std::string deformation_warning(const SimulateRun& run);
-
-/// One note or warning about a run, as every front end reports it: the command line on stderr
-/// ("hertzdash: <kind>: <message>"), Python as a UserWarning, JSON in "warnings".
-struct RunDiagnostic {
-  std::string kind;     ///< "note" (how the run was made) or "warning" (a result to distrust)
-  std::string code;     ///< integrator_fallback, stability_limit, under_resolved, yield_onset,
-                        ///< large_deformation, not_separated
-  std::string message;
-};
-
-/// Every note and warning of a run, in that order: fallback_note, stability_note,
-/// resolution_warning, yield_warning, deformation_warning, and a rod that did not separate.
-std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run);
-
-/// `simulate --json`: the summary, "law_coefficients", "warnings" (run_diagnostics), "inputs",
-/// "schema_version", "git_revision".
-nlohmann::ordered_json to_json(const SimulateRun& run);
+/// `simulate --json`: the summary, "law_coefficients", "warnings" (run_diagnostics(run,
+/// trace_note)), "inputs", "schema_version", "git_revision".
+nlohmann::ordered_json to_json(const SimulateRun& run, const std::string& trace_note = {});
 
 /// The run's contact recorded as a virtual experiment (simulation/virtual_measurement.hpp), with
 /// its provenance: `source` says it is synthetic and what made it; `rod` is the rod asked for;
@@ -105,8 +74,8 @@ FitRun run_fit(const std::string& trace_path, const RunOptions& base, const Pape
 nlohmann::ordered_json to_json(const TraceFit& fit, const PaperParameters& paper);
 
 /// `fit --json`: "trace" (path, source, rod, height_m, synthetic, samples), "fits" (one law, or
-/// every law ranked by AIC, best first), "failures" (laws that could not be fitted),
-/// "schema_version", "git_revision".
+/// every law ranked by AIC, best first), "failures" (laws that could not be fitted), "warnings"
+/// (fit_diagnostics), "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
 
 /// `fit --curves`: the trace, the fitted model and the residual of every channel of `fit`, one
@@ -114,9 +83,11 @@ nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
 /// under a header naming the trace and the estimates.
 void write_fit_curves(const TraceFit& fit, const MeasuredTrace& trace, const std::filesystem::path& path);
 
-/// The warnings every front end shows for a fit (not identifiable, a parameter at its bound, a
-/// model that does not explain the trace to its noise, a synthetic trace), one per line; empty if none.
-std::vector<std::string> fit_warnings(const FitRun& run);
+/// The warnings every front end shows for a fit: a synthetic trace (synthetic_trace), and per
+/// fit one that did not converge (not_converged), is not identifiable (not_identifiable), has a
+/// parameter at its bound (at_bound), does not explain the trace to its noise (poor_fit), and
+/// the diagnostics of the fitted model's impact (simulation/diagnostic_codes.hpp).
+std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParameters& paper);
 
 /// A law's effective restitution in the rigid-wall contact phase (no gravity), or, given a
 /// target, the input e that makes it the target (simulation/calibrate_restitution.hpp).
@@ -129,13 +100,17 @@ struct RestitutionRun {
   std::optional<double> e_target;
   double e_input = 0, e_effective = 0;
   std::optional<int> iterations;       ///< Brent iterations of a calibration
+  ImpactSummary summary;               ///< the run at e_input (its diagnostics)
 };
 
 /// Resolve, validate and run; the iterated omega_n variants are rejected (they need `simulate`).
 RestitutionRun run_restitution(const RunOptions& options, const PaperParameters& paper,
                                std::optional<double> e_target = std::nullopt);
 
-/// `restitution --json`.
+/// The notes and warnings of the run at e_input.
+std::vector<RunDiagnostic> run_diagnostics(const RestitutionRun& run);
+
+/// `restitution --json`, with "warnings" (run_diagnostics).
 nlohmann::ordered_json to_json(const RestitutionRun& run);
 
 /// A drop and its bounces (simulation/bounce_sequence.hpp), optionally with the input e
@@ -156,8 +131,15 @@ struct BounceRun {
 BounceRun run_bounce(const RunOptions& options, const PaperParameters& paper, const BounceOptions& bounce,
                      std::optional<double> interval_target = std::nullopt);
 
+/// The notes and warnings of a sequence: those about how it ran (integrator_fallback,
+/// stability_limit, loose_tolerance) once, those about an impact's result once per impact
+/// ("impact n: ...", `impact` set). not_separated is left out: the rod coming to rest ends a
+/// sequence, and end_reason says so.
+std::vector<RunDiagnostic> run_diagnostics(const BounceRun& run);
+
 /// `bounce --json`: per impact, "onset_times_s", "e_from_intervals", "e_velocity_ratio", the
-/// calibration if any, "inputs", "schema_version", "git_revision".
+/// calibration if any, "warnings" (run_diagnostics; each impact also lists its codes in its own
+/// "warnings"), "inputs", "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const BounceRun& run);
 
 /// `models --json`: one entry per registered law.

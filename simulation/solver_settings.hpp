@@ -25,7 +25,12 @@ struct SolverSettings {
   bool locate_events = true;   ///< cut steps at located event crossings (false: at the step's end)
   // Adaptive integrators (cvode, dopri5, the regularised paths):
   double rtol = 1e-8;          ///< relative tolerance, > 0
-  double atol = 1e-12;         ///< absolute tolerance (state units: m, m/s; m^{1/2}, m/s, s regularised), > 0
+  /// Absolute tolerance relative to the impact's scales, > 0 (dimensionless): component i of
+  /// the state is held to atol x its scale (ode/ode_system.hpp, state_scale): X for lengths,
+  /// v0 for speeds, t_H for times (X^{1/2} for u = x^{1/2}, (1/2) m v0^2 for energies), X and
+  /// t_H the undamped Hertz maximum compression and contact time at the impact speed v0. So
+  /// the accuracy does not depend on the units, the impact speed or the mass.
+  double atol = 1e-12;
   double max_step_s = 0;       ///< largest step [s], physical variables only; 0: no limit
   CvodeMethod cvode_method = CvodeMethod::adams;  ///< cvode, cvode-regularized
 

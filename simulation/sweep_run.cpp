@@ -129,10 +129,9 @@ SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs,
   r.outputs = c.outputs.size();
   r.values.assign(runs.size() * r.outputs, NAN);
   r.errors.assign(runs.size(), "not run");
+  r.diagnostics.assign(runs.size(), DiagnosticSet{});
   std::vector<const SweepOutput*> outputs;
   for (const std::string& name : c.outputs) outputs.push_back(find_sweep_output(name));
-  SweepOptions o = options;
-  o.chunk = std::clamp<std::size_t>(runs.size() / (8 * sweep_threads(options)), 1, options.chunk);  // every thread gets work
   parallel_for_chunks(
       runs.size(), [] { return SimulatorCache{}; },
       [&](SimulatorCache& simulators, std::size_t j) {
@@ -141,19 +140,39 @@ SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs,
           const DropTestSetup setup = resolve_setup(run, paper);
           const ImpactSummary s = simulators(resolve_solver(run)).run(setup, run.damping);
           for (std::size_t k = 0; k < outputs.size(); ++k) r.values[j * r.outputs + k] = outputs[k]->value(s);
+          r.diagnostics[j] = s.diagnostics;
           r.errors[j].clear();
         } catch (const std::exception& e) {
           r.errors[j] = e.what();
         }
       },
-      o);
+      options);
   return r;
+}
+
+std::array<std::size_t, diagnostic_table.size()> diagnostic_counts(const SweepResults& results) {
+  std::array<std::size_t, diagnostic_table.size()> counts{};
+  for (const DiagnosticSet d : results.diagnostics)
+    for (std::size_t k = 0; k < diagnostic_table.size(); ++k) counts[k] += d.has(diagnostic_table[k].code) ? 1 : 0;
+  return counts;
+}
+
+std::string diagnostic_counts_text(const SweepResults& results) {
+  const auto counts = diagnostic_counts(results);
+  std::string out;
+  for (std::size_t k = 0; k < counts.size(); ++k) {
+    if (counts[k] == 0) continue;
+    if (!out.empty()) out += ", ";
+    out += fmt::format("{} {}", diagnostic_table[k].name, counts[k]);
+  }
+  return out;
 }
 
 std::string sweep_table(const SweepCase& c, const SweepResults& results, const std::string& timing_line) {
   std::vector<std::string> columns{"run"};
   for (const std::string& p : c.parameter_columns()) columns.push_back(p);
   for (const std::string& o : c.outputs) columns.push_back(o);
+  columns.emplace_back("warnings");
   columns.emplace_back("error");
   CsvWriter csv("hertzdash sweep: one row per run of the case file (SI units; an empty cell: no value)",
                 case_parameters(c), columns);
@@ -166,6 +185,7 @@ std::string sweep_table(const SweepCase& c, const SweepResults& results, const s
       const double v = results.values[run * results.outputs + k];
       row.emplace_back(std::isnan(v) ? CsvWriter::Cell(std::string()) : CsvWriter::Cell(v));
     }
+    row.emplace_back(diagnostic_names(results.diagnostics[run]));
     row.emplace_back(results.errors[run]);
     csv.add_row(row);
   }
@@ -180,6 +200,9 @@ std::string sweep_summary_table(const SweepCase& c, const SweepResults& results)
   CsvWriter csv("hertzdash sweep: summary of every output over the runs that gave a value (SI units; quantiles "
                 "interpolate between order statistics, Hyndman & Fan type 7)",
                 case_parameters(c), columns);
+  const std::string counts = diagnostic_counts_text(results);
+  csv.add_comment(fmt::format("warnings, runs per code (of {}): {} (the rows' warnings column says which)",
+                              results.errors.size(), counts.empty() ? "none" : counts));
   for (const SummaryRow& s : summarise(c, results)) {
     std::vector<CsvWriter::Cell> row(s.group.begin(), s.group.end());
     row.emplace_back(s.output);

@@ -134,10 +134,11 @@ class TraceModel {
     const ImpactSummary summary = simulator_->run(s, base_.damping, &trace);
     ++runs_;
     history_.emplace(std::move(trace), s.gravity_mps2);
-    contact_time_s_ = summary.contact_time_s;
+    summary_ = summary;
     return &*history_;
   }
-  double contact_time_s() const { return contact_time_s_; }
+  double contact_time_s() const { return summary_.contact_time_s; }
+  const ImpactSummary& summary() const { return summary_; }
 
  private:
   DropTestSetup onset_setup(const RunOptions& o) const {
@@ -156,7 +157,7 @@ class TraceModel {
   std::vector<double> values_;
   bool values_valid_ = false;
   std::optional<ImpactHistory> history_;
-  double contact_time_s_ = 0;
+  ImpactSummary summary_;  // of the last run
   int runs_ = 0;
 };
 
@@ -664,6 +665,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   // The model at the estimate, channel by channel.
   const std::vector<double> m = problem.model_values(z.data());
   fit.contact_time_s = model.contact_time_s();
+  fit.model_summary = model.summary();
   std::vector<double> sum_sq(channels.size(), 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const Observation& o = problem.observations()[i];

@@ -43,6 +43,7 @@
 // Information criteria with the noise known (sigma_c): AIC = chi^2 + 2k, BIC = chi^2 + k ln n,
 // k the number of fitted parameters including t0.
 #include "hertzdash/io/measured_trace.hpp"
+#include "hertzdash/simulation/impact_summary.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/simulation/run_options.hpp"
 
@@ -108,6 +109,7 @@ struct TraceFit {
   std::string stop_reason;                           ///< GSL's: small step, small gradient, or why not converged
   bool converged = false;                            ///< GSL's test met (not the iteration limit, not stalled)
   double contact_time_s = 0;                         ///< of the fitted model
+  ImpactSummary model_summary;                       ///< the fitted model's impact (its diagnostics)
   RunOptions fitted_options;                         ///< the run options at the estimate
 
   /// The fitted parameter called `name` (an option's name or "onset-time"); std::out_of_range if none.

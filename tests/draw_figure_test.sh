@@ -5,6 +5,10 @@
 # 2. a script that fails after its plot leaves the previous PNG and no temporary;
 # 3. SIGTERM while gnuplot is drawing (a pause after the output is opened) leaves the previous
 #    PNG and no temporary, and ends the wrapper with 143.
+# 4. SIGTERM to the wrapper while a gnuplot that writes its output on the way out (a stand-in
+#    on PATH: it recreates the temporary 0.5 s after SIGTERM) runs: the wrapper waits for it to
+#    exit before removing the temporaries, so none is left. Before, the wrapper removed them at
+#    once and the late write left one behind.
 # Before the wrapper, gnuplot wrote OUT/fig.png in place: cases 2 and 3 left a new or empty file.
 set -uo pipefail
 source_dir=${1:?usage: draw_figure_test.sh SOURCE_DIR}
@@ -58,6 +62,34 @@ wait "$pid"
 status=$?
 [ "$status" -eq 143 ] || fail "slow: exit $status, not 143"
 check_previous_kept slow
+
+mkdir -p "$scratch/bin"
+cat > "$scratch/bin/gnuplot" <<'FAKE'
+#!/usr/bin/env bash
+# Called as: gnuplot -d -e "figure_suffix='SUFFIX'" -c SCRIPT OUT_DIR
+suffix=${3#figure_suffix=\'}
+suffix=${suffix%\'}
+tmp="$6/fig.png$suffix"
+printf 'partial' > "$tmp"
+trap 'kill "$sleeper" 2>/dev/null; sleep 0.5; printf "late" > "$tmp"; exit 1' TERM
+sleep 30 &
+sleeper=$!
+wait "$sleeper"
+FAKE
+chmod +x "$scratch/bin/gnuplot"
+previous
+PATH="$scratch/bin:$PATH" "$draw" "$scratch/good.gp" "$scratch/out" &
+pid=$!
+for _ in $(seq 200); do
+  [ -n "$(find "$scratch/out" -name 'fig.png.tmp.*')" ] && break
+  sleep 0.1
+done
+kill -TERM "$pid"
+wait "$pid"
+status=$?
+[ "$status" -eq 143 ] || fail "late writer: exit $status, not 143"
+sleep 1  # a stand-in that was not waited for writes within 0.5 s
+check_previous_kept "late writer"
 
 [ "$failures" -eq 0 ] && echo "draw_figure.sh: all checks passed"
 exit $((failures > 0))

@@ -2,6 +2,7 @@
 // followed, FIFOs and devices written through, errno in the messages, no temporaries left
 // behind by a failure or by SIGTERM (io/remove_on_signal.hpp).
 #include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/output_directories.hpp"
 #include "hertzdash/io/remove_on_signal.hpp"
 #include "cli_runner.hpp"
 
@@ -9,6 +10,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <climits>
 #include <csignal>
 #include <fcntl.h>
 #include <filesystem>
@@ -233,4 +235,77 @@ TEST_CASE("atomic file: an unregistered file survives SIGTERM", "[atomic_file]")
   ::waitpid(child, &status, 0);
   CHECK(WIFSIGNALED(status));
   CHECK(fs::exists(kept));
+}
+
+TEST_CASE("output directories: the missing ones are found outermost first and created as mkdir -p does",
+          "[atomic_file]") {
+  const Scratch s;
+  const fs::path file = s.path / "a" / "b" / "out.csv";
+  CHECK(hertzdash::missing_parent_directories(file) == std::vector<fs::path>{s.path / "a", s.path / "a" / "b"});
+  CHECK(s.names().empty());  // looking creates nothing
+  hertzdash::create_parent_directories(file);
+  CHECK(fs::is_directory(s.path / "a" / "b"));
+  CHECK(hertzdash::missing_parent_directories(file).empty());
+  CHECK(hertzdash::missing_parent_directories("relative.csv").empty());  // the working directory exists
+}
+
+TEST_CASE("output directories: a file or a link loop in the way is an error with the system's reason",
+          "[atomic_file]") {
+  // std::filesystem::create_directories threw filesystem_error for these ("File exists",
+  // "Too many levels of symbolic links") with a text of its own; the reason is now errno's.
+  const Scratch s;
+  std::ofstream(s.path / "file") << "x";
+  fs::create_symlink("loop", s.path / "loop");
+  auto message = [](const fs::path& p) {
+    try {
+      hertzdash::create_parent_directories(p);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(message(s.path / "file" / "x" / "out.csv") ==
+        "cannot create directory " + (s.path / "file" / "x").string() + ": Not a directory");
+  CHECK(message(s.path / "file" / "out.csv") == "cannot write into " + (s.path / "file").string() + ": it is not a directory");
+  CHECK(message(s.path / "loop" / "x" / "out.csv") ==
+        "cannot create directory " + (s.path / "loop" / "x").string() + ": Too many levels of symbolic links");
+  CHECK(s.names() == std::vector<std::string>{"file", "loop"});
+}
+
+TEST_CASE("atomic file: a name of NAME_MAX bytes is written; its temporary's name is cut short", "[atomic_file]") {
+  // NAME.tmp.PID.N is up to 20 bytes longer than NAME: with NAME at NAME_MAX (255) bytes the
+  // temporary's name was too long (ENAMETOOLONG) and the write failed. Also a UTF-8 name whose
+  // cut falls inside a character (2-byte 'é' repeated: 254 bytes, then 'x').
+  const Scratch s;
+  for (const std::string& name : {std::string(NAME_MAX, 'a'), [] {
+                                    std::string n;
+                                    while (n.size() < NAME_MAX - 1) n += "\xC3\xA9";
+                                    return n + "x";
+                                  }()}) {
+    REQUIRE(name.size() == NAME_MAX);
+    const fs::path p = s.path / name;
+    CHECK(message_of(p, "x\n").empty());
+    CHECK(slurp(p) == "x\n");
+    CHECK(s.names() == std::vector<std::string>{name});
+    fs::remove(p);
+  }
+}
+
+TEST_CASE("atomic file: a replaced file keeps its permissions", "[atomic_file]") {
+  // The temporary was created 0666 less the umask and renamed over the file: a private 0600
+  // file became 0644, an executable 0755 lost its x bits. A new file still gets 0666 & ~umask.
+  const Scratch s;
+  const fs::path p = s.path / "out.csv";
+  for (const mode_t mode : {mode_t{0600}, mode_t{0755}, mode_t{0640}}) {
+    std::ofstream(p) << "previous\n";
+    REQUIRE(::chmod(p.c_str(), mode) == 0);
+    CHECK(message_of(p, "new\n").empty());
+    CHECK((stat_of(p).st_mode & 07777) == mode);
+    CHECK(slurp(p) == "new\n");
+  }
+  const mode_t umask_now = ::umask(022);
+  ::umask(umask_now);
+  const fs::path fresh = s.path / "fresh.csv";
+  CHECK(message_of(fresh, "x\n").empty());
+  CHECK((stat_of(fresh).st_mode & 07777) == (0666 & ~umask_now));
 }

@@ -26,7 +26,7 @@ SolverSettings gbs8(double rtol) {
   SolverSettings s;
   s.integrator = IntegratorKind::gbs8_regularized;
   s.rtol = rtol;
-  s.atol = rtol * 1e-4;  // u ~ 1.5e-2 m^{1/2}, v ~ 0.6 m/s, t ~ 1e-3 s: atol below every scale's rtol
+  s.atol = rtol * 1e-4;  // of the scales X^{1/2}, v0, t_H of u, v, t: the absolute part below the relative one
   return s;
 }
 

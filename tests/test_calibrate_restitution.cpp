@@ -17,10 +17,7 @@ namespace {
 
 // The paper's steel case at h = 20 mm, solved at rtol 1e-10 (e_effective error ~1e-8).
 DropTestSetup steel_case() { return paper_setup(load_paper_parameters(), "steel", 0.02); }
-ImpactSimulator accurate_simulator() {
-  const ContactScales p = paper_steel_contact();
-  return ImpactSimulator(accurate_solver(p.K, p.mass_kg, p.v0_mps));
-}
+ImpactSimulator accurate_simulator() { return ImpactSimulator(accurate_solver()); }
 
 }  // namespace
 

@@ -181,6 +181,18 @@ TEST_CASE("CLI: an option value that is not a number exits 2 naming the option",
                  "and exponent: 0.02, -1.5e-3, 2E9) and a finite number > 0 (kg)\n");
 }
 
+TEST_CASE("CLI: an option value beyond the range of a double exits 2 saying so, not 'not a decimal number'", "[cli]") {
+  // 1e400 > DBL_MAX (1.8e308) and 1e-400 < the smallest subnormal (4.9e-324): both decimal
+  // numbers that no double holds; before, both were "not a decimal number".
+  for (const char* text : {"1e400", "1e-400"}) {
+    const auto r = run_cli(std::string("simulate --mass ") + text);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err == "hertzdash: invalid --mass = '" + std::string(text) +
+                       "' (out of range of double): must be a decimal number of magnitude at most "
+                       "1.7976931348623157e308 and, if nonzero, at least 4.9e-324, and a finite number > 0 (kg)\n");
+  }
+}
+
 namespace {
 
 // The subcommands `hertzdash --help` lists.
@@ -331,6 +343,14 @@ TEST_CASE("CLI: a malformed data table exits 2 naming the file, line and column"
   SECTION("a second gravity_mps2 in assumptions.csv") {
     data.append("assumptions.csv", "gravity_mps2,9.81,m/s^2,again,fixed,,,,,again\n");
     expected = {"assumptions.csv:27:1: column 'parameter': 'gravity_mps2' again (first on line 15)"};
+  }
+  SECTION("a column named twice (the second was read and never used)") {
+    data.replace("table2_restitution.csv", "rod,e,e_second,", "rod,e,e,");
+    expected = {"table2_restitution.csv:4:7: column 'e' again (first at column 5); each column name appears once"};
+  }
+  SECTION("a value beyond the range of a double") {
+    data.replace("table2_restitution.csv", "steel,0.795", "steel,1e400");
+    expected = {"table2_restitution.csv:5:7: column 'e': '1e400' is out of range of double"};
   }
   SECTION("a table with a header and no rows") {
     data.write("table2_restitution.csv", "# no rods\nrod,e,e_second,zeta_printed,provenance\n");

@@ -21,6 +21,8 @@ TEST_CASE("CLI models lists every registered law with its citation", "[cli][damp
   for (std::size_t i = 0; i < laws.size(); ++i) {
     CHECK(list[i]["name"] == std::string(laws[i].name));
     CHECK(list[i]["citation"].get<std::string>().size() > 20);
+    // Only the undamped Hertz law ("none") conserves energy.
+    CHECK(list[i]["dissipative"] == (laws[i].name != "none"));
   }
   const auto text = run_cli("models");
   REQUIRE(text.exit_code == 0);

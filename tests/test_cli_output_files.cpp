@@ -114,3 +114,84 @@ TEST_CASE("CLI: an output path that is a directory exits 2 and says so", "[cli][
   CHECK(r.err == "hertzdash: invalid --trace = " + s.path.string() + ": must be a file, not a directory\n");
   CHECK(fs::is_empty(s.path));
 }
+
+TEST_CASE("CLI --mkdir: bad input or a failed run leaves no new directory", "[cli][output]") {
+  // The directories are created right before the file is written, after every input was
+  // validated and the run succeeded; before, --mkdir created them first, so each of these
+  // refusals left S/new behind.
+  const Scratch s;
+  const std::string trace = (s.path / "trace.csv").string();
+  REQUIRE(run_cli("simulate --trace-format measured --trace " + trace).exit_code == 0);
+  const std::string dir = (s.path / "new" / "sub").string();
+  const struct {
+    std::string args;
+    int exit_code;
+  } cases[] = {
+      {"simulate --mkdir --trace " + dir + "/t.csv --mass -1", 2},
+      {"simulate --mkdir --trace " + dir + "/t.csv --gravity 1e308", 2},
+      {"simulate --mkdir --trace-format measured --trace " + dir + "/t.csv --noise -1", 2},
+      {"fit --mkdir --trace " + trace + " --curves " + dir + "/c.csv --fit not-a-parameter", 2},
+      {"fit --mkdir --trace " + trace + " --curves " + dir + "/c.csv --ball-E -3", 2},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto r = run_cli(c.args);
+    INFO(r.err);
+    CHECK(r.exit_code == c.exit_code);
+    CHECK_FALSE(fs::exists(s.path / "new"));
+  }
+}
+
+TEST_CASE("CLI: a file or a symbolic-link loop where a directory should be exits 2 with the system's reason",
+          "[cli][output]") {
+  // Before, these ended in a raw std::filesystem exception (exit 1, "filesystem error: ...").
+  const Scratch s;
+  std::FILE* f = std::fopen((s.path / "file").c_str(), "w");
+  std::fclose(f);
+  fs::create_symlink("loop", s.path / "loop");  // a link to itself: ELOOP
+  const std::string file = (s.path / "file").string(), loop = (s.path / "loop").string();
+  const struct {
+    std::string path, reason;
+  } cases[] = {
+      {file + "/t.csv", "(cannot write into " + file + ": it is not a directory)"},
+      {file + "/x/t.csv", "(cannot create directory " + file + "/x: Not a directory)"},
+      {loop + "/x/t.csv", "(cannot create directory " + loop + "/x: Too many levels of symbolic links)"},
+  };
+  for (const bool mkdir : {false, true})
+    for (const auto& c : cases) {
+      INFO(c.path << (mkdir ? " with --mkdir" : ""));
+      const auto r = run_cli(std::string("simulate ") + (mkdir ? "--mkdir " : "") + "--trace " + c.path);
+      CHECK(r.exit_code == 2);
+      CHECK(r.err == "hertzdash: invalid --trace = " + c.path +
+                         ": must be a file in a directory that exists or can be created " + c.reason + "\n");
+    }
+  CHECK(fs::is_regular_file(s.path / "file"));
+  CHECK(fs::is_symlink(s.path / "loop"));
+}
+
+TEST_CASE("CLI: an empty output path exits 2 naming the option", "[cli][output]") {
+  // Before, --trace '' (and the others) was taken as no output asked for: exit 0, nothing written.
+  const Scratch s;
+  std::FILE* f = std::fopen((s.path / "case.toml").c_str(), "w");
+  std::fputs("[base]\nrod = \"steel\"\n[grid]\nheight = [0.01, 0.02]\n", f);
+  std::fclose(f);
+  const std::string trace = (s.path / "trace.csv").string(), case_file = (s.path / "case.toml").string();
+  REQUIRE(run_cli("simulate --trace-format measured --trace " + trace).exit_code == 0);
+  const struct {
+    std::string args, option;
+  } cases[] = {
+      {"simulate --trace ''", "--trace"},
+      {"simulate --trace-format measured --trace ''", "--trace"},
+      {"fit --trace " + trace + " --curves ''", "--curves"},
+      {"sweep " + case_file + " --quiet --out ''", "--out"},
+      {"sweep " + case_file + " --quiet --summary ''", "--summary"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto r = run_cli(c.args);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err == "hertzdash: invalid " + c.option + " = '': must be a file path (not empty)\n");
+    CHECK(r.out.empty());
+  }
+  CHECK_FALSE(fs::exists(s.path / "case.csv"));
+}

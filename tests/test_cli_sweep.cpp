@@ -65,7 +65,8 @@ TEST_CASE("The README's sweep example runs as written and prints what the README
   CHECK(r.out == shown);
   const auto table = hertzdash::CsvTable::read(dir.path / "laws-heights.csv");
   CHECK(table.columns() ==
-        std::vector<std::string>{"run", "damping", "height_m", "e_effective", "peak_force_N", "contact_time_s", "error"});
+        std::vector<std::string>{"run", "damping", "height_m", "e_effective", "peak_force_N", "contact_time_s",
+                                   "warnings", "error"});
   REQUIRE(table.rows() == 120);
   for (std::size_t i = 0; i < table.rows(); ++i) {
     CHECK(table.text(i, "error").empty());

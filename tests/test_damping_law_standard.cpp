@@ -38,6 +38,19 @@ TEMPLATE_LIST_TEST_CASE("Every law: no energy gain (e_effective <= 1) across e a
       }
 }
 
+TEMPLATE_LIST_TEST_CASE("Every law: its ConservativeLaw trait says whether it dissipates", "[damping][standard]",
+                        TestedLaws) {
+  // The result checks (simulation/result_checks.hpp) name a law dissipative unless it declares
+  // `conservative`. A conservative law returns e_effective = 1 whatever the input e; a dissipative
+  // one, given e = 0.5, loses energy: its e_effective is below 1 by far more than the solver's
+  // error (each law's deficit at e = 0.5 is of order 1 - e, tens of per cent).
+  const ContactScales p = paper_steel_contact();
+  const double e_eff = effective_restitution_of<TestType>(p.K, p.mass_kg, p.v0_mps, 0.5);
+  INFO(TestType::info.name << ": e_effective = " << e_eff << " at input e = 0.5");
+  if constexpr (ConservativeLaw<TestType>) CHECK(std::abs(e_eff - 1.0) < solver_bound);
+  else CHECK(e_eff < 0.9);
+}
+
 TEMPLATE_LIST_TEST_CASE("Every law: force at contact onset agrees with its declared continuity",
                         "[damping][standard]", TestedLaws) {
   // LawInfo::force_continuous_at_onset declares whether F(0, v0) = 0. The check uses the

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 using hertzdash::parse_decimal;
 
@@ -62,4 +63,30 @@ TEST_CASE("an integer option is decimal digits up to its largest value", "[decim
     CHECK_FALSE(parse_decimal_integer(text, 10).has_value());
   }
   CHECK_FALSE(parse_decimal_integer("18446744073709551616", UINT64_MAX).has_value());  // 2^64
+}
+
+TEST_CASE("a decimal number beyond a double is out of range, not 'not a decimal number'", "[decimal]") {
+  // DBL_MAX = 1.7976931348623157e308: 1e400 and the next decimal above DBL_MAX's rounding
+  // boundary (1.7976931348623159e308) overflow; the smallest subnormal is 4.94e-324, so 2e-324
+  // (below half of it) rounds to zero: out of range. 3e-324 rounds to the smallest subnormal
+  // and 1e-310 is a subnormal: both are read. Zero with any exponent is zero.
+  using hertzdash::DecimalError;
+  using hertzdash::decimal_error;
+  for (const char* text : {"1e400", "-1e400", "1.7976931348623159e308", "1e-400", "-2e-324"}) {
+    INFO(text);
+    CHECK_FALSE(parse_decimal(text).has_value());
+    CHECK(decimal_error(text) == DecimalError::out_of_range);
+    CHECK(hertzdash::decimal_refusal(text) ==
+          "'" + std::string(text) + "' is out of range of double (magnitude at most 1.7976931348623157e308 and, if "
+                                    "nonzero, at least 4.9e-324)");
+  }
+  CHECK(parse_decimal("3e-324") == std::numeric_limits<double>::denorm_min());
+  CHECK(parse_decimal("1e-310") == 1e-310);
+  CHECK(parse_decimal("0e999") == 0.0);
+  CHECK_FALSE(decimal_error("1e-310").has_value());
+  for (const char* text : {"0x10", "1e", "", "inf"}) {
+    INFO(text);
+    CHECK(decimal_error(text) == DecimalError::not_decimal);
+    CHECK(hertzdash::decimal_refusal(text).find("' is not a decimal number (") != std::string::npos);
+  }
 }

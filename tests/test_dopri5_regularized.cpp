@@ -33,7 +33,7 @@ SolverSettings dopri5(IntegratorKind kind, double tol) {
   SolverSettings s;
   s.integrator = kind;
   s.rtol = tol;
-  s.atol = tol * 1e-4;  // 1e-4 m ~ the peak deformation (the benchmark's pair)
+  s.atol = tol * 1e-4;  // of the impact's scales X^{1/2}, v0, t_H (the benchmark's pair)
   return s;
 }
 

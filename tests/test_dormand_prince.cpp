@@ -46,7 +46,7 @@ SolverSettings dopri5(double tol) {
   SolverSettings s;
   s.integrator = IntegratorKind::dopri5;
   s.rtol = tol;
-  s.atol = tol * 1e-4;  // 1e-4 m ~ the peak deformation: x and xdot both relative
+  s.atol = tol;  // of the impact's scales (X and v0; X^{1/2}, v0, t_H regularised): every component relative
   return s;
 }
 

@@ -38,7 +38,7 @@ TEST_CASE("gbs8: one step has local error of order 9 (method order 8) on the rot
     Rotation::State f, y1;
     sys.rhs(0.0, y, f);
     long evaluations = 0;
-    detail::extrapolation_step(sys, 0.0, y, f, h, 1.0, 1.0, y1, evaluations);
+    detail::extrapolation_step(sys, 0.0, y, f, h, 1.0, Rotation::State(1.0, 1.0), y1, evaluations);
     CHECK(evaluations == 16);
     errors.push_back(std::hypot(y1[0] - std::cos(h), y1[1] + std::sin(h)));
     std::printf("  %.2f  %.3e\n", h, errors.back());

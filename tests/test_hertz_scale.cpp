@@ -48,29 +48,32 @@ TEST_CASE("A deformation below a picometre is refused: no continuum contact mode
   CHECK_THROWS_WITH(validate(s), Catch::Contains("X >= 1e-12 m"));
 }
 
-TEST_CASE("Issue #19's extreme-scale reproducers exit 2 naming the option that sets the scale", "[scale][cli]") {
+TEST_CASE("Issue #19's extreme-scale reproducers exit 2 naming the option the user gave", "[scale][cli]") {
   // Each gave all-zero results, an infinite peak force, a raw [CVODES ERROR] or a deformation of
-  // metres; each is now refused before any run.
+  // metres; each is now refused before any run, naming an option on the command line (before,
+  // --gravity 1e308 was blamed on "--height = 0.02", a default nobody typed, and --mass 1e-308 too).
   const std::pair<const char*, const char*> cases[] = {
-      {"--height 1e308", "invalid --height = 1e+308"},
-      {"--gravity 1e308", "invalid --height = 0.02"},
-      {"--impact-velocity 1e-308", "invalid --impact-velocity = 1e-308"},
-      {"--ball-radius 1e308", "X >= 1e-12 m"},
-      {"--mass 1e-308", "X >= 1e-12 m"},
-      {"--mass 1e308", "small-deformation Hertz contact"},
-      {"--rod-E 1e-308", "small-deformation Hertz contact"},
-      {"--integrator rk4 --gravity 1e300", "small-deformation Hertz contact"},
-      {"--ball-E 1e-3", "small-deformation Hertz contact"},
+      {"--height 1e308", "invalid --height = 1e+308: must be below"},
+      {"--gravity 1e308", "invalid --gravity = 1e+308: must be below"},
+      {"--impact-velocity 1e-308", "invalid --impact-velocity = 1e-308: must be at least"},
+      {"--ball-radius 1e308", "invalid --ball-radius = 1e+308: must be a value that, with the others, gives a Hertz "
+                              "deformation X of at least 1e-12 m"},
+      {"--mass 1e-308", "invalid --mass = 1e-308: must be at least"},
+      {"--mass 1e308", "invalid --mass = 1e+308: must be below"},
+      {"--rod-E 1e-308", "invalid --rod-E = 1e-308: must be a value that, with the others, gives a Hertz deformation X "
+                         "below the ball radius"},
+      {"--integrator rk4 --gravity 1e300", "invalid --gravity = 1e+300: must be below"},
+      {"--ball-E 1e-3", "invalid --ball-E = 0.001"},
       {"--impact-velocity 100", "invalid --impact-velocity = 100: must be below 81.3"},
-      {"--gravity 0 --impact-velocity 1e-20 --rtol 1e-11 --atol 1e-15", "X >= 1e-12 m"},
+      {"--gravity 0 --impact-velocity 1e-20 --rtol 1e-11 --atol 1e-15", "invalid --impact-velocity = 1e-20"},
       {"--integrator cvode-regularized --damping zhiying-qishao --zeta exact --impact-velocity 3.99 --mass 0.086 --rod-E 1e-20",
-       "small-deformation Hertz contact"},
+       "invalid --impact-velocity = 3.99: must be below 5.284e-13 m/s"},
   };
   for (const auto& [args, expected] : cases) {
     INFO(args);
     const auto r = run_cli(std::string("simulate ") + args);
     CHECK(r.exit_code == 2);
-    CHECK_THAT(r.err, Catch::Contains(expected));
+    CHECK_THAT(r.err, Catch::StartsWith(std::string("hertzdash: ") + expected));
   }
   // A fall of 1e-20 m under g = 3.18 m/s^2 is within scale (X = 6e-12 m) but this law ends the
   // contact at ~0 force and the rod settles on the ball; CVODE's million-step bound ends the run
@@ -82,4 +85,21 @@ TEST_CASE("Issue #19's extreme-scale reproducers exit 2 naming the option that s
   // restitution and bounce validate the same set-up.
   CHECK(run_cli("restitution --impact-velocity 1e-20").exit_code == 2);
   CHECK(run_cli("bounce --height 1e308").exit_code == 2);
+}
+
+TEST_CASE("A scale refusal lists the inputs that give the deformation and marks the defaults", "[scale][cli]") {
+  // --gravity 1e308 from the default 20 mm: v0^2 = 2 g h = 4e306, X far above R. The bound on
+  // g is v*^2 / (2 h) with the steel rod's v*^2 = 4 K R^{5/2} / (5 m) = 4 x 3.54e8 x 1.8176e-5 /
+  // 3.89 = 6616 m^2/s^2: 6616 / 0.04 = 1.654e5 m/s^2.
+  const auto r = run_cli("simulate --gravity 1e308");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::StartsWith("hertzdash: invalid --gravity = 1e+308: must be below 1.654e+05 m/s^2 (with --height "
+                                      "0.02 m (default), --gravity 1e+308 m/s^2, --mass 0.778 kg (default), --ball-radius "
+                                      "0.0127 m (default) and K = 3.54e+08 N/m^1.5 from --ball-E 2e+09 Pa (default), "
+                                      "--rod-E 2.04e+11 Pa (default), --ball-nu 0.4 (default), --rod-nu 0.3 (default), the "
+                                      "undamped Hertz deformation X"));
+  // Given together, the speed's option is named and nothing is marked a default but the rest.
+  const auto both = run_cli("simulate --height 1e308 --mass 0.5");
+  CHECK_THAT(both.err, Catch::StartsWith("hertzdash: invalid --height = 1e+308: must be below") &&
+                           Catch::Contains("--gravity 9.80665 m/s^2 (default), --mass 0.5 kg, --ball-radius"));
 }

@@ -97,6 +97,12 @@ TEST_CASE("malformed traces are rejected with a message naming the file and the 
   rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,-inf\n", "'-inf' is not a decimal number");
   rejects(synthetic_header + "t_s,force_N\n0,0\n0x1p-5,1\n", "'0x1p-5' is not a decimal number");
   rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4\n", "expected 2 fields");
+  // A second header line of a key (the last won silently) and numbers beyond a double.
+  rejects(synthetic_header + "# height_m: 0.03\nt_s,force_N\n0,0\n1e-4,1\n",
+          ":5:3: header key 'height_m' again (first on line 4); each header key appears once");
+  rejects(synthetic_header + "t_s,force_N\n0,0\n1e-4,1e400\n", ":7:6: column 'force_N': '1e400' is out of range of double");
+  rejects("# source: x\n# rod: steel\n# height_m: 1e400\nt_s,force_N\n0,0\n1e-4,1\n",
+          "header 'height_m: 1e400': '1e400' is out of range of double");
 }
 
 TEST_CASE("traces are found by the rod and height in their header", "[measured_trace]") {

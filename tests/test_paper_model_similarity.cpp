@@ -37,7 +37,7 @@ DropTestSetup weightless(double v0, double ball_E_Pa, double mass_kg) {
 TEST_CASE("without gravity the paper's model is self-similar in v0, K and m", "[similarity]") {
   SolverSettings solver;
   solver.rtol = 1e-10;
-  solver.atol = 1e-16;  // x ~ 1e-4 m: absolute error well below rtol * x
+  solver.atol = 1e-16;  // of X and v0: the absolute part far below rtol |y|
   ImpactSimulator sim(solver);
   const DropTestSetup base = weightless(0.6, 2.0e9, 0.778);
   const ImpactSummary a = sim.run<HongoPaper>(base);

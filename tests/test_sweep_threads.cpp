@@ -5,10 +5,14 @@
 
 #include <catch2/catch.hpp>
 
+#include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace {
 
@@ -57,4 +61,30 @@ TEST_CASE("HERTZDASH_THREADS that is not a whole number from 1 to 4096 is refuse
                       "invalid HERTZDASH_THREADS = " + std::string(bad) +
                           ": must be a whole number from 1 to 4096 (threads of a sweep)");
   }
+}
+
+TEST_CASE("a small sweep spreads over every thread: chunks are a quarter of each thread's share", "[sweep_threads]") {
+  using hertzdash::sweep_chunk;
+  // clamp(count / (4 threads), 1, 256): 20 runs on 3 threads: 20 / 12 = 1; 1000 on 3: 83;
+  // a million on 2: 125000, capped at 256; none at all: 1.
+  CHECK(sweep_chunk(20, 3) == 1);
+  CHECK(sweep_chunk(1000, 3) == 83);
+  CHECK(sweep_chunk(1000000, 2) == 256);
+  CHECK(sweep_chunk(0, 4) == 1);
+  // 24 indices of 2 ms each on 3 threads: with chunks of 2 every thread takes some (the first
+  // thread cannot take all 24 in the moment the others need to start). With the former fixed
+  // chunk of 256 the first thread took all 24, so tests/study_threads.sh compared one thread
+  // with one.
+  std::atomic<int> states{0};
+  std::vector<int> ran_on(24, -1);
+  hertzdash::parallel_for_chunks(
+      ran_on.size(), [&] { return states++; },
+      [&](int state, std::size_t i) {
+        ran_on[i] = state;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      },
+      {.threads = 3, .progress = false});
+  std::set<int> used(ran_on.begin(), ran_on.end());
+  CHECK(used.size() == 3);
+  CHECK(used.count(-1) == 0);
 }

@@ -13,8 +13,19 @@ out=${2:?$usage}
 [ $# -eq 2 ] || { echo "$usage" >&2; exit 2; }
 suffix=".tmp.$$"
 gnuplot_pid=
+# gnuplot may still create or write a temporary after the signal (it finishes its output on
+# exit), so the temporaries are removed only once it has exited: after SIGTERM, up to 5 s, then
+# SIGKILL.
 cleanup() {
-  [ -z "$gnuplot_pid" ] || kill "$gnuplot_pid" 2>/dev/null || true
+  if [ -n "$gnuplot_pid" ]; then
+    kill "$gnuplot_pid" 2>/dev/null || true
+    for _ in $(seq 50); do
+      kill -0 "$gnuplot_pid" 2>/dev/null || break
+      sleep 0.1
+    done
+    kill -KILL "$gnuplot_pid" 2>/dev/null || true
+    wait "$gnuplot_pid" 2>/dev/null || true
+  fi
   rm -f -- "$out"/*"$suffix"
 }
 trap cleanup EXIT

@@ -110,6 +110,14 @@ concept RootPolynomialLaw = DampingLaw<L> && requires(const L& law, double u, de
 /// `static constexpr bool material_time_constant = true` and requires A in its constructor;
 /// when the user gives none, the simulator supplies it by calibrating the law's restitution to
 /// the input e at the reference speed (simulation/viscous_time_constant.hpp).
+/// Optional for a law: `static constexpr bool conservative = true` declares that the contact
+/// returns all the energy it stores, e_effective = 1 (the undamped Hertz law). Every other law
+/// dissipates, e_effective < 1. Either way no law creates energy: an e_effective above 1 beyond
+/// the run's accuracy is an under-resolved run (simulation/result_checks.hpp), and the message
+/// says which of the two the law is.
+template <class L>
+concept ConservativeLaw = DampingLaw<L> && requires { requires L::conservative; };
+
 template <class L>
 concept MaterialTimeConstantLaw = DampingLaw<L> && requires { requires L::material_time_constant; };
 

@@ -329,7 +329,7 @@ int main(int argc, char** argv) {
     if (!varied.contains(entry.first)) params.push_back(entry);
   params.emplace_back("t_star_after_onset_s", fmt::format("{}", p.t_star_s));
   params.emplace_back("fixed_step_onset_phases", "0.1 0.35 0.6 0.85 (error = largest)");
-  params.emplace_back("cvode_atol", "rtol * undamped max deformation (m)");
+  params.emplace_back("cvode_atol", "rtol (of the impact's scales: undamped max deformation, v0)");
   params.emplace_back("reduced", args.reduced ? "true" : "false");
   write_csv(args.out_dir / "convergence.csv", "hongo", params, paper);
   write_csv(args.out_dir / "convergence_undamped.csv", "none", params, hertz);

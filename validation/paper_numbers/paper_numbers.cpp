@@ -33,7 +33,7 @@
 //   OUT/unstated_parameters.csv    one row per (rod, parameter, value): impact summary
 //   GENERATED/paper_numbers.tex    \newcommand macros, prefix \pn
 //   GENERATED/unstated_parameters_table.tex   the table of unstated parameters
-// All impacts: CVODE (Adams, rtol 1e-8, atol 1e-12 m), the paper's tension-allowing
+// All impacts: CVODE (Adams, rtol 1e-8, atol 1e-12 of the impact's scales), the paper's tension-allowing
 // force law, g acting throughout, free fall from rest.
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/io/csv_table.hpp"

@@ -16,6 +16,7 @@ class Undamped {
       "no coefficients; the input restitution is ignored",
       "elastic contact, any impact speed small against the wave speed",
       true};
+  static constexpr bool conservative = true;  ///< ConservativeLaw
 
   Undamped(const ImpactConditions& c, const DampingSettings&) : K_(c.K) {}
   double force(double x, double /*xdot*/) const noexcept { return K_ * x * std::sqrt(x); }

@@ -1,0 +1,105 @@
+// The CSV table reader (io/csv_table.hpp): each column name once, each "# key: value" header key
+// once, and the size limit enforced while reading, however long a line.
+#include "hertzdash/io/csv_table.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <csignal>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using hertzdash::CsvTable;
+using hertzdash::DataError;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Scratch {
+  fs::path path = fs::temp_directory_path() / ("hertzdash_csv_" + std::to_string(::getpid()));
+  Scratch() {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~Scratch() { fs::remove_all(path); }
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(path / name) << text;
+    return path / name;
+  }
+};
+
+std::string message_of(const fs::path& file) {
+  try {
+    (void)CsvTable::read(file);
+  } catch (const DataError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("CSV: a column name given twice is refused at its line and column", "[csv]") {
+  // Before, the second 'e' was read and never used: column lookups found the first.
+  const Scratch s;
+  // Line 2 (after one comment line); the second 'e' starts at byte 7 of "rod,e,e".
+  const fs::path f = s.write("dup.csv", "# a comment\nrod,e,e\nsteel,0.8,0.9\n");
+  CHECK(message_of(f) == f.string() + ":2:7: column 'e' again (first at column 5); each column name appears once");
+  const fs::path ok = s.write("ok.csv", "rod,e,e_second\nsteel,0.8,0.9\n");
+  CHECK(message_of(ok).empty());
+}
+
+TEST_CASE("CSV: a header key given twice is refused at its line and column, free comments are not", "[csv]") {
+  const Scratch s;
+  // "#  height_m: 0.03" on line 3: the key starts at byte 4, after '#' and two blanks.
+  const fs::path f = s.write("dup.csv", "# height_m: 0.02\n# note: a\n#  height_m: 0.03\n# note: b\nt_s\n0\n");
+  const CsvTable t = CsvTable::read(f);
+  CHECK_THROWS_WITH(t.comment_field("height_m"),
+                    f.string() + ":3:4: header key 'height_m' again (first on line 1); each header key appears once");
+  CHECK_THROWS_AS(t.comment_field("note"), DataError);  // asked for, a repeated key is refused
+  CHECK_FALSE(t.comment_field("source").has_value());
+  const fs::path ok = s.write("ok.csv", "# height_m :  0.02 \nt_s\n0\n");
+  CHECK(CsvTable::read(ok).comment_field("height_m") == std::string("0.02"));
+}
+
+TEST_CASE("CSV: an endless line from a pipe is refused after 16 MiB, not read to its end", "[csv]") {
+  // A FIFO has no size to check first. A writer sends 64 MiB without a line end, 64 KiB at a
+  // time, and counts what it could write before the reader closed the pipe (EPIPE). Before,
+  // std::getline read the whole line (all 64 MiB) and only then compared it with the limit.
+  // Now the reader stops at 16 MiB + one chunk: the writer gets at most that plus what the
+  // pipe and the stream buffer hold (64 KiB each), far below 20 MiB.
+  const Scratch s;
+  const fs::path fifo = s.path / "endless.csv";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  int count_pipe[2];
+  REQUIRE(::pipe(count_pipe) == 0);
+  const pid_t writer = ::fork();
+  REQUIRE(writer >= 0);
+  if (writer == 0) {
+    std::signal(SIGPIPE, SIG_IGN);
+    const int fd = ::open(fifo.c_str(), O_WRONLY);
+    const std::string chunk(1 << 16, 'x');
+    unsigned long long written = 0;
+    while (written < (64ull << 20)) {
+      const ssize_t n = ::write(fd, chunk.data(), chunk.size());
+      if (n <= 0) break;
+      written += static_cast<unsigned long long>(n);
+    }
+    (void)!::write(count_pipe[1], &written, sizeof written);
+    ::_exit(0);
+  }
+  ::close(count_pipe[1]);
+  const std::string m = message_of(fifo);
+  unsigned long long written = 0;
+  REQUIRE(::read(count_pipe[0], &written, sizeof written) == sizeof written);
+  ::close(count_pipe[0]);
+  int status = 0;
+  ::waitpid(writer, &status, 0);
+  CHECK(m == fifo.string() + ": more than 16777216 bytes; a data table is at most 16 MiB (read so far)");
+  CHECK(written > (16ull << 20));
+  CHECK(written < (20ull << 20));
+}
