@@ -130,14 +130,15 @@ void write_by_rename(const Target& t, const std::string& content) {
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) fail(t.what, reason_of(errno));
   // The file replaced keeps its permissions (0600 stays 0600, 0755 stays 0755); a new one has
-  // 0666 less the umask. Owner and group are the writer's.
-  int error = replacing && ::fchmod(fd, previous.st_mode & 07777) != 0 ? errno : 0;
+  // 0666 less the umask. Owner and group are the writer's; set-id and sticky bits are not copied.
+  int error = replacing && ::fchmod(fd, previous.st_mode & 0777) != 0 ? errno : 0;
   if (error == 0) error = write_all(fd, content);
   if (error == 0 && ::fsync(fd) != 0) error = errno;  // the data on disk before the name points to it
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error == 0 && ::rename(tmp.c_str(), t.path.c_str()) != 0) error = errno;
   if (error == 0) {
-    sync_directory(t.path.parent_path());
+    const fs::path parent = t.path.parent_path();
+    sync_directory(parent.empty() ? fs::path(".") : parent);  // a bare name lives in the working directory
     return;
   }
   ::unlink(tmp.c_str());

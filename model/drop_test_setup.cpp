@@ -25,7 +25,10 @@ void validate(const DropTestSetup& s, const GivenScaleInputs& given) {
   require_non_negative("--gravity", s.gravity_mps2, "m/s^2");
   if (s.impact_velocity_mps) {
     require_positive("--impact-velocity", *s.impact_velocity_mps, "m/s");
-  } else if (!(s.height_m > 0 && s.gravity_mps2 > 0)) {
+  } else if (!(s.gravity_mps2 > 0)) {  // named first: the height may be a default the user never typed
+    throw InvalidParameter("--gravity", format_value(s.gravity_mps2),
+                           "> 0 with --height > 0 when no --impact-velocity is given (the rod must reach the ball)");
+  } else if (!(s.height_m > 0)) {
     throw InvalidParameter("--height", format_value(s.height_m),
                            "> 0 with --gravity > 0 when no --impact-velocity is given (the rod must reach the ball)");
   }

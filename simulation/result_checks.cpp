@@ -28,21 +28,19 @@ double yield_onset_pressure_Pa(const DropTestSetup& s) {
 
 }  // namespace
 
-double restitution_limit(const SolverSettings& solver) {
-  const double accuracy = adaptive(solver.integrator)
-                              ? std::max(step_resolution_target_error, restitution_error_per_rtol * solver.rtol)
-                              : step_resolution_target_error;
-  return 1 + accuracy;
-}
+double run_tolerance(const SolverSettings& solver) { return std::max(solver.rtol, solver.atol); }
+
+double restitution_limit() { return 1 + step_resolution_target_error; }
 
 void require_physical_restitution(const ImpactSummary& s, const SolverSettings& solver, const LawInfo& law,
                                   bool dissipative) {
-  const double limit = restitution_limit(solver);
+  const double limit = restitution_limit();
   if (!s.separated || !(s.e_effective > limit)) return;
   const std::string change =
       adaptive(solver.integrator)
-          ? fmt::format("a tighter --rtol (it is {:g}; at most {:g} keeps e_effective within {:g} %)", solver.rtol,
-                        loose_rtol_limit, 100 * step_resolution_target_error)
+          ? fmt::format("a tighter --rtol and --atol (they are {:g} and {:g}; at most {:g} keeps e_effective within "
+                        "{:g} %)",
+                        solver.rtol, solver.atol, loose_rtol_limit, 100 * step_resolution_target_error)
           : fmt::format("a smaller --dt (it is {:g} s; the convergence study needs {} steps per undamped Hertz contact "
                         "time with {}) or an adaptive integrator",
                         solver.dt_s, min_steps_per_contact(solver.integrator, solver.locate_events),
@@ -60,7 +58,7 @@ DiagnosticSet impact_diagnostics(const ImpactSummary& s, const DropTestSetup& se
   if (const auto& e = s.elastic_rod; e && e->step_used_s > 0 && e->step_used_s < solver.dt_s)
     d.add(Diagnostic::stability_limit);
   if (under_resolved_contact(s, setup.mass_kg, solver)) d.add(Diagnostic::under_resolved);
-  if (adaptive(s.integrator_used) && solver.rtol > loose_rtol_limit) d.add(Diagnostic::loose_tolerance);
+  if (adaptive(s.integrator_used) && run_tolerance(solver) > loose_rtol_limit) d.add(Diagnostic::loose_tolerance);
   if (s.peak_contact_pressure_Pa > yield_onset_pressure_Pa(setup)) d.add(Diagnostic::yield_onset);
   if (hertz_profile_error(s.max_deformation_m, setup.ball_radius_m) > hertz_profile_error_limit)
     d.add(Diagnostic::large_deformation);

@@ -3,6 +3,7 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
+#include "hertzdash/simulation/result_checks.hpp"
 #include "hertzdash/simulation/step_resolution.hpp"
 
 #include <fmt/format.h>
@@ -91,7 +92,10 @@ std::vector<RunOption> make_run_options() {
        G::solver, "s"},
       {"no-event-location", &R::no_event_location,
        "Handle events at the end of the step that crosses them (" + fixed + "; convergence studies)", G::solver},
-      {"rtol", &R::rtol, "Relative tolerance in (0, 1) (" + adaptive + "; default: 1e-8)", G::solver},
+      {"rtol", &R::rtol,
+       "Relative tolerance in (0, 1) (" + adaptive + "; default: 1e-8; above " + fmt::format("{:g}", loose_rtol_limit) +
+           " the result carries a loose_tolerance warning)",
+       G::solver},
       {"atol", &R::atol,
        "Absolute tolerance relative to the impact's scales, in (0, 1): X for lengths, v0 for speeds, t_H for times "
        "(X, t_H the undamped Hertz maximum compression and contact time at the impact speed v0; " + adaptive +

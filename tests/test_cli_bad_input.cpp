@@ -45,7 +45,7 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
       {"--height -0.01", "--height", ">= 0"},
       {"--height 0", "--height", "> 0 with --gravity > 0"},
       {"--gravity -9.8", "--gravity", ">= 0"},
-      {"--gravity 0", "--height", "> 0 with --gravity > 0"},
+      {"--gravity 0", "--gravity", "> 0 with --height > 0"},  // the default --height is not to blame
       {"--impact-velocity 0", "--impact-velocity", "> 0"},
       {"--impact-velocity nan", "--impact-velocity", "> 0"},
       {"--integrator rk4 --dt 0", "--dt", "> 0"},

@@ -76,9 +76,11 @@ TEST_CASE("a decimal number beyond a double is out of range, not 'not a decimal 
     INFO(text);
     CHECK_FALSE(parse_decimal(text).has_value());
     CHECK(decimal_error(text) == DecimalError::out_of_range);
-    CHECK(hertzdash::decimal_refusal(text) ==
-          "'" + std::string(text) + "' is out of range of double (magnitude at most 1.7976931348623157e308 and, if "
-                                    "nonzero, at least 4.9e-324)");
+    std::string expected = "'";
+    expected += text;
+    expected += "' is out of range of double (magnitude at most 1.7976931348623157e308 and, if nonzero, at least "
+                "4.9e-324)";
+    CHECK(hertzdash::decimal_refusal(text) == expected);
   }
   CHECK(parse_decimal("3e-324") == std::numeric_limits<double>::denorm_min());
   CHECK(parse_decimal("1e-310") == 1e-310);
