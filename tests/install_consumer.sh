@@ -5,8 +5,11 @@
 # or source tree is on any path the consumer sees.
 # Usage: install_consumer.sh BUILD_DIR SOURCE_DIR PYTHON CMAKE (the interpreter the module is
 # built for, the cmake that built the tree)
+# Under make sanitize, HERTZDASH_PYTHON_PRELOAD is the sanitizer runtime the Python that imports
+# the instrumented module needs (tests/CMakeLists.txt); no other tool of this script gets it.
 set -euo pipefail
 build=$(realpath "$1"); src=$(realpath "$2"); python=$3; cmake=$4
+python_with_module() { LD_PRELOAD="${HERTZDASH_PYTHON_PRELOAD-}" "$python" "$@"; }
 work="$build/install-test"
 rm -rf "$work"
 prefix="$work/prefix"
@@ -39,7 +42,7 @@ echo "README C++ example: $got"
 "$prefix/bin/hertzdash" --version
 "$prefix/bin/hertzdash" simulate --rod steel --height 0.02 --json > "$work/cli.json"
 pydir=$(find "$prefix" -name 'hertzdash.cpython-*.so' -printf '%h\n')
-PYTHONPATH="$pydir" "$python" - "$work/cli.json" <<'PY'
+PYTHONPATH="$pydir" python_with_module - "$work/cli.json" <<'PY'
 import json, sys
 import hertzdash
 cli = json.load(open(sys.argv[1]))
