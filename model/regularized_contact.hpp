@@ -23,9 +23,10 @@
 // State (u [m^{1/2}], v [m/s], t [s]); tau [s/m^{1/2}]. Events (decreasing through 0):
 //   0 separation: g = u (stop)
 //   1 max_compression: g = v (observation)
-//   2 peak_force: g = dF/dtau = F_u u' + F_v v' from the state's partials, forward
-//     differences with relative steps 1e-6 (3 force evaluations per call: the
-//     events are evaluated after every step). Their O(1e-6) relative truncation
+//   2 peak_force: g = dF/dtau = F_u u' + F_v v' from the state's partials: exact for a law
+//     that declares force_of_root (one evaluation on ForceJet, model/force_jet.hpp), else
+//     forward differences with relative steps 1e-6 (3 force evaluations per call: the
+//     events are evaluated after every step), whose O(1e-6) relative truncation
 //     moves the root by O(1e-6) of the tau scale and, F being stationary there, the
 //     peak force by O(1e-12) relative. A difference along tau instead is exactly zero
 //     over a span at the undamped turning point, where a root finder meets a flat zero.
@@ -35,6 +36,7 @@
 // at v0 (model/hertz.hpp, undamped_hertz_impact).
 #include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 #include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/force_jet.hpp"
 #include "hertzdash/model/force_rate.hpp"
 #include "hertzdash/model/hertz.hpp"
 
@@ -106,10 +108,16 @@ class RegularizedContact {
 
   void events(double, const State& y, Events& g) const {
     const double u = std::max(y[0], 0.0), v = y[1];
-    const double du = 1e-6 * std::max(u, 1e-6 * u_scale_), dv = 1e-6 * v0_mps_;
-    const double F = force_at(u, v);
-    const double F_u = (force_at(u + du, v) - F) / du;
-    const double F_v = (force_at(u, v + dv) - F) / dv;
+    double F, F_u, F_v;
+    if constexpr (RootPolynomialLaw<Law>) {
+      const ForceJet jet = law_.force_of_root(ForceJet::root(u), ForceJet::rate(v));
+      F = jet.value, F_u = jet.d_u, F_v = jet.d_v;
+    } else {
+      const double du = 1e-6 * std::max(u, 1e-6 * u_scale_), dv = 1e-6 * v0_mps_;
+      F = force_at(u, v);
+      F_u = (force_at(u + du, v) - F) / du;
+      F_v = (force_at(u, v + dv) - F) / dv;
+    }
     const double dvdtau = 2.0 * u * (gravity_mps2_ - F * inverse_mass_);
     g = {y[0], y[1], force_rate(F_u, F_v, v, dvdtau), t_obs_s_ ? *t_obs_s_ - y[2] : 1.0};
   }

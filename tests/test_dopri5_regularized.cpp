@@ -7,6 +7,7 @@
 #include "hertzdash/model/damping/laws/tsuji_dem.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/model/force_jet.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
@@ -128,6 +129,50 @@ TEST_CASE("RootPolynomialLaw: force_of_root(u, v) equals force(u^2, v) for every
   });
   // Hertz, the paper's law, Kelvin-Voigt and the Hunt-Crossley family declare it.
   CHECK(declared >= 4);
+}
+
+TEST_CASE("ForceJet: force_of_root on jets gives the force and its partial derivatives in u and xdot",
+          "[regularized][damping]") {
+  // The regularised contact's peak-force event takes dF/dtau = F_u u' + F_xdot xdot' from
+  // one evaluation of force_of_root on ForceJet (model/force_jet.hpp). Checked for every law
+  // that declares force_of_root against central differences of force_of_root itself with
+  // steps d = 1e-4 of the scales: the truncation, d^2/6 times a third derivative, is ~1e-9 of
+  // the force's scale for these cubic polynomials and the rounding eps F/d ~ 1e-12, so 1e-6
+  // of the scale is met by any correct product rule and by no wrong one (an O(1) error); and
+  // for the paper's law against its closed form F_u = K (3u^2 + tau xdot), F_xdot = K tau u
+  // (HongoPaper::gradient_of_root) to rounding.
+  const DropTestSetup setup = steel_drop();
+  const ImpactConditions c{hertz_stiffness(setup), setup.mass_kg, 0.626, 0.8};
+  const double u_scale = std::sqrt(undamped_hertz_max_deformation_m(c.K, c.mass_kg, c.v0_mps)), v_scale = c.v0_mps;
+  const double du = 1e-4 * u_scale, dv = 1e-4 * v_scale;
+  int checked = 0;
+  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
+    if constexpr (RootPolynomialLaw<Law>) {
+      DampingSettings d = setup.damping;
+      d.viscous_time_constant_s = 1e-4;
+      const Law law(c, d);
+      const double scale = std::abs(law.force_of_root(u_scale, v_scale));  // the force's scale [N]
+      for (double u : {0.0, 0.1 * u_scale, u_scale})
+        for (double v : {0.626, 0.0, -0.5}) {
+          const ForceJet jet = law.force_of_root(ForceJet::root(u), ForceJet::rate(v));
+          const double F_u = (law.force_of_root(u + du, v) - law.force_of_root(u - du, v)) / (2 * du);
+          const double F_v = (law.force_of_root(u, v + dv) - law.force_of_root(u, v - dv)) / (2 * dv);
+          CHECK(jet.value == law.force_of_root(u, v));
+          CHECK(std::abs(jet.d_u - F_u) * u_scale <= 1e-6 * scale);
+          CHECK(std::abs(jet.d_v - F_v) * v_scale <= 1e-6 * scale);
+          ++checked;
+        }
+    }
+  });
+  CHECK(checked >= 4 * 9);
+  const HongoPaper paper_law(c, setup.damping);
+  for (double u : {0.0, 0.3 * u_scale, u_scale})
+    for (double v : {0.626, -0.5}) {
+      const ForceJet jet = paper_law.force_of_root(ForceJet::root(u), ForceJet::rate(v));
+      const HongoPaper::Gradient g = HongoPaper::gradient_of_root(c.K, paper_law.time_constant_s(), u, v);
+      CHECK(jet.d_u == Approx(g.F_u).epsilon(1e-14).margin(1e-14 * c.K * u_scale * u_scale));
+      CHECK(jet.d_v == Approx(g.F_xdot).epsilon(1e-14).margin(1e-300));
+    }
 }
 
 TEST_CASE("cvode-regularized: undamped Hertz contact against the closed forms, error proportional to tolerance",
