@@ -45,7 +45,7 @@ UndampedHertzImpact undamped_hertz_impact(double K, double mass_kg, double v0_mp
   // and with w = s^{5/2}: int = (2/5) B(2/5, 1/2). Contact lasts twice that.
   const double X = undamped_hertz_max_deformation_m(K, mass_kg, v0_mps);
   const double tc = undamped_hertz_contact_time_factor() * X / v0_mps;
-  return {X, K * std::pow(X, 1.5), tc};
+  return {X, K * X * std::sqrt(X), tc};
 }
 
 double undamped_hertz_max_deformation_m(double K, double mass_kg, double v0_mps) {

@@ -67,10 +67,10 @@ class RegularizedContact {
   RegularizedContact(const ImpactConditions& c, const DampingSettings& s, double gravity_mps2,
                      std::optional<double> t_obs_s = std::nullopt)
       : law_(c, s), inverse_mass_(1.0 / c.mass_kg), gravity_mps2_(gravity_mps2), t_obs_s_(t_obs_s), v0_mps_(c.v0_mps) {
-    // Scales of the impact for the difference steps: u* = X*^{1/2}, X* = (m v0^2 / K)^{2/5}, and v0.
-    u_scale_ = std::sqrt(hertz_impact_scale_m(c.K, c.mass_kg, c.v0_mps));
+    // The impact's scales (one pow per impact): X^{1/2}, v0 and t_H, also the difference steps'.
     const double X = undamped_hertz_max_deformation_m(c.K, c.mass_kg, c.v0_mps);
-    state_scale_ = State{std::sqrt(X), c.v0_mps, undamped_hertz_contact_time_factor() * X / c.v0_mps};
+    u_scale_ = std::sqrt(X);
+    state_scale_ = State{u_scale_, c.v0_mps, undamped_hertz_contact_time_factor() * X / c.v0_mps};
   }
 
   /// Onset: u = 0, v = v0, t = 0.
@@ -145,7 +145,7 @@ class RegularizedContact {
   double gravity_mps2_;
   std::optional<double> t_obs_s_;
   double v0_mps_;
-  double u_scale_;  ///< X*^{1/2} [m^{1/2}], for the difference step in u
+  double u_scale_;  ///< X^{1/2} [m^{1/2}], for the difference step in u
   State state_scale_;
 };
 

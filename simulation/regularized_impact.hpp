@@ -96,7 +96,8 @@ void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, I
   const double K = hertz_stiffness(setup);
   const double v0 = approach_speed(setup);  // [m/s], exact for the fall from rest
   const double t_onset_s = setup.impact_velocity_mps ? 0.0 : v0 / setup.gravity_mps2;
-  const double contact_s = undamped_hertz_impact(K, setup.mass_kg, v0).contact_time_s;
+  const double X = undamped_hertz_max_deformation_m(K, setup.mass_kg, v0);
+  const double contact_s = undamped_hertz_contact_time_factor() * X / v0;
   const ImpactConditions c{K, setup.mass_kg, v0, setup.restitution};
   detail::ContactUntil<Law> sys(c, setup.damping, setup.gravity_mps2, 20.0 * contact_s);
 
@@ -107,9 +108,8 @@ void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, I
   detail::RegularizedImpactObserver<Law> observer(sys, setup, t_onset_s, s, trace);
   auto y = sys.initial_state();
   // tau is bounded by the events (t reaches 20 contact times, or separation); the end
-  // only has to lie beyond them: 1e7 tau scales T/(2 X*^{1/2}), T = X*/v0.
-  const double X = hertz_impact_scale_m(K, setup.mass_kg, v0);
-  const double tau_end = 1e7 * (X / v0) / (2.0 * std::sqrt(X));
+  // only has to lie beyond them: 1e7 tau scales X^{1/2}/(2 v0), dt/dtau = 2u at u ~ X^{1/2}.
+  const double tau_end = 1e7 * std::sqrt(X) / (2.0 * v0);
   s.work = integrate(sys, y, 0.0, tau_end, observer);
 }
 
