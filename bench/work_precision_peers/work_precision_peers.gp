@@ -29,7 +29,7 @@ do for [kind in 'pdf png'] {
   set style line 32 lc rgb '#f5b041' lw 1.6 dt 4 pt 12 ps 0.6   # odeint-bs-dense-regularized
   set style line 33 lc rgb '#e67e22' lw 1.6 dt 4 pt 14 ps 0.6   # odeint-dopri5-regularized
   set style line 34 lc rgb '#922b21' lw 1.6 dt 4 pt 4 ps 0.5    # gsl-rk8pd-regularized
-  set style line 35 lc rgb '#16a085' lw 2.2 dt 1 pt 5 ps 0.6    # hertzdash-taylor-regularized
+  set style line 35 lc rgb '#007c91' lw 2.4 dt 1 pt 5 ps 0.6    # hertzdash-taylor-regularized
 
   solvers = 'hertzdash-dopri5 hertzdash-cvode hertzdash-rk4 odeint-dopri5 gsl-rk8pd cvode-fresh 27 hertzdash-dopri5-regularized hertzdash-cvode-regularized hertzdash-gbs8-regularized odeint-bs-regularized odeint-bs-dense-regularized odeint-dopri5-regularized gsl-rk8pd-regularized hertzdash-taylor-regularized'
   # Legend titles: '-regularized' shortened to '-reg'.
@@ -75,7 +75,7 @@ do for [kind in 'pdf png'] {
   eval quad_key_row
   eval key_panel
   eval key_row
-  set key maxrows 5 width -3 at graph -0.02, 0.5
+  set key maxrows 5 width -3 at graph 0.02, 0.5
   plot for [i in '15 10 8 1 2 3 4 5 6 9 11 12 13 14'] NaN with linespoints ls 20 + i title short(word(solvers, i+0)), \
        NaN with lines ls 27 title 'error = tolerance'
   unset multiplot
