@@ -33,11 +33,10 @@ std::string tolerance_warning(const ImpactSummary& s, const SolverSettings& solv
   const bool rtol_loose = solver.rtol > loose_rtol_limit;
   const std::string option = rtol_loose ? "--rtol" : "--atol";
   return fmt::format("{} {:g} is above {:g}: measured on the paper's impacts, {} and the other adaptive integrators "
-                     "then give e_effective with errors up to 0.23 % at 1e-3 and 5.8 % at 1e-2, against at most "
-                     "0.057 % at {:g}, within the {:g} % the fixed steps are held to (simulation/result_checks.hpp); "
-                     "use a smaller {}",
+                     "give e_effective within the {:g} % the fixed steps are held to at {:g}, not all of them at {:g} "
+                     "(tests/test_tolerance_limit.cpp); use a smaller {}",
                      option, rtol_loose ? solver.rtol : solver.atol, loose_rtol_limit, to_string(s.integrator_used),
-                     loose_rtol_limit, 100 * step_resolution_target_error, option);
+                     100 * step_resolution_target_error, loose_rtol_limit, 10 * loose_rtol_limit, option);
 }
 
 std::string yield_warning(const ImpactSummary& s, const DropTestSetup& setup) {

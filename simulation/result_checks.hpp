@@ -13,13 +13,11 @@ namespace hertzdash {
 
 /// Largest tolerance (--rtol, and --atol, which is relative to the impact's scales and so acts
 /// like it) whose e_effective error stays below step_resolution_target_error (0.1 %, the fixed
-/// steps' target). Measured (the steel rod from 20 mm with the paper's law, and duralumin-b
-/// from 50 mm with hunt-crossley; reference: each integrator at rtol 1e-12; atol at its default,
-/// scaled to the impact), the worst relative error of e_effective over cvode, dopri5,
-/// cvode-regularized, dopri5-regularized, gbs8-regularized and taylor-regularized is 5.8 % at
-/// rtol 1e-2 (dopri5), 0.23 % at 1e-3 (gbs8-regularized) and 0.057 % at 1e-4
-/// (cvode-regularized): 1e-4 meets the target, 1e-3 does not (docs/reliability.md has the
-/// table). A larger --rtol or --atol is flagged loose_tolerance.
+/// steps' target), measured for every adaptive integrator on the steel rod from 20 mm with the
+/// paper's law and duralumin-b from 50 mm with hunt-crossley against rtol 1e-12:
+/// tests/test_tolerance_limit.cpp prints the table and asserts that every integrator meets the
+/// target at this limit and that not every one does at ten times it. A larger --rtol or --atol
+/// is flagged loose_tolerance.
 inline constexpr double loose_rtol_limit = 1e-4;
 
 /// The tolerance loose_rtol_limit is compared with: the larger of --rtol and --atol.
@@ -29,7 +27,8 @@ double run_tolerance(const SolverSettings& solver);
 /// accuracy of a resolved fixed step and of an adaptive integrator at a tolerance up to
 /// loose_rtol_limit. No law creates energy (a dissipative one gives e_effective < 1, the
 /// conservative one 1), so beyond it the run did not resolve the contact; a looser tolerance
-/// does not raise the limit (at --rtol 0.9 cvode-regularized gives e_effective 1.16 for hongo).
+/// does not raise the limit (cvode-regularized at --rtol 0.9 gives an e_effective above it for
+/// hongo: tests/test_result_checks.cpp).
 double restitution_limit();
 
 /// Throws std::runtime_error (exit 1 on the command line, a per-row error in a sweep) when a
