@@ -76,7 +76,7 @@ void validate(const BounceOptions& o) {
   require_non_negative("--min-rebound-velocity", o.min_rebound_velocity_mps, "m/s");
 }
 
-ImpactSummary bounce_impact_summary(const BounceImpact& b, const DropTestSetup& setup, IntegratorKind used) {
+ImpactSummary bounce_impact_summary(const BounceImpact& b, const BounceSequence& sequence, const DropTestSetup& setup) {
   ImpactSummary s;
   s.K = hertz_stiffness(setup);
   s.impact_velocity_mps = b.approach_speed_mps;
@@ -86,8 +86,15 @@ ImpactSummary bounce_impact_summary(const BounceImpact& b, const DropTestSetup& 
   s.peak_contact_pressure_Pa = hertz_peak_pressure_Pa(s.K, setup.ball_radius_m, b.max_deformation_m);
   s.contact_time_s = b.contact_time_s;
   s.separated = b.separated;
-  s.integrator_used = used;
+  s.integrator_used = sequence.integrator_used;
   s.diagnostics = b.diagnostics;
+  if (sequence.step_used_s > 0) {
+    ElasticRodReport steps;
+    steps.elements = setup.elastic_rod ? setup.elastic_rod->elements : 0;
+    steps.stable_step_s = sequence.stable_step_s;
+    steps.step_used_s = sequence.step_used_s;
+    s.elastic_rod = steps;
+  }
   return s;
 }
 
@@ -131,7 +138,7 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
       }
     });
     for (BounceImpact& b : out.impacts)
-      b.diagnostics = impact_diagnostics(bounce_impact_summary(b, s, out.integrator_used), s, solver);
+      b.diagnostics = impact_diagnostics(bounce_impact_summary(b, out, s), s, solver);
   });
   for (const BounceImpact& b : out.impacts) {
     out.onset_times_s.push_back(b.onset_time_s);

@@ -70,6 +70,10 @@ struct BounceSequence {
   bool flights_integrated = false;       ///< false: ballistic flights in closed form (rigid model)
   IntegratorKind integrator_used = IntegratorKind::cvode;
   IntegrationStats work;                 ///< every impact (and integrated flight)
+  /// The elastic rod with a fixed-step integrator: the step taken, min(--dt, stable_step_s) [s],
+  /// and the rod's stability limit for that integrator [s] (simulation/elastic_impact.hpp); 0
+  /// for an adaptive integrator or the rigid model.
+  double step_used_s = 0, stable_step_s = 0;
   std::optional<double> viscous_time_constant_s;  ///< the A used, for a law with a material time constant
 };
 
@@ -87,7 +91,9 @@ RestitutionCalibration calibrate_interval_restitution(const DropTestSetup& setup
 /// An impact of the sequence of `setup` as an ImpactSummary: the fields the diagnostics and
 /// their messages read (K, approach and rebound speeds, peak force and pressure, deformation,
 /// separation, diagnostics, integrator_used).
-ImpactSummary bounce_impact_summary(const BounceImpact& b, const DropTestSetup& setup, IntegratorKind used);
+/// For the elastic rod with a fixed step, elastic_rod holds the sequence's steps only (step_used_s,
+/// stable_step_s, elements), what the stability and resolution checks read.
+ImpactSummary bounce_impact_summary(const BounceImpact& b, const BounceSequence& sequence, const DropTestSetup& setup);
 
 /// The interval ratios of the onset times t (size n gives n - 2 ratios).
 std::vector<double> interval_ratios(const std::vector<double>& onset_times_s);

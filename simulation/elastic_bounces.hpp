@@ -68,6 +68,10 @@ void run_elastic_bounces(const DropTestSetup& setup, IntegratorKind kind, bool f
   const double contact_s = undamped_hertz_impact(model.K, setup.mass_kg, model.v0_mps).contact_time_s;
   const double t_end = options.impacts * (2.0 * model.v0_mps / setup.gravity_mps2 + 20.0 * contact_s);
   const SolverSettings used = elastic_solver_settings(model, kind, fixed_step, settings, t_end);
+  if (fixed_step) {
+    out.step_used_s = used.dt_s;
+    out.stable_step_s = elastic_stable_step_s(model, kind);
+  }
 
   const double t_onset_s = setup.impact_velocity_mps ? 0.0 : model.v0_mps / setup.gravity_mps2;
   detail::ElasticBounceObserver<ElasticDropTest<Law>> observer(sys, t_onset_s, out.impacts);

@@ -206,7 +206,7 @@ std::vector<RunDiagnostic> run_diagnostics(const BounceRun& run) {
   std::vector<ImpactSummary> impacts;
   DiagnosticSet any;
   for (const BounceImpact& i : b.impacts) {
-    impacts.push_back(bounce_impact_summary(i, run.setup, b.integrator_used));
+    impacts.push_back(bounce_impact_summary(i, b, run.setup));
     for (const DiagnosticInfo& d : diagnostic_table)
       if (i.diagnostics.has(d.code)) any.add(d.code);
   }

@@ -236,3 +236,23 @@ TEST_CASE("CLI bounce --json: the fields of the issue, one per impact", "[cli][b
   CHECK(j["inputs"]["bounces"].get<double>() == 5);
   CHECK(j["git_revision"].is_string());
 }
+
+TEST_CASE("CLI bounce on the elastic rod: a fixed step beyond the rod's stability limit is noted, as by simulate",
+          "[cli][bounce][elastic]") {
+  // rk4 at --dt 2e-5 s is unstable on the rod's fastest mode: the sequence steps at the
+  // stability limit (2.5e-6 s for the default 20 elements) and says so with stability_limit, as
+  // simulate does for one impact. At --dt 1e-6 s, below the limit, there is nothing to note.
+  auto codes = [](const std::string& args) {
+    const auto r = test::run_cli(args + " --ball-yield-stress inf --json");
+    INFO(args << "\n" << r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    std::vector<std::string> out;
+    for (const auto& w : j["warnings"]) out.push_back(w["code"].get<std::string>());
+    return out;
+  };
+  const std::vector<std::string> noted{"stability_limit"};
+  CHECK(codes("simulate --rod-model elastic --integrator rk4 --dt 2e-5") == noted);
+  CHECK(codes("bounce --bounces 2 --rod-model elastic --integrator rk4 --dt 2e-5") == noted);
+  CHECK(codes("bounce --bounces 2 --rod-model elastic --integrator rk4 --dt 1e-6").empty());
+}
