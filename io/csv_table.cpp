@@ -77,13 +77,17 @@ void check_size(const std::filesystem::path& path) {
 std::string read_bounded(std::istream& in, const std::string& path) {
   std::string content;
   char chunk[1 << 16];
+  errno = 0;  // the reason of a failed read below is the read's own, not an earlier call's
   while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
     content.append(chunk, static_cast<std::size_t>(in.gcount()));
     if (content.size() > max_table_bytes)
       throw DataError(path + ": more than " + std::to_string(max_table_bytes) +
                       " bytes; a data table is at most 16 MiB (read so far)");
   }
-  if (in.bad()) throw DataError(path + ": cannot read: " + std::generic_category().message(errno));
+  if (in.bad()) {
+    const int reason = errno;
+    throw DataError(path + ": cannot read: " + (reason ? std::generic_category().message(reason) : "input error"));
+  }
   return content;
 }
 

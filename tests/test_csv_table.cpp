@@ -103,3 +103,11 @@ TEST_CASE("CSV: an endless line from a pipe is refused after 16 MiB, not read to
   CHECK(written > (16ull << 20));
   CHECK(written < (20ull << 20));
 }
+
+TEST_CASE("CSV: a directory given as a table is refused with the read's own reason", "[csv]") {
+  // Opening a directory for reading succeeds on Linux; the first read fails with EISDIR, and the
+  // message names that reason with the path.
+  const Scratch s;
+  const std::string m = message_of(s.path);
+  CHECK_THAT(m, Catch::Contains(s.path.string() + ": cannot read: Is a directory"));
+}
