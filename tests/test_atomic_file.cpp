@@ -1,6 +1,7 @@
 // Output files (io/atomic_file.hpp): regular files by temporary + rename, symbolic links
 // followed, FIFOs and devices written through, errno in the messages, no temporaries left
 // behind by a failure or by SIGTERM (io/remove_on_signal.hpp).
+#include "scratch_dir.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/output_directories.hpp"
 #include "hertzdash/io/remove_on_signal.hpp"
@@ -27,23 +28,9 @@ using hertzdash::write_file_atomically;
 using hertzdash::test::slurp;
 namespace fs = std::filesystem;
 
-namespace {
+using hertzdash::test::ScratchDir;
 
-struct Scratch {
-  fs::path path = fs::temp_directory_path() / ("hertzdash_atomic_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Scratch() { fs::remove_all(path); }
-  /// The names in the directory, sorted.
-  std::vector<std::string> names() const {
-    std::vector<std::string> n;
-    for (const auto& e : fs::directory_iterator(path)) n.push_back(e.path().filename().string());
-    std::sort(n.begin(), n.end());
-    return n;
-  }
-};
+namespace {
 
 std::string message_of(const fs::path& p, const std::string& content) {
   try {
@@ -66,7 +53,7 @@ TEST_CASE("atomic file: a regular file is replaced by a new inode, nothing else 
           "[atomic_file]") {
   // Replaced by rename: the new content lives in a new inode, the old inode (held open here)
   // keeps the old content; the directory holds only the target (no temporary).
-  const Scratch s;
+  const ScratchDir s;
   const fs::path p = s.path / "out.csv";
   std::ofstream(p) << "old\n";
   std::ifstream old_reader(p);
@@ -81,7 +68,7 @@ TEST_CASE("atomic file: a regular file is replaced by a new inode, nothing else 
 }
 
 TEST_CASE("atomic file: a symbolic link is followed, the link stays a link", "[atomic_file]") {
-  const Scratch s;
+  const ScratchDir s;
   fs::create_directories(s.path / "real");
   const fs::path target = s.path / "real" / "data.csv", link = s.path / "link.csv";
   std::ofstream(target) << "old\n";
@@ -104,7 +91,7 @@ TEST_CASE("atomic file: a FIFO is written through to its reader and stays a FIFO
   // The old code renamed a regular file over the FIFO and its reader saw nothing. Should that
   // come back, the reader, blocked opening the FIFO, is released through a second link to it,
   // so the test fails instead of hanging.
-  const Scratch s;
+  const ScratchDir s;
   const fs::path fifo = s.path / "pipe", keep = s.path / "pipe.keep";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   fs::create_hard_link(fifo, keep);
@@ -131,7 +118,7 @@ TEST_CASE("atomic file: character devices are written through and stay devices",
   // regular file); otherwise on /dev/null and /dev/full themselves (renaming over them is
   // refused to a user, so the old code failed there). Null (1,3) swallows, full (1,7) fails
   // every write with ENOSPC, which the message must carry.
-  const Scratch s;
+  const ScratchDir s;
   fs::path null_device = "/dev/null", full_device = "/dev/full";
   if (::geteuid() == 0) {
     null_device = s.path / "null";
@@ -157,7 +144,7 @@ TEST_CASE("atomic file: character devices are written through and stay devices",
 }
 
 TEST_CASE("atomic file: a directory is refused with 'Is a directory', never 'Success'", "[atomic_file]") {
-  const Scratch s;
+  const ScratchDir s;
   const std::string m = message_of(s.path, "x\n");
   CHECK(m == "cannot write " + s.path.string() + ": Is a directory");
   CHECK(m.find("Success") == std::string::npos);
@@ -166,7 +153,7 @@ TEST_CASE("atomic file: a directory is refused with 'Is a directory', never 'Suc
 }
 
 TEST_CASE("atomic file: a missing parent directory is an error naming it, and is not created", "[atomic_file]") {
-  const Scratch s;
+  const ScratchDir s;
   const fs::path p = s.path / "missing" / "deeper" / "out.csv";
   const std::string m = message_of(p, "x\n");
   CHECK(m == "cannot write " + p.string() + ": the directory " + (s.path / "missing" / "deeper").string() +
@@ -177,7 +164,7 @@ TEST_CASE("atomic file: a missing parent directory is an error naming it, and is
 TEST_CASE("atomic file: a failed write leaves the old file and no temporary", "[atomic_file]") {
   // A write fails on a file-size limit for any user, root included (SIGXFSZ ignored: write(2)
   // gives EFBIG). In a child, so the limit stays there.
-  const Scratch s;
+  const ScratchDir s;
   const fs::path p = s.path / "out.csv";
   std::ofstream(p) << "previous\n";
   const pid_t child = ::fork();
@@ -200,7 +187,7 @@ TEST_CASE("atomic file: a failed write leaves the old file and no temporary", "[
 TEST_CASE("atomic file: SIGTERM removes a registered temporary, then terminates", "[atomic_file]") {
   // In a child with the default SIGTERM disposition (Catch installs its own in this process):
   // the handler unlinks the registered file and re-raises, so the child dies of SIGTERM.
-  const Scratch s;
+  const ScratchDir s;
   const fs::path tmp = s.path / "big.csv.tmp.1.0";
   std::ofstream(tmp) << "half a file";
   const pid_t child = ::fork();
@@ -220,7 +207,7 @@ TEST_CASE("atomic file: SIGTERM removes a registered temporary, then terminates"
 
 TEST_CASE("atomic file: an unregistered file survives SIGTERM", "[atomic_file]") {
   // The registration ends with its scope: a file renamed into place is never removed later.
-  const Scratch s;
+  const ScratchDir s;
   const fs::path kept = s.path / "kept.csv";
   std::ofstream(kept) << "kept";
   const pid_t child = ::fork();
@@ -239,7 +226,7 @@ TEST_CASE("atomic file: an unregistered file survives SIGTERM", "[atomic_file]")
 
 TEST_CASE("output directories: the missing ones are found outermost first and created as mkdir -p does",
           "[atomic_file]") {
-  const Scratch s;
+  const ScratchDir s;
   const fs::path file = s.path / "a" / "b" / "out.csv";
   CHECK(hertzdash::missing_parent_directories(file) == std::vector<fs::path>{s.path / "a", s.path / "a" / "b"});
   CHECK(s.names().empty());  // looking creates nothing
@@ -253,7 +240,7 @@ TEST_CASE("output directories: a file or a link loop in the way is an error with
           "[atomic_file]") {
   // std::filesystem::create_directories threw filesystem_error for these ("File exists",
   // "Too many levels of symbolic links") with a text of its own; the reason is now errno's.
-  const Scratch s;
+  const ScratchDir s;
   std::ofstream(s.path / "file") << "x";
   fs::create_symlink("loop", s.path / "loop");
   auto message = [](const fs::path& p) {
@@ -276,7 +263,7 @@ TEST_CASE("atomic file: a name of NAME_MAX bytes is written, its temporary's nam
   // NAME.tmp.PID.N is up to 20 bytes longer than NAME: with NAME at NAME_MAX (255) bytes the
   // temporary's name was too long (ENAMETOOLONG) and the write failed. Also a UTF-8 name whose
   // cut falls inside a character (2-byte 'é' repeated: 254 bytes, then 'x').
-  const Scratch s;
+  const ScratchDir s;
   for (const std::string& name : {std::string(NAME_MAX, 'a'), [] {
                                     std::string n;
                                     while (n.size() < NAME_MAX - 1) n += "\xC3\xA9";
@@ -294,7 +281,7 @@ TEST_CASE("atomic file: a name of NAME_MAX bytes is written, its temporary's nam
 TEST_CASE("atomic file: a replaced file keeps its permissions", "[atomic_file]") {
   // The temporary was created 0666 less the umask and renamed over the file: a private 0600
   // file became 0644, an executable 0755 lost its x bits. A new file still gets 0666 & ~umask.
-  const Scratch s;
+  const ScratchDir s;
   const fs::path p = s.path / "out.csv";
   for (const mode_t mode : {mode_t{0600}, mode_t{0755}, mode_t{0640}}) {
     std::ofstream(p) << "previous\n";

@@ -1,6 +1,7 @@
 // Bad input: every invalid parameter exits with code 2, names the parameter and its
 // valid range, and writes no file (the trace is written only after a successful run,
 // atomically).
+#include "scratch_dir.hpp"
 #include "cli_runner.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,6 +16,8 @@
 #include <unistd.h>
 
 using hertzdash::test::run_cli;
+
+using hertzdash::test::ScratchDir;
 
 namespace {
 
@@ -222,12 +225,6 @@ std::vector<std::string> options_of_type(const std::string& subcommand, const st
 }
 
 // A scratch directory removed afterwards.
-struct Scratch {
-  std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("hertzdash_bad_numbers_" + std::to_string(::getpid()));
-  Scratch() { std::filesystem::create_directories(path); }
-  ~Scratch() { std::filesystem::remove_all(path); }
-};
 
 }  // namespace
 
@@ -235,7 +232,7 @@ TEST_CASE("CLI: every numeric option of every subcommand refuses text that is no
   // Issue 19: CLI11 read 0x10 as 16 and an empty text as 0. Every FLOAT and UINT option of every
   // subcommand in --help is given each text below: exit 2, a message naming the option, the
   // text and what it must be, nothing on stdout and no output file.
-  const Scratch dir;
+  const ScratchDir dir;
   const std::string trace = (dir.path / "trace.csv").string(), out = (dir.path / "out.csv").string();
   REQUIRE(run_cli("simulate --trace " + trace + " --trace-format measured").exit_code == 0);
   std::ofstream(dir.path / "case.toml") << "[grid]\nheight = [0.01]\n";
@@ -411,7 +408,7 @@ TEST_CASE("CLI sweep: each bad case file exits 2 naming the key, its line and wh
       {"[base]\nheigth = 0.01\n", "invalid base.heigth (case.toml line 2) = an unknown option"},
       {"[base\n", "case.toml:1:"},
   };
-  const Scratch dir;
+  const ScratchDir dir;
   const auto out = dir.path / "out.csv";
   for (const BadCase& c : cases) {
     std::ofstream(dir.path / "case.toml") << c.text;
@@ -431,7 +428,7 @@ TEST_CASE("CLI: each subcommand's own bad input exits 2, names the option and wh
   // The rows of the matrix beyond simulate's and bounce's tables above and the numbers of every
   // option (the FLOAT/UINT test). In the arguments OUT is an output file that must not appear, DIR
   // the scratch directory, TRACE a measured trace in it and CASE a case file.
-  const Scratch dir;
+  const ScratchDir dir;
   const std::string out = (dir.path / "out.csv").string(), trace = (dir.path / "trace.csv").string();
   REQUIRE(run_cli("simulate --trace " + trace + " --trace-format measured").exit_code == 0);
   std::ofstream(dir.path / "case.toml") << "[grid]\nheight = [0.01]\n";

@@ -1,6 +1,7 @@
 // The CLI's output files (docs/output-files.md): /dev/stdout and pipes written through, a
 // missing directory refused (exit 2, option and directory named, nothing created) unless
 // --mkdir, a directory refused; for every command that writes a file.
+#include "scratch_dir.hpp"
 #include "cli_runner.hpp"
 
 #include <catch2/catch.hpp>
@@ -14,16 +15,9 @@
 using hertzdash::test::run_cli;
 namespace fs = std::filesystem;
 
-namespace {
+using hertzdash::test::ScratchDir;
 
-struct Scratch {
-  fs::path path = fs::temp_directory_path() / ("hertzdash_outputs_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Scratch() { fs::remove_all(path); }
-};
+namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -61,7 +55,7 @@ TEST_CASE("CLI simulate --trace /dev/stdout into a pipe", "[cli][output]") {
 
 TEST_CASE("CLI: a missing output directory exits 2 naming the option and the directory, creates nothing",
           "[cli][output]") {
-  const Scratch s;
+  const ScratchDir s;
   const std::string missing = (s.path / "new" / "sub").string();
   std::FILE* f = std::fopen((s.path / "case.toml").c_str(), "w");
   std::fputs("[base]\nrod = \"steel\"\n[grid]\nheight = [0.01, 0.02]\n", f);
@@ -89,7 +83,7 @@ TEST_CASE("CLI: a missing output directory exits 2 naming the option and the dir
 }
 
 TEST_CASE("CLI --mkdir creates the missing directories of every output file", "[cli][output]") {
-  const Scratch s;
+  const ScratchDir s;
   std::FILE* f = std::fopen((s.path / "case.toml").c_str(), "w");
   std::fputs("[base]\nrod = \"steel\"\n[grid]\nheight = [0.01, 0.02]\n", f);
   std::fclose(f);
@@ -108,7 +102,7 @@ TEST_CASE("CLI --mkdir creates the missing directories of every output file", "[
 }
 
 TEST_CASE("CLI: an output path that is a directory exits 2 and says so", "[cli][output]") {
-  const Scratch s;
+  const ScratchDir s;
   const auto r = run_cli("simulate --trace " + s.path.string());
   CHECK(r.exit_code == 2);
   CHECK(r.err == "hertzdash: invalid --trace = " + s.path.string() + ": must be a file, not a directory\n");
@@ -119,7 +113,7 @@ TEST_CASE("CLI --mkdir: bad input or a failed run leaves no new directory", "[cl
   // The directories are created right before the file is written, after every input was
   // validated and the run succeeded; before, --mkdir created them first, so each of these
   // refusals left S/new behind.
-  const Scratch s;
+  const ScratchDir s;
   const std::string trace = (s.path / "trace.csv").string();
   REQUIRE(run_cli("simulate --trace-format measured --trace " + trace).exit_code == 0);
   const std::string dir = (s.path / "new" / "sub").string();
@@ -145,7 +139,7 @@ TEST_CASE("CLI --mkdir: bad input or a failed run leaves no new directory", "[cl
 TEST_CASE("CLI: a file or a symbolic-link loop where a directory should be exits 2 with the system's reason",
           "[cli][output]") {
   // Before, these ended in a raw std::filesystem exception (exit 1, "filesystem error: ...").
-  const Scratch s;
+  const ScratchDir s;
   std::FILE* f = std::fopen((s.path / "file").c_str(), "w");
   std::fclose(f);
   fs::create_symlink("loop", s.path / "loop");  // a link to itself: ELOOP
@@ -171,7 +165,7 @@ TEST_CASE("CLI: a file or a symbolic-link loop where a directory should be exits
 
 TEST_CASE("CLI: an empty output path exits 2 naming the option", "[cli][output]") {
   // Before, --trace '' (and the others) was taken as no output asked for: exit 0, nothing written.
-  const Scratch s;
+  const ScratchDir s;
   std::FILE* f = std::fopen((s.path / "case.toml").c_str(), "w");
   std::fputs("[base]\nrod = \"steel\"\n[grid]\nheight = [0.01, 0.02]\n", f);
   std::fclose(f);

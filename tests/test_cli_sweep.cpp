@@ -1,5 +1,6 @@
 // `hertzdash sweep` as a user runs it: the README's example as written, the files it writes and
 // where, bad case files, every run failing, and Ctrl-C.
+#include "scratch_dir.hpp"
 #include "cli_runner.hpp"
 
 #include "hertzdash/io/csv_table.hpp"
@@ -17,18 +18,9 @@ using hertzdash::test::run_cli_program;
 using hertzdash::test::slurp;
 namespace fs = std::filesystem;
 
-namespace {
+using hertzdash::test::ScratchDir;
 
-struct ScratchDir {
-  fs::path path;
-  explicit ScratchDir(const std::string& name)
-      : path(fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() { fs::remove_all(path); }
-  void write(const std::string& name, const std::string& text) const { std::ofstream(path / name) << text; }
-};
+namespace {
 
 // `hertzdash ARGS` run in `dir`.
 hertzdash::test::CliResult run_in(const fs::path& dir, const std::string& args) {
@@ -57,7 +49,7 @@ TEST_CASE("The README's sweep example runs as written and prints what the README
   REQUIRE(!toml.empty());
   REQUIRE(command == "sweep laws-heights.toml");
 
-  const ScratchDir dir("hertzdash_readme_sweep");
+  const ScratchDir dir;
   dir.write("laws-heights.toml", toml);
   const auto r = run_in(dir.path, command);
   INFO(r.err);
@@ -83,7 +75,7 @@ TEST_CASE("The README's sweep example runs as written and prints what the README
 }
 
 TEST_CASE("CLI sweep: where the files go, and the summary", "[cli][sweep]") {
-  const ScratchDir dir("hertzdash_sweep_files");
+  const ScratchDir dir;
   fs::create_directories(dir.path / "cases");
   dir.write("cases/speeds.toml",
             "[grid]\nimpact-velocity = [0.5, 1.0]\n[output]\nfile = \"out/speeds-rows.csv\"\nsummary = true\n");
@@ -108,7 +100,7 @@ TEST_CASE("CLI sweep: where the files go, and the summary", "[cli][sweep]") {
 }
 
 TEST_CASE("CLI sweep: a bad case exits 2 with no file, every run failing exits 1", "[cli][sweep]") {
-  const ScratchDir dir("hertzdash_sweep_bad");
+  const ScratchDir dir;
   dir.write("bad.toml", "[grid]\nheight = [0x10]\n");
   auto r = run_in(dir.path, "sweep bad.toml");
   CHECK(r.exit_code == 2);
@@ -127,7 +119,7 @@ TEST_CASE("CLI sweep: a bad case exits 2 with no file, every run failing exits 1
 TEST_CASE("CLI sweep: Ctrl-C stops the runs and writes no file", "[cli][sweep]") {
   // Two million runs take tens of seconds; SIGINT after one second must end the program with
   // exit 130 and leave neither the CSV nor a temporary file.
-  const ScratchDir dir("hertzdash_sweep_interrupt");
+  const ScratchDir dir;
   dir.write("long.toml", "[sample]\ncount = 2000000\nball-E = { distribution = \"uniform\", min = 1.2e9, max = 2.9e9 }\n");
   const auto r = run_cli_program("cd " + dir.path.string() + " && (" HERTZDASH_BIN
                                  " sweep long.toml --quiet & pid=$!; sleep 1; kill -INT $pid; wait $pid)",

@@ -1,5 +1,6 @@
 // The CSV table reader (io/csv_table.hpp): each column name once, each "# key: value" header key
 // once, and the size limit enforced while reading, however long a line.
+#include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,20 +18,9 @@ using hertzdash::CsvTable;
 using hertzdash::DataError;
 namespace fs = std::filesystem;
 
-namespace {
+using hertzdash::test::ScratchDir;
 
-struct Scratch {
-  fs::path path = fs::temp_directory_path() / ("hertzdash_csv_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Scratch() { fs::remove_all(path); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return path / name;
-  }
-};
+namespace {
 
 std::string message_of(const fs::path& file) {
   try {
@@ -45,7 +35,7 @@ std::string message_of(const fs::path& file) {
 
 TEST_CASE("CSV: a column name given twice is refused at its line and column", "[csv]") {
   // Before, the second 'e' was read and never used: column lookups found the first.
-  const Scratch s;
+  const ScratchDir s;
   // Line 2 (after one comment line); the second 'e' starts at byte 7 of "rod,e,e".
   const fs::path f = s.write("dup.csv", "# a comment\nrod,e,e\nsteel,0.8,0.9\n");
   CHECK(message_of(f) == f.string() + ":2:7: column 'e' again (first at column 5); each column name appears once");
@@ -54,7 +44,7 @@ TEST_CASE("CSV: a column name given twice is refused at its line and column", "[
 }
 
 TEST_CASE("CSV: a header key given twice is refused at its line and column, free comments are not", "[csv]") {
-  const Scratch s;
+  const ScratchDir s;
   // "#  height_m: 0.03" on line 3: the key starts at byte 4, after '#' and two blanks.
   const fs::path f = s.write("dup.csv", "# height_m: 0.02\n# note: a\n#  height_m: 0.03\n# note: b\nt_s\n0\n");
   const CsvTable t = CsvTable::read(f);
@@ -72,7 +62,7 @@ TEST_CASE("CSV: an endless line from a pipe is refused after 16 MiB, not read to
   // std::getline read the whole line (all 64 MiB) and only then compared it with the limit.
   // Now the reader stops at 16 MiB + one chunk: the writer gets at most that plus what the
   // pipe and the stream buffer hold (64 KiB each), far below 20 MiB.
-  const Scratch s;
+  const ScratchDir s;
   const fs::path fifo = s.path / "endless.csv";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   int count_pipe[2];
@@ -107,7 +97,7 @@ TEST_CASE("CSV: an endless line from a pipe is refused after 16 MiB, not read to
 TEST_CASE("CSV: a directory given as a table is refused with the read's own reason", "[csv]") {
   // Opening a directory for reading succeeds on Linux; the first read fails with EISDIR, and the
   // message names that reason with the path.
-  const Scratch s;
+  const ScratchDir s;
   const std::string m = message_of(s.path);
   CHECK_THAT(m, Catch::Contains(s.path.string() + ": cannot read: Is a directory"));
 }

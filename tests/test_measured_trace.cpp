@@ -1,5 +1,6 @@
 // The measured-trace reader (data/measurements/README.md), exercised on SYNTHETIC
 // files written by the test itself: no measured data exists for the paper.
+#include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/measured_trace.hpp"
 
@@ -14,22 +15,11 @@
 using namespace hertzdash;
 namespace fs = std::filesystem;
 
+using hertzdash::test::ScratchDir;
+
 namespace {
 
 // A fresh directory per test case, removed afterwards.
-struct ScratchDir {
-  fs::path path;
-  explicit ScratchDir(const std::string& name)
-      : path(fs::temp_directory_path() / ("hertzdash_measured_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() { fs::remove_all(path); }
-  fs::path write(const std::string& file, const std::string& text) const {
-    std::ofstream(path / file) << text;
-    return path / file;
-  }
-};
 
 const std::string synthetic_header =
     "# source: SYNTHETIC test data written by tests/test_measured_trace.cpp, not a measurement\n"
@@ -40,7 +30,7 @@ const std::string synthetic_header =
 }  // namespace
 
 TEST_CASE("a well-formed synthetic trace is read with its provenance and gaps", "[measured_trace]") {
-  ScratchDir dir("ok");
+  ScratchDir dir;
   const auto file = dir.write("steel_h20mm_synthetic.csv", synthetic_header +
                                                               "t_s,force_N,accel_mps2\n"
                                                               "0.0,0.0,9.8\n"
@@ -61,7 +51,7 @@ TEST_CASE("a well-formed synthetic trace is read with its provenance and gaps", 
 
 TEST_CASE("columns in other units are read into SI", "[measured_trace]") {
   // 250 us = 2.5e-4 s; 1.5 kN = 1500 N; -2 g = -2 x 9.80665 m/s^2 (standard gravity); 3 mm = 3e-3 m.
-  ScratchDir dir("units");
+  ScratchDir dir;
   const auto file = dir.write("units.csv", synthetic_header + "t_us,force_kN,accel_g,displacement_mm\n"
                                                                "0,0,1,0\n"
                                                                "250,1.5,-2,3\n");
@@ -73,7 +63,7 @@ TEST_CASE("columns in other units are read into SI", "[measured_trace]") {
 }
 
 TEST_CASE("malformed traces are rejected with a message naming the file and the defect", "[measured_trace]") {
-  ScratchDir dir("bad");
+  ScratchDir dir;
   auto rejects = [&](const std::string& text, const std::string& expected) {
     const auto file = dir.write("bad.csv", text);
     CHECK_THROWS_WITH(read_measured_trace(file),
@@ -106,7 +96,7 @@ TEST_CASE("malformed traces are rejected with a message naming the file and the 
 }
 
 TEST_CASE("traces are found by the rod and height in their header", "[measured_trace]") {
-  ScratchDir dir("find");
+  ScratchDir dir;
   const std::string body = "t_s,force_N\n0,0\n1e-4,1\n";
   dir.write("b.csv", synthetic_header + body);
   dir.write("a.csv", synthetic_header + body);

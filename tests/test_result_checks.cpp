@@ -6,6 +6,7 @@
 // undamped Hertz contact time is t_H = 1.211 ms (the program's own under_resolved message says
 // so). --ball-yield-stress inf switches the yield check off where a row wants a clean run (that
 // drop exceeds the yield onset: test_small_deformation.cpp).
+#include "scratch_dir.hpp"
 #include "cli_runner.hpp"
 
 #include "hertzdash/simulation/result_checks.hpp"
@@ -26,6 +27,8 @@ using hertzdash::test::run_cli_program;
 using hertzdash::test::slurp;
 namespace fs = std::filesystem;
 
+using hertzdash::test::ScratchDir;
+
 namespace {
 
 std::vector<std::string> codes(const nlohmann::json& warnings) {
@@ -40,16 +43,6 @@ nlohmann::json json_of(const std::string& args) {
   REQUIRE(r.exit_code == 0);
   return nlohmann::json::parse(r.out);
 }
-
-struct ScratchDir {
-  fs::path path;
-  explicit ScratchDir(const std::string& name)
-      : path(fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() { fs::remove_all(path); }
-};
 
 }  // namespace
 
@@ -170,7 +163,7 @@ TEST_CASE("The measured-trace note of simulate is in its JSON warnings", "[cli][
   // CVODE steps up to 2.6e-5 s, longer than the 1 MHz sampling interval: the samples between
   // its steps are interpolated, a note on stderr and in "warnings". RK4 at 5e-7 s steps finer
   // than the sampling: no note.
-  const ScratchDir dir("hertzdash_result_checks_trace");
+  const ScratchDir dir;
   const std::string trace = (dir.path / "m.csv").string();
   const auto r = run_cli("simulate --ball-yield-stress inf --trace-format measured --json --trace " + trace);
   REQUIRE(r.exit_code == 0);
@@ -187,7 +180,7 @@ TEST_CASE("fit reports the fitted model's diagnostics and its own warnings with 
   // A virtual measurement of the 20 mm drop is synthetic (synthetic_trace); the fitted model
   // presses the nylon beyond the yield onset as the drop it came from does (yield_onset, for the
   // fitted model).
-  const ScratchDir dir("hertzdash_result_checks_fit");
+  const ScratchDir dir;
   const std::string trace = (dir.path / "m.csv").string();
   REQUIRE(run_cli("simulate --trace-format measured --integrator rk4 --dt 5e-7 --trace " + trace).exit_code == 0);
   const auto r = run_cli("fit --json --trace " + trace);
@@ -206,7 +199,7 @@ TEST_CASE("fit reports the fitted model's diagnostics and its own warnings with 
 TEST_CASE("A sweep flags each run in its warnings column and counts the codes", "[cli][sweep][result_checks]") {
   // Three Euler steps: 1e-7 s (12110 steps per t_H, resolved), 1e-6 s (1211: under_resolved),
   // 1e-4 s (12: e_effective about 1.3, a per-row error).
-  const ScratchDir dir("hertzdash_result_checks_sweep");
+  const ScratchDir dir;
   std::ofstream(dir.path / "steps.toml") << "[base]\nintegrator = \"euler\"\nball-yield-stress = inf\n"
                                             "[grid]\ndt = [1e-7, 1e-6, 1e-4]\n[output]\ncolumns = [\"e_effective\"]\n"
                                             "summary = true\n";
