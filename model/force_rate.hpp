@@ -16,10 +16,10 @@
 // In the physical variables the partial derivatives come from central differences of the
 // law's force (contact_force_rate below) with relative steps 1e-6 of the impact's scales
 // (truncation ~1e-12 relative); in the regularising variables, for a law that declares
-// force_of_root, exactly from one evaluation on jets (model/force_jet.hpp). Differentiating along the state's partials, not along a time
-// shift, keeps the rate nonzero wherever x' or x'' is, so the root finder never meets a flat
-// zero (at the undamped turning point F_x x' is tiny but not zero, while a time-shifted
-// difference cancels exactly).
+// force_of_root, exactly from one evaluation on jets (model/force_jet.hpp). Differentiating
+// along the state's partials, not along a time shift, keeps the rate nonzero wherever x' or x''
+// is, so the root finder never meets a flat zero (at the undamped turning point F_x x' is tiny
+// but not zero, while a time-shifted difference cancels exactly).
 #include <algorithm>
 
 namespace hertzdash {
