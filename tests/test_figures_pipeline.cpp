@@ -4,6 +4,7 @@
 // must exist, be non-empty and, for a CSV, carry exactly its declared columns and at
 // least one data row.
 // The physics behind the figures is tested elsewhere; this checks the plumbing.
+#include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,6 +18,7 @@
 #include <vector>
 
 namespace fs = std::filesystem;
+using hertzdash::test::ScratchDir;
 
 namespace {
 
@@ -54,13 +56,12 @@ std::string read_text(const fs::path& p) {
 TEST_CASE("run_studies.sh --reduced produces every file the study manifests declare", "[pipeline]") {
   const fs::path source = HERTZDASH_SOURCE_DIR;
   const fs::path build = fs::path(HERTZDASH_BIN).parent_path();
-  const fs::path scratch = fs::temp_directory_path() / ("hertzdash_pipeline_" + std::to_string(::getpid()));
-  fs::remove_all(scratch);
+  const ScratchDir scratch_dir;  // removed however the test ends
+  const fs::path& scratch = scratch_dir.path;
   const fs::path out = scratch / "figures";
   const std::string command = "bash '" + (source / "validation" / "run_studies.sh").string() + "' '" +
                               build.string() + "' '" + out.string() + "' --reduced > '" +
                               (scratch / "log.txt").string() + "' 2>&1";
-  fs::create_directories(scratch);
   const int status = std::system(command.c_str());
   INFO("run_studies.sh output:\n" << read_text(scratch / "log.txt"));
   REQUIRE(status == 0);
@@ -91,7 +92,6 @@ TEST_CASE("run_studies.sh --reduced produces every file the study manifests decl
   }
   CHECK(studies >= 4);  // at least this issue's: paper_figures, rods_h20, height_sweep, paper_tables
   CHECK(files >= 14);
-  fs::remove_all(scratch);
 }
 
 TEST_CASE("a trace in the measurements directory is overlaid on Fig. 5", "[pipeline]") {
@@ -100,8 +100,8 @@ TEST_CASE("a trace in the measurements directory is overlaid on Fig. 5", "[pipel
   // fig5.csv with the provenance kept, not for fig6, and fig5.gp must still draw.
   const fs::path source = HERTZDASH_SOURCE_DIR;
   const fs::path build = fs::path(HERTZDASH_BIN).parent_path();
-  const fs::path scratch = fs::temp_directory_path() / ("hertzdash_overlay_" + std::to_string(::getpid()));
-  fs::remove_all(scratch);
+  const ScratchDir scratch_dir;  // removed however the test ends
+  const fs::path& scratch = scratch_dir.path;
   fs::create_directories(scratch / "data" / "measurements");
   for (const auto& f : fs::directory_iterator(source / "data"))
     if (f.path().extension() == ".csv") fs::copy_file(f.path(), scratch / "data" / f.path().filename());
@@ -126,5 +126,4 @@ TEST_CASE("a trace in the measurements directory is overlaid on Fig. 5", "[pipel
   CHECK(read_text(out / "fig5_measured_1.csv").find("synthetic = true") != std::string::npos);
   CHECK_FALSE(fs::exists(out / "fig6_measured_1.csv"));
   CHECK(fs::file_size(out / "fig5.png") > 0);
-  fs::remove_all(scratch);
 }
