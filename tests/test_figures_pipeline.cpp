@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -126,4 +127,36 @@ TEST_CASE("a trace in the measurements directory is overlaid on Fig. 5", "[pipel
   CHECK(read_text(out / "fig5_measured_1.csv").find("synthetic = true") != std::string::npos);
   CHECK_FALSE(fs::exists(out / "fig6_measured_1.csv"));
   CHECK(fs::file_size(out / "fig5.png") > 0);
+}
+
+TEST_CASE("a study that cannot run says why and exits 1, never aborts", "[pipeline]") {
+  // Every study program pointed at an empty data directory: those that read the paper's tables
+  // stop with exit status 1 and "<study>: error: <the missing file>" on stderr (an uncaught
+  // exception used to abort with a core dump, status 134); one that reads none runs.
+  const fs::path source = HERTZDASH_SOURCE_DIR;
+  const fs::path build = fs::path(HERTZDASH_BIN).parent_path();
+  const ScratchDir scratch;
+  fs::create_directories(scratch.path / "no-data");
+  int failed = 0;
+  for (const char* layer : {"validation", "bench"})
+    for (const auto& dir : fs::directory_iterator(source / layer)) {
+      const std::string study = dir.path().filename().string();
+      if (!dir.is_directory() || !fs::exists(dir.path() / (study + ".cpp"))) continue;
+      const fs::path err = scratch.path / (study + ".err");
+      const std::string command = "HERTZDASH_DATA_DIR='" + (scratch.path / "no-data").string() + "' '" +
+                                  (build / layer / study).string() + "' --out '" + (scratch.path / "out").string() +
+                                  "' --reduced > /dev/null 2> '" + err.string() + "'";
+      const int status = std::system(command.c_str());
+      const std::string message = read_text(err);
+      INFO("study " << study << ": " << message);
+      REQUIRE(WIFEXITED(status));
+      const int code = WEXITSTATUS(status);
+      CHECK((code == 0 || code == 1));
+      if (code == 1) {
+        ++failed;
+        CHECK(message.rfind(study + ": error: ", 0) == 0);
+        CHECK_THAT(message, Catch::Contains("table1_dimensions.csv") || Catch::Contains("parameters.csv"));
+      }
+    }
+  CHECK(failed >= 10);
 }

@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(c.generated_dir);
     return hertzdash::bench::run_work_precision(c);
   } catch (const std::exception& e) {
-    std::cerr << "work_precision_peers: " << e.what() << "\n";
+    std::cerr << "work_precision_peers: error: " << e.what() << "\n";
     return 1;
   }
 }

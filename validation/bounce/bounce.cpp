@@ -75,7 +75,7 @@ void add_gap_rows(CsvWriter& csv, const DropTestSetup& s, const BounceSequence& 
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   SolverSettings accurate;  // the regularised fast path at rtol 1e-10: contact errors ~1e-10
@@ -184,4 +184,6 @@ int main(int argc, char** argv) {
   write_file_atomically(args.generated_dir / "bounce_table.tex", table);
   macros.save(args.generated_dir / "bounce.tex");
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

@@ -91,7 +91,7 @@ struct Quantity {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const std::vector<ChungOoiTest> tests = load_chung_ooi_tests();
   const std::filesystem::path data = chung_ooi_data_dir();
@@ -324,4 +324,6 @@ int main(int argc, char** argv) {
   write_file_atomically(args.generated_dir / "chung_ooi_table.tex", header + table);
   write_file_atomically(args.generated_dir / "chung_ooi_curves_table.tex", header + curves_table);
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

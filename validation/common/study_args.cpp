@@ -27,4 +27,9 @@ StudyArgs parse_study_args(int argc, char** argv) {
   return a;
 }
 
+int study_failed(const char* program, const std::exception& e) {
+  std::cerr << std::filesystem::path(program).filename().string() << ": error: " << e.what() << "\n";
+  return 1;
+}
+
 }  // namespace hertzdash

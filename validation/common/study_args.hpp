@@ -6,6 +6,7 @@
 // --reduced: a small, fast version of the study for the pipeline test;
 // --full: the full sample size of a study whose `make figures` size is cut to stay within a
 //   minute (validation/uncertainty: `make uncertainty`); studies without one run as usual.
+#include <exception>
 #include <filesystem>
 
 namespace hertzdash {
@@ -19,5 +20,11 @@ struct StudyArgs {
 
 /// Parses the arguments; prints usage and exits with code 2 on bad ones.
 StudyArgs parse_study_args(int argc, char** argv);
+
+/// What a study's main does with an exception that ends it (`int main(...) try { ... } catch
+/// (const std::exception& e) { return study_failed(argv[0], e); }`): prints
+/// "<study>: error: <what>" on stderr and returns exit status 1, where an uncaught exception
+/// would abort with a core dump.
+int study_failed(const char* program, const std::exception& e);
 
 }  // namespace hertzdash

@@ -283,7 +283,7 @@ long steps_needed_both(const std::vector<Series>& a, const std::vector<Series>& 
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const Sweep sweep = make_sweep(args.reduced);
   const ConvergenceProblem p = make_problem(load_paper_parameters());
@@ -359,4 +359,6 @@ int main(int argc, char** argv) {
   std::cout << "\nwrote convergence.csv, convergence_undamped.csv, work_precision.csv to " << args.out_dir.string()
             << "; convergence.tex, convergence_table.tex to " << args.generated_dir.string() << "\n";
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

@@ -107,7 +107,7 @@ struct LawSummary {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const DropTestSetup steel = paper_setup(load_paper_parameters(), "steel", 0.02);
   const DropTestSetup contact = contact_phase_setup(steel);
@@ -239,4 +239,6 @@ int main(int argc, char** argv) {
   write_file_atomically(args.generated_dir / "damping_laws_table.tex", tex);
   write_file_atomically(args.generated_dir / "damping_laws_table.md", md);
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

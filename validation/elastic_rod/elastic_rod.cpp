@@ -75,7 +75,7 @@ double amplitude(const std::vector<double>& t, const std::vector<double>& a, dou
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   SolverSettings solver;  // CVODE BDF with the band solver, rtol 1e-8
@@ -227,4 +227,6 @@ int main(int argc, char** argv) {
   write_file_atomically(args.generated_dir / "elastic_rod_table.tex", table);
   macros.save(args.generated_dir / "elastic_rod.tex");
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

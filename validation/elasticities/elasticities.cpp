@@ -49,7 +49,7 @@ const char* tag(int p) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);  // --reduced changes nothing: six solves
   const PaperParameters paper = load_paper_parameters();
   const ContactSensitivityOptions options;  // CVODES Adams rtol 1e-10
@@ -121,4 +121,6 @@ int main(int argc, char** argv) {
   write_file_atomically(args.generated_dir / "elasticities_table.tex", table);
   std::cout << "elasticities: written to " << args.out_dir.string() << " and " << args.generated_dir.string() << "\n";
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

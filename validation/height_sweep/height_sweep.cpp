@@ -48,7 +48,7 @@ double log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   const int heights = args.reduced ? 3 : 40;  // log-spaced, ends included
@@ -114,4 +114,6 @@ int main(int argc, char** argv) {
   csv.save(args.out_dir / "height_sweep.csv");
   macros.save(args.generated_dir / "height_sweep.tex");
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

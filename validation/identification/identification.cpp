@@ -87,7 +87,7 @@ RunOptions fit_start(const std::string& rod, bool elastic, int elements) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   const int draws = args.reduced ? 4 : 50;
@@ -283,4 +283,6 @@ int main(int argc, char** argv) {
                             table + "\\bottomrule\n\\end{tabular}\n");
   macros.save(args.generated_dir / "identification.tex");
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

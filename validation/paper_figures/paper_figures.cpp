@@ -195,7 +195,7 @@ void write_figure(const FigureSpec& fig, const PaperParameters& paper, const Stu
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   LatexMacros macros("hertzdash paper_figures: Figs. 5 and 6 of Hongo et al. reproduced (model side)",
@@ -208,4 +208,6 @@ int main(int argc, char** argv) {
     write_figure(fig, paper, args, macros);
   macros.save(args.generated_dir / "paper_figures.tex");
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

@@ -390,6 +390,5 @@ int main(int argc, char** argv) try {
                "unstated_parameters_table.tex\n";
   return 0;
 } catch (const std::exception& e) {
-  std::cerr << "paper_numbers: " << e.what() << "\n";
-  return 1;
+  return study_failed(argv[0], e);
 }

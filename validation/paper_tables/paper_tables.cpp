@@ -55,7 +55,7 @@ std::string gpa_text(double E_Pa) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   const Parameters header{{"data_dir", default_data_dir().string()},
@@ -141,4 +141,6 @@ int main(int argc, char** argv) {
   macros.add("tabsBetaOneL", free_free_beta1_L, "{:.4f}");
   macros.save(args.generated_dir / "paper_tables.tex");
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

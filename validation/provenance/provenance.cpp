@@ -102,6 +102,5 @@ int main(int argc, char** argv) try {
             << ", GSL " << GSL_VERSION << ", " << tools.back().version << "\n";
   return 0;
 } catch (const std::exception& e) {
-  std::cerr << "provenance: " << e.what() << "\n";
-  return 1;
+  return study_failed(argv[0], e);
 }

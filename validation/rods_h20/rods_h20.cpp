@@ -44,7 +44,7 @@ struct Range {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   const int band_runs = args.reduced ? 3 : 9;
@@ -104,4 +104,6 @@ int main(int argc, char** argv) {
   write_file_atomically(args.generated_dir / "rods_h20_table.tex", table);
   macros.save(args.generated_dir / "rods_h20.tex");
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

@@ -138,7 +138,7 @@ std::string rod_tag(const std::string& rod) { return rod == "steel" ? "Steel" : 
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   ImpactSimulator sim(study_solver);
@@ -365,4 +365,6 @@ int main(int argc, char** argv) {
   std::cout << fmt::format("sensitivity_omega_n: {} runs written to {}\n", e_sweep.size() + h_sweep.size(),
                            args.out_dir.string());
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

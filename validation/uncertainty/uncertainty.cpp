@@ -308,7 +308,7 @@ void write_band_figure(const std::string& name, const RodData& rod, const PaperP
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   const Sizes sizes = args.reduced ? Sizes{64, 16, 121, 200}
@@ -470,4 +470,6 @@ int main(int argc, char** argv) {
   write_file_atomically(args.generated_dir / "uncertainty_sobol_table.tex", provenance + sobol_table);
   std::cout << "uncertainty: written to " << args.out_dir.string() << " and " << args.generated_dir.string() << "\n";
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }

@@ -73,7 +73,7 @@ double paper_time_constant_s(const DropTestSetup& s) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
   SolverSettings solver;  // CVODE, rtol 1e-8; BDF with the band solver for the elastic rod
@@ -209,4 +209,6 @@ int main(int argc, char** argv) {
   write_file_atomically(args.generated_dir / "velocity_dependence_table.tex", table);
   macros.save(args.generated_dir / "velocity_dependence.tex");
   return 0;
+} catch (const std::exception& e) {
+  return study_failed(argv[0], e);
 }
