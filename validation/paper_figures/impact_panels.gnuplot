@@ -32,9 +32,10 @@ trace_title = n_synthetic == n_measured ? 'SYNTHETIC trace (not a measurement)' 
 # The legend names the overlaid traces only if there are any.
 legend_traces = n_measured == 0 ? '' : ", 2 with lines ls 3 title trace_title"
 
-# Time tics: about four per panel whatever the contact time.
+# Time tics: three to five labels per panel whatever the contact time (labels of 0.25 ms
+# ran into each other at this panel width), a minor tic between labels.
 stats data using (1e3*column('t_s')) nooutput
-t_step = STATS_max > 1.5 ? 0.5 : (STATS_max > 0.8 ? 0.25 : 0.1)
+t_step = STATS_max > 1.0 ? 0.5 : (STATS_max > 0.4 ? 0.2 : 0.1)
 stats data using (1e6*column('displacement_max_m')) nooutput
 x_step = STATS_max > 250 ? 100 : (STATS_max > 100 ? 50 : 20)
 # Value tics: at most about five per panel, 1, 2 or 5 times a power of ten.
@@ -50,6 +51,7 @@ set multiplot layout 3,2 title ARG2."\n{/=8 (".note.')}'
 set key off
 set autoscale xfix
 set xtics t_step
+set mxtics 2
 set xlabel 'Time since contact onset (ms)'
 set label 1 at graph 0.96, 0.90 right front
 set rmargin 4
@@ -81,6 +83,7 @@ plot data using (in_contact(column('displacement_Emin_m'))):'force_Emin_N' with 
      '' using (in_contact(column('displacement_m'))):'force_N' with lines ls 1 @overlay_loop
 set autoscale xfix
 set xtics t_step
+set mxtics 2
 set xlabel 'Time since contact onset (ms)'
 
 set label 1 '(d)' at graph 0.96, 0.10
@@ -97,7 +100,8 @@ plot data using @t_ms:'velocity_min_mps':'velocity_max_mps' with filledcurves ls
      '' using @t_ms:'velocity_hertz_mps' with lines ls 2, \
      '' using @t_ms:'velocity_mps' with lines ls 1 @overlay_velocity
 
-# Legend cell.
+# Legend cell (no left margin: the titles need the cell's width).
+set lmargin 0
 unset label 1
 unset border
 unset tics
