@@ -47,6 +47,8 @@ do for [format in 'pdf png'] {
   set ylabel 'Restitution e_{eff}'
   set yrange [0.78:0.89]
   set offsets 0, 0, 0, 0
+  # Duralumin A and C have the same Table 2 e (0.828): their curves lie on each other.
+  set label 2 'A and C coincide' at graph 0.96, 0.28 right font ',8'
   plot for [i=1:4] data using (pick(word(rods,i), column('impact_velocity_mps'))):'e_input' with lines lc rgb rod_colour(word(rods,i)) dt 3 lw 1.2 notitle, \
        for [i=1:4] data using (pick(word(rods,i), column('impact_velocity_mps'))):'e_effective' with lines lc rgb rod_colour(word(rods,i)) lw 1.6 dt 1 notitle
   eval quad_key_row
