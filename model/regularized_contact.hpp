@@ -69,8 +69,7 @@ class RegularizedContact {
       : law_(c, s), inverse_mass_(1.0 / c.mass_kg), gravity_mps2_(gravity_mps2), t_obs_s_(t_obs_s), v0_mps_(c.v0_mps) {
     // The impact's scales (one pow per impact): X^{1/2}, v0 and t_H, also the difference steps'.
     const double X = undamped_hertz_max_deformation_m(c.K, c.mass_kg, c.v0_mps);
-    u_scale_ = std::sqrt(X);
-    state_scale_ = State{u_scale_, c.v0_mps, undamped_hertz_contact_time_factor() * X / c.v0_mps};
+    state_scale_ = State{std::sqrt(X), c.v0_mps, undamped_hertz_contact_time_factor() * X / c.v0_mps};
   }
 
   /// Onset: u = 0, v = v0, t = 0.
@@ -96,7 +95,7 @@ class RegularizedContact {
   }
 
   /// The events over the same scalar types, for the Taylor integrator's location on the
-  /// series: (u, v, dF/dtau, t_obs - t), the rate exact where events() differences it.
+  /// series: (u, v, dF/dtau, t_obs - t), the rate as the series' own derivative.
   /// `derivative(s)` (the derivative of a series along tau, integrators/power_series.hpp) is
   /// the scalar type's own, found by argument-dependent lookup.
   template <class Y>
@@ -113,7 +112,7 @@ class RegularizedContact {
       const ForceJet jet = law_.force_of_root(ForceJet::root(u), ForceJet::rate(v));
       F = jet.value, F_u = jet.d_u, F_v = jet.d_v;
     } else {
-      const double du = 1e-6 * std::max(u, 1e-6 * u_scale_), dv = 1e-6 * v0_mps_;
+      const double du = 1e-6 * std::max(u, 1e-6 * state_scale_[0]), dv = 1e-6 * v0_mps_;
       F = force_at(u, v);
       F_u = (force_at(u + du, v) - F) / du;
       F_v = (force_at(u, v + dv) - F) / dv;
@@ -125,6 +124,10 @@ class RegularizedContact {
   EventAction handle_event(int which, double, const State&) const {
     return which == event_index(RegularizedContactEvent::separation) ? EventAction::stop : EventAction::continue_integration;
   }
+
+ protected:
+  /// Event 3 at t_obs_s [s] after onset, for a system built on this one (before integrating).
+  void set_observation_time_s(double t_obs_s) { t_obs_s_ = t_obs_s; }
 
  private:
   /// (du, dv, dt)/dtau at (u, v) with the force F there.
@@ -145,7 +148,6 @@ class RegularizedContact {
   double gravity_mps2_;
   std::optional<double> t_obs_s_;
   double v0_mps_;
-  double u_scale_;  ///< X^{1/2} [m^{1/2}], for the difference step in u
   State state_scale_;
 };
 

@@ -41,11 +41,14 @@ namespace hertzdash {
 
 namespace detail {
 
-/// The regularised contact, stopped at its observation time (the end of a contact
-/// that never separates) as well as at separation.
+/// The regularised contact, stopped at separation or at its observation time, 20 undamped
+/// contact times after onset (the end of a contact that never separates).
 template <DampingLaw Law>
 struct ContactUntil : RegularizedContact<Law> {
-  using RegularizedContact<Law>::RegularizedContact;
+  ContactUntil(const ImpactConditions& c, const DampingSettings& s, double gravity_mps2)
+      : RegularizedContact<Law>(c, s, gravity_mps2) {
+    this->set_observation_time_s(20.0 * this->state_scale()[2]);
+  }
   EventAction handle_event(int which, double tau, const typename RegularizedContact<Law>::State& y) const {
     if (which == event_index(RegularizedContactEvent::observation_time)) return EventAction::stop;
     return RegularizedContact<Law>::handle_event(which, tau, y);
@@ -96,10 +99,8 @@ void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, I
   const double K = hertz_stiffness(setup);
   const double v0 = approach_speed(setup);  // [m/s], exact for the fall from rest
   const double t_onset_s = setup.impact_velocity_mps ? 0.0 : v0 / setup.gravity_mps2;
-  const double X = undamped_hertz_max_deformation_m(K, setup.mass_kg, v0);
-  const double contact_s = undamped_hertz_contact_time_factor() * X / v0;
   const ImpactConditions c{K, setup.mass_kg, v0, setup.restitution};
-  detail::ContactUntil<Law> sys(c, setup.damping, setup.gravity_mps2, 20.0 * contact_s);
+  detail::ContactUntil<Law> sys(c, setup.damping, setup.gravity_mps2);
 
   s.K = K;
   s.t_onset_s = t_onset_s;
@@ -109,7 +110,7 @@ void run_regularized_impact(const DropTestSetup& setup, Integrate&& integrate, I
   auto y = sys.initial_state();
   // tau is bounded by the events (t reaches 20 contact times, or separation); the end
   // only has to lie beyond them: 1e7 tau scales X^{1/2}/(2 v0), dt/dtau = 2u at u ~ X^{1/2}.
-  const double tau_end = 1e7 * std::sqrt(X) / (2.0 * v0);
+  const double tau_end = 1e7 * sys.state_scale()[0] / (2.0 * v0);
   s.work = integrate(sys, y, 0.0, tau_end, observer);
 }
 
