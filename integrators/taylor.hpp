@@ -185,20 +185,35 @@ class TaylorRun {
     return {g, dg};
   }
 
+  /// g_i at the two ends lo and hi of a bracket (two interleaved Horner chains).
+  std::pair<double, double> event_at_ends(int i, double lo, double hi) const {
+    const auto& c = event_coefficients_[i];
+    double g_lo = c[event_orders_[i]], g_hi = g_lo;
+    for (int k = event_orders_[i] - 1; k >= 0; --k) {
+      g_lo = g_lo * lo + c[k];
+      g_hi = g_hi * hi + c[k];
+    }
+    return {g_lo, g_hi};
+  }
+
   /// The root of g_i on [lo, hi] (s after the step's start) where g_i falls through 0 by
   /// the system's events: Newton on the series from the secant through the ends, kept in
   /// the bracket (bisection where a Newton step leaves it), to |change| <= tol. An end
-  /// where the series already has the sign of the other is the root.
+  /// where the series already has the sign of the other is the root. A root located
+  /// earlier in this step and not yet passed (the step cut at another event) is the root
+  /// again: the same series.
   double locate_on_series(int i, double lo, double hi, double tol) {
     if (!(event_series_ready_ >> i & 1u)) {
       [&]<std::size_t... I>(std::index_sequence<I...>) {
         ((static_cast<int>(I) == i ? generate_event_series<I>() : void()), ...);
       }(std::make_index_sequence<m>{});
       event_series_ready_ |= 1u << i;
+    } else if (event_roots_[i] >= lo) {
+      return event_roots_[i];
     }
-    const double g_lo = event_at(i, lo).first, g_hi = event_at(i, hi).first;
-    if (!(g_lo > 0)) return lo;
-    if (g_hi > 0) return hi;
+    const auto [g_lo, g_hi] = event_at_ends(i, lo, hi);
+    if (!(g_lo > 0)) return event_roots_[i] = lo;
+    if (g_hi > 0) return event_roots_[i] = hi;
     double s = lo + (hi - lo) * g_lo / (g_lo - g_hi);
     for (int iteration = 0; iteration < 100; ++iteration) {
       const auto [g, dg] = event_at(i, s);
@@ -210,7 +225,7 @@ class TaylorRun {
       s = next;
       if (change <= tol || hi - lo <= tol) break;
     }
-    return s;
+    return event_roots_[i] = s;
   }
 
   /// Every crossing on the rest [a, h] of the step (g_a at a, g_end at h), as
@@ -307,6 +322,7 @@ class TaylorRun {
   std::array<std::array<double, series_capacity + 1>, m> event_coefficients_{};
   std::array<int, m> event_orders_{};
   unsigned event_series_ready_ = 0;  ///< bit i: event i's series is this step's
+  std::array<double, m> event_roots_{};  ///< root of event i located in this step (if its series is ready)
   IntegrationStats stats_;
   Events g_;  ///< event functions at (t_, y_)
 };
