@@ -14,7 +14,10 @@
 // set. A product is the only node that stores its coefficients (Cauchy product,
 // c_k = sum_{j <= k} a_j b_{k-j}: O(k) per order, the terms that do not involve the
 // operands' coefficient k summed before it is computed); the linear nodes read through
-// to their operands. So the Taylor coefficients of y' = f(y) follow by the recurrence
+// to their operands. The coefficients live in a SeriesStorage that its owner binds the
+// finished expression to (bind), not in the nodes: building the expression copies every
+// operand into its parent, and a node that carried its (series_capacity + 1) coefficients
+// made each impact's setup copy kilobytes. So the Taylor coefficients of y' = f(y) follow by the recurrence
 //   y_{k+1} = f(y)_k / (k + 1),
 // with O(p^2) work for order p per product in f.
 //
@@ -41,9 +44,11 @@ concept SeriesExpression = std::remove_cvref_t<E>::is_series_expression;
 struct SeriesVariable {
   static constexpr bool is_series_expression = true;
   static constexpr int lost_orders = 0;
+  static constexpr int products = 0;  ///< product nodes in the expression (storage it needs)
   const double* c;
   double operator[](int j) const { return c[j]; }
   void update(int) {}
+  void bind(double*&) {}
 };
 
 namespace series_detail {
@@ -52,26 +57,31 @@ template <class A>
 struct Scaled {  // s a
   static constexpr bool is_series_expression = true;
   static constexpr int lost_orders = A::lost_orders;
+  static constexpr int products = A::products;
   double s;
   A a;
   double operator[](int j) const { return s * a[j]; }
   void update(int k) { a.update(k); }
+  void bind(double*& next) { a.bind(next); }
 };
 
 template <class A>
 struct Shifted {  // s + a: the constant enters coefficient 0 only
   static constexpr bool is_series_expression = true;
   static constexpr int lost_orders = A::lost_orders;
+  static constexpr int products = A::products;
   double s;
   A a;
   double operator[](int j) const { return j == 0 ? s + a[0] : a[j]; }
   void update(int k) { a.update(k); }
+  void bind(double*& next) { a.bind(next); }
 };
 
 template <class A, class B>
 struct Sum {
   static constexpr bool is_series_expression = true;
   static constexpr int lost_orders = std::max(A::lost_orders, B::lost_orders);
+  static constexpr int products = A::products + B::products;
   A a;
   B b;
   double operator[](int j) const { return a[j] + b[j]; }
@@ -79,12 +89,17 @@ struct Sum {
     a.update(k);
     b.update(k);
   }
+  void bind(double*& next) {
+    a.bind(next);
+    b.bind(next);
+  }
 };
 
 template <class A, class B>
 struct Difference {
   static constexpr bool is_series_expression = true;
   static constexpr int lost_orders = std::max(A::lost_orders, B::lost_orders);
+  static constexpr int products = A::products + B::products;
   A a;
   B b;
   double operator[](int j) const { return a[j] - b[j]; }
@@ -92,16 +107,27 @@ struct Difference {
     a.update(k);
     b.update(k);
   }
+  void bind(double*& next) {
+    a.bind(next);
+    b.bind(next);
+  }
 };
 
 template <class A, class B>
 struct Product {
   static constexpr bool is_series_expression = true;
   static constexpr int lost_orders = std::max(A::lost_orders, B::lost_orders);
+  static constexpr int products = A::products + B::products + 1;
   A a;
   B b;
-  std::array<double, series_capacity + 1> c{};
+  double* c = nullptr;  ///< series_capacity + 1 coefficients in a SeriesStorage (bind)
   double operator[](int j) const { return c[j]; }
+  void bind(double*& next) {
+    a.bind(next);
+    b.bind(next);
+    c = next;
+    next += series_capacity + 1;
+  }
   // The terms of orders below k first: they do not wait for the operands' coefficient k,
   // so the processor overlaps them with the chain that computes it (two partial sums).
   void update(int k) {
@@ -122,12 +148,14 @@ template <class A>
 struct Derivative {  // da/ds
   static constexpr bool is_series_expression = true;
   static constexpr int lost_orders = A::lost_orders + 1;
+  static constexpr int products = A::products;
   A a;
   double operator[](int j) const { return (j + 1) * a[j + 1]; }
   void update(int k) {
     if (k == 0) a.update(0);
     a.update(k + 1);
   }
+  void bind(double*& next) { a.bind(next); }
 };
 
 template <class E>
@@ -139,6 +167,25 @@ template <class A>
 inline constexpr bool is_scaled<Scaled<A>> = true;
 
 }  // namespace series_detail
+
+/// The coefficients of every product node of some series expressions, which bind points
+/// at their own slots (in the order given). Not zeroed: update(k) writes coefficient k of
+/// a product before anything reads it. The expressions must not outlive the storage, and
+/// a copy of a bound expression shares its slots.
+template <int Products>
+struct SeriesStorage {
+  std::array<double, (series_capacity + 1) * Products> slots;
+  template <SeriesExpression... E>
+    requires((std::remove_cvref_t<E>::products + ... + 0) <= Products)
+  void bind(E&... e) {
+    double* next = slots.data();
+    (e.bind(next), ...);
+  }
+};
+
+/// The storage the product nodes of the given expression types need.
+template <class... E>
+inline constexpr int series_products = (std::remove_cvref_t<E>::products + ... + 0);
 
 /// The series of da/ds (see above: for complete leaves only; one order lost).
 template <SeriesExpression A>

@@ -99,13 +99,19 @@ class TaylorRun {
   static_assert(m <= 32, "event_series_ready_ holds a bit per event");
   using Rhs = decltype(std::declval<const S&>().polynomial_rhs(std::declval<const Leaves&>()));
   using EventSeries = decltype(std::declval<const S&>().polynomial_events(std::declval<const Leaves&>()));
+  template <class Tuple>
+  static constexpr int products_in = []<std::size_t... I>(std::index_sequence<I...>) {
+    return series_products<std::tuple_element_t<I, Tuple>...>;
+  }(std::make_index_sequence<std::tuple_size_v<Tuple>>{});
 
  public:
   TaylorRun(S& sys, State& y, double t0, double t_end, const TaylorOptions& opt, Observer& observer)
       : sys_(sys), y_(y), t_(t0), t_end_(t_end), opt_(opt), observer_(observer), order_(taylor_order(opt.rtol)),
         rhs_(sys.polynomial_rhs(leaves())), atol_(absolute_tolerance(sys, y, opt.atol)),
-        event_series_(sys.polynomial_events(leaves())) {}
-  TaylorRun(const TaylorRun&) = delete;  // rhs_ reads coefficients_ through pointers
+        event_series_(sys.polynomial_events(leaves())) {
+    bind_storage();
+  }
+  TaylorRun(const TaylorRun&) = delete;  // rhs_ reads coefficients_ and storage_ through pointers
   TaylorRun& operator=(const TaylorRun&) = delete;
 
   IntegrationStats run() {
@@ -127,6 +133,12 @@ class TaylorRun {
     Leaves l;
     for (int i = 0; i < n; ++i) l[i] = SeriesVariable{coefficients_[i].data()};
     return l;
+  }
+
+  /// Points the product nodes of the right-hand side and of the event series at storage_.
+  void bind_storage() {
+    std::apply([&](auto&... rhs) { std::apply([&](auto&... events) { storage_.bind(rhs..., events...); }, event_series_); },
+               rhs_);
   }
 
   /// The Taylor coefficients at (t_, y_), orders 0..order_.
@@ -295,6 +307,7 @@ class TaylorRun {
         rhs_ = sys_.polynomial_rhs(leaves());  // the system may have changed form
         atol_ = absolute_tolerance(sys_, y_, opt_.atol);  // and its scales
         event_series_ = sys_.polynomial_events(leaves());
+        bind_storage();
         return false;
       }
       if (s >= h) return false;
@@ -319,6 +332,7 @@ class TaylorRun {
   Rhs rhs_;
   State atol_;  ///< absolute tolerance of each component (since the last restart)
   EventSeries event_series_;
+  SeriesStorage<products_in<Rhs> + products_in<EventSeries>> storage_;  ///< their products' coefficients
   std::array<std::array<double, series_capacity + 1>, m> event_coefficients_{};
   std::array<int, m> event_orders_{};
   unsigned event_series_ready_ = 0;  ///< bit i: event i's series is this step's

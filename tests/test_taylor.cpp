@@ -81,6 +81,8 @@ TEST_CASE("power series: the recurrence gives the Taylor coefficients of 1/(1 - 
   c[0] = 1.0;
   const std::array<SeriesVariable, 1> y{SeriesVariable{c.data()}};
   auto f = Riccati{}.polynomial_rhs(y);
+  SeriesStorage<series_products<std::tuple_element_t<0, decltype(f)>>> storage;
+  storage.bind(std::get<0>(f));
   for (int k = 0; k < 20; ++k) {
     std::get<0>(f).update(k);
     c[k + 1] = std::get<0>(f)[k] / (k + 1);
@@ -98,6 +100,8 @@ TEST_CASE("power series: derivative(y^2) of 1/(1 - t) has coefficients (j + 1)(j
   auto rate = derivative(y[0] * y[0]);
   STATIC_REQUIRE(decltype(rate)::lost_orders == 1);
   STATIC_REQUIRE(decltype(y[0] * y[0])::lost_orders == 0);
+  SeriesStorage<decltype(rate)::products> storage;
+  storage.bind(rate);
   for (int k = 0; k < 20; ++k) {
     rate.update(k);
     CHECK(rate[k] == (k + 1.0) * (k + 2.0));
