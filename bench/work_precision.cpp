@@ -18,8 +18,11 @@
 #include "bench/work_precision.hpp"
 
 #include "bench/impact_solvers.hpp"
+#include "bench/taylor_step_bound.hpp"
 #include "hertzdash/integrators/dormand_prince.hpp"
+#include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
@@ -346,17 +349,44 @@ int run_work_precision(const WorkPrecisionConfig& c) {
         static const std::map<std::string, std::string> per_eval_tags{{"hertzdash-cvode", "Cvode"},
                                                                       {"hertzdash-dopri5", "Dopri"},
                                                                       {"hertzdash-dopri5-regularized", "Regularized"},
-                                                                      {"hertzdash-gbs8-regularized", "Gbs"}};
+                                                                      {"hertzdash-gbs8-regularized", "Gbs"},
+                                                                      {"hertzdash-taylor-regularized", "Taylor"}};
         if (std::abs(p.tolerance - 1e-8) < 1e-20 && per_eval_tags.count(p.solver)) {
           const std::string tag = per_eval_tags.at(p.solver);
           macros.add("perf" + tag + "NsPerEval", 1e3 * p.us_per_impact / static_cast<double>(p.rhs_evaluations), "{:.0f}");
           macros.add("perf" + tag + "Evals", static_cast<double>(p.rhs_evaluations), "{:.0f}");
-          if (tag == "Regularized" || tag == "Gbs") macros.add_text("perf" + tag + "ErrorEight", latex_scientific(p.abs_error));
+          if (tag == "Regularized" || tag == "Gbs" || tag == "Taylor")
+            macros.add_text("perf" + tag + "ErrorEight", latex_scientific(p.abs_error));
         }
       }
     }
   }
   table_tex << "\\bottomrule\n\\end{tabular}}\n";  // ten columns: scaled to the line width
+
+  // How many Taylor series the contact needs at least (bench/taylor_step_bound.hpp): the
+  // undamped contact's singularities against the series the Taylor path generates for it,
+  // at tolerance 1e-8 (the steel case without damping and gravity, same impact speed).
+  {
+    constexpr double tol = 1e-8;
+    const int p = taylor_order(tol);
+    DropTestSetup undamped = contact.setup;
+    undamped.gravity_mps2 = 0.0;
+    SolverSettings settings;
+    settings.integrator = IntegratorKind::taylor_regularized;
+    settings.rtol = tolerances_for(tol).rtol;
+    settings.atol = tolerances_for(tol).atol;
+    const ImpactSummary run = ImpactSimulator(settings).run<Undamped>(undamped);
+    const UndampedRegularizedContact u = undamped_regularized_contact();
+    const double series = static_cast<double>(run.work.rhs_evaluations) / p, least = least_taylor_series(tol, p);
+    fmt::print("\n-- taylor-regularized, undamped contact at tol 1e-8: order {}, {:.0f} series; the singularities "
+               "(Im s* = {:.3f} of the half duration from the turning point) allow no fewer than about {:.1f}\n",
+               p, series, u.singular_height / u.half_duration, least);
+    macros.add("perfTaylorOrderEight", p, "{:.0f}");
+    macros.add("perfTaylorUndampedSeriesEight", series, "{:.0f}");
+    macros.add("perfTaylorLeastSeriesEight", least, "{:.1f}");
+    macros.add("perfTaylorSingularHeight", u.singular_height / u.half_duration, "{:.2f}");
+    macros.add("perfTaylorContactRadii", contact_length_in_radii(), "{:.2f}");
+  }
 
   // Parallel sweep throughput: a restitution map (h from 1 to 100 mm, e from 0.5 to
   // 1), contact phases at tolerance 1e-8 with each regularised path that needs the
