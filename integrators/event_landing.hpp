@@ -8,7 +8,7 @@
 // `at(theta)`, theta in [0, 1] across the step [t, t + h], by Illinois regula falsi (no
 // right-hand-side evaluation); the integrator then re-takes the step to end exactly
 // on the earliest crossing and calls fire_landed_events there.
-#include "hertzdash/integrators/fixed_step.hpp"  // detail::illinois_root
+#include "hertzdash/integrators/fixed_step.hpp"  // detail::illinois_root, event_location_tolerance
 #include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
@@ -40,7 +40,7 @@ EventCrossings<S::event_count> locate_event_crossings(const S& sys, double t, do
                                                       const typename S::Events& g_start,
                                                       const typename S::Events& g_end, const Dense& dense) {
   EventCrossings<S::event_count> c;
-  c.theta_tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t), h) / h;
+  c.theta_tol = event_location_tolerance(t, h) / h;
   for (int i = 0; i < S::event_count; ++i) {
     c.theta[i] = 2.0;
     if (!(g_start[i] > 0 && g_end[i] <= 0)) continue;

@@ -28,6 +28,12 @@ struct FixedStepOptions {
 
 namespace detail {
 
+/// How finely an event is located in a step of length h at time t: a few roundings of
+/// the larger of the two, below which the step's own time points cannot be told apart.
+inline double event_location_tolerance(double t, double h) {
+  return 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t), h);
+}
+
 /// Root of phi(theta) on (lo, hi] with phi(lo) > 0 >= phi(hi), by Illinois regula falsi.
 /// Stops when the bracket is below `tol` or phi hits zero; returns the right end
 /// (where phi <= 0), so the event has happened at the returned time.
@@ -92,7 +98,7 @@ IntegrationStats integrate_fixed_step(S& sys, typename S::State& y, double t0, d
           sys.events(t + theta, y_trial, g_trial);
           return g_trial[i];
         };
-        const double tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t), h);
+        const double tol = detail::event_location_tolerance(t, h);
         h_cut = std::min(h_cut, detail::illinois_root(phi, 0.0, g[i], h, g_new[i], tol));
       }
       if (h_cut < h) {

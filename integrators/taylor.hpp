@@ -245,7 +245,7 @@ class TaylorRun {
   EventCrossings<m> locate_crossings(double t_start, double a, double h, const Events& g_a, const Events& g_end) {
     EventCrossings<m> c;
     const double rest = h - a;
-    const double tol = 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t_start + a), rest);
+    const double tol = event_location_tolerance(t_start + a, rest);
     c.theta_tol = tol / rest;
     for (int i = 0; i < m; ++i) {
       c.theta[i] = 2.0;
