@@ -1,6 +1,8 @@
 // The examples of the README and of the pages in docs/ are true: every ```console block
-// that starts with "$ build/hertzdash ARGS" shows exactly what `hertzdash ARGS` prints.
+// that starts with "$ build/hertzdash ARGS" shows exactly what `hertzdash ARGS` prints; and
+// docs/simulate.md names every integrator.
 #include "cli_runner.hpp"
+#include "hertzdash/simulation/integrator_table.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -39,4 +41,21 @@ TEST_CASE("README and docs/: every hertzdash example prints what the page shows"
   }
   CHECK(readme_examples >= 1);
   CHECK(examples > readme_examples);
+}
+
+TEST_CASE("docs/simulate.md lists every integrator of the table, in its order", "[readme]") {
+  // The page spells the choices as `--integrator a|b|...`; a row added to the integrator
+  // table (simulation/integrator_table.hpp) without the page left it out once.
+  const std::string page = slurp(std::filesystem::path(HERTZDASH_SOURCE_DIR) / "docs" / "simulate.md");
+  const std::string key = "`--integrator ";
+  const auto start = page.find(key);
+  REQUIRE(start != std::string::npos);
+  const auto end = page.find('`', start + key.size());
+  REQUIRE(end != std::string::npos);
+  std::string expected;
+  for (const hertzdash::IntegratorTraits& row : hertzdash::all_integrator_traits) {
+    if (!expected.empty()) expected += '|';
+    expected += row.name;
+  }
+  CHECK(page.substr(start + key.size(), end - start - key.size()) == expected);
 }
