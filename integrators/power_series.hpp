@@ -11,15 +11,17 @@
 //
 // update(k) computes coefficient k of a node from coefficients 0..k of its operands;
 // it must be called for k = 0, 1, 2, ... in turn, after coefficient k of every leaf is
-// set. A product is the only node that stores its coefficients (Cauchy product,
+// set. A product is the only node with coefficients of its own (Cauchy product,
 // c_k = sum_{j <= k} a_j b_{k-j}: O(k) per order, the terms that do not involve the
 // operands' coefficient k summed before it is computed); the linear nodes read through
-// to their operands. The coefficients live in a SeriesStorage that its owner binds the
-// finished expression to (bind), not in the nodes: building the expression copies every
-// operand into its parent, and a node that carried its (series_capacity + 1) coefficients
-// made each impact's setup copy kilobytes. So the Taylor coefficients of y' = f(y) follow by the recurrence
+// to their operands. So the Taylor coefficients of y' = f(y) follow by the recurrence
 //   y_{k+1} = f(y)_k / (k + 1),
 // with O(p^2) work for order p per product in f.
+//
+// The products' coefficients live in a SeriesStorage that the expression's owner binds the
+// finished expression to (bind), not in the nodes: building the expression copies every
+// operand into its parent, and nodes that carried their series_capacity + 1 coefficients
+// made the setup of each Taylor run copy and zero kilobytes.
 //
 // derivative(a) is the series of da/ds (coefficient j is (j + 1) a_{j+1}): its update(k)
 // needs coefficient k + 1 of the leaves, so it applies once the state's series is

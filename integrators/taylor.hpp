@@ -212,8 +212,9 @@ class TaylorRun {
   /// the system's events: Newton on the series from the secant through the ends, kept in
   /// the bracket (bisection where a Newton step leaves it), to |change| <= tol. An end
   /// where the series already has the sign of the other is the root. A root located
-  /// earlier in this step and not yet passed (the step cut at another event) is the root
-  /// again: the same series.
+  /// earlier in this step (the step since cut at an earlier event) is the root again: the
+  /// same series, and the cut is never past it, since the earliest root sets the cut (it
+  /// was located to the longer bracket's tolerance, a few roundings of the step like this one's).
   double locate_on_series(int i, double lo, double hi, double tol) {
     if (!(event_series_ready_ >> i & 1u)) {
       [&]<std::size_t... I>(std::index_sequence<I...>) {

@@ -124,6 +124,57 @@ TEST_CASE("taylor: the event y = 2 of y' = y^2 located on the series at t = 1/2"
   }
 }
 
+/// y1' = y2, y2' = -y1 from (0, 1): y1 = sin t. Events g_i = c_i - y1 for the levels
+/// c = (0.1, 0.2, 0.3), fired as y1 rises through them at t_i = asin(c_i); the first two
+/// continue, the third stops.
+struct RisingSine {
+  static constexpr int dimension = 2;
+  static constexpr int event_count = 3;
+  using State = Eigen::Matrix<double, 2, 1>;
+  using Events = std::array<double, 3>;
+  static constexpr std::array<double, 3> levels{0.1, 0.2, 0.3};
+  template <class Y>
+  auto polynomial_rhs(const Y& y) const {
+    return std::tuple{y[1], -1.0 * y[0]};
+  }
+  template <class Y>
+  auto polynomial_events(const Y& y) const {
+    return std::tuple{levels[0] - y[0], levels[1] - y[0], levels[2] - y[0]};
+  }
+  void rhs(double, const State& y, State& dy) const { dy = State{y[1], -y[0]}; }
+  void events(double, const State& y, Events& g) const { g = {levels[0] - y[0], levels[1] - y[0], levels[2] - y[0]}; }
+  EventAction handle_event(int i, double, const State&) const {
+    return i == 2 ? EventAction::stop : EventAction::continue_integration;
+  }
+};
+
+struct EventTimes {
+  std::vector<std::pair<int, double>> fired;
+  void on_step(double, const RisingSine::State&) {}
+  void on_event(int i, double t, const RisingSine::State&, EventAction) { fired.emplace_back(i, t); }
+};
+
+TEST_CASE("taylor: several events in one step, the step cut at each, are located on the same series", "[taylor]") {
+  // sin t is entire and its coefficients fall like 1/k!, so the first step is longer than
+  // asin(0.3) = 0.305 at these tolerances (about (p! tol)^{1/p} > 1): all three events
+  // lie in it, and each cut continues on the same series (one generation: p right-hand-side
+  // evaluations), where a root found before the cut is reused. Each event time carries the
+  // series' truncation error at most, below tol; 10 tol as in the test above.
+  for (double tol : {1e-6, 1e-9, 1e-12}) {
+    RisingSine sys;
+    RisingSine::State y{0.0, 1.0};
+    EventTimes observer;
+    const IntegrationStats st = integrate_taylor(sys, y, 0.0, 10.0, TaylorOptions{tol, tol}, observer);
+    REQUIRE(st.stopped_by_event);
+    CHECK(st.rhs_evaluations == taylor_order(tol));
+    REQUIRE(observer.fired.size() == 3);
+    for (int i = 0; i < 3; ++i) {
+      CHECK(observer.fired[i].first == i);
+      CHECK(std::abs(observer.fired[i].second - std::asin(RisingSine::levels[i])) <= 10 * tol);
+    }
+  }
+}
+
 TEST_CASE("taylor-regularized: undamped Hertz impact against the closed forms, error proportional to tolerance",
           "[taylor][regularized]") {
   // No gravity, no damping: e_eff = 1, X = (5 m v0^2 / 4K)^{2/5}, F = K X^{3/2} and the

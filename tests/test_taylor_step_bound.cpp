@@ -24,6 +24,8 @@ TEST_CASE("undamped regularised contact: the nearest singularities lie above the
   // cos(pi/5) = sin(3 pi/10). Rounding only: 1e-14.
   const bench::UndampedRegularizedContact c = bench::undamped_regularized_contact();
   CHECK(c.singular_distance * std::cos(std::numbers::pi / 5) == Approx(c.half_duration).epsilon(1e-14));
+  // Hence Im s* / S = tan(pi/5).
+  CHECK(c.singular_height / c.half_duration == Approx(std::tan(std::numbers::pi / 5)).epsilon(1e-14));
   // The series of w'' = -w^4 at the turning point (w = w_m, w' = 0), by the recurrence of
   // power_series.hpp: it is even about that point, so in sigma = s^2 its coefficients
   // a_j = c_{2j} have the singularities s* - S = +-i Im s* at sigma = -(Im s*)^2, and, with
@@ -31,7 +33,7 @@ TEST_CASE("undamped regularised contact: the nearest singularities lie above the
   // r_j = a_j / a_{j-1} then carry a 1/j term, which the Domb-Sykes extrapolation
   // j r_j - (j - 1) r_{j-1} removes, leaving O(1/j^2): about 1e-4 at j = 16 (the plain ratio
   // test is 1 % off there). So the radius at the turning point is Im s* within 1e-3.
-  constexpr int order = 32;  // series_capacity
+  constexpr int order = series_capacity;
   std::array<std::array<double, series_capacity + 1>, 2> coefficients{};
   coefficients[0][0] = c.w_max;
   const SeriesVariable w{coefficients[0].data()}, v{coefficients[1].data()};
@@ -56,11 +58,12 @@ TEST_CASE("undamped regularised contact: the nearest singularities lie above the
   CHECK(radius == Approx(c.singular_height).epsilon(1e-3));
 }
 
-TEST_CASE("taylor-regularized takes no fewer series than the singularities allow", "[taylor]") {
+TEST_CASE("taylor-regularized's count of series against the singularities' estimate", "[taylor]") {
   // The undamped contact without gravity at 0.626 m/s, tolerances 1e-6..1e-10: the number of
   // series generated (right-hand-side evaluations / order) is at least the estimate
-  // least_taylor_series(tol, p), and at most twice it (a step rule that wasted more would be
-  // a regression; ours also keeps atol = 1e-4 tol at onset and separation, where u = t = 0).
+  // least_taylor_series(tol, p) -- the step rule holds the last term kept, not the first one
+  // dropped, to the tolerance, a margin of tol^{-1/p} over tol^{-1/(p+1)} -- and at most twice
+  // it (a step rule that wasted more would be a regression).
   const PaperParameters paper = load_paper_parameters();
   DropTestSetup setup = paper_setup(paper, "steel", 0.02);
   setup.gravity_mps2 = 0.0;
