@@ -290,9 +290,29 @@ py::dict py_paper_parameters() {
   ball["E_max_Pa"] = p.ball.E_max_Pa;
   ball["nu"] = p.ball.nu;
   ball["radius_m"] = p.ball.radius_m;
+  // The joint uncertainty study's inputs, each distribution in the terms of data/assumptions.csv.
+  py::list uncertain;
+  for (const UncertainInput& u : p.uncertain_inputs) {
+    py::dict d;
+    d["parameter"] = u.parameter;
+    d["unit"] = u.unit;
+    d["value"] = u.value;
+    const InputDistribution& q = u.distribution;
+    d["distribution"] = to_string(q.kind);
+    switch (q.kind) {
+      case DistributionKind::uniform: break;
+      case DistributionKind::normal: d["mean"] = q.p1, d["sd"] = q.p2; break;
+      case DistributionKind::lognormal: d["median"] = std::exp(q.p1), d["log_sd"] = q.p2; break;
+    }
+    d["lower"] = q.kind == DistributionKind::uniform ? q.p1 : q.lower;
+    d["upper"] = q.kind == DistributionKind::uniform ? q.p2 : q.upper;
+    d["reason"] = u.reason;
+    uncertain.append(d);
+  }
   py::dict out;
   out["rods"] = rods;
   out["ball"] = ball;
+  out["uncertain_inputs"] = uncertain;
   out["gravity_mps2"] = p.gravity_mps2;
   out["data_dir"] = paper_data().dir.string();
   return out;
@@ -526,7 +546,9 @@ PYBIND11_MODULE(hertzdash, m) {
         "paper_parameters() -> dict\n\nThe paper's Tables 1-3 and the stated assumptions as the library reads them "
         "(data/*.csv): rods (name, diameter_m, length_m, mass_kg, restitution, zeta_printed, natural_frequency_hz, "
         "E_Pa, nu), ball (diameter_m, height_m, mass_kg, E_Pa, E_min_Pa, E_max_Pa, nu, radius_m), gravity_mps2, "
-        "and data_dir, the directory they were read from.");
+        "uncertain_inputs (the inputs the joint uncertainty study varies: parameter, unit, value, distribution "
+        "uniform|normal|lognormal with lower and upper (the truncation, +-inf if none), mean and sd (normal), median "
+        "and log_sd (lognormal), and reason), and data_dir, the directory they were read from.");
   m.def("integrators", &py_integrators,
         "integrators() -> list of dict\n\nThe integrator table: name, step_control, variables, reads_cvode_method, "
         "needs_root_polynomial_law and the fall-backs.");

@@ -5,6 +5,7 @@ the trace CSV likewise, both of which read back exactly.
 
 Run by ctest (test `python_module`) with PYTHONPATH=build/python and HERTZDASH_BIN set.
 """
+import csv
 import json
 import math
 import os
@@ -235,6 +236,24 @@ def test_paper_parameters_are_the_tables():
     steel = next(r for r in p["rods"] if r["name"] == "steel")
     assert steel["mass_kg"] == 0.778 and steel["restitution"] == 0.795  # Tables 1 and 2
     assert p["ball"]["E_min_Pa"] == 1.2e9 and p["ball"]["E_max_Pa"] == 2.9e9  # Table 3
+    # The uncertain inputs are the rows of data/assumptions.csv that are not fixed, with their
+    # distributions: nylon's E uniform over Table 3's range, as the CSV says.
+    with open(os.path.join(p["data_dir"], "assumptions.csv")) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    varied = [r for r in rows if r["distribution"] != "fixed"]
+    inputs = p["uncertain_inputs"]
+    assert [u["parameter"] for u in inputs] == [r["parameter"] for r in varied]
+    for u, r in zip(inputs, varied):
+        assert u["distribution"] == r["distribution"] and u["value"] == float(r["value"]), u["parameter"]
+        if r["distribution"] == "uniform":
+            assert (u["lower"], u["upper"]) == (float(r["lower"]), float(r["upper"]))
+        elif r["distribution"] == "normal":
+            assert (u["mean"], u["sd"]) == (float(r["location"]), float(r["scale"]))
+        else:
+            assert math.isclose(u["median"], float(r["location"]), rel_tol=1e-15) and u["log_sd"] == float(r["scale"])
+        assert u["reason"] == r["distribution_reason"]
+    nylon_E = next(u for u in inputs if u["parameter"] == "nylon_E_Pa")
+    assert nylon_E["distribution"] == "uniform" and (nylon_E["lower"], nylon_E["upper"]) == (p["ball"]["E_min_Pa"], p["ball"]["E_max_Pa"])
 
 
 def test_the_fig5_example_computes_fig5a():
