@@ -430,6 +430,7 @@ int run_work_precision(const WorkPrecisionConfig& c) {
     macros.add("perfSweepRateOne", one, "{:.0f}");
     macros.add("perfSweepRateAll", all, "{:.0f}");
     macros.add_text("perfSweepSolver", best);
+    macros.add_text("perfSweepGoal", all / cores >= 3e5 ? "met" : "missed");
     summary_md << fmt::format("\nParallel sweep (restitution map of {} contact phases, {} at tolerance 1e-8): "
                               "{:.3g} impacts/s on 1 thread, {:.3g} impacts/s on {} threads ({:.3g} per core; goal "
                               ">= 3e5 per core).\n\n",
