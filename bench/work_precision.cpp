@@ -367,8 +367,8 @@ int run_work_precision(const WorkPrecisionConfig& c) {
   }
   table_tex << "\\bottomrule\n\\end{tabular}}\n";  // ten columns: scaled to the line width
 
-  // How many Taylor series the contact needs at least (bench/taylor_step_bound.hpp): the
-  // undamped contact's singularities against the series the Taylor path generates for it,
+  // An estimate of the fewest Taylor series the contact allows (bench/taylor_step_bound.hpp):
+  // the undamped contact's singularities against the series the Taylor path generates for it,
   // at tolerance 1e-8 (the steel case without damping and gravity, same impact speed).
   {
     constexpr double tol = 1e-8;
@@ -383,7 +383,7 @@ int run_work_precision(const WorkPrecisionConfig& c) {
     const UndampedRegularizedContact u = undamped_regularized_contact();
     const double series = static_cast<double>(run.work.rhs_evaluations) / p, least = least_taylor_series(tol, p);
     fmt::print("\n-- taylor-regularized, undamped contact at tol 1e-8: order {}, {:.0f} series; the singularities "
-               "(Im s* = {:.3f} of the half duration from the turning point) allow no fewer than about {:.1f}\n",
+               "(Im s* = {:.3f} of the half duration from the turning point) give an estimated least {:.1f}\n",
                p, series, u.singular_height / u.half_duration, least);
     macros.add("perfTaylorOrderEight", p, "{:.0f}");
     macros.add("perfTaylorUndampedSeriesEight", series, "{:.0f}");

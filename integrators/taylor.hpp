@@ -137,8 +137,9 @@ class TaylorRun {
 
   /// Points the product nodes of the right-hand side and of the event series at storage_.
   void bind_storage() {
-    std::apply([&](auto&... rhs) { std::apply([&](auto&... events) { storage_.bind(rhs..., events...); }, event_series_); },
-               rhs_);
+    std::apply(
+        [&](auto&... rhs) { std::apply([&](auto&... events) { storage_.bind(rhs..., events...); }, event_series_); },
+        rhs_);
   }
 
   /// The Taylor coefficients at (t_, y_), orders 0..order_.
@@ -214,7 +215,7 @@ class TaylorRun {
   /// where the series already has the sign of the other is the root. A root located
   /// earlier in this step (the step since cut at an earlier event) is the root again: the
   /// same series, and the cut is never past it, since the earliest root sets the cut (it
-  /// was located to the longer bracket's tolerance, a few roundings of the step like this one's).
+  /// was located to the longer bracket's tolerance: a few roundings, like this one's).
   double locate_on_series(int i, double lo, double hi, double tol) {
     if (!(event_series_ready_ >> i & 1u)) {
       [&]<std::size_t... I>(std::index_sequence<I...>) {
