@@ -18,11 +18,11 @@
 #include "bench/work_precision.hpp"
 
 #include "bench/impact_solvers.hpp"
-#include "bench/taylor_step_bound.hpp"
 #include "hertzdash/integrators/dormand_prince.hpp"
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/model/regularized_contact_singularities.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
@@ -367,7 +367,7 @@ int run_work_precision(const WorkPrecisionConfig& c) {
   }
   table_tex << "\\bottomrule\n\\end{tabular}}\n";  // ten columns: scaled to the line width
 
-  // An estimate of the fewest Taylor series the contact allows (bench/taylor_step_bound.hpp):
+  // An estimate of the fewest Taylor series the contact allows (model/regularized_contact_singularities.hpp):
   // the undamped contact's singularities against the series the Taylor path generates for it,
   // at tolerance 1e-8 (the steel case without damping and gravity, same impact speed).
   {

@@ -1,11 +1,11 @@
-// The complex singularities of the undamped regularised contact (bench/taylor_step_bound.hpp),
-// which set how far any Taylor step can reach, against the series themselves; and the Taylor
-// path's count of series against the least count they allow.
-#include "bench/taylor_step_bound.hpp"
-
+// The complex singularities of the undamped regularised contact
+// (model/regularized_contact_singularities.hpp), which set how far any Taylor step can reach,
+// against the series themselves; and the Taylor path's count of series against the least
+// count they allow.
 #include "hertzdash/integrators/power_series.hpp"
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/model/regularized_contact_singularities.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 
@@ -22,7 +22,7 @@ TEST_CASE("undamped regularised contact: the nearest singularities lie above the
   // Re s* = |s*| cos(pi/5) equals the half duration S: w_m B(1/5, 3/10) cos(pi/5) / 5 =
   // w_m B(1/5, 1/2) / 5 follows from Gamma(3/10) Gamma(7/10) = pi / sin(3 pi/10) and
   // cos(pi/5) = sin(3 pi/10). Rounding only: 1e-14.
-  const bench::UndampedRegularizedContact c = bench::undamped_regularized_contact();
+  const UndampedRegularizedContact c = undamped_regularized_contact();
   CHECK(c.singular_distance * std::cos(std::numbers::pi / 5) == Approx(c.half_duration).epsilon(1e-14));
   // Hence Im s* / S = tan(pi/5).
   CHECK(c.singular_height / c.half_duration == Approx(std::tan(std::numbers::pi / 5)).epsilon(1e-14));
@@ -79,7 +79,7 @@ TEST_CASE("taylor-regularized's count of series against the singularities' estim
     const ImpactSummary s = sim.run<Undamped>(setup);
     REQUIRE(s.separated);
     const int p = taylor_order(tol);
-    const double series = static_cast<double>(s.work.rhs_evaluations) / p, least = bench::least_taylor_series(tol, p);
+    const double series = static_cast<double>(s.work.rhs_evaluations) / p, least = least_taylor_series(tol, p);
     std::printf("%8.0e %3d %6.0f %6.2f\n", tol, p, series, least);
     CHECK(series >= least);
     CHECK(series <= 2 * least);

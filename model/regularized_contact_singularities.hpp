@@ -1,7 +1,8 @@
 #pragma once
-// How many Taylor series any step rule needs for one undamped contact in the regularising
-// variables: a lower bound from the solution's complex singularities, against which the
-// benchmark reads the Taylor path's own count (paper, Section "Performance").
+// How far a power series of the undamped contact in the regularising variables can reach:
+// the solution's complex singularities in closed form, and from them an estimate of the
+// fewest Taylor series any step rule needs for the contact, against which the benchmark
+// reads the Taylor path's own count (paper, Section "Performance").
 //
 // In the variables of model/regularized_contact.hpp, without damping and gravity, the
 // contact is u'' = -(2K/m) u^4 (u = x^{1/2}, ' = d/dtau). Scaled to w'' = -w^4 with
@@ -29,7 +30,7 @@
 #include <complex>
 #include <numbers>
 
-namespace hertzdash::bench {
+namespace hertzdash {
 
 /// The scaled undamped contact w'' = -w^4, w(0) = 0, w'(0) = 1 (see above).
 struct UndampedRegularizedContact {
@@ -73,4 +74,4 @@ inline double least_taylor_series(double tol, int p) {
   return contact_length_in_radii() * std::pow(tol, -1.0 / (p + 1));
 }
 
-}  // namespace hertzdash::bench
+}  // namespace hertzdash
