@@ -19,7 +19,10 @@ Command add_simulate_command(CLI::App& app);
 /// `hertzdash models`: the registered damping laws with their citations.
 Command add_models_command(CLI::App& app);
 
-/// `hertzdash restitution`: a law's effective restitution (rigid wall, no gravity), or calibration.
+/// `hertzdash parameters`: every option from its declaration (docs/parameters.md).
+Command add_parameters_command(CLI::App& app);
+
+/// `hertzdash restitution`: a law's effective restitution (contact phase, no gravity), or calibration.
 Command add_restitution_command(CLI::App& app);
 
 /// `hertzdash bounce`: a drop and its bounces; restitution from impact intervals and velocities.

@@ -100,7 +100,7 @@ Command add_fit_command(CLI::App& app) {
             prepare_output_file("--curves", opt->curves_path, opt->mkdir);
             TraceFitSettings settings;
             settings.parameters = parse_fit_parameters(opt->fit);
-            if (!opt->channels.empty()) settings.channels = parse_channels(opt->channels, "--channels");
+            if (!opt->channels.empty()) settings.channels = parse_channels(opt->channels, "channels");
             settings.resample_Hz = opt->resample_Hz;
             const PaperParameters paper = load_paper_parameters();
             const FitRun r = run_fit(opt->trace_path, opt->run, paper, settings, opt->compare_laws);

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   const std::vector<hertzdash::cli::Command> commands{
       hertzdash::cli::add_simulate_command(app),
       hertzdash::cli::add_models_command(app),
+      hertzdash::cli::add_parameters_command(app),
       hertzdash::cli::add_restitution_command(app),
       hertzdash::cli::add_bounce_command(app),
       hertzdash::cli::add_fit_command(app),
@@ -67,7 +68,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "hertzdash: " << e.what() << "\n";
     return 2;
-  } catch (const hertzdash::InvalidParameter& e) {
+  } catch (const hertzdash::InvalidParameter& e) {  // in the command line's spelling: --ball-E
     std::cerr << "hertzdash: " << hertzdash::cli::refusal_message(e) << "\n";
     return 2;
   } catch (const hertzdash::DataError& e) {

@@ -63,6 +63,14 @@ CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::opti
       ->type_name("FLOAT");
 }
 
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::function<void(double)> set,
+                               const std::string& help) {
+  return app
+      .add_option_function<std::string>(
+          flag, [set = std::move(set), flag](const std::string& text) { set(option_number(flag, text)); }, help)
+      ->type_name("FLOAT");
+}
+
 CLI::Option* add_integer_option(CLI::App& app, const std::string& flag, std::uint64_t& value, const std::string& help) {
   return add_integer(app, flag, value, help);
 }
@@ -72,14 +80,15 @@ CLI::Option* add_integer_option(CLI::App& app, const std::string& flag, unsigned
 }
 
 std::string refusal_message(const InvalidParameter& e) {
-  const auto it = not_numbers().find(e.parameter);
-  if (it == not_numbers().end()) return e.what();
+  constexpr KeySpelling cli = KeySpelling::command_line;
+  const auto it = not_numbers().find(spell_key(e.key, cli));
+  if (it == not_numbers().end()) return e.message(cli);
   const std::string quoted = "'" + it->second + "'";
   if (decimal_error(it->second) == DecimalError::out_of_range)
-    return InvalidParameter(e.parameter, quoted + " (out of range of double)",
+    return InvalidParameter(e.key, quoted + " (out of range of double)",
                             std::string("a decimal number of ") + double_range_text + ", and " + e.valid_range)
-        .what();
-  return InvalidParameter(e.parameter, quoted, std::string(decimal_number_format) + " and " + e.valid_range).what();
+        .message(cli);
+  return InvalidParameter(e.key, quoted, std::string(decimal_number_format) + " and " + e.valid_range).message(cli);
 }
 
 }  // namespace hertzdash::cli

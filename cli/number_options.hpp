@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -20,12 +21,15 @@ CLI::Option* add_number_option(CLI::App& app, const std::string& flag, double& v
 /// --flag writing a number into `value`, which stays empty unless the option is given.
 CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::optional<double>& value,
                                const std::string& help);
+/// --flag calling `set` with the number given.
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::function<void(double)> set,
+                               const std::string& help);
 /// --flag writing a decimal integer in [0, max of the type] into `value`; the help shows its default.
 CLI::Option* add_integer_option(CLI::App& app, const std::string& flag, std::uint64_t& value, const std::string& help);
 CLI::Option* add_integer_option(CLI::App& app, const std::string& flag, unsigned& value, const std::string& help);
 
-/// The message of the refusal `e`: its own; for an option whose text was no number, the text
-/// and the decimal format beside the range `e` gives.
+/// The message of the refusal `e` in the command line's spelling (--ball-E); for an option whose
+/// text was no number, the text and the decimal format beside the range `e` gives.
 std::string refusal_message(const InvalidParameter& e);
 
 }  // namespace hertzdash::cli

@@ -1,7 +1,7 @@
 // `hertzdash restitution`: the effective coefficient of restitution of a damping
-// law in the rigid-wall contact phase (rod E = inf, no gravity), at the approach
-// speed --impact-velocity (default: sqrt(2 g h) of --height), with or without the
-// tension clamp. With --target-restitution it instead solves for the input e that
+// law in the contact phase alone (no gravity), against a rigid wall unless the wall's
+// moduli are given (--rod-E, --rod-nu), at the approach speed --impact-velocity
+// (default: sqrt(2 g h) of --height and --gravity), with or without the tension clamp. With --target-restitution it instead solves for the input e that
 // makes the effective restitution equal the target (GSL Brent root finder).
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -30,7 +31,9 @@ struct RestitutionOptions {
 Command add_restitution_command(CLI::App& app) {
   auto opt = std::make_shared<RestitutionOptions>();
   CLI::App* sub = app.add_subcommand(
-      "restitution", "Effective restitution of a damping law, rigid wall, no gravity (contact phase only)");
+      "restitution",
+      "Effective restitution of a damping law in the contact phase alone (no gravity; a rigid wall unless --rod-E "
+      "is given)");
   add_run_options(*sub, opt->run);
   add_number_option(*sub, "--target-restitution", opt->target,
                     "Calibrate: find the input e whose effective restitution is this, in (0,1]");
@@ -44,9 +47,12 @@ Command add_restitution_command(CLI::App& app) {
               std::cout << to_json(r).dump(2) << "\n";
               return 0;
             }
-            std::cout << fmt::format("hertzdash restitution: law '{}', tension {}, v0 = {:.6g} m/s (rigid wall, "
+            const std::string wall = std::isinf(r.setup.rod.E_Pa)
+                                         ? std::string("rigid wall")
+                                         : fmt::format("wall E = {:.4g} Pa, nu = {:.3g}", r.setup.rod.E_Pa, r.setup.rod.nu);
+            std::cout << fmt::format("hertzdash restitution: law '{}', tension {}, v0 = {:.6g} m/s ({}, "
                                      "no gravity)\n",
-                                     r.law, r.setup.no_tension ? "clamped" : "allowed", *r.setup.impact_velocity_mps);
+                                     r.law, r.setup.no_tension ? "clamped" : "allowed", *r.setup.impact_velocity_mps, wall);
             if (r.e_target) std::cout << fmt::format("  e_target     {:.6g}\n", *r.e_target);
             std::cout << fmt::format("  e_input      {:.6g}\n", r.e_input);
             std::cout << fmt::format("  e_effective  {:.6g}\n", r.e_effective);

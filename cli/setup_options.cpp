@@ -3,7 +3,6 @@
 #include "cli/number_options.hpp"
 
 #include <iostream>
-#include <type_traits>
 
 namespace hertzdash::cli {
 
@@ -11,20 +10,18 @@ void add_run_options(CLI::App& app, RunOptions& options, RunOption::Group group)
   for (const RunOption& o : run_options()) {
     if (o.group != group) continue;
     const std::string flag = "--" + o.name;
-    std::visit(
-        [&]<class T>(T RunOptions::*field) {
-          T& value = options.*field;
-          if constexpr (std::is_same_v<T, bool>) {
-            app.add_flag(flag, value, o.help);
-          } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) {
-            add_number_option(app, flag, value, o.help);
-          } else if constexpr (std::is_same_v<T, std::optional<std::string>>) {
-            app.add_option_function<std::string>(flag, [&value](const std::string& v) { value = v; }, o.help);
-          } else {
-            app.add_option(flag, value, o.help)->capture_default_str();
-          }
-        },
-        o.field);
+    switch (o.decl.type) {
+      case ParameterType::flag:
+        app.add_flag_callback(flag, [&options, &o] { set_flag(options, o, true); }, o.help);
+        break;
+      case ParameterType::text:
+        app.add_option_function<std::string>(flag, [&options, &o](const std::string& v) { set_text(options, o, v); },
+                                             o.help);
+        break;
+      case ParameterType::number:
+        add_number_option(app, flag, [&options, &o](double v) { set_number(options, o, v); }, o.help);
+        break;
+    }
   }
 }
 

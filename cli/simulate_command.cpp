@@ -32,7 +32,7 @@ constexpr const char* measurement_options[] = {"--sample-rate", "--anti-alias", 
 void check_trace_options(const CLI::App& sub, SimulateOptions& opt) {
   if (opt.trace_format == "measured") {
     if (opt.trace_path.empty()) throw InvalidParameter("--trace-format", opt.trace_format, "given with --trace FILE");
-    opt.chain.channels = parse_channels(opt.channels, "--channels");
+    opt.chain.channels = parse_channels(opt.channels, "channels");
     validate(opt.chain);
     return;
   }

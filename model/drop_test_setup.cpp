@@ -1,5 +1,7 @@
 #include "hertzdash/model/drop_test_setup.hpp"
 
+#include "hertzdash/model/drop_test_parameters.hpp"
+
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
@@ -13,31 +15,32 @@
 namespace hertzdash {
 
 void validate(const DropTestSetup& s, const GivenScaleInputs& given) {
-  require_positive("--mass", s.mass_kg, "kg");
-  require_positive("--ball-radius", s.ball_radius_m, "m");
-  require_positive("--ball-E", s.ball.E_Pa, "Pa");
-  require_in_open("--ball-nu", s.ball.nu, -1.0, 0.5);
-  require_positive_or_infinite("--ball-yield-stress", s.ball_yield_stress_Pa, "Pa");
-  require_positive_or_infinite("--rod-E", s.rod.E_Pa, "Pa");
-  require_in_open("--rod-nu", s.rod.nu, -1.0, 0.5);
-  require_in_open_closed("--restitution", s.restitution, 0.0, 1.0);
-  require_non_negative("--height", s.height_m, "m");
-  require_non_negative("--gravity", s.gravity_mps2, "m/s^2");
+  namespace p = drop_test_parameters;
+  require_in_range(p::mass, s.mass_kg);
+  require_in_range(p::ball_radius, s.ball_radius_m);
+  require_in_range(p::ball_E, s.ball.E_Pa);
+  require_in_range(p::ball_nu, s.ball.nu);
+  require_in_range(p::ball_yield_stress, s.ball_yield_stress_Pa);
+  require_in_range(p::rod_E, s.rod.E_Pa);
+  require_in_range(p::rod_nu, s.rod.nu);
+  require_in_range(p::restitution, s.restitution);
+  require_in_range(p::height, s.height_m);
+  require_in_range(p::gravity, s.gravity_mps2);
   if (s.impact_velocity_mps) {
-    require_positive("--impact-velocity", *s.impact_velocity_mps, "m/s");
+    require_in_range(p::impact_velocity, *s.impact_velocity_mps);
   } else if (!(s.gravity_mps2 > 0)) {  // named first: the height may be a default the user never typed
-    throw InvalidParameter("--gravity", format_value(s.gravity_mps2),
-                           "> 0 with --height > 0 when no --impact-velocity is given (the rod must reach the ball)");
+    throw InvalidParameter("gravity", format_value(s.gravity_mps2),
+                           "> 0 with `height` > 0 when no `impact-velocity` is given (the rod must reach the ball)");
   } else if (!(s.height_m > 0)) {
-    throw InvalidParameter("--height", format_value(s.height_m),
-                           "> 0 with --gravity > 0 when no --impact-velocity is given (the rod must reach the ball)");
+    throw InvalidParameter("height", format_value(s.height_m),
+                           "> 0 with `gravity` > 0 when no `impact-velocity` is given (the rod must reach the ball)");
   }
-  if (const auto& A = s.damping.viscous_time_constant_s) require_non_negative("--viscous-time-constant", *A, "s");
-  require_non_negative("--reference-velocity", s.damping.reference_velocity_mps, "m/s (0: the approach speed)");
+  if (const auto& A = s.damping.viscous_time_constant_s) require_non_negative("viscous-time-constant", *A, "s");
+  require_non_negative("reference-velocity", s.damping.reference_velocity_mps, "m/s (0: the approach speed)");
   if (s.elastic_rod) {
     if (std::isinf(s.rod.E_Pa))
-      throw InvalidParameter("--rod-E", format_value(s.rod.E_Pa),
-                             "a finite modulus [Pa] with --rod-model elastic (inf is the rigid rod: --rod-model rigid)");
+      throw InvalidParameter("rod-E", format_value(s.rod.E_Pa),
+                             "a finite modulus [Pa] with `rod-model` elastic (inf is the rigid rod: `rod-model` rigid)");
     validate(*s.elastic_rod);
   }
   validate_hertz_scale(s, given);
@@ -56,18 +59,18 @@ void validate_hertz_scale(const DropTestSetup& s, const GivenScaleInputs& given)
   const char* side = too_large ? "below" : "at least";
   const bool fall = !s.impact_velocity_mps;
 
-  auto input = [](const char* option, double value, const char* unit, bool was_given) {
-    return fmt::format("{} {:g}{}{}", option, value, unit, was_given ? "" : " (default)");
+  auto input = [](const char* key, double value, const char* unit, bool was_given) {
+    return fmt::format("{} {:g}{}{}", key_reference(key), value, unit, was_given ? "" : " (default)");
   };
-  std::string inputs = fall ? input("--height", s.height_m, " m", given.height) + ", " +
-                                  input("--gravity", s.gravity_mps2, " m/s^2", given.gravity)
-                            : input("--impact-velocity", v0, " m/s", true);
-  inputs += ", " + input("--mass", m, " kg", given.mass) + ", " + input("--ball-radius", R, " m", given.ball_radius) +
+  std::string inputs = fall ? input("height", s.height_m, " m", given.height) + ", " +
+                                  input("gravity", s.gravity_mps2, " m/s^2", given.gravity)
+                            : input("impact-velocity", v0, " m/s", true);
+  inputs += ", " + input("mass", m, " kg", given.mass) + ", " + input("ball-radius", R, " m", given.ball_radius) +
             fmt::format(" and K = {:.4g} N/m^1.5 from", K);
   for (const auto& [option, value, was_given] :
-       {std::tuple{"--ball-E", s.ball.E_Pa, given.ball_E}, std::tuple{"--rod-E", s.rod.E_Pa, given.rod_E},
-        std::tuple{"--ball-nu", s.ball.nu, given.ball_nu}, std::tuple{"--rod-nu", s.rod.nu, given.rod_nu}})
-    inputs += std::string(std::string_view(option) == "--ball-E" ? " " : ", ") +
+       {std::tuple{"ball-E", s.ball.E_Pa, given.ball_E}, std::tuple{"rod-E", s.rod.E_Pa, given.rod_E},
+        std::tuple{"ball-nu", s.ball.nu, given.ball_nu}, std::tuple{"rod-nu", s.rod.nu, given.rod_nu}})
+    inputs += std::string(std::string_view(option) == "ball-E" ? " " : ", ") +
               input(option, value, std::string_view(option).ends_with("E") ? " Pa" : "", was_given);
   const std::string why =
       fmt::format("(with {}, the undamped Hertz deformation X = (5 m v0^2 / 4K)^(2/5) is {:.3g} m; {})", inputs, X,
@@ -76,41 +79,38 @@ void validate_hertz_scale(const DropTestSetup& s, const GivenScaleInputs& given)
                                           "continuum contact model applies",
                                           min_hertz_deformation_m));
 
-  if (!fall) throw InvalidParameter("--impact-velocity", format_value(v0), fmt::format("{} {:.4g} m/s {}", side, v_bound, why));
+  if (!fall) throw InvalidParameter("impact-velocity", format_value(v0), fmt::format("{} {:.4g} m/s {}", side, v_bound, why));
   if (given.height)
-    throw InvalidParameter("--height", format_value(s.height_m),
+    throw InvalidParameter("height", format_value(s.height_m),
                            fmt::format("{} {:.4g} m {}", side, v_bound * v_bound / (2.0 * s.gravity_mps2), why));
   if (given.gravity)
-    throw InvalidParameter("--gravity", format_value(s.gravity_mps2),
+    throw InvalidParameter("gravity", format_value(s.gravity_mps2),
                            fmt::format("{} {:.4g} m/s^2 {}", side, v_bound * v_bound / (2.0 * s.height_m), why));
   if (given.mass)
-    throw InvalidParameter("--mass", format_value(m), fmt::format("{} {:.4g} kg {}", side, m_bound, why));
+    throw InvalidParameter("mass", format_value(m), fmt::format("{} {:.4g} kg {}", side, m_bound, why));
   for (const auto& [option, value, was_given] :
-       {std::tuple{"--ball-radius", R, given.ball_radius}, std::tuple{"--ball-E", s.ball.E_Pa, given.ball_E},
-        std::tuple{"--rod-E", s.rod.E_Pa, given.rod_E}, std::tuple{"--ball-nu", s.ball.nu, given.ball_nu},
-        std::tuple{"--rod-nu", s.rod.nu, given.rod_nu}})
+       {std::tuple{"ball-radius", R, given.ball_radius}, std::tuple{"ball-E", s.ball.E_Pa, given.ball_E},
+        std::tuple{"rod-E", s.rod.E_Pa, given.rod_E}, std::tuple{"ball-nu", s.ball.nu, given.ball_nu},
+        std::tuple{"rod-nu", s.rod.nu, given.rod_nu}})
     if (was_given)
       throw InvalidParameter(option, format_value(value),
                              std::string("a value that, with the others, gives a Hertz deformation X ") +
                                  (too_large ? "below the ball radius " : "of at least 1e-12 m ") + why);
-  throw InvalidParameter("--height", format_value(s.height_m) + " (default)",
+  throw InvalidParameter("height", format_value(s.height_m) + " (default)",
                          fmt::format("{} {:.4g} m {}", side, v_bound * v_bound / (2.0 * s.gravity_mps2), why));
 }
 
 const char* to_string(Accelerometer a) { return a == Accelerometer::top ? "top" : "bottom"; }
 
 void validate(const ElasticRodSetup& s) {
+  namespace p = elastic_rod_parameters;
   require_positive("rod length (Table 1)", s.length_m, "m");
   require_positive("rod diameter (Table 1)", s.diameter_m, "m");
-  if (s.elements < 1 || s.elements > ElasticRodSetup::max_elements)
-    throw InvalidParameter("--rod-elements", std::to_string(s.elements),
-                           fmt::format("an integer in [1, {}]", ElasticRodSetup::max_elements));
-  if (!(s.rod_damping_ratio >= 0 && s.rod_damping_ratio < 1))
-    throw InvalidParameter("--rod-damping-ratio", format_value(s.rod_damping_ratio), "[0, 1)");
-  require_positive("--hemisphere-mass", s.hemisphere_mass_kg, "kg");
-  require_positive_or_infinite("--cell-stiffness", s.cell_stiffness_N_per_m, "N/m");
-  if (!(s.cell_damping_ratio >= 0 && s.cell_damping_ratio < 1))
-    throw InvalidParameter("--cell-damping-ratio", format_value(s.cell_damping_ratio), "[0, 1)");
+  require_in_range(p::elements, s.elements);
+  require_in_range(p::rod_damping_ratio, s.rod_damping_ratio);
+  require_in_range(p::hemisphere_mass, s.hemisphere_mass_kg);
+  require_in_range(p::cell_stiffness, s.cell_stiffness_N_per_m);
+  require_in_range(p::cell_damping_ratio, s.cell_damping_ratio);
 }
 
 double hertz_stiffness(const DropTestSetup& s) { return hertz_stiffness(s.ball_radius_m, s.ball, s.rod); }

@@ -3,6 +3,8 @@
 // (model/elastic_bar.hpp) and the hemisphere on its load cell (model/load_cell.hpp), with
 // the instrument that records the rod's acceleration. Constant for a run; the rod's mass,
 // modulus and the contact come from the DropTestSetup that holds this.
+#include "hertzdash/model/parameter.hpp"
+
 #include <cmath>
 
 namespace hertzdash {
@@ -27,7 +29,37 @@ struct ElasticRodSetup {
   Accelerometer accelerometer = Accelerometer::top;
 };
 
-/// Throws InvalidParameter naming the option and its valid range.
+/// Throws InvalidParameter naming the input and its valid range.
 void validate(const ElasticRodSetup& s);
+
+/// The inputs of the elastic rod and load cell (read only with the elastic rod).
+namespace elastic_rod_parameters {
+inline constexpr ParameterDecl elements{
+    .key = "rod-elements", .range = NumberRange::integer(1, ElasticRodSetup::max_elements), .default_value = "20",
+    .default_source = "converged: e_effective within 2e-6 of its limit (tests/convergence)",
+    .help = "Finite elements of the elastic rod"};
+inline constexpr ParameterDecl rod_damping_ratio{
+    .key = "rod-damping-ratio", .range = NumberRange::closed_open(0, 1), .default_value = "assumed",
+    .default_source = "data/assumptions.csv", .help = "Damping ratio of the elastic rod's first longitudinal mode",
+    .fittable = true};
+inline constexpr ParameterDecl cell_stiffness{
+    .key = "cell-stiffness", .unit = "N/m", .column_unit = "N_per_m", .range = NumberRange::positive_or_infinite(),
+    .default_value = "assumed", .default_source = "data/assumptions.csv",
+    .help = "Load cell stiffness [N/m]; inf fixes the hemisphere on a rigid base", .fittable = true};
+inline constexpr ParameterDecl cell_damping_ratio{
+    .key = "cell-damping-ratio", .range = NumberRange::closed_open(0, 1), .default_value = "assumed",
+    .default_source = "data/assumptions.csv", .help = "Damping ratio of the hemisphere on the load cell",
+    .fittable = true};
+inline constexpr ParameterDecl hemisphere_mass{
+    .key = "hemisphere-mass", .unit = "kg", .column_unit = "kg", .range = NumberRange::positive(),
+    .default_value = "Table 1", .default_source = "the paper's Table 1",
+    .help = "Mass of the hemisphere on the load cell [kg]", .fittable = true};
+inline constexpr ParameterDecl accelerometer{
+    .key = "accelerometer", .type = ParameterType::text, .choices = "top, bottom", .default_value = "top",
+    .default_source = "the free end, where an accelerometer can be mounted",
+    .help = "End face carrying the accelerometer: top (the free end) or bottom (the struck face)"};
+inline constexpr ParameterDecl all[] = {elements, rod_damping_ratio, cell_stiffness, cell_damping_ratio,
+                                        hemisphere_mass, accelerometer};
+}  // namespace elastic_rod_parameters
 
 }  // namespace hertzdash

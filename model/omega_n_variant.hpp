@@ -45,7 +45,7 @@ inline bool is_iterated(OmegaNVariant v) {
 }
 
 /// Parses the CLI spelling; throws InvalidParameter(option, ...) listing the valid names.
-inline OmegaNVariant parse_omega_n_variant(std::string_view text, const std::string& option = "--omega-n") {
+inline OmegaNVariant parse_omega_n_variant(std::string_view text, const std::string& option = "omega-n") {
   std::string names;
   for (OmegaNVariant v : all_omega_n_variants) {
     if (text == to_string(v)) return v;

@@ -55,35 +55,28 @@ const RunOption& option_named(const std::string& keyword, const char* function) 
 // Sets one option from a Python value; a value of the wrong type raises TypeError naming it.
 void set_option(RunOptions& options, const RunOption& o, py::handle value) {
   const std::string keyword = python_keyword(o.name);
-  std::visit(
-      [&]<class T>(T RunOptions::*field) {
-        T& target = options.*field;
-        if constexpr (std::is_same_v<T, bool>) {
-          if (!py::isinstance<py::bool_>(value)) throw py::type_error(keyword + ": expected True or False");
-          target = value.cast<bool>();
-        } else {
-          if constexpr (std::is_same_v<T, std::optional<std::string>> || std::is_same_v<T, std::optional<double>>) {
-            if (value.is_none()) {  // None: the paper's value
-              target = T{};
-              return;
-            }
-          }
-          if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>) {
-            if (!py::isinstance<py::str>(value)) throw py::type_error(keyword + ": expected a string");
-            target = value.cast<std::string>();
-          } else {
-            if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) ||
-                                                      py::isinstance<py::int_>(value) || py::hasattr(value, "__float__")))
-              throw py::type_error(keyword + ": expected a number");
-            try {
-              target = value.cast<double>();
-            } catch (const py::cast_error&) {  // an integer beyond the range of a double
-              throw InvalidParameter("--" + o.name, py::str(value).cast<std::string>(), "a number within the range of a double");
-            }
-          }
-        }
-      },
-      o.field);
+  if (o.decl.type == ParameterType::flag) {
+    if (!py::isinstance<py::bool_>(value)) throw py::type_error(keyword + ": expected True or False");
+    set_flag(options, o, value.cast<bool>());
+    return;
+  }
+  if (value.is_none()) {  // None: the default
+    clear_option(options, o);
+    return;
+  }
+  if (o.decl.type == ParameterType::text) {
+    if (!py::isinstance<py::str>(value)) throw py::type_error(keyword + ": expected a string");
+    set_text(options, o, value.cast<std::string>());
+    return;
+  }
+  if (py::isinstance<py::bool_>(value) ||
+      !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) || py::hasattr(value, "__float__")))
+    throw py::type_error(keyword + ": expected a number");
+  try {
+    set_number(options, o, value.cast<double>());
+  } catch (const py::cast_error&) {  // an integer beyond the range of a double
+    throw InvalidParameter(o.name, py::str(value).cast<std::string>(), "a number within the range of a double");
+  }
 }
 
 RunOptions run_options_from(const py::kwargs& kwargs, const char* function) {
@@ -224,7 +217,7 @@ py::dict py_virtual_measurement(const std::string& path, double sample_rate, dou
   const RunOptions options = run_options_from(kwargs, "virtual_measurement");
   MeasurementChain chain{.sample_rate_Hz = sample_rate, .anti_alias_cutoff_Hz = anti_alias, .noise_fraction = noise,
                          .seed = seed};
-  chain.channels = parse_channels(channels, "--channels");
+  chain.channels = parse_channels(channels, "channels");
   validate(chain);
   SimulateRun run;
   {
@@ -253,7 +246,7 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
   }
   TraceFitSettings settings;
   settings.parameters = parse_fit_parameters(fit);
-  if (!channels.empty()) settings.channels = parse_channels(channels, "--channels");
+  if (!channels.empty()) settings.channels = parse_channels(channels, "channels");
   settings.resample_Hz = resample;
   FitRun run;
   {
@@ -362,9 +355,7 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
       continue;
     }
     const std::string keyword = python_keyword(o.name);
-    const bool numeric = std::holds_alternative<double RunOptions::*>(o.field) ||
-                         std::holds_alternative<std::optional<double> RunOptions::*>(o.field);
-    if (!numeric || o.group != RunOption::Group::setup)
+    if (o.decl.type != ParameterType::number || o.group != RunOption::Group::setup)
       throw InvalidParameter(keyword, "an array", "a single value (arrays are taken for the numeric set-up options only)");
     const py::array given = py::array::ensure(value);
     if (!given || std::string("iuf").find(given.dtype().kind()) == std::string::npos)
@@ -390,17 +381,12 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   for (std::size_t i = 0; i < n; ++i) {
     RunOptions o = base;
     for (const auto& [option, a] : arrays) {
-      const double v = a.shape(0) == 1 ? a.at(0) : a.at(static_cast<py::ssize_t>(i));
-      std::visit(
-          [&]<class T>(T RunOptions::*field) {
-            if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) o.*field = v;
-          },
-          option->field);
+      set_number(o, *option, a.shape(0) == 1 ? a.at(0) : a.at(static_cast<py::ssize_t>(i)));
     }
     try {
       setups.push_back(resolve_setup(o, paper()));
     } catch (const InvalidParameter& e) {
-      throw py::value_error(fmt::format("point {}: {}", i, e.what()));
+      throw py::value_error(fmt::format("point {}: {}", i, e.message(KeySpelling::python)));
     }
   }
   std::vector<ImpactSummary> results(n);
@@ -445,7 +431,8 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
 
 std::string options_doc() {
   std::string doc = "Options (keywords; each is the command line's --option, '-' written '_'):\n";
-  for (const RunOption& o : run_options()) doc += fmt::format("  {}: {}\n", python_keyword(o.name), o.help);
+  for (const RunOption& o : run_options())
+    doc += fmt::format("  {}: {}\n", python_keyword(o.name), help_text(o.decl, KeySpelling::python));
   return doc;
 }
 
@@ -459,10 +446,12 @@ PYBIND11_MODULE(hertzdash, m) {
   m.attr("git_revision") = git_revision();
   m.attr("schema_version") = json_schema_version;
 
-  // InvalidParameter is a std::invalid_argument, which pybind11 raises as ValueError.
+  // A refusal is a ValueError naming the Python keyword (ball_E, not --ball-E).
   py::register_local_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const InvalidParameter& e) {
+      PyErr_SetString(PyExc_ValueError, e.message(KeySpelling::python).c_str());
     } catch (const DataError& e) {
       PyErr_SetString(PyExc_ValueError, (std::string("bad data file: ") + e.what()).c_str());
     }
@@ -476,8 +465,8 @@ PYBIND11_MODULE(hertzdash, m) {
          "contact_time_s, impact_velocity_mps, rebound_velocity_mps, separated, K_N_per_m_1_5, law_coefficients, "
          "steps, rhs_evaluations, events, integrator_used, omega_n_fixed_point (iterated omega_n variants only), "
          "elastic_rod (rod_model='elastic' only), inputs, schema_version, git_revision (docs/json-output.md). "
-         "Values are SI, units in the keys. Bad values raise ValueError with the program's message, which names "
-         "the option as --option. A fall-back of the integrator, an under-resolved fixed step, a step shortened "
+         "Values are SI, units in the keys. Bad values raise ValueError with the program's message, naming "
+         "the keyword. A fall-back of the integrator, an under-resolved fixed step, a step shortened "
          "for stability and a Hertz peak pressure above the onset of yield (1.60 ball_yield_stress) are "
          "reported as UserWarnings, as the program reports them on stderr.\n\n" +
          options)

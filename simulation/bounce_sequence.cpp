@@ -67,13 +67,13 @@ std::string end_reason(const BounceSequence& s, const BounceOptions& o) {
 
 int parse_bounces(double impacts) {
   if (!(impacts >= 1 && impacts <= max_bounces && impacts == std::floor(impacts)))
-    throw InvalidParameter("--bounces", format_value(impacts), fmt::format("an integer in [1, {}]", max_bounces));
+    throw InvalidParameter("bounces", format_value(impacts), fmt::format("an integer in [1, {}]", max_bounces));
   return static_cast<int>(impacts);
 }
 
 void validate(const BounceOptions& o) {
   parse_bounces(o.impacts);
-  require_non_negative("--min-rebound-velocity", o.min_rebound_velocity_mps, "m/s");
+  require_non_negative("min-rebound-velocity", o.min_rebound_velocity_mps, "m/s");
 }
 
 ImpactSummary bounce_impact_summary(const BounceImpact& b, const BounceSequence& sequence, const DropTestSetup& setup) {
@@ -110,7 +110,7 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
   validate(solver);
   validate(options);
   if (!(setup.gravity_mps2 > 0))
-    throw InvalidParameter("--gravity", format_value(setup.gravity_mps2),
+    throw InvalidParameter("gravity", format_value(setup.gravity_mps2),
                            "> 0 for a bounce sequence (without gravity the rod never comes back)");
   BounceSequence out;
   DropTestSetup s = setup;
@@ -124,7 +124,7 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
       return;
     }
     if (is_iterated(s.damping.omega_n))
-      throw InvalidParameter("--omega-n", to_string(s.damping.omega_n),
+      throw InvalidParameter("omega-n", to_string(s.damping.omega_n),
                              "a variant that is not iterated, for a bounce sequence of the elastic rod");
     out.integrator_used = integrator_used(solver.integrator, impact_needs<Law>(s));
     IntegratorWorkspace workspace;
@@ -159,7 +159,7 @@ RestitutionCalibration calibrate_interval_restitution(const DropTestSetup& setup
         const BounceSequence b = run_bounce_sequence(trial, law, solver, three);
         return b.e_from_intervals.empty() ? 0.0 : b.e_from_intervals.front();
       },
-      target, "--target-interval-restitution", fmt::format("first interval ratios law '{}'", law));
+      target, "target-interval-restitution", fmt::format("first interval ratios law '{}'", law));
 }
 
 }  // namespace hertzdash

@@ -45,7 +45,7 @@ struct BounceOptions {
 };
 
 /// The number of impacts given as a number (the command line, Python): an integer in
-/// [1, max_bounces], else InvalidParameter("--bounces", ...).
+/// [1, max_bounces], else InvalidParameter("bounces", ...).
 int parse_bounces(double impacts);
 
 /// Throws InvalidParameter naming --bounces or --min-rebound-velocity.
@@ -78,13 +78,13 @@ struct BounceSequence {
 };
 
 /// The sequence of the validated `setup` with the registered law `law` (gravity > 0 required,
-/// InvalidParameter("--gravity", ...) otherwise).
+/// InvalidParameter("gravity", ...) otherwise).
 BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
                                    const BounceOptions& options);
 
 /// Calibration against the observable: the input e whose sequence (three impacts) has the
 /// first interval ratio e_from_intervals[0] = target, by calibrate_input_restitution
-/// (InvalidParameter("--target-interval-restitution", ...) when out of reach).
+/// (InvalidParameter("target-interval-restitution", ...) when out of reach).
 RestitutionCalibration calibrate_interval_restitution(const DropTestSetup& setup, std::string_view law,
                                                       const SolverSettings& solver, double target);
 

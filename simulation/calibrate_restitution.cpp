@@ -56,7 +56,7 @@ RestitutionCalibration calibrate_restitution(ImpactSimulator& simulator, const D
         contact.restitution = e_input;
         return simulator.run(contact, law).e_effective;
       },
-      target, "--target-restitution", fmt::format("effective restitutions law '{}'", law));
+      target, "target-restitution", fmt::format("effective restitutions law '{}'", law));
 }
 
 }  // namespace hertzdash

@@ -47,7 +47,7 @@ RestitutionCalibration calibrate_input_restitution(const std::function<double(do
 
 /// Solve e_effective(e_input) = target for e_input in [calibration_e_min, 1], contact phase
 /// of `s`. Converged when the bracket is narrower than 1e-10 in e_input. Throws
-/// InvalidParameter("--target-restitution", ...) when the target is outside (0, 1] or
+/// InvalidParameter("target-restitution", ...) when the target is outside (0, 1] or
 /// outside the range [e_effective(e_min), e_effective(1)] the law can reach.
 RestitutionCalibration calibrate_restitution(ImpactSimulator& simulator, const DropTestSetup& s, std::string_view law,
                                              double target);

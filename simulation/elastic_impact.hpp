@@ -68,10 +68,10 @@ inline SolverSettings elastic_solver_settings(const ElasticDropTestModel& model,
   const double stable_s = elastic_stable_step_s(model, kind);
   used.dt_s = std::min(settings.dt_s, stable_s);
   if (duration_s / used.dt_s > elastic_fixed_step_budget)
-    throw InvalidParameter("--integrator", to_string(kind),
+    throw InvalidParameter("integrator", to_string(kind),
                            fmt::format("an integrator that resolves this elastic rod's run in at most {:g} steps: at "
                                        "its stability limit {:.3g} s, {} would need {:.3g} (use dopri5 or cvode, fewer "
-                                       "--rod-elements or, for bounce, fewer --bounces)",
+                                       "`rod-elements` or, for bounce, fewer `bounces`)",
                                        elastic_fixed_step_budget, stable_s, to_string(kind), duration_s / used.dt_s));
   return used;
 }

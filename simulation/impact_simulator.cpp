@@ -22,9 +22,9 @@ ImpactSimulator::ImpactSimulator(const SolverSettings& settings) : settings_(set
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view law, std::vector<TraceSample>* trace) {
   if (is_iterated(setup.damping.omega_n)) {
     if (law != HongoPaper::info.name)
-      throw InvalidParameter("--omega-n", to_string(setup.damping.omega_n),
-                             fmt::format("an iterated variant only with --damping {} (the omega_n assumption belongs "
-                                         "to the paper's law; --damping is {})",
+      throw InvalidParameter("omega-n", to_string(setup.damping.omega_n),
+                             fmt::format("an iterated variant only with `damping` {} (the omega_n assumption belongs "
+                                         "to the paper's law; `damping` is {})",
                                          HongoPaper::info.name, law));
     OmegaNFixedPoint r = run_paper_law(*this, setup, {}, trace);
     if (!r.converged)
@@ -64,6 +64,7 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
   if (const auto& A = setup.damping.viscous_time_constant_s) p.emplace_back("viscous_time_constant_s", num(*A));
   if (setup.damping.reference_velocity_mps > 0)
     p.emplace_back("reference_velocity_mps", num(setup.damping.reference_velocity_mps));
+  for (const auto& [key, value] : setup.damping.law_values) p.emplace_back(spell_key(key, KeySpelling::python), num(value));
   if (setup.impact_velocity_mps) p.emplace_back("impact_velocity_input_mps", num(*setup.impact_velocity_mps));
   p.emplace_back("gravity_mps2", num(setup.gravity_mps2));
   p.emplace_back("no_tension", setup.no_tension ? "true" : "false");

@@ -41,7 +41,7 @@ class ImpactSimulator {
   /// Run the drop test with the registered law `law` (validated set-up required). The
   /// iterated omega_n variants of the paper's law run to their fixed point
   /// (simulation/omega_n_fixed_point.hpp), reported in summary.omega_n_iteration; they
-  /// need law = the paper's (else InvalidParameter("--omega-n", ...)), and an iteration
+  /// need law = the paper's (else InvalidParameter("omega-n", ...)), and an iteration
   /// that does not converge throws std::runtime_error saying why (the impact is undefined).
   ImpactSummary run(const DropTestSetup& setup, std::string_view law, std::vector<TraceSample>* trace = nullptr);
 

@@ -50,13 +50,13 @@ void validate(const SolverSettings& s) {
   // Every setting is checked, whether or not the chosen integrator reads it: a bad value is a
   // mistake even where it happens not to matter.
   const IntegratorTraits& row = integrator_traits(s.integrator);
-  require_positive("--dt", s.dt_s, "s");
-  require_in_open("--rtol", s.rtol, 0, 1);
-  require_in_open("--atol", s.atol, 0, 1);
-  require_non_negative("--max-step", s.max_step_s, "s");
+  require_positive("dt", s.dt_s, "s");
+  require_in_open("rtol", s.rtol, 0, 1);
+  require_in_open("atol", s.atol, 0, 1);
+  require_non_negative("max-step", s.max_step_s, "s");
   // A regularised path steps in tau (dt = 2 x^{1/2} dtau), not in time: no largest step.
   if (row.variables == Variables::regularized && s.max_step_s != 0)
-    throw InvalidParameter("--max-step", fmt::format("{}", s.max_step_s),
+    throw InvalidParameter("max-step", fmt::format("{}", s.max_step_s),
                            fmt::format("0 (no limit) with {}, whose steps are in tau, not in time", row.name));
 }
 

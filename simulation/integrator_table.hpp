@@ -281,7 +281,7 @@ const char* to_string(IntegratorKind k);
 /// comma-separated ("euler, rk4, ...").
 std::string integrator_names(bool (*which)(const IntegratorTraits&) = nullptr);
 /// The integrator spelled `name`; throws InvalidParameter(option, name, "one of: ...").
-IntegratorKind parse_integrator(std::string_view name, const std::string& option = "--integrator");
+IntegratorKind parse_integrator(std::string_view name, const std::string& option = "integrator");
 
 /// What an impact asks of an integrator beyond its law's force.
 struct ImpactNeeds {

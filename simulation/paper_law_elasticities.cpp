@@ -32,10 +32,10 @@ double& elasticity_parameter(DropTestSetup& s, int p) {
 PaperLawElasticities paper_law_elasticities(const DropTestSetup& s, const ContactSensitivityOptions& options) {
   validate(s);
   if (s.damping.omega_n != OmegaNVariant::paper)
-    throw InvalidParameter("--omega-n", to_string(s.damping.omega_n), "paper for the elasticities (eq. 11)");
-  if (s.impact_velocity_mps) throw InvalidParameter("--impact-velocity", "given", "absent: v0 comes from h");
-  if (s.no_tension) throw InvalidParameter("--no-tension", "set", "absent: the contact ends at x = 0");
-  if (!(s.restitution < 1)) throw InvalidParameter("--restitution", format_value(s.restitution), "< 1 (zeta > 0)");
+    throw InvalidParameter("omega-n", to_string(s.damping.omega_n), "paper for the elasticities (eq. 11)");
+  if (s.impact_velocity_mps) throw InvalidParameter("impact-velocity", "given", "absent: v0 comes from h");
+  if (s.no_tension) throw InvalidParameter("no-tension", "set", "absent: the contact ends at x = 0");
+  if (!(s.restitution < 1)) throw InvalidParameter("restitution", format_value(s.restitution), "< 1 (zeta > 0)");
 
   const double K = hertz_stiffness(s);
   const double v0 = approach_speed(s);

@@ -22,7 +22,7 @@ const RodData& PaperParameters::rod(const std::string& name) const {
     if (r.name == name) return r;
     names += (names.empty() ? "" : ", ") + r.name;
   }
-  throw InvalidParameter("--rod", name, "one of: " + names);
+  throw InvalidParameter("rod", name, "one of: " + names);
 }
 
 const UncertainInput& PaperParameters::uncertain_input(const std::string& parameter) const {

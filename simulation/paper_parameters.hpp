@@ -49,7 +49,7 @@ struct PaperParameters {
   double gravity_mps2;
   /// The inputs data/assumptions.csv gives a distribution (the joint uncertainty study).
   std::vector<UncertainInput> uncertain_inputs;
-  const RodData& rod(const std::string& name) const;  ///< throws InvalidParameter("--rod", ...)
+  const RodData& rod(const std::string& name) const;  ///< throws InvalidParameter("rod", ...)
   /// The uncertain input `parameter`; throws DataError if assumptions.csv gives it none.
   const UncertainInput& uncertain_input(const std::string& parameter) const;
 };

@@ -1,5 +1,6 @@
 #include "hertzdash/simulation/run_options.hpp"
 
+#include "hertzdash/model/drop_test_parameters.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
@@ -25,106 +27,158 @@ bool reads_max_step(const IntegratorTraits& r) {
 }
 bool reads_cvode_method(const IntegratorTraits& r) { return r.reads_cvode_method; }
 
-std::vector<RunOption> make_run_options() {
-  using R = RunOptions;
-  using G = RunOption::Group;
-  const std::string fixed = integrator_names(reads_step);
-  const std::string adaptive = integrator_names(reads_tolerances);
-  const std::string timed = integrator_names(reads_max_step);
-  const std::string cvode = integrator_names(reads_cvode_method);
-  return {
-      {"rod", &R::rod, "Rod of Tables 1-3: steel, duralumin-a, duralumin-b, duralumin-c", G::setup},
-      {"height", &R::height_m, "Drop height h [m], free fall from rest (default: 0.02)", G::setup, "m"},
-      {"impact-velocity", &R::impact_velocity_mps, "Approach speed at contact onset [m/s]; overrides --height", G::setup, "mps"},
-      {"mass", &R::mass_kg, "Rod mass [kg] (default: Table 1)", G::setup, "kg"},
-      {"restitution", &R::restitution, "Input coefficient of restitution e in (0,1] (default: Table 2; 1 = undamped)",
-       G::setup},
-      {"ball-E", &R::ball_E_Pa, "Hemisphere Young's modulus [Pa] (default: 2.0e9, assumed)", G::setup, "Pa"},
-      {"ball-nu", &R::ball_nu, "Hemisphere Poisson ratio (default: 0.40, assumed)", G::setup},
-      {"ball-radius", &R::ball_radius_m, "Hemisphere radius R [m] (default: 0.0127)", G::setup, "m"},
-      {"ball-yield-stress", &R::ball_yield_stress_Pa,
-       "Hemisphere yield stress Y [Pa]; a Hertz peak pressure above the onset of yield (1.74 Y at nu = 0.4, Johnson) is flagged; inf: no check "
-       "(default: 7.0e7, assumed)",
-       G::setup, "Pa"},
-      {"rod-E", &R::rod_E_Pa, "Rod Young's modulus [Pa]; inf for a rigid flat (default: Table 3)", G::setup, "Pa"},
-      {"rod-nu", &R::rod_nu, "Rod Poisson ratio (default: 0.30 steel, 0.33 duralumin, assumed)", G::setup},
-      {"gravity", &R::gravity_mps2, "Gravity g [m/s^2], 0 allowed (default: 9.80665)", G::setup, "mps2"},
-      {"no-tension", &R::no_tension, "Clamp the contact force at >= 0; contact ends where it reaches zero", G::setup},
-      {"zeta", &R::zeta, "Damping ratio from e: paper (eq. 6) or exact (linear oscillator)", G::setup},
-      {"omega-n", &R::omega_n,
-       "Natural frequency assumption of the paper's law (hongo only): paper (eq. 11, the default), impact-energy, "
-       "rebound-energy, self-consistent, contact-time (both iterated to a fixed point), as-printed (the eq. 9 erratum)",
-       G::setup},
-      {"damping", &R::damping, "Damping law (see `hertzdash models`): " + registered_law_names(), G::setup},
-      {"viscous-time-constant", &R::viscous_time_constant_s,
-       "Material time constant A [s] >= 0 of the viscoelastic law (kuwabara-kono only): F = K (x^{3/2} + A x^{1/2} "
-       "xdot); replaces the calibration from e",
-       G::setup, "s"},
-      {"reference-velocity", &R::reference_velocity_mps,
-       "Approach speed [m/s] > 0 at which the viscoelastic law's restitution is the input e (kuwabara-kono only; "
-       "default: the approach speed of the run's first impact)",
-       G::setup, "mps"},
-      {"rod-model", &R::rod_model,
-       "rigid (the paper's model: a rigid rod on a fixed hemisphere) or elastic (the rod as an elastic bar, the "
-       "hemisphere on its load cell; docs/elastic-rod.md)",
-       G::setup},
-      {"rod-elements", &R::rod_elements,
-       fmt::format("Finite elements of the elastic rod, an integer in [1, {}] (default: {}, within 2e-6 of converged "
-                   "e_effective)",
-                   ElasticRodSetup::max_elements, ElasticRodSetup::default_elements),
-       G::setup},
-      {"rod-damping-ratio", &R::rod_damping_ratio,
-       "Damping ratio of the elastic rod's first longitudinal mode, [0, 1) (default: data/assumptions.csv)", G::setup},
-      {"cell-stiffness", &R::cell_stiffness_N_per_m,
-       "Load cell stiffness [N/m]; inf fixes the hemisphere on a rigid base (default: data/assumptions.csv)",
-       G::setup, "N_per_m"},
-      {"cell-damping-ratio", &R::cell_damping_ratio,
-       "Damping ratio of the hemisphere on the load cell, [0, 1) (default: data/assumptions.csv)", G::setup},
-      {"hemisphere-mass", &R::hemisphere_mass_kg, "Hemisphere mass [kg] on the load cell (default: Table 1)",
-       G::setup, "kg"},
-      {"accelerometer", &R::accelerometer,
-       "End face carrying the accelerometer: top (the free end, the default) or bottom (the struck face)", G::setup},
-      {"integrator", &R::integrator, "One of: " + integrator_names() + " (default: cvode)", G::solver},
-      {"dt", &R::dt_s,
-       "Fixed step [s] > 0 and at most t_H / " + std::to_string(min_steps_per_hertz_contact) +
-           ", t_H the impact's undamped Hertz contact time (" + fixed +
-           "; default: 1e-6; a run needing more than 1e9 steps does not start)",
-       G::solver, "s"},
-      {"no-event-location", &R::no_event_location,
-       "Handle events at the end of the step that crosses them (" + fixed + "; convergence studies)", G::solver},
-      {"rtol", &R::rtol,
-       "Relative tolerance in (0, 1) (" + adaptive + "; default: 1e-8; above " + fmt::format("{:g}", loose_rtol_limit) +
-           " the result carries a loose_tolerance warning)",
-       G::solver},
-      {"atol", &R::atol,
-       "Absolute tolerance relative to the impact's scales, in (0, 1): X for lengths, v0 for speeds, t_H for times "
-       "(X, t_H the undamped Hertz maximum compression and contact time at the impact speed v0; " + adaptive +
-           "; default: 1e-12)",
-       G::solver},
-      {"cvode-method", &R::cvode_method, "CVODE method: adams or bdf (" + cvode + "; default: adams)", G::solver},
-      {"max-step", &R::max_step_s, "Largest step [s] >= 0; 0 = no limit (" + timed + "; default: 0)", G::solver, "s"},
-  };
-}
+using R = RunOptions;
+using G = RunOption::Group;
+using Setup = const DropTestSetup&;
+using V = std::optional<double>;
 
 }  // namespace
 
+std::string help_text(const ParameterDecl& d, KeySpelling spelling) {
+  std::string h = spell_key_references(d.help, spelling);
+  if (d.type == ParameterType::text) h += " (one of: " + std::string(d.choices) + ")";
+  if (d.type == ParameterType::number) h += "; " + d.range.text(d.unit);
+  if (d.type != ParameterType::flag)
+    h += fmt::format(" (default: {}{})", d.default_value,
+                     d.default_source.empty() ? "" : "; " + spell_key_references(d.default_source, spelling));
+  return h;
+}
+
 namespace {
 
-/// The elastic rod and load cell of --rod-model elastic, or nothing for the rigid model (whose
-/// options for the elastic one are then errors: they would be silently ignored).
-std::optional<ElasticRodSetup> resolve_elastic_rod(const RunOptions& o, const PaperParameters& paper) {
-  if (o.rod_model == "rigid") {
-    const std::pair<const char*, bool> elastic_only[] = {
-        {"--rod-elements", o.rod_elements.has_value()},           {"--rod-damping-ratio", o.rod_damping_ratio.has_value()},
-        {"--cell-stiffness", o.cell_stiffness_N_per_m.has_value()}, {"--cell-damping-ratio", o.cell_damping_ratio.has_value()},
-        {"--hemisphere-mass", o.hemisphere_mass_kg.has_value()},   {"--accelerometer", o.accelerometer.has_value()}};
-    for (const auto& [name, given] : elastic_only)
-      if (given)
-        throw InvalidParameter("--rod-model", o.rod_model,
-                               fmt::format("elastic when {} is given (it describes the elastic rod and load cell)", name));
-    return std::nullopt;
+RunOption option(const ParameterDecl& d, RunOption::Field field, G group, OptionReaders readers = {},
+                 std::function<V(Setup)> value_in_setup = {}) {
+  if (!d.fittable) value_in_setup = nullptr;
+  return {d, std::string(d.key), std::move(field), help_text(d, KeySpelling::command_line), group, std::string(d.column_unit), std::move(readers),
+          std::move(value_in_setup)};
+}
+
+// Declarations of the options that choose what runs (the rod preset, the law, the rig, the
+// integrator) and of the solver settings, whose valid values come from the registries.
+const std::string& law_choices() {
+  static const std::string names = registered_law_names();
+  return names;
+}
+const std::string& integrator_choices() {
+  static const std::string names = integrator_names();
+  return names;
+}
+const ParameterDecl rod_decl{.key = "rod", .type = ParameterType::text,
+                             .choices = "steel, duralumin-a, duralumin-b, duralumin-c", .default_value = "steel",
+                             .default_source = "the paper's Table 1",
+                             .help = "Preset of the falling body, flat and restitution: a rod of Tables 1-3"};
+const ParameterDecl rod_model_decl{
+    .key = "rod-model", .type = ParameterType::text, .choices = "rigid, elastic", .default_value = "rigid",
+    .default_source = "the paper's model",
+    .help = "rigid (the paper's model: a rigid rod on a fixed hemisphere) or elastic (the rod as an elastic bar, the "
+            "hemisphere on its load cell; docs/elastic-rod.md)"};
+const ParameterDecl cvode_method_decl{.key = "cvode-method", .type = ParameterType::text, .choices = "adams, bdf",
+                                      .default_value = "adams", .default_source = "non-stiff contact",
+                                      .help = "CVODE's linear multistep method"};
+
+// Every law's own inputs, bound to the fields the simulator reads or to law_numbers.
+void add_law_options(std::vector<RunOption>& out) {
+  std::vector<std::pair<ParameterDecl, std::vector<std::string>>> declared;  // each key once, with its laws
+  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
+    for (const ParameterDecl& d : law_parameters<Law>()) {
+      auto it = std::find_if(declared.begin(), declared.end(), [&](const auto& e) { return e.first.key == d.key; });
+      if (it == declared.end()) declared.push_back({d, {}}), it = declared.end() - 1;
+      it->second.emplace_back(Law::info.name);
+    }
+  });
+  for (auto& [d, laws] : declared) {
+    OptionReaders readers{.laws = std::move(laws)};
+    if (d.key == "zeta") out.push_back(option(d, &R::zeta, G::setup, readers));
+    else if (d.key == "omega-n") out.push_back(option(d, &R::omega_n, G::setup, readers));
+    else if (d.key == "viscous-time-constant")
+      out.push_back(option(d, &R::viscous_time_constant_s, G::setup, readers,
+                           [](Setup s) { return s.damping.viscous_time_constant_s; }));
+    else if (d.key == "reference-velocity") out.push_back(option(d, &R::reference_velocity_mps, G::setup, readers));
+    else
+      out.push_back(option(d, LawNumber{}, G::setup, readers,
+                           [d](Setup s) -> V {  // a computed default (NaN) is no starting value
+                             const double v = s.damping.number(d);
+                             return std::isnan(v) ? V() : V(v);
+                           }));
   }
-  if (o.rod_model != "elastic") throw InvalidParameter("--rod-model", o.rod_model, "one of: rigid, elastic");
+}
+
+std::vector<RunOption> make_run_options() {
+  namespace p = drop_test_parameters;
+  namespace e = elastic_rod_parameters;
+  const OptionReaders elastic{.elastic_rod = true};
+  auto elastic_value = [](double ElasticRodSetup::*f) {
+    return [f](Setup s) -> V { return s.elastic_rod ? V((*s.elastic_rod).*f) : V(); };
+  };
+  std::vector<RunOption> o{
+      option(rod_decl, &R::rod, G::setup),
+      option(p::height, &R::height_m, G::setup, {}, [](Setup s) -> V { return s.height_m; }),
+      option(p::impact_velocity, &R::impact_velocity_mps, G::setup, {}, [](Setup s) -> V { return approach_speed(s); }),
+      option(p::mass, &R::mass_kg, G::setup, {}, [](Setup s) -> V { return s.mass_kg; }),
+      option(p::restitution, &R::restitution, G::setup, {}, [](Setup s) -> V { return s.restitution; }),
+      option(p::ball_E, &R::ball_E_Pa, G::setup, {}, [](Setup s) -> V { return s.ball.E_Pa; }),
+      option(p::ball_nu, &R::ball_nu, G::setup, {}, [](Setup s) -> V { return s.ball.nu; }),
+      option(p::ball_radius, &R::ball_radius_m, G::setup, {}, [](Setup s) -> V { return s.ball_radius_m; }),
+      option(p::ball_yield_stress, &R::ball_yield_stress_Pa, G::setup),
+      option(p::rod_E, &R::rod_E_Pa, G::setup, {}, [](Setup s) -> V { return s.rod.E_Pa; }),
+      option(p::rod_nu, &R::rod_nu, G::setup, {}, [](Setup s) -> V { return s.rod.nu; }),
+      option(p::gravity, &R::gravity_mps2, G::setup, {}, [](Setup s) -> V { return s.gravity_mps2; }),
+      option(p::no_tension, &R::no_tension, G::setup),
+  };
+  add_law_options(o);
+  o.push_back(option({.key = "damping", .type = ParameterType::text, .choices = law_choices(),
+                      .default_value = default_damping_law, .default_source = "the paper's law",
+                      .help = "Damping law (see `hertzdash models`)"},
+                     &R::damping, G::setup));
+  o.push_back(option(rod_model_decl, &R::rod_model, G::setup));
+  o.push_back(option(e::elements, &R::rod_elements, G::setup, elastic));
+  o.push_back(option(e::rod_damping_ratio, &R::rod_damping_ratio, G::setup, elastic,
+                     elastic_value(&ElasticRodSetup::rod_damping_ratio)));
+  o.push_back(option(e::cell_stiffness, &R::cell_stiffness_N_per_m, G::setup, elastic,
+                     elastic_value(&ElasticRodSetup::cell_stiffness_N_per_m)));
+  o.push_back(option(e::cell_damping_ratio, &R::cell_damping_ratio, G::setup, elastic,
+                     elastic_value(&ElasticRodSetup::cell_damping_ratio)));
+  o.push_back(option(e::hemisphere_mass, &R::hemisphere_mass_kg, G::setup, elastic,
+                     elastic_value(&ElasticRodSetup::hemisphere_mass_kg)));
+  o.push_back(option(e::accelerometer, &R::accelerometer, G::setup, elastic));
+
+  // The solver: which integrators read a setting is the integrator table's.
+  static const std::string dt_help = fmt::format(
+      "Fixed step [s], at most t_H / {}, t_H the impact's undamped Hertz contact time (a run needing more than 1e9 "
+      "steps does not start)",
+      min_steps_per_hertz_contact);
+  static const std::string rtol_help =
+      fmt::format("Relative tolerance (above {:g} the result carries a loose_tolerance warning)", loose_rtol_limit);
+  o.push_back(option({.key = "integrator", .type = ParameterType::text, .choices = integrator_choices(),
+                      .default_value = "cvode", .default_source = "SUNDIALS CVODE, adaptive",
+                      .help = "Integrator (docs/simulate.md)"},
+                     &R::integrator, G::solver));
+  o.push_back(option({.key = "dt", .unit = "s", .column_unit = "s", .range = NumberRange::positive(),
+                      .default_value = "1e-6", .default_source = "SolverSettings", .help = dt_help},
+                     &R::dt_s, G::solver, {.integrators = reads_step}));
+  o.push_back(option({.key = "no-event-location", .type = ParameterType::flag, .default_value = "off",
+                      .help = "Handle events at the end of the step that crosses them (convergence studies)"},
+                     &R::no_event_location, G::solver, {.integrators = reads_step}));
+  o.push_back(option({.key = "rtol", .range = NumberRange::open(0, 1), .default_value = "1e-8",
+                      .default_source = "SolverSettings", .help = rtol_help},
+                     &R::rtol, G::solver, {.integrators = reads_tolerances}));
+  o.push_back(option({.key = "atol", .range = NumberRange::open(0, 1), .default_value = "1e-12",
+                      .default_source = "SolverSettings",
+                      .help = "Absolute tolerance relative to the impact's scales: X for lengths, v0 for speeds, t_H "
+                              "for times (X, t_H the undamped Hertz maximum compression and contact time at the "
+                              "impact speed v0)"},
+                     &R::atol, G::solver, {.integrators = reads_tolerances}));
+  o.push_back(option(cvode_method_decl, &R::cvode_method, G::solver, {.integrators = reads_cvode_method}));
+  o.push_back(option({.key = "max-step", .unit = "s", .column_unit = "s", .range = NumberRange::non_negative(),
+                      .default_value = "0", .default_source = "no limit", .help = "Largest step [s]; 0 = no limit"},
+                     &R::max_step_s, G::solver, {.integrators = reads_max_step}));
+  return o;
+}
+
+/// The elastic rod and load cell of --rod-model elastic, or nothing for the rigid model.
+std::optional<ElasticRodSetup> resolve_elastic_rod(const RunOptions& o, const PaperParameters& paper) {
+  if (o.rod_model == "rigid") return std::nullopt;
+  if (o.rod_model != "elastic") throw InvalidParameter("rod-model", o.rod_model, "one of: rigid, elastic");
   const RodData& rod = paper.rod(o.rod);
   ElasticRodSetup e{.length_m = rod.length_m,
                     .diameter_m = rod.diameter_m,
@@ -134,24 +188,102 @@ std::optional<ElasticRodSetup> resolve_elastic_rod(const RunOptions& o, const Pa
                     .cell_stiffness_N_per_m = o.cell_stiffness_N_per_m.value_or(paper.rig.cell_stiffness_N_per_m),
                     .cell_damping_ratio = o.cell_damping_ratio.value_or(paper.rig.cell_damping_ratio)};
   if (o.rod_elements) {
-    const double n = *o.rod_elements;
-    if (!(n >= 1 && n <= ElasticRodSetup::max_elements && n == std::floor(n)))
-      throw InvalidParameter("--rod-elements", format_value(n),
-                             fmt::format("an integer in [1, {}]", ElasticRodSetup::max_elements));
-    e.elements = static_cast<int>(n);
+    require_in_range(elastic_rod_parameters::elements, *o.rod_elements);
+    e.elements = static_cast<int>(*o.rod_elements);
   }
   const std::string face = o.accelerometer.value_or("top");
   if (face == "top") e.accelerometer = Accelerometer::top;
   else if (face == "bottom") e.accelerometer = Accelerometer::bottom;
-  else throw InvalidParameter("--accelerometer", face, "one of: top, bottom");
+  else throw InvalidParameter("accelerometer", face, "one of: top, bottom");
   return e;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string s;
+  for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
+  return s;
 }
 
 }  // namespace
 
+std::string OptionReaders::describe() const {
+  if (!laws.empty()) return key_reference("damping") + " " + join(laws);
+  if (elastic_rod) return key_reference("rod-model") + " elastic";
+  if (integrators) return key_reference("integrator") + " " + integrator_names(integrators);
+  return {};
+}
+
 const std::vector<RunOption>& run_options() {
   static const std::vector<RunOption> options = make_run_options();
   return options;
+}
+
+std::vector<const RunOption*> fittable_options() {
+  std::vector<const RunOption*> out;
+  for (const RunOption& o : run_options())
+    if (o.decl.fittable) out.push_back(&o);
+  return out;
+}
+
+void set_number(RunOptions& options, const RunOption& o, double value) {
+  if (std::holds_alternative<LawNumber>(o.field)) {
+    options.law_numbers[o.name] = value;
+    return;
+  }
+  if (const auto* f = std::get_if<std::optional<double> RunOptions::*>(&o.field)) {
+    options.**f = value;
+    return;
+  }
+  throw std::logic_error("option " + o.name + " is not a number");
+}
+
+void set_text(RunOptions& options, const RunOption& o, const std::string& value) {
+  if (const auto* f = std::get_if<std::string RunOptions::*>(&o.field)) options.**f = value;
+  else if (const auto* g = std::get_if<std::optional<std::string> RunOptions::*>(&o.field)) options.**g = value;
+  else throw std::logic_error("option " + o.name + " is not a text");
+}
+
+void set_flag(RunOptions& options, const RunOption& o, bool value) {
+  if (const auto* f = std::get_if<bool RunOptions::*>(&o.field)) options.**f = value;
+  else throw std::logic_error("option " + o.name + " is not a flag");
+}
+
+void clear_option(RunOptions& options, const RunOption& o) {
+  static const RunOptions defaults;
+  std::visit(
+      [&]<class F>(const F& f) {
+        if constexpr (std::is_same_v<F, LawNumber>) options.law_numbers.erase(o.name);
+        else options.*f = defaults.*f;
+      },
+      o.field);
+}
+
+bool is_given(const RunOptions& options, const RunOption& o) {
+  static const RunOptions defaults;
+  return std::visit(
+      [&]<class F>(const F& f) -> bool {
+        if constexpr (std::is_same_v<F, LawNumber>) return options.law_numbers.contains(o.name);
+        else return options.*f != defaults.*f;
+      },
+      o.field);
+}
+
+std::string given_text(const RunOptions& options, const RunOption& o) {
+  return std::visit(
+      [&]<class F>(const F& f) -> std::string {
+        if constexpr (std::is_same_v<F, LawNumber>) {
+          const auto it = options.law_numbers.find(o.name);
+          return it == options.law_numbers.end() ? "" : format_value(it->second);
+        } else {
+          const auto& v = options.*f;
+          using T = std::remove_cvref_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+          else if constexpr (std::is_same_v<T, std::string>) return v;
+          else if constexpr (std::is_same_v<T, std::optional<std::string>>) return v.value_or("");
+          else return v ? format_value(*v) : "";
+        }
+      },
+      o.field);
 }
 
 std::vector<std::string> split_option_list(const std::string& list) {
@@ -169,11 +301,7 @@ std::string column_name(const RunOption& option) {
   return python_keyword(option.name) + (option.unit.empty() ? "" : "_" + option.unit);
 }
 
-std::string python_keyword(std::string_view option_name) {
-  std::string k(option_name);
-  std::replace(k.begin(), k.end(), '-', '_');
-  return k;
-}
+std::string python_keyword(std::string_view option_name) { return spell_key(option_name, KeySpelling::python); }
 
 const RunOption* find_run_option(std::string_view name) {
   for (const RunOption& o : run_options())
@@ -181,7 +309,44 @@ const RunOption* find_run_option(std::string_view name) {
   return nullptr;
 }
 
+void check_given_options(const RunOptions& o) {
+  // The values first, each against its declaration: a bad value is named as such even where
+  // nothing would read it.
+  for (const RunOption& option : run_options()) {
+    if (!is_given(o, option)) continue;
+    if (option.decl.type == ParameterType::number) {
+      const double v = std::holds_alternative<LawNumber>(option.field)
+                           ? o.law_numbers.find(option.name)->second
+                           : *(o.*std::get<std::optional<double> RunOptions::*>(option.field));
+      require_in_range(option.decl, v);
+    } else if (option.decl.type == ParameterType::text) {
+      const std::string value = given_text(o, option);
+      bool valid = false;
+      for (std::string c : split_option_list(std::string(option.decl.choices)))
+        valid = valid || c.erase(0, c.find_first_not_of(' ')) == value;
+      if (!valid) throw InvalidParameter(option.name, value, "one of: " + std::string(option.decl.choices));
+    }
+  }
+  // Then what reads each.
+  const IntegratorTraits& integrator = integrator_traits(parse_integrator(o.integrator));
+  for (const RunOption& option : run_options()) {
+    if (!is_given(o, option)) continue;
+    const OptionReaders& r = option.readers;
+    std::string run;  // what this run has instead, when that is not what reads the option
+    if (!r.laws.empty() && std::find(r.laws.begin(), r.laws.end(), o.damping) == r.laws.end())
+      run = key_reference("damping") + " is " + o.damping;
+    else if (r.elastic_rod && o.rod_model != "elastic")
+      run = key_reference("rod-model") + " is " + o.rod_model;
+    else if (r.integrators && !r.integrators(integrator))
+      run = key_reference("integrator") + " is " + std::string(integrator.name);
+    if (!run.empty())
+      throw InvalidParameter(option.name, given_text(o, option),
+                             fmt::format("given only with {} (what reads it); {}", r.describe(), run));
+  }
+}
+
 DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
+  check_given_options(o);
   DropTestSetup s = paper_setup(paper, o.rod, o.height_m.value_or(default_height_m));
   if (o.impact_velocity_mps) s.impact_velocity_mps = *o.impact_velocity_mps;
   if (o.mass_kg) s.mass_kg = *o.mass_kg;
@@ -194,14 +359,21 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   if (o.rod_nu) s.rod.nu = *o.rod_nu;
   if (o.gravity_mps2) s.gravity_mps2 = *o.gravity_mps2;
   s.no_tension = o.no_tension;
-  if (o.zeta == "paper") s.damping.zeta_form = ZetaForm::paper;
-  else if (o.zeta == "exact") s.damping.zeta_form = ZetaForm::exact;
-  else throw InvalidParameter("--zeta", o.zeta, "one of: paper, exact");
+  if (const std::string zeta = o.zeta.value_or("paper"); zeta == "paper") s.damping.zeta_form = ZetaForm::paper;
+  else if (zeta == "exact") s.damping.zeta_form = ZetaForm::exact;
+  else throw InvalidParameter("zeta", zeta, "one of: paper, exact");
   s.damping.omega_n = parse_omega_n_variant(o.omega_n.value_or(to_string(OmegaNVariant::paper)));
   s.damping.viscous_time_constant_s = o.viscous_time_constant_s;
   if (o.reference_velocity_mps) {
-    require_positive("--reference-velocity", *o.reference_velocity_mps, "m/s");
+    require_positive("reference-velocity", *o.reference_velocity_mps, "m/s");
     s.damping.reference_velocity_mps = *o.reference_velocity_mps;
+  }
+  for (const auto& [key, value] : o.law_numbers) {
+    const RunOption* option = find_run_option(key);
+    if (!option || !std::holds_alternative<LawNumber>(option->field))
+      throw InvalidParameter(key, format_value(value), "a number a damping law declares (`hertzdash models`)");
+    require_in_range(option->decl, value);
+    s.damping.law_values.emplace_back(option->decl.key, value);
   }
   s.elastic_rod = resolve_elastic_rod(o, paper);
   validate(s, {.height = o.height_m.has_value(),
@@ -212,21 +384,9 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
                .rod_E = o.rod_E_Pa.has_value(),
                .ball_nu = o.ball_nu.has_value(),
                .rod_nu = o.rod_nu.has_value()});
-  bool time_constant_law = false;  // rejects an unknown law before any work
-  with_damping_law(o.damping, [&]<class Law>(std::type_identity<Law>) { time_constant_law = MaterialTimeConstantLaw<Law>; });
-  for (const auto& [name, value] : {std::pair{"--viscous-time-constant", o.viscous_time_constant_s},
-                                    std::pair{"--reference-velocity", o.reference_velocity_mps}})
-    if (value && !time_constant_law)
-      throw InvalidParameter(name, format_value(*value),
-                             "given only with a viscoelastic law (kuwabara-kono), whose damping is a material time "
-                             "constant; --damping is " + o.damping);
   if (o.viscous_time_constant_s && o.reference_velocity_mps)
-    throw InvalidParameter("--reference-velocity", format_value(*o.reference_velocity_mps),
-                           "omitted when --viscous-time-constant is given (the reference speed only calibrates A)");
-  if (o.omega_n && o.damping != HongoPaper::info.name)
-    throw InvalidParameter("--omega-n", *o.omega_n,
-                           "given only with --damping " + std::string(HongoPaper::info.name) +
-                               " (the omega_n assumption belongs to the paper's law; --damping is " + o.damping + ")");
+    throw InvalidParameter("reference-velocity", format_value(*o.reference_velocity_mps),
+                           "omitted when `viscous-time-constant` is given (the reference speed only calibrates A)");
   return s;
 }
 
@@ -240,30 +400,9 @@ SolverSettings resolve_solver(const RunOptions& o) {
   s.max_step_s = o.max_step_s.value_or(s.max_step_s);
   if (const std::string method = o.cvode_method.value_or("adams"); method == "adams") s.cvode_method = CvodeMethod::adams;
   else if (method == "bdf") s.cvode_method = CvodeMethod::bdf;
-  else throw InvalidParameter("--cvode-method", method, "one of: adams, bdf");
+  else throw InvalidParameter("cvode-method", method, "one of: adams, bdf");
+  check_given_options(o);
   validate(s);
-  // A setting the chosen integrator does not read is an error: it would be silently ignored.
-  const IntegratorTraits& row = integrator_traits(s.integrator);
-  auto text = [](const std::optional<double>& v) { return v ? format_value(*v) : std::string(); };
-  const struct {
-    const char* option;
-    bool given;
-    std::string value;
-    bool (*reads)(const IntegratorTraits&);
-  } given[] = {
-      {"--dt", o.dt_s.has_value(), text(o.dt_s), reads_step},
-      {"--no-event-location", o.no_event_location, "true", reads_step},
-      {"--rtol", o.rtol.has_value(), text(o.rtol), reads_tolerances},
-      {"--atol", o.atol.has_value(), text(o.atol), reads_tolerances},
-      {"--cvode-method", o.cvode_method.has_value(), o.cvode_method.value_or(""), reads_cvode_method},
-      {"--max-step", o.max_step_s.has_value(), text(o.max_step_s), reads_max_step},
-  };
-  for (const auto& g : given)
-    if (g.given && !g.reads(row))
-      throw InvalidParameter(g.option, g.value,
-                             fmt::format("given only with --integrator {} (the integrators that read it); "
-                                         "--integrator is {}",
-                                         integrator_names(g.reads), row.name));
   return s;
 }
 

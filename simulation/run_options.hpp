@@ -1,13 +1,20 @@
 #pragma once
-// The options of one run, by the names users type. `hertzdash simulate --ball-E 3e9` and
-// `hertzdash.simulate(ball_E=3e9)` are read through the same table (run_options()), so the
-// command line and Python take the same options with the same defaults, and reject bad
-// values with the same message. Reading only; resolve_setup() and resolve_solver() validate.
+// The options of one run: one table (run_options()) built from the declarations of the model
+// (model/parameter.hpp: the drop test's, the elastic rod's, each damping law's own) and of the
+// integrator table, each bound to where a run keeps it and to who reads it. The command line
+// (--ball-E), Python (ball_E=), case files (ball-E = ), the fit's parameters and bounds, the
+// "given only with ..." refusals and docs/parameters.md are all generated from it, so that
+// `hertzdash simulate --ball-E 3e9` and `hertzdash.simulate(ball_E=3e9)` take the same options
+// with the same defaults and refuse bad values with the same {key, value, range}.
+// resolve_setup() and resolve_solver() validate; no option is ignored: one given where nothing
+// reads it (a law, the rig or the integrator chosen) is refused naming what reads it.
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/simulation/solver_settings.hpp"
 
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,6 +22,8 @@
 #include <vector>
 
 namespace hertzdash {
+
+struct IntegratorTraits;
 
 /// The drop height of a run that gives none [m]: the paper's 20 mm.
 inline constexpr double default_height_m = 0.02;
@@ -34,7 +43,7 @@ struct RunOptions {
   std::optional<double> rod_E_Pa, rod_nu;        ///< rod modulus [Pa] (inf: rigid), Poisson ratio
   std::optional<double> gravity_mps2;            ///< g [m/s^2]
   bool no_tension = false;                       ///< clamp the contact force at >= 0
-  std::string zeta = "paper";                    ///< paper (eq. 6) or exact
+  std::optional<std::string> zeta;               ///< the paper's law's zeta form: paper (eq. 6, unset) or exact
   std::optional<std::string> omega_n;            ///< the paper's law's omega_n variant (unset: paper)
   std::string damping{default_damping_law};      ///< a registered law
   std::optional<double> viscous_time_constant_s; ///< A [s] of a viscoelastic law (kuwabara-kono)
@@ -56,21 +65,59 @@ struct RunOptions {
   std::optional<double> rtol, atol;          ///< adaptive integrators
   std::optional<std::string> cvode_method;   ///< cvode, cvode-regularized
   std::optional<double> max_step_s;          ///< adaptive integrators in physical variables [s]
+  /// The numbers given for inputs a law declares and reads through DampingSettings::number()
+  /// (a law's own inputs, model/damping/damping_law.hpp), by key.
+  std::map<std::string, double, std::less<>> law_numbers;
 };
 
-/// One option: its name (the command line's --name; Python's keyword, '-' read as '_'),
-/// the field it sets, its help text (units in brackets), and the SI unit a column of its values
-/// carries in its name (empty for a dimensionless or text option).
-struct RunOption {
-  using Field = std::variant<double RunOptions::*, std::optional<double> RunOptions::*, std::string RunOptions::*,
-                             std::optional<std::string> RunOptions::*, bool RunOptions::*>;
-  enum class Group { setup, solver };
-  std::string name;
-  Field field;
-  std::string help;
-  Group group;
-  std::string unit = {};
+/// Who reads an option, besides every command that takes it: all runs, or only some laws, only
+/// the elastic rod, only some integrators. An option given where nothing reads it is refused.
+struct OptionReaders {
+  std::vector<std::string> laws{};                        ///< non-empty: only these laws
+  bool elastic_rod = false;                               ///< only --rod-model elastic
+  bool (*integrators)(const IntegratorTraits&) = nullptr; ///< non-null: only the integrators it accepts
+  /// What reads it, as a refusal says it: "`damping` hongo", "`rod-model` elastic",
+  /// "`integrator` euler, rk4"; empty for an option every run reads.
+  std::string describe() const;
 };
+
+/// A law's own number, kept in RunOptions::law_numbers under its key.
+struct LawNumber {};
+
+/// One option: its declaration (key, unit, range, default and its source, help), where a run
+/// keeps it, and who reads it. `name` is the key: the command line's --name, Python's keyword
+/// ('-' read as '_'), a case file's key.
+struct RunOption {
+  using Field = std::variant<std::optional<double> RunOptions::*, std::string RunOptions::*,
+                             std::optional<std::string> RunOptions::*, bool RunOptions::*, LawNumber>;
+  enum class Group { setup, solver };
+  ParameterDecl decl;
+  std::string name;  ///< decl.key
+  Field field;
+  std::string help;  ///< decl.help with its valid values and default (generated)
+  Group group;
+  std::string unit;  ///< the unit in a column name (decl.column_unit)
+  OptionReaders readers = {};
+  /// A fittable option's value in a resolved set-up (its default where the user gave none),
+  /// the fit's starting value; empty when the set-up has none (an elastic-rod input of a rigid run).
+  std::function<std::optional<double>(const DropTestSetup&)> value_in_setup = {};
+};
+
+/// The help a user reads of declaration `d`: its sentence, valid values, default and the
+/// default's source, other inputs written in `spelling`.
+std::string help_text(const ParameterDecl& d, KeySpelling spelling);
+
+/// Setting and reading an option, whatever its type (the one setter every front end uses).
+/// A number for a text option (or the reverse) is a logic error: callers switch on decl.type.
+void set_number(RunOptions& options, const RunOption& o, double value);
+void set_text(RunOptions& options, const RunOption& o, const std::string& value);
+void set_flag(RunOptions& options, const RunOption& o, bool value);
+/// Unset: the option's default (Python's None).
+void clear_option(RunOptions& options, const RunOption& o);
+/// Whether the user gave it (a flag: whether it is on; a text with a default: whether it differs).
+bool is_given(const RunOptions& options, const RunOption& o);
+/// The value given, as text, for messages.
+std::string given_text(const RunOptions& options, const RunOption& o);
 
 /// The name of a column of the option's values: its Python keyword and unit ("height_m",
 /// "ball_E_Pa", "restitution").
@@ -78,6 +125,9 @@ std::string column_name(const RunOption& option);
 
 /// Every option, the set-up's first.
 const std::vector<RunOption>& run_options();
+
+/// The options `fit --fit` may estimate, in table order.
+std::vector<const RunOption*> fittable_options();
 
 /// The option called `name` (command-line or Python spelling), or nullptr.
 const RunOption* find_run_option(std::string_view name);
@@ -88,6 +138,12 @@ std::vector<std::string> split_option_list(const std::string& list);
 
 /// "ball-E" -> "ball_E": the Python keyword of an option.
 std::string python_keyword(std::string_view option_name);
+
+/// Checks every option given: first each value against its declaration (its range, or its
+/// choices), then that something in this run reads it (its law, rig or integrator), refusing one
+/// that nothing reads with InvalidParameter{key, value, "given only with <readers>; <what the run
+/// has>"}. resolve_setup() and resolve_solver() begin with it.
+void check_given_options(const RunOptions& o);
 
 /// The paper's set-up for the chosen rod with the given overrides; validated (throws
 /// InvalidParameter naming the option and its valid range, an unknown law included).

@@ -122,11 +122,30 @@ nlohmann::ordered_json to_json(const SimulateRun& run, const std::string& trace_
 RestitutionRun run_restitution(const RunOptions& options, const PaperParameters& paper, std::optional<double> e_target) {
   RestitutionRun r;
   r.law = options.damping;
-  r.setup = contact_phase_setup(resolve_setup(options, paper));
+  const DropTestSetup drop = resolve_setup(options, paper);
+  // The contact phase alone: the rigid rod against a rigid wall unless the wall's moduli are
+  // given, no gravity in contact (gravity only turns `height` into the approach speed).
+  if (options.rod_model != "rigid")
+    throw InvalidParameter("rod-model", options.rod_model,
+                           "rigid for hertzdash restitution, the contact phase alone (the elastic rod on its load cell runs "
+                           "in hertzdash simulate and bounce)");
+  if (options.rod_nu && !options.rod_E_Pa)
+    throw InvalidParameter("rod-nu", format_value(*options.rod_nu),
+                           "given only with `rod-E` for hertzdash restitution (against its default rigid wall the wall's "
+                           "Poisson ratio does not enter)");
+  if (options.gravity_mps2 && options.impact_velocity_mps)
+    throw InvalidParameter("gravity", format_value(*options.gravity_mps2),
+                           "omitted with `impact-velocity` for hertzdash restitution (the contact phase has no gravity; "
+                           "gravity only turns `height` into the approach speed)");
+  r.setup = contact_phase_setup(drop);
+  if (options.rod_E_Pa) {  // the wall the user gave, not the rigid one
+    r.setup.rod.E_Pa = *options.rod_E_Pa;
+    validate(r.setup);
+  }
   if (is_iterated(r.setup.damping.omega_n)) {
-    throw InvalidParameter("--omega-n", to_string(r.setup.damping.omega_n),
-                           "a closed-form variant for `restitution`: paper, impact-energy, rebound-energy or "
-                           "as-printed (the iterated variants need `simulate`)");
+    throw InvalidParameter("omega-n", to_string(r.setup.damping.omega_n),
+                           "a closed-form variant for hertzdash restitution: paper, impact-energy, rebound-energy or "
+                           "as-printed (the iterated variants need hertzdash simulate)");
   }
   r.solver = resolve_solver(options);
   ImpactSimulator simulator(r.solver);

@@ -61,7 +61,7 @@ inline void validate_fixed_step(const DropTestSetup& setup, const SolverSettings
   const double t_hertz = undamped_hertz_impact(hertz_stiffness(setup), setup.mass_kg, v0).contact_time_s;
   const double dt_max = t_hertz / static_cast<double>(min_steps_per_hertz_contact);
   if (!(solver.dt_s <= dt_max))
-    throw InvalidParameter("--dt", format_value(solver.dt_s),
+    throw InvalidParameter("dt", format_value(solver.dt_s),
                            fmt::format("> 0 and at most {:.4g} s for this impact: t_H / {}, t_H = {:.4g} s its undamped "
                                        "Hertz contact time at {:.4g} m/s (coarser steps do not resolve the contact; "
                                        "the convergence study needs {} steps per t_H with {} for errors below {:g} %)",

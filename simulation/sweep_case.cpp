@@ -94,14 +94,12 @@ class CaseReader {
 
   // One value of an option, typed as the option is.
   SweepValue value(const RunOption& o, const std::string& key, const toml::node& node) const {
-    return std::visit(
-        [&]<class T>(T RunOptions::*) -> SweepValue {
-          if constexpr (std::is_same_v<T, bool>) return boolean(key, node);
-          else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>)
-            return text(key, node);
-          else return number(key, node);
-        },
-        o.field);
+    switch (o.decl.type) {
+      case ParameterType::flag: return boolean(key, node);
+      case ParameterType::text: return text(key, node);
+      case ParameterType::number: return number(key, node);
+    }
+    return {};
   }
 
   // Keys of a table in the file's order (toml++ keeps them sorted by name).
@@ -131,8 +129,7 @@ class CaseReader {
       return values;
     }
     const auto* range = node.as_table();
-    const bool numeric = std::holds_alternative<double RunOptions::*>(o.field) ||
-                         std::holds_alternative<std::optional<double> RunOptions::*>(o.field);
+    const bool numeric = o.decl.type == ParameterType::number;
     if (!range || !numeric)
       fail(key, node, describe(node),
            numeric ? "a list of values or a range { from, to, count, spacing = \"linear\" | \"log\" }" : "a list of values");
@@ -196,20 +193,14 @@ class CaseReader {
 };
 
 void set_option(RunOptions& options, const RunOption& o, const SweepValue& v) {
-  std::visit(
-      [&]<class T>(T RunOptions::*field) {
-        if constexpr (std::is_same_v<T, bool>) options.*field = std::get<bool>(v);
-        else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>)
-          options.*field = std::get<std::string>(v);
-        else options.*field = std::get<double>(v);
-      },
-      o.field);
+  switch (o.decl.type) {
+    case ParameterType::flag: set_flag(options, o, std::get<bool>(v)); break;
+    case ParameterType::text: set_text(options, o, std::get<std::string>(v)); break;
+    case ParameterType::number: set_number(options, o, std::get<double>(v)); break;
+  }
 }
 
-bool is_numeric(const RunOption& o) {
-  return std::holds_alternative<double RunOptions::*>(o.field) ||
-         std::holds_alternative<std::optional<double> RunOptions::*>(o.field);
-}
+bool is_numeric(const RunOption& o) { return o.decl.type == ParameterType::number; }
 
 }  // namespace
 

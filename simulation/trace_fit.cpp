@@ -28,52 +28,15 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-// ---- Which options may be fitted, their ranges, and their values when the user left them unset.
+// ---- Which options may be fitted: those declared fittable (simulation/run_options.hpp), within
+// their declared ranges, starting from their values in the resolved set-up.
 
-struct Fittable {
-  const char* name;
-  double lower, upper;
-  std::optional<double> (*initial)(const DropTestSetup&);
-};
-
-const std::vector<Fittable>& fittables() {
-  using S = const DropTestSetup&;
-  using V = std::optional<double>;
-  static const std::vector<Fittable> table{
-      {"height", 0, inf, +[](S s) -> V { return s.height_m; }},
-      {"impact-velocity", 0, inf, +[](S s) -> V { return approach_speed(s); }},
-      {"mass", 0, inf, +[](S s) -> V { return s.mass_kg; }},
-      {"restitution", 0, 1, +[](S s) -> V { return s.restitution; }},
-      {"ball-E", 0, inf, +[](S s) -> V { return s.ball.E_Pa; }},
-      {"ball-nu", -1, 0.5, +[](S s) -> V { return s.ball.nu; }},
-      {"ball-radius", 0, inf, +[](S s) -> V { return s.ball_radius_m; }},
-      {"rod-E", 0, inf, +[](S s) -> V { return s.rod.E_Pa; }},
-      {"rod-nu", -1, 0.5, +[](S s) -> V { return s.rod.nu; }},
-      {"gravity", 0, inf, +[](S s) -> V { return s.gravity_mps2; }},
-      {"viscous-time-constant", 0, inf, +[](S s) -> V { return s.damping.viscous_time_constant_s; }},
-      {"rod-damping-ratio", 0, 1, +[](S s) -> V { return s.elastic_rod ? V(s.elastic_rod->rod_damping_ratio) : V(); }},
-      {"cell-stiffness", 0, inf, +[](S s) -> V { return s.elastic_rod ? V(s.elastic_rod->cell_stiffness_N_per_m) : V(); }},
-      {"cell-damping-ratio", 0, 1, +[](S s) -> V { return s.elastic_rod ? V(s.elastic_rod->cell_damping_ratio) : V(); }},
-      {"hemisphere-mass", 0, inf, +[](S s) -> V { return s.elastic_rod ? V(s.elastic_rod->hemisphere_mass_kg) : V(); }},
-  };
-  return table;
-}
-
-const Fittable* find_fittable(const std::string& name) {
+const RunOption* find_fittable(const std::string& name) {
   const RunOption* o = find_run_option(name);
-  if (!o) return nullptr;
-  for (const Fittable& f : fittables())
-    if (o->name == f.name) return &f;
-  return nullptr;
+  return o && o->decl.fittable ? o : nullptr;
 }
 
-void set_option(RunOptions& o, const std::string& name, double value) {
-  std::visit(
-      [&]<class T>(T RunOptions::*field) {
-        if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) o.*field = value;
-      },
-      find_run_option(name)->field);
-}
+void set_option(RunOptions& o, const std::string& name, double value) { set_number(o, *find_run_option(name), value); }
 
 // ---- Unbounded fitting variables.
 
@@ -257,14 +220,15 @@ std::vector<double> initial_values(const RunOptions& base, const PaperParameters
   const DropTestSetup s = resolve_setup(base, paper);
   std::vector<double> v;
   for (const FitParameter& p : parameters) {
-    const std::optional<double> x = find_fittable(p.option)->initial(s);
+    const std::optional<double> x = find_fittable(p.option)->value_in_setup(s);
     if (!x)
-      throw InvalidParameter("--fit", p.option,
-                             fmt::format("given a starting value: --{} is unset and has no default for this run", p.option));
+      throw InvalidParameter("fit", p.option,
+                             fmt::format("given a starting value: {} is unset and has no default for this run",
+                                         key_reference(p.option)));
     if (!(*x > p.lower && *x < p.upper))
-      throw InvalidParameter("--fit", fmt::format("{}:{}:{}", p.option, format_value(p.lower), format_value(p.upper)),
-                             fmt::format("bounds around the starting value --{} {} (set it inside them)", p.option,
-                                         format_value(*x)));
+      throw InvalidParameter("fit", fmt::format("{}:{}:{}", p.option, format_value(p.lower), format_value(p.upper)),
+                             fmt::format("bounds around the starting value {} {} (set it inside them)",
+                                         key_reference(p.option), format_value(*x)));
     v.push_back(*x);
   }
   return v;
@@ -433,10 +397,10 @@ PreparedTrace prepare_trace(const MeasuredTrace& trace, const TraceFitSettings& 
   const std::string file = trace.path.string();
   MeasuredTrace t = trace;
   if (settings.resample_Hz != 0) {
-    require_positive("--resample", settings.resample_Hz, "Hz");
+    require_positive("resample", settings.resample_Hz, "Hz");
     const double rate = 1.0 / median_interval_s(trace.t_s);
     if (!(settings.resample_Hz < rate))
-      throw InvalidParameter("--resample", format_value(settings.resample_Hz),
+      throw InvalidParameter("resample", format_value(settings.resample_Hz),
                              fmt::format("below the trace's sampling rate, {:.6g} Hz", rate));
     t = resampled(trace, settings.resample_Hz);
   }
@@ -491,7 +455,7 @@ const FittedParameter& TraceFit::parameter(const std::string& name) const {
 
 std::string fittable_option_names() {
   std::string s;
-  for (const Fittable& f : fittables()) s += (s.empty() ? "" : ", ") + std::string(f.name);
+  for (const RunOption* o : fittable_options()) s += (s.empty() ? "" : ", ") + o->name;
   return s;
 }
 
@@ -499,29 +463,30 @@ std::vector<FitParameter> parse_fit_parameters(const std::string& list) {
   std::vector<FitParameter> out;
   for (const std::string& item : split_option_list(list)) {
     const std::size_t colon = item.find(':');
-    const Fittable* f = find_fittable(item.substr(0, colon));
+    const RunOption* f = find_fittable(item.substr(0, colon));
     if (!f)
-      throw InvalidParameter("--fit", list,
+      throw InvalidParameter("fit", list,
                              "a comma-separated list of NAME or NAME:LOWER:UPPER with NAME one of: " + fittable_option_names());
-    FitParameter p{f->name, f->lower, f->upper};
+    const double lower = f->decl.range.lo, upper = f->decl.range.hi;
+    FitParameter p{f->name, lower, upper};
     if (colon != std::string::npos) {
       const std::string bounds = item.substr(colon + 1);
       const std::size_t mid = bounds.find(':');
       auto number = [&](const std::string& text) {
         const std::optional<double> v = parse_option_number(text);
-        if (!v) throw InvalidParameter("--fit", item, "NAME:LOWER:UPPER with two decimal numbers, LOWER < UPPER");
+        if (!v) throw InvalidParameter("fit", item, "NAME:LOWER:UPPER with two decimal numbers, LOWER < UPPER");
         return *v;
       };
-      if (mid == std::string::npos) throw InvalidParameter("--fit", item, "NAME:LOWER:UPPER with two numbers, LOWER < UPPER");
+      if (mid == std::string::npos) throw InvalidParameter("fit", item, "NAME:LOWER:UPPER with two numbers, LOWER < UPPER");
       p.lower = number(bounds.substr(0, mid));
       p.upper = number(bounds.substr(mid + 1));
-      if (!(p.lower < p.upper) || !std::isfinite(p.lower) || p.lower < f->lower || p.upper > f->upper)
-        throw InvalidParameter("--fit", item,
-                               fmt::format("NAME:LOWER:UPPER with LOWER < UPPER, LOWER finite, within --{}'s range [{}, {}]",
-                                           f->name, format_value(f->lower), format_value(f->upper)));
+      if (!(p.lower < p.upper) || !std::isfinite(p.lower) || p.lower < lower || p.upper > upper)
+        throw InvalidParameter("fit", item,
+                               fmt::format("NAME:LOWER:UPPER with LOWER < UPPER, LOWER finite, within {}'s range [{}, {}]",
+                                           key_reference(f->name), format_value(lower), format_value(upper)));
     }
     for (const FitParameter& q : out)
-      if (q.option == p.option) throw InvalidParameter("--fit", list, "a list naming each parameter once");
+      if (q.option == p.option) throw InvalidParameter("fit", list, "a list naming each parameter once");
     out.push_back(p);
   }
   return out;
@@ -540,7 +505,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   const std::vector<double> initial = initial_values(base, paper, settings.parameters);
   TraceModel model(base, paper, names, settings.steps_per_contact);
   const ImpactHistory* at_start = model.history(initial);
-  if (!at_start) throw InvalidParameter("--fit", "the starting values", "values inside the model's domain");
+  if (!at_start) throw InvalidParameter("fit", "the starting values", "values inside the model's domain");
   const double g = resolve_setup(base, paper).gravity_mps2;
   PreparedTrace prepared = prepare_trace(trace_in, settings, model.contact_time_s(), g);
   const MeasuredTrace& trace = prepared.trace;

@@ -61,7 +61,7 @@ struct FitParameter {
 
 /// The parameters of a --fit list, "ball-E,restitution" or "ball-E:1e9:3e9,restitution"; each
 /// without bounds gets the option's range (restitution (0, 1), Poisson ratios (-1, 0.5), damping
-/// ratios (0, 1), others (0, inf)). Throws InvalidParameter("--fit", ...).
+/// ratios (0, 1), others (0, inf)). Throws InvalidParameter("fit", ...).
 std::vector<FitParameter> parse_fit_parameters(const std::string& list);
 
 /// The options that may be fitted, comma-separated (for help and messages).

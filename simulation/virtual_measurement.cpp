@@ -57,14 +57,14 @@ std::vector<std::string> parse_channels(const std::string& list, const char* opt
 }
 
 void validate(const MeasurementChain& c) {
-  require_positive("--sample-rate", c.sample_rate_Hz, "Hz");
+  require_positive("sample-rate", c.sample_rate_Hz, "Hz");
   if (c.anti_alias_cutoff_Hz != 0 && !(c.anti_alias_cutoff_Hz > 0 && c.anti_alias_cutoff_Hz <= c.sample_rate_Hz / 2))
-    throw InvalidParameter("--anti-alias", format_value(c.anti_alias_cutoff_Hz),
+    throw InvalidParameter("anti-alias", format_value(c.anti_alias_cutoff_Hz),
                            fmt::format("0 (no filter) or a cut-off in (0, {}] Hz, half the sampling rate", c.sample_rate_Hz / 2));
   if (!(c.noise_fraction >= 0 && c.noise_fraction <= 1))
-    throw InvalidParameter("--noise", format_value(c.noise_fraction),
+    throw InvalidParameter("noise", format_value(c.noise_fraction),
                            "in [0, 1], a fraction of each channel's largest magnitude");
-  if (c.channels.empty()) throw InvalidParameter("--channels", "", "at least one channel");
+  if (c.channels.empty()) throw InvalidParameter("channels", "", "at least one channel");
   require_positive("window margin", c.window_margin, "contact times");
 }
 
@@ -74,7 +74,7 @@ MeasuredTrace record_virtual_measurement(const ImpactHistory& history, const Mea
   const double t_first = -chain.window_margin * tc, t_last = (1.0 + chain.window_margin) * tc;
   const double count = std::floor((t_last - t_first) / dt) + 1;
   if (!(count <= max_virtual_samples))
-    throw InvalidParameter("--sample-rate", format_value(chain.sample_rate_Hz),
+    throw InvalidParameter("sample-rate", format_value(chain.sample_rate_Hz),
                            fmt::format("at most {:.4g} Hz: {:g} samples over this contact's window of {:.4g} s",
                                        max_virtual_samples / (t_last - t_first), max_virtual_samples, t_last - t_first));
   const auto samples = static_cast<std::size_t>(count);

@@ -24,13 +24,13 @@ DropTestSetup viscous_calibration_setup(const DropTestSetup& s) {
 
 double solve_viscous_time_constant_s(const std::function<double(double)>& e_of_A, double e_target,
                                      double time_scale_s) {
-  require_in_open_closed("--restitution", e_target, 0.0, 1.0);
+  require_in_open_closed("restitution", e_target, 0.0, 1.0);
   if (e_target == 1.0) return 0.0;
   auto residual = [&](double A) { return e_of_A(A) - e_target; };
   double lo = 0.0, hi = time_scale_s;
   for (int doublings = 0; residual(hi) > 0; ++doublings) {
     if (doublings == 60)
-      throw InvalidParameter("--restitution", format_value(e_target),
+      throw InvalidParameter("restitution", format_value(e_target),
                              fmt::format("reachable by the viscoelastic law at its reference speed (e_effective is "
                                          "still {:.6g} at A = {:.3g} s)",
                                          e_of_A(hi), hi));

@@ -26,7 +26,7 @@ double reference_velocity_mps(const DropTestSetup& s);
 DropTestSetup viscous_calibration_setup(const DropTestSetup& s);
 
 /// Solve e_of_A(A) = e_target for A >= 0, e_of_A decreasing from 1 at A = 0; `time_scale_s`
-/// starts the bracket. e_target = 1 gives 0. Throws InvalidParameter("--restitution", ...)
+/// starts the bracket. e_target = 1 gives 0. Throws InvalidParameter("restitution", ...)
 /// when no A reaches the target (e_of_A stays above it for A up to 2^60 time scales).
 double solve_viscous_time_constant_s(const std::function<double(double)>& e_of_A, double e_target,
                                      double time_scale_s);

@@ -69,9 +69,11 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
       {"--zeta approx", "--zeta", "paper, exact"},
       {"--cvode-method rk", "--cvode-method", "adams, bdf"},
       {"--rod-model flexible", "--rod-model", "rigid, elastic"},
-      {"--rod-elements 10", "--rod-model", "elastic when --rod-elements is given"},
-      {"--cell-stiffness 1e9", "--rod-model", "elastic when --cell-stiffness is given"},
-      {"--accelerometer top", "--rod-model", "elastic when --accelerometer is given"},
+      {"--rod-elements 10", "--rod-elements", "given only with --rod-model elastic"},
+      {"--cell-stiffness 1e9", "--cell-stiffness", "given only with --rod-model elastic"},
+      {"--accelerometer top", "--accelerometer", "given only with --rod-model elastic"},
+      {"--damping flores --zeta exact", "--zeta", "given only with --damping hongo"},
+      {"--linear-stiffness 1e6", "--linear-stiffness", "given only with --damping kelvin-voigt"},
       {"--rod-model elastic --rod-elements 0", "--rod-elements", "an integer in [1, 400]"},
       {"--rod-model elastic --rod-elements 2.5", "--rod-elements", "an integer in [1, 400]"},
       {"--rod-model elastic --rod-elements 401", "--rod-elements", "an integer in [1, 400]"},
@@ -83,8 +85,8 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
       {"--rod-model elastic --accelerometer middle", "--accelerometer", "top, bottom"},
       {"--rod-model elastic --rod-E inf", "--rod-E", "a finite modulus"},
       {"--rod-model elastic --integrator euler", "--integrator", "resolves this elastic rod's run in at most"},
-      {"--viscous-time-constant 1e-4", "--viscous-time-constant", "only with a viscoelastic law (kuwabara-kono)"},
-      {"--reference-velocity 0.5", "--reference-velocity", "only with a viscoelastic law (kuwabara-kono)"},
+      {"--viscous-time-constant 1e-4", "--viscous-time-constant", "given only with --damping kuwabara-kono"},
+      {"--reference-velocity 0.5", "--reference-velocity", "given only with --damping kuwabara-kono"},
       {"--damping kuwabara-kono --viscous-time-constant -1e-4", "--viscous-time-constant", ">= 0"},
       {"--damping kuwabara-kono --viscous-time-constant nan", "--viscous-time-constant", ">= 0"},
       {"--damping kuwabara-kono --reference-velocity 0", "--reference-velocity", "> 0"},
@@ -163,7 +165,7 @@ TEST_CASE("CLI restitution: an iterated --omega-n exits 2 naming the option and 
 
 TEST_CASE("CLI: an unknown or missing subcommand exits 2 and lists the subcommands", "[cli]") {
   // Issue 19: `hertzdash frobnicate` said "A subcommand is required".
-  const std::string listed = "simulate, models, restitution, bounce, fit, sweep (hertzdash --help)";
+  const std::string listed = "simulate, models, parameters, restitution, bounce, fit, sweep (hertzdash --help)";
   const auto unknown = run_cli("frobnicate --mass 1");
   CHECK(unknown.exit_code == 2);
   CHECK(unknown.err == "hertzdash: unknown subcommand 'frobnicate': the subcommands are " + listed + "\n");

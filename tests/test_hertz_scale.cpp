@@ -28,12 +28,13 @@ TEST_CASE("The speed at which the undamped Hertz deformation reaches the ball ra
   s.impact_velocity_mps = 0.999 * v_star;
   CHECK_NOTHROW(validate(s));
   s.impact_velocity_mps = 1.001 * v_star;
-  CHECK_THROWS_WITH(validate(s), Catch::StartsWith("invalid --impact-velocity = ") && Catch::Contains("m/s") &&
+  CHECK_THROWS_WITH(validate(s), Catch::StartsWith("invalid impact-velocity = ") && Catch::Contains("m/s") &&
                                      Catch::Contains("small-deformation Hertz contact"));
-  // The same bound as a drop height: h* = v*^2 / (2 g), blamed on --height.
+  // The same bound as a drop height: h* = v*^2 / (2 g), blamed on the height (what() spells
+  // keys as a case file does; the command line writes --height).
   s.impact_velocity_mps.reset();
   s.height_m = 1.001 * v_star * v_star / (2 * s.gravity_mps2);
-  CHECK_THROWS_WITH(validate(s), Catch::StartsWith("invalid --height = "));
+  CHECK_THROWS_WITH(validate(s), Catch::StartsWith("invalid height = "));
   s.height_m = 0.999 * v_star * v_star / (2 * s.gravity_mps2);
   CHECK_NOTHROW(validate(s));
 }
@@ -66,7 +67,7 @@ TEST_CASE("Issue #19's extreme-scale reproducers exit 2 naming the option the us
       {"--ball-E 1e-3", "invalid --ball-E = 0.001"},
       {"--impact-velocity 100", "invalid --impact-velocity = 100: must be below 81.3"},
       {"--gravity 0 --impact-velocity 1e-20 --rtol 1e-11 --atol 1e-15", "invalid --impact-velocity = 1e-20"},
-      {"--integrator cvode-regularized --damping zhiying-qishao --zeta exact --impact-velocity 3.99 --mass 0.086 --rod-E 1e-20",
+      {"--integrator cvode-regularized --damping zhiying-qishao --impact-velocity 3.99 --mass 0.086 --rod-E 1e-20",
        "invalid --impact-velocity = 3.99: must be below 5.284e-13 m/s"},
   };
   for (const auto& [args, expected] : cases) {
@@ -78,7 +79,7 @@ TEST_CASE("Issue #19's extreme-scale reproducers exit 2 naming the option the us
   // A fall of 1e-20 m under g = 3.18 m/s^2 is within scale (X = 6e-12 m) but this law ends the
   // contact at ~0 force and the rod settles on the ball; CVODE's million-step bound ends the run
   // in seconds (it ran for more than 40 s) with a clear error and exit 1.
-  const auto slow = run_cli("simulate --integrator cvode-regularized --damping gharib-hurmuzlu --no-tension --zeta exact "
+  const auto slow = run_cli("simulate --integrator cvode-regularized --damping gharib-hurmuzlu --no-tension "
                             "--height 1e-20 --gravity 3.18");
   CHECK(slow.exit_code == 1);
   CHECK_THAT(slow.err, Catch::Contains("did not finish: CVODE took 1000000 steps"));

@@ -195,7 +195,7 @@ TEST_CASE("A failing run records its error in its row, the others run", "[sweep]
   const SweepCase c = parse_sweep_case("[grid]\nrestitution = [0.8, 1.5, 0.6]\n", "fail.toml");
   const SweepResults r = run_sweep(c, all_runs(c), load_paper_parameters(), {.threads = 2, .progress = false});
   CHECK(r.errors[0].empty());
-  CHECK(r.errors[1] == "invalid --restitution = 1.5: must be in (0, 1]");
+  CHECK(r.errors[1] == "invalid restitution = 1.5: must be in (0, 1]");
   CHECK(r.errors[2].empty());
   CHECK(std::isnan(r.values[1 * r.outputs]));
   // A dissipative impact: 0 < e_effective < 1, and more damping (a lower input e) loses more.
@@ -204,7 +204,7 @@ TEST_CASE("A failing run records its error in its row, the others run", "[sweep]
   CHECK(r.values[0] < 1);
   const std::string table = sweep_table(c, r, "timing: test");
   // Three empty outputs, an empty warnings cell (a failed run carries no codes), the error.
-  CHECK_THAT(table, Catch::Contains("\n1,1.5,,,,,\"invalid --restitution = 1.5: must be in (0, 1]\"\n"));
+  CHECK_THAT(table, Catch::Contains("\n1,1.5,,,,,\"invalid restitution = 1.5: must be in (0, 1]\"\n"));
 }
 
 TEST_CASE("The summary's statistics are the sample's (quantiles of type 7)", "[sweep]") {

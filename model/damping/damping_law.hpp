@@ -16,11 +16,14 @@
 // The drop test, the CLI, the restitution maps and the standard tests all take
 // every registered law from the registry; see model/README.md.
 #include "hertzdash/model/omega_n_variant.hpp"
+#include "hertzdash/model/parameter.hpp"
 #include "hertzdash/model/restitution.hpp"
 
 #include <concepts>
 #include <optional>
+#include <span>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace hertzdash {
@@ -45,6 +48,17 @@ struct DampingSettings {
   /// Approach speed [m/s] at which that calibration holds, > 0; 0 means the set-up's own
   /// approach speed (of its first impact).
   double reference_velocity_mps = 0;
+  /// The numbers a user gave for the inputs a law declares in its own `parameters` list and
+  /// reads through number() (a law's own inputs need no field here): {key, value}, set by
+  /// simulation/run_options.cpp, validated there against the declaration's range.
+  std::vector<std::pair<std::string_view, double>> law_values;
+
+  /// The value given for the law's input `p`, else its declared default.
+  double number(const ParameterDecl& p) const {
+    for (const auto& [key, value] : law_values)
+      if (key == p.key) return value;
+    return p.default_number;
+  }
 };
 
 /// Descriptive data of a law, shown by `hertzdash models`.
@@ -61,6 +75,21 @@ struct NamedValue {
   const char* name;
   double value;
 };
+
+/// Optional for a law: the inputs it reads besides (e, v0, K, m), declared once in its header as
+///   static constexpr ParameterDecl parameters[] = {{.key = "...", ...}};
+/// Each becomes an option of every front end (--key, a Python keyword, a case key, a `fit`
+/// parameter when fittable), refused with every other law. A number the law reads through
+/// DampingSettings::number(decl); the paper's law's zeta and omega-n and kuwabara-kono's time
+/// constant are declared here too but, being read outside the law as well, keep fields above.
+template <class L>
+concept LawWithParameters = requires { std::span<const ParameterDecl>(L::parameters); };
+
+/// The inputs law L declares (none for most laws).
+template <class L> ParameterDecls law_parameters() {
+  if constexpr (LawWithParameters<L>) return ParameterDecls(L::parameters);
+  else return {};
+}
 
 template <class L>
 concept DampingLaw = requires(const L& law, const ImpactConditions& c, const DampingSettings& s, double x) {

@@ -11,7 +11,7 @@ std::string registered_law_names() {
 }
 
 void throw_unknown_law(std::string_view name) {
-  throw InvalidParameter("--damping", std::string(name), "one of: " + registered_law_names());
+  throw InvalidParameter("damping", std::string(name), "one of: " + registered_law_names());
 }
 
 }  // namespace hertzdash

@@ -49,7 +49,7 @@ std::string registered_law_names();
 
 /// Call f(std::type_identity<Law>{}) with the registered law named `name`, so the
 /// caller can instantiate its code for that law (the force then inlines).
-/// Throws InvalidParameter("--damping", ...) for an unknown name.
+/// Throws InvalidParameter("damping", ...) for an unknown name.
 void throw_unknown_law(std::string_view name);
 template <class F> void with_damping_law(std::string_view name, F&& f) {
   if (!detail::dispatch_law(RegisteredLaws{}, name, f)) throw_unknown_law(name);

@@ -68,6 +68,23 @@ class HongoPaper {
       "zeta = ln(1/e)/pi (eq. 6); omega_n = sqrt((4K/5m) (5 m v0^2 (1+e^2)/(8K))^{1/5}) (eq. 11)",
       "paper: elastic bodies whose e does not depend on impact speed",
       true};
+  /// The law's two modelling choices (fields of DampingSettings: the omega_n fixed point of
+  /// simulation/ reads them too).
+  static constexpr ParameterDecl parameters[] = {
+      {.key = "zeta",
+       .type = ParameterType::text,
+       .choices = "paper, exact",
+       .default_value = "paper",
+       .default_source = "the paper's eq. (6)",
+       .help = "Damping ratio from e: paper (eq. 6, ln(1/e)/pi) or exact (the linear oscillator's half cycle)"},
+      {.key = "omega-n",
+       .type = ParameterType::text,
+       .choices = "paper, impact-energy, rebound-energy, self-consistent, contact-time, as-printed",
+       .default_value = "paper",
+       .default_source = "the paper's eq. (11)",
+       .help = "Natural frequency assumption: paper (eq. 11), impact-energy, rebound-energy, self-consistent, "
+               "contact-time (both iterated to a fixed point), as-printed (the eq. 9 erratum)"},
+  };
 
   HongoPaper(const ImpactConditions& c, const DampingSettings& s)
       : K_(c.K),

@@ -10,7 +10,8 @@ namespace hertzdash {
 /// F = k x + c xdot                                             (total contact force)
 ///   k = m v0^2 / X^2,  X = (5 m v0^2 / (4K))^{2/5}  [N/m]: the linear spring whose
 ///       undamped maximum deformation at this approach speed equals the Hertz
-///       contact's (energy balance (1/2) m v0^2 = (1/2) k X^2 = (2/5) K X^{5/2});
+///       contact's (energy balance (1/2) m v0^2 = (1/2) k X^2 = (2/5) K X^{5/2}),
+///       unless k is given (--linear-stiffness);
 ///   c = 2 zeta sqrt(k m),  zeta = ln(1/e) / sqrt(pi^2 + ln^2 e)  [N s/m]: the exact
 ///       linear-oscillator relation e = exp(-pi zeta / sqrt(1 - zeta^2)) (always the
 ///       exact form, whatever --zeta says, so that the law returns its input e).
@@ -32,9 +33,20 @@ class KelvinVoigt {
       "c = 2 zeta sqrt(k m), zeta = ln(1/e)/sqrt(pi^2 + ln^2 e) (exact)",
       "linear contact stiffness; reproduces e exactly only with tension allowed",
       false};
+  /// The law's own input: k given instead of matched to the Hertz contact.
+  static constexpr ParameterDecl parameters[] = {
+      {.key = "linear-stiffness",
+       .unit = "N/m",
+       .column_unit = "N_per_m",
+       .range = NumberRange::positive(),
+       .default_value = "matched",
+       .default_source = "computed: k = m v0^2 / X^2, the undamped Hertz contact's maximum deformation X at v0",
+       .help = "Spring constant k [N/m] of the linear contact",
+       .fittable = true},
+  };
 
-  KelvinVoigt(const ImpactConditions& c, const DampingSettings&)
-      : k_(linear_stiffness(c)),
+  KelvinVoigt(const ImpactConditions& c, const DampingSettings& s)
+      : k_(std::isnan(s.number(parameters[0])) ? linear_stiffness(c) : s.number(parameters[0])),
         zeta_(zeta_from_restitution(c.restitution, ZetaForm::exact)),
         c_(2.0 * zeta_ * std::sqrt(k_ * c.mass_kg)) {}
 

@@ -41,6 +41,24 @@ class KuwabaraKono {
       "quasi-static viscoelastic contact: A much shorter than the contact time, speeds far below sound",
       true};
   static constexpr bool material_time_constant = true;
+  /// The law's own inputs (fields of DampingSettings: the simulator's calibration of A reads them).
+  static constexpr ParameterDecl parameters[] = {
+      {.key = "viscous-time-constant",
+       .unit = "s",
+       .column_unit = "s",
+       .range = NumberRange::non_negative(),
+       .default_value = "calibrated",
+       .default_source = "computed: the A whose restitution at `reference-velocity` is the input e",
+       .help = "Material time constant A [s] >= 0: F = K (x^{3/2} + A x^{1/2} xdot); replaces the calibration from e",
+       .fittable = true},
+      {.key = "reference-velocity",
+       .unit = "m/s",
+       .column_unit = "mps",
+       .range = NumberRange::positive(),
+       .default_value = "the approach speed",
+       .default_source = "computed: the approach speed of the run's first impact",
+       .help = "Approach speed [m/s] > 0 at which the law's restitution is the input e (the calibration of A)"},
+  };
 
   KuwabaraKono(const ImpactConditions& c, const DampingSettings& s)
       : K_(c.K), A_(time_constant(s)), beta_(A_ * std::pow(c.K / c.mass_kg, 0.4) * std::pow(c.v0_mps, 0.2)) {}
@@ -57,10 +75,10 @@ class KuwabaraKono {
  private:
   static double time_constant(const DampingSettings& s) {
     if (!s.viscous_time_constant_s)
-      throw InvalidParameter("--viscous-time-constant", "(unset)",
+      throw InvalidParameter("viscous-time-constant", "(unset)",
                              "given, or calibrated by the simulator from e at the reference speed (a kuwabara-kono "
                              "law built outside ImpactSimulator needs DampingSettings::viscous_time_constant_s)");
-    require_non_negative("--viscous-time-constant", *s.viscous_time_constant_s, "s");
+    require_in_range(parameters[0], *s.viscous_time_constant_s);
     return *s.viscous_time_constant_s;
   }
 
