@@ -31,8 +31,10 @@ done
 awk '/tests\/install_consumer.sh/ {found = 1; next} found && /^```cpp$/ {inside = 1; next}
      inside && /^```$/ {exit} inside {print}' "$src/README.md" > "$work/readme_example.cpp"
 [ -s "$work/readme_example.cpp" ] || { echo "FAILED: no C++ example found in README.md" >&2; exit 1; }
+# The package needs no nlohmann_json of its users (cmake/hertzdashConfig.cmake.in): the consumer is
+# configured as if it were not installed.
 "$cmake" -S "$src/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$prefix" -DREADME_EXAMPLE="$work/readme_example.cpp" > /dev/null
+  -DCMAKE_PREFIX_PATH="$prefix" -DREADME_EXAMPLE="$work/readme_example.cpp" -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=TRUE > /dev/null
 "$cmake" --build "$work/consumer" > /dev/null
 "$work/consumer/consumer"
 # The README example prints the values `hertzdash simulate` reports for the same run.
