@@ -29,7 +29,13 @@ build: configure
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# The studies of bench/ are among the figures: a build without the benchmark peers
+# (HERTZDASH_WITH_BENCH, docs/layout.md "Optional parts") cannot make them.
+need_bench = @[ -x $(BUILD)/bench/work_precision_peers ] || { echo "make $@: $(BUILD) was built without the benchmark\
+peers (bench/: Boost.Odeint, HERTZDASH_WITH_BENCH; Debian: libboost-dev), which the figures and the article include" >&2; exit 2; }
+
 figures: build
+	$(need_bench)
 	validation/run_studies.sh $(BUILD) $(FIGURES)
 
 # Convergence: the order tests (verbose, so their tables print), then the study's
@@ -58,6 +64,7 @@ paper: figures
 # \perf macros, and the measured blocks of docs/performance.md and README.md.
 # It first times `make figures` from the built tree (into a scratch directory).
 bench: build
+	$(need_bench)
 	@start=$$(date +%s%N); \
 	validation/run_studies.sh $(BUILD) $(BUILD)/figures-timing > /dev/null; \
 	ms=$$(( ($$(date +%s%N) - start) / 1000000 )); \

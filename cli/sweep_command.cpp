@@ -30,6 +30,16 @@ struct SweepCommandOptions {
   bool quiet = false, mkdir = false;
 };
 
+#ifdef HERTZDASH_WITHOUT_TOML
+// Built without toml++ (HERTZDASH_WITH_TOML, CMakeLists.txt): the options are parsed as usual,
+// and the run says why there is none.
+int run_sweep_command(const SweepCommandOptions&) {
+  std::cerr << "hertzdash sweep: this hertzdash was built without TOML support, so it cannot read case files "
+               "(toml++ was not found when it was configured, or HERTZDASH_WITH_TOML was OFF); install toml++ 3 "
+               "(Debian: libtomlplusplus-dev) and configure and build it again\n";
+  return 2;
+}
+#else
 // Set by SIGINT/SIGTERM while the runs run; a second signal ends the program at once (nothing
 // has been written then: the files are written after the runs).
 std::atomic<bool> interrupted{false};
@@ -151,6 +161,7 @@ int run_sweep_command(const SweepCommandOptions& opt) {
                            first - all.errors.begin(), *first);
   return failed == c.size() ? 1 : 0;
 }
+#endif  // HERTZDASH_WITHOUT_TOML
 
 }  // namespace
 

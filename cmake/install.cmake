@@ -16,9 +16,14 @@ install(TARGETS ${hertzdash_libraries} EXPORT hertzdashTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# Headers of an optional part that was left out (simulation/CMakeLists.txt) are not installed.
+set(hertzdash_headers_not_built)
+foreach(header IN LISTS HERTZDASH_HEADERS_NOT_BUILT)
+  list(APPEND hertzdash_headers_not_built REGEX "/${header}$" EXCLUDE)
+endforeach()
 foreach(layer IN LISTS HERTZDASH_LAYERS)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${layer}/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/hertzdash/${layer}"
-    FILES_MATCHING PATTERN "*.hpp")
+    FILES_MATCHING PATTERN "*.hpp" ${hertzdash_headers_not_built})
 endforeach()
 install(FILES "${HERTZDASH_INCLUDE_DIR}/hertzdash/damping_law_headers.hpp"
   DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/hertzdash")

@@ -3,12 +3,13 @@
 # prefix, build tests/install_consumer/ against it with find_package(hertzdash), run it,
 # run the installed program, and import the installed Python module. Nothing of the build
 # or source tree is on any path the consumer sees.
-# Usage: install_consumer.sh BUILD_DIR SOURCE_DIR PYTHON CMAKE (the interpreter the module is
-# built for, the cmake that built the tree)
+# Usage: install_consumer.sh BUILD_DIR SOURCE_DIR PYTHON CMAKE [with-python-module|without-python-module]
+# (the interpreter the module is built for, the cmake that built the tree; whether the tree has
+# the Python module, HERTZDASH_WITH_PYTHON)
 # Under make sanitize, HERTZDASH_PYTHON_PRELOAD is the sanitizer runtime the Python that imports
 # the instrumented module needs (tests/CMakeLists.txt); no other tool of this script gets it.
 set -euo pipefail
-build=$(realpath "$1"); src=$(realpath "$2"); python=$3; cmake=$4
+build=$(realpath "$1"); src=$(realpath "$2"); python=$3; cmake=$4; module=${5:-with-python-module}
 python_with_module() { LD_PRELOAD="${HERTZDASH_PYTHON_PRELOAD-}" "$python" "$@"; }
 work="$build/install-test"
 rm -rf "$work"
@@ -16,7 +17,9 @@ prefix="$work/prefix"
 "$cmake" --install "$build" --prefix "$prefix" > "$work.log"
 unset HERTZDASH_DATA_DIR PYTHONPATH
 # Installed files find each other relative to themselves, never through the build tree.
-for f in "$prefix"/bin/hertzdash "$prefix"/lib/libhertzdash_*.so "$prefix"/lib/python3/dist-packages/hertzdash.*.so; do
+installed=("$prefix"/bin/hertzdash "$prefix"/lib/libhertzdash_*.so)
+[ "$module" = without-python-module ] || installed+=("$prefix"/lib/python3/dist-packages/hertzdash.*.so)
+for f in "${installed[@]}"; do
   runpath=$(readelf -d "$f" | sed -n 's/.*R\(UN\)\?PATH.*\[\(.*\)\]/\2/p')
   case "$runpath" in
     *"$build"*|*"$src"*) echo "FAILED: $f has run path $runpath into the build or source tree" >&2; exit 1 ;;
@@ -28,8 +31,10 @@ done
 awk '/tests\/install_consumer.sh/ {found = 1; next} found && /^```cpp$/ {inside = 1; next}
      inside && /^```$/ {exit} inside {print}' "$src/README.md" > "$work/readme_example.cpp"
 [ -s "$work/readme_example.cpp" ] || { echo "FAILED: no C++ example found in README.md" >&2; exit 1; }
+# The package needs no nlohmann_json of its users (cmake/hertzdashConfig.cmake.in): the consumer is
+# configured as if it were not installed.
 "$cmake" -S "$src/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$prefix" -DREADME_EXAMPLE="$work/readme_example.cpp" > /dev/null
+  -DCMAKE_PREFIX_PATH="$prefix" -DREADME_EXAMPLE="$work/readme_example.cpp" -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=TRUE > /dev/null
 "$cmake" --build "$work/consumer" > /dev/null
 "$work/consumer/consumer"
 # The README example prints the values `hertzdash simulate` reports for the same run.
@@ -41,8 +46,11 @@ got=$("$work/consumer/readme_example")
 echo "README C++ example: $got"
 "$prefix/bin/hertzdash" --version
 "$prefix/bin/hertzdash" simulate --rod steel --height 0.02 --json > "$work/cli.json"
-pydir=$(find "$prefix" -name 'hertzdash.cpython-*.so' -printf '%h\n')
-PYTHONPATH="$pydir" python_with_module - "$work/cli.json" <<'PY'
+if [ "$module" = without-python-module ]; then
+  echo "installed python module: not built (HERTZDASH_WITH_PYTHON), not checked"
+else
+  pydir=$(find "$prefix" -name 'hertzdash.cpython-*.so' -printf '%h\n')
+  PYTHONPATH="$pydir" python_with_module - "$work/cli.json" <<'PY'
 import json, sys
 import hertzdash
 cli = json.load(open(sys.argv[1]))
@@ -50,6 +58,7 @@ py = hertzdash.simulate(rod="steel", height=0.02)
 assert py["e_effective"] == cli["e_effective"], (py["e_effective"], cli["e_effective"])
 print("installed python module:", hertzdash.__file__, "e_effective", py["e_effective"])
 PY
+fi
 
 # Without the tables beside it the installed program says where it looked and how to
 # point at them; HERTZDASH_DATA_DIR overrides the search.
