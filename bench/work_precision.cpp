@@ -28,6 +28,7 @@
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/simulation/sample_quantile.hpp"
 
 #include <fmt/format.h>
 
@@ -87,12 +88,6 @@ std::string machine_name() {
   return "unknown CPU";
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /// Median wall time per impact [us] of `solver` on `setup`.
 double time_per_impact_us(ImpactSolver& solver, const DropTestSetup& setup, const WorkPrecisionConfig& c) {
   // Calibrate the number of impacts per repeat on one timed impact.
@@ -107,7 +102,7 @@ double time_per_impact_us(ImpactSolver& solver, const DropTestSetup& setup, cons
     per_impact_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count() / static_cast<double>(n));
   }
   if (!std::isfinite(sink)) throw std::runtime_error("benchmark: non-finite restitution");
-  return median(per_impact_us);
+  return sample_quantile(per_impact_us, 0.5);
 }
 
 /// Time [us] at which `solver` reaches error E along its work-precision front
