@@ -168,13 +168,6 @@ double sqrt_singularity_miss(double a) {
   return std::abs((quad - exact) / est);
 }
 
-/// 6.4e-14 as "6.4\times10^{-14}", for math mode.
-std::string latex_scientific(double v) {
-  if (v == 0) return "0";
-  const int exponent = static_cast<int>(std::floor(std::log10(std::abs(v))));
-  return fmt::format("{:.1f}\\times10^{{{}}}", v / std::pow(10.0, exponent), exponent);
-}
-
 std::string macro_name(const std::string& solver) {
   // hertzdash-dopri5 -> HertzdashDopriFive: letters only.
   static const std::map<char, std::string> digits{{'0', "Zero"}, {'1', "One"}, {'2', "Two"}, {'3', "Three"},
