@@ -162,7 +162,8 @@ Linearised linearise(const PaperParameters& paper, const RodData& rod, const Dro
   return lin;
 }
 
-// Text for LaTeX: _ % & # escaped, "+-" as a plus-minus sign, | in math (OT1 text has none).
+// Text for LaTeX: the special characters escaped (latex_escaped), "+-" as a plus-minus sign,
+// | in math (OT1 text has none).
 std::string latex_text(const std::string& s) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -172,8 +173,7 @@ std::string latex_text(const std::string& s) {
     } else if (s[i] == '|') {
       out += "$|$";
     } else {
-      if (std::string_view("_%&#").find(s[i]) != std::string_view::npos) out += '\\';
-      out += s[i];
+      out += latex_escaped(std::string_view(s).substr(i, 1));
     }
   }
   return out;
@@ -351,7 +351,7 @@ int main(int argc, char** argv) try {
   for (const UncertainInput& in : paper.uncertain_inputs) {
     const auto [mean, sd] = distribution_moments(in.distribution);
     inputs_csv.add_row({in.parameter, in.unit, in.value, describe(in.distribution), mean, sd, in.reason});
-    inputs_table += fmt::format("\\texttt{{{}}} [{}] & {} & {}\\\\\n", latex_text(in.parameter), in.unit,
+    inputs_table += fmt::format("\\texttt{{{}}} [{}] & {} & {}\\\\\n", latex_text(in.parameter), latex_text(in.unit),
                                 latex_distribution(in.distribution), latex_text(in.reason));
   }
   inputs_table += "\\bottomrule\n\\end{tabularx}}\n";
