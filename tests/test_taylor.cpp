@@ -5,6 +5,7 @@
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/kelvin_voigt.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/simulation/convergence_runs.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 
@@ -40,17 +41,6 @@ struct Riccati {
   void events(double, const State& y, Events& g) const { g = {std::get<0>(polynomial_events(y))}; }
   EventAction handle_event(int, double, const State&) const { return EventAction::stop; }
 };
-
-/// Least-squares slope of log10(error) against log10(tolerance).
-double slope(const std::vector<double>& tols, const std::vector<double>& errors) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(tols.size());
-  for (std::size_t i = 0; i < tols.size(); ++i) {
-    const double x = std::log10(tols[i]), y = std::log10(errors[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 /// The paper's steel rod at v0 = 0.626 m/s with no gravity (the closed forms' conditions).
 DropTestSetup contact_without_gravity(double restitution) {
@@ -195,7 +185,7 @@ TEST_CASE("taylor-regularized: undamped Hertz impact against the closed forms, e
     errors.push_back(std::max(err.largest(), 1e-16));
     CHECK(err.largest() <= 10 * tol);
   }
-  const double k = slope(tolerances, errors);
+  const double k = convergence::fitted_slope(tolerances, errors);  // of log error against log tolerance
   std::printf("  least-squares slope of log error against log tolerance: %.3f\n", k);
   CHECK(k >= 0.8);
   CHECK(k <= 1.2);
@@ -219,7 +209,7 @@ TEST_CASE("taylor-regularized: Kelvin-Voigt returns its input restitution exactl
     errors.push_back(std::max(err, 1e-16));
     CHECK(err <= 10 * tol);
   }
-  const double k = slope(tolerances, errors);
+  const double k = convergence::fitted_slope(tolerances, errors);  // of log error against log tolerance
   std::printf("  least-squares slope of log error against log tolerance: %.3f\n", k);
   CHECK(k >= 0.8);
   CHECK(k <= 1.2);
