@@ -11,7 +11,7 @@
 using hertzdash::latex_escaped;
 using hertzdash::latex_scientific;
 
-TEST_CASE("latex_scientific: two significant digits as math, the mantissa in [1, 10)", "[io][latex]") {
+TEST_CASE("latex_scientific: two significant digits as math, the mantissa at least 1 and below 10", "[io][latex]") {
   CHECK(latex_scientific(6.4e-14) == "$6.4\\times 10^{-14}$");
   CHECK(latex_scientific(-2.5e3) == "$-2.5\\times 10^{3}$");
   CHECK(latex_scientific(0.0) == "$0$");
