@@ -7,32 +7,18 @@
 // separation the state at the root is CVODE's own interpolant. Every SUNDIALS return
 // code is checked.
 #include "bench/impact_solvers.hpp"
-
+#include "hertzdash/integrators/cvode_check.hpp"
 
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
 namespace hertzdash::bench {
 
 namespace {
-
-void check(int flag, const char* call) {
-  if (flag < 0) {
-    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS: ours to free
-    const std::string text = std::string("CVODE: ") + call + " failed with " + (name ? name : "?");
-    std::free(name);
-    throw std::runtime_error(text);
-  }
-}
-template <class T> T check_ptr(T p, const char* call) {
-  if (p == nullptr) throw std::runtime_error(std::string("CVODE: ") + call + " returned NULL");
-  return p;
-}
 
 struct CvodeContext {
   const DropTest<HongoPaper>* sys;
@@ -82,38 +68,38 @@ class CvodeFresh final : public ImpactSolver {
     const double t_end = 10 * impact.fall_time_s + 20 * impact.contact_time_s;
 
     CvodeInstance c;
-    check(SUNContext_Create(nullptr, &c.ctx), "SUNContext_Create");
-    c.y = check_ptr(N_VNew_Serial(2, c.ctx), "N_VNew_Serial");
+    check_cvode_flag(SUNContext_Create(nullptr, &c.ctx), "SUNContext_Create");
+    c.y = check_cvode_ptr(N_VNew_Serial(2, c.ctx), "N_VNew_Serial");
     double* yv = N_VGetArrayPointer(c.y);
     yv[0] = y0[0], yv[1] = y0[1];
-    c.mem = check_ptr(CVodeCreate(CV_ADAMS, c.ctx), "CVodeCreate");
-    check(CVodeInit(c.mem, cvode_rhs, 0.0, c.y), "CVodeInit");
-    check(CVodeSetUserData(c.mem, &user), "CVodeSetUserData");
-    check(CVodeSStolerances(c.mem, tol_.rtol, tol_.atol), "CVodeSStolerances");
-    check(CVodeSetMaxNumSteps(c.mem, 1000000), "CVodeSetMaxNumSteps");
-    c.nls = check_ptr(SUNNonlinSol_FixedPoint(c.y, 0, c.ctx), "SUNNonlinSol_FixedPoint");
-    check(CVodeSetNonlinearSolver(c.mem, c.nls), "CVodeSetNonlinearSolver");
-    check(CVodeRootInit(c.mem, 1, cvode_gap), "CVodeRootInit");
+    c.mem = check_cvode_ptr(CVodeCreate(CV_ADAMS, c.ctx), "CVodeCreate");
+    check_cvode_flag(CVodeInit(c.mem, cvode_rhs, 0.0, c.y), "CVodeInit");
+    check_cvode_flag(CVodeSetUserData(c.mem, &user), "CVodeSetUserData");
+    check_cvode_flag(CVodeSStolerances(c.mem, tol_.rtol, tol_.atol), "CVodeSStolerances");
+    check_cvode_flag(CVodeSetMaxNumSteps(c.mem, 1000000), "CVodeSetMaxNumSteps");
+    c.nls = check_cvode_ptr(SUNNonlinSol_FixedPoint(c.y, 0, c.ctx), "SUNNonlinSol_FixedPoint");
+    check_cvode_flag(CVodeSetNonlinearSolver(c.mem, c.nls), "CVodeSetNonlinearSolver");
+    check_cvode_flag(CVodeRootInit(c.mem, 1, cvode_gap), "CVodeRootInit");
     int direction = -1;
-    check(CVodeSetRootDirection(c.mem, &direction), "CVodeSetRootDirection");
+    check_cvode_flag(CVodeSetRootDirection(c.mem, &direction), "CVodeSetRootDirection");
 
     long evaluations = 0;
     double t = 0, v_impact = y0[1];
     for (;;) {
       const int flag = CVode(c.mem, t_end, c.y, &t, CV_NORMAL);
-      check(flag, "CVode");
+      check_cvode_flag(flag, "CVode");
       if (flag != CV_ROOT_RETURN) throw std::runtime_error("CVODE peer: no crossing before the end time");
       if (sys.in_contact()) break;
       // Onset: calibrate the law, restart in contact mode.
       sys.handle_event(event_index(DropTestEvent::contact), t, DropTest<HongoPaper>::State{yv[0], yv[1]});
       v_impact = yv[1];
       long n = 0;
-      check(CVodeGetNumRhsEvals(c.mem, &n), "CVodeGetNumRhsEvals");
+      check_cvode_flag(CVodeGetNumRhsEvals(c.mem, &n), "CVodeGetNumRhsEvals");
       evaluations += n;
-      check(CVodeReInit(c.mem, t, c.y), "CVodeReInit");
+      check_cvode_flag(CVodeReInit(c.mem, t, c.y), "CVodeReInit");
     }
     long n = 0;
-    check(CVodeGetNumRhsEvals(c.mem, &n), "CVodeGetNumRhsEvals");
+    check_cvode_flag(CVodeGetNumRhsEvals(c.mem, &n), "CVodeGetNumRhsEvals");
     return {-yv[1] / v_impact, evaluations + n};
   }
 

@@ -6,14 +6,12 @@
 // the cubic Hermite interpolant of x (x' = xdot is in the state, so no extra
 // evaluations), found by bisection; the velocity there is the cubic Hermite
 // interpolant of xdot, whose end derivatives cost two evaluations.
+#include "bench/gsl_rk8pd_objects.hpp"
 #include "bench/impact_solvers.hpp"
 
-
-#include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
 #include <stdexcept>
-#include <string>
 
 namespace hertzdash::bench {
 
@@ -36,20 +34,7 @@ int gsl_rhs(double t, const double y[], double dydt[], void* params) {
 
 class GslRk8pd final : public ImpactSolver {
  public:
-  explicit GslRk8pd(double tol) {
-    const Tolerances t = tolerances_for(tol);
-    step_ = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
-    control_ = gsl_odeiv2_control_y_new(t.atol, t.rtol);
-    evolve_ = gsl_odeiv2_evolve_alloc(2);
-    if (!step_ || !control_ || !evolve_) throw std::runtime_error("GSL: odeiv2 allocation failed");
-  }
-  ~GslRk8pd() override {
-    gsl_odeiv2_evolve_free(evolve_);
-    gsl_odeiv2_control_free(control_);
-    gsl_odeiv2_step_free(step_);
-  }
-  GslRk8pd(const GslRk8pd&) = delete;
-  GslRk8pd& operator=(const GslRk8pd&) = delete;
+  explicit GslRk8pd(double tol) : gsl_(2, tol) {}
 
   ImpactResult run(const DropTestSetup& setup) override {
     PeerImpact impact(setup);
@@ -72,13 +57,11 @@ class GslRk8pd final : public ImpactSolver {
  private:
   void to_crossing(gsl_odeiv2_system& ode, GslContext& ctx, double y[2], double& t, double h, double t_end,
                    int direction) {
-    gsl_odeiv2_evolve_reset(evolve_);
-    gsl_odeiv2_step_reset(step_);
+    gsl_.reset();
     auto beyond = [direction](double x) { return direction > 0 ? x >= 0 : x <= 0; };
     while (t < t_end) {
       const double t0 = t, ya[2] = {y[0], y[1]};
-      const int status = gsl_odeiv2_evolve_apply(evolve_, control_, step_, &ode, &t, t_end, &h, y);
-      if (status != GSL_SUCCESS) throw std::runtime_error(std::string("GSL: evolve_apply: ") + gsl_strerror(status));
+      gsl_.apply(ode, t, t_end, h, y);
       if (!beyond(y[0]) || beyond(ya[0])) continue;
       const double dt = t - t0;
       double fa[2], fb[2];
@@ -98,9 +81,7 @@ class GslRk8pd final : public ImpactSolver {
     throw std::runtime_error("GSL peer: no crossing before the end time");
   }
 
-  gsl_odeiv2_step* step_ = nullptr;
-  gsl_odeiv2_control* control_ = nullptr;
-  gsl_odeiv2_evolve* evolve_ = nullptr;
+  GslRk8pdObjects gsl_;
 };
 
 }  // namespace

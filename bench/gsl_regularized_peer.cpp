@@ -4,18 +4,16 @@
 // gsl_odeiv2_evolve_apply with a y_new(atol, rtol) control advances one adaptive step
 // in tau at a time from onset (u, v, t) = (0, v0, 0); the step, control and evolve
 // objects are allocated once and reset per impact. On the step over which u falls
-// through 0, the separation is found by Newton's method (newton_separation) on the
+// through 0, the separation is found by Newton's method (hermite_separation) on the
 // cubic Hermite interpolant of (u, v) (du/dtau = v is in the state, the slopes of v
 // cost two evaluations), and the step is re-taken from its start to end there, as
 // hertzdash's gbs8 does. e_eff = -v / v0 there.
+#include "bench/gsl_rk8pd_objects.hpp"
 #include "bench/impact_solvers.hpp"
 
-#include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
-#include <array>
 #include <stdexcept>
-#include <string>
 
 namespace hertzdash::bench {
 
@@ -39,64 +37,38 @@ int gsl_rhs(double tau, const double y[], double dydt[], void* params) {
 
 class GslRk8pdRegularized final : public ImpactSolver {
  public:
-  explicit GslRk8pdRegularized(double tol) {
-    const Tolerances t = tolerances_for(tol);
-    step_ = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 3);
-    control_ = gsl_odeiv2_control_y_new(t.atol, t.rtol);
-    evolve_ = gsl_odeiv2_evolve_alloc(3);
-    if (!step_ || !control_ || !evolve_) throw std::runtime_error("GSL: odeiv2 allocation failed");
-  }
-  ~GslRk8pdRegularized() override {
-    gsl_odeiv2_evolve_free(evolve_);
-    gsl_odeiv2_control_free(control_);
-    gsl_odeiv2_step_free(step_);
-  }
-  GslRk8pdRegularized(const GslRk8pdRegularized&) = delete;
-  GslRk8pdRegularized& operator=(const GslRk8pdRegularized&) = delete;
+  explicit GslRk8pdRegularized(double tol) : gsl_(3, tol) {}
 
   ImpactResult run(const DropTestSetup& setup) override {
     const RegularizedPeerImpact impact(setup);
     GslContext ctx{&impact.sys, 0};
     gsl_odeiv2_system ode{gsl_rhs, nullptr, 3, &ctx};
-    gsl_odeiv2_evolve_reset(evolve_);
-    gsl_odeiv2_step_reset(step_);
+    gsl_.reset();
     double y[3] = {impact.y0[0], impact.y0[1], impact.y0[2]};
     double tau = 0, h = 1e-3 * impact.tau_scale;
     const double tau_end = 1e3 * impact.tau_scale;
     while (tau < tau_end) {
       const double tau_a = tau, ya[3] = {y[0], y[1], y[2]};
-      const int status = gsl_odeiv2_evolve_apply(evolve_, control_, step_, &ode, &tau, tau_end, &h, y);
-      if (status != GSL_SUCCESS) throw std::runtime_error(std::string("GSL: evolve_apply: ") + gsl_strerror(status));
+      gsl_.apply(ode, tau, tau_end, h, y);
       if (!(ya[0] > 0 && y[0] <= 0)) continue;
       double fa[3], fb[3];
       gsl_rhs(tau_a, ya, fa, &ctx);
       gsl_rhs(tau, y, fb, &ctx);
-      const double dt = tau - tau_a;
-      auto at = [&](double s_tau) {
-        const double s = (s_tau - tau_a) / dt;
-        return std::array<double, 2>{cubic_hermite(s, ya[0], dt * ya[1], y[0], dt * y[1]),
-                                     cubic_hermite(s, ya[1], dt * fa[1], y[1], dt * fb[1])};
-      };
       // Re-take the step from its start to end on the interpolated separation (v is
       // stationary at u = 0, so the error of the interpolated root enters squared).
-      const double tau_star = newton_separation(at, tau_a, tau);
+      const double tau_star = hermite_separation(tau_a, ya, fa[1], tau, y, fb[1]);
       tau = tau_a;
       y[0] = ya[0], y[1] = ya[1], y[2] = ya[2];
       h = tau_star - tau_a;
-      gsl_odeiv2_evolve_reset(evolve_);
-      while (tau < tau_star) {
-        const int s = gsl_odeiv2_evolve_apply(evolve_, control_, step_, &ode, &tau, tau_star, &h, y);
-        if (s != GSL_SUCCESS) throw std::runtime_error(std::string("GSL: evolve_apply: ") + gsl_strerror(s));
-      }
+      gsl_.reset_evolve();
+      while (tau < tau_star) gsl_.apply(ode, tau, tau_star, h, y);
       return {-y[1] / impact.v0_mps, ctx.evaluations};
     }
     throw std::runtime_error("GSL regularised peer: no separation before the end");
   }
 
  private:
-  gsl_odeiv2_step* step_ = nullptr;
-  gsl_odeiv2_control* control_ = nullptr;
-  gsl_odeiv2_evolve* evolve_ = nullptr;
+  GslRk8pdObjects gsl_;
 };
 
 }  // namespace

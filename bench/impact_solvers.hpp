@@ -23,6 +23,7 @@
 #include "hertzdash/simulation/impact_simulator.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <memory>
@@ -118,6 +119,20 @@ double newton_separation(const At& at, double lo, double hi) {
     if (change <= 4e-16 * std::abs(tau)) break;
   }
   return tau;
+}
+
+/// newton_separation on the cubic Hermite interpolant of (u, v) over the step from
+/// (tau_a, ya) to (tau_b, yb) of the regularised contact: u' = v, and v' = fva and fvb at
+/// the ends. ya and yb point to (u, v, ...). Returns tau at the separation.
+inline double hermite_separation(double tau_a, const double* ya, double fva, double tau_b, const double* yb,
+                                 double fvb) {
+  const double h = tau_b - tau_a;
+  auto at = [&](double tau) {
+    const double s = (tau - tau_a) / h;
+    return std::array<double, 2>{cubic_hermite(s, ya[0], h * ya[1], yb[0], h * yb[1]),
+                                 cubic_hermite(s, ya[1], h * fva, yb[1], h * fvb)};
+  };
+  return newton_separation(at, tau_a, tau_b);
 }
 
 /// hertzdash's ImpactSimulator with `kind`; for a fixed-step integrator `tol_or_dt` is the step [s].

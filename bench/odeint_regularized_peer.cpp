@@ -62,13 +62,7 @@ class OdeintBsRegularized final : public ImpactSolver {
       State3 fa, fb;
       rhs(ya, fa, tau_a);
       rhs(y, fb, tau);
-      const double h = tau - tau_a;
-      auto at = [&](double s_tau) {
-        const double s = (s_tau - tau_a) / h;
-        return std::array<double, 2>{cubic_hermite(s, ya[0], h * ya[1], y[0], h * y[1]),
-                                     cubic_hermite(s, ya[1], h * fa[1], y[1], h * fb[1])};
-      };
-      const double tau_star = newton_separation(at, tau_a, tau);
+      const double tau_star = hermite_separation(tau_a, ya.data(), fa[1], tau, y.data(), fb[1]);
       y = ya;
       odeint::integrate_adaptive(stepper_, rhs, y, tau_a, tau_star, tau_star - tau_a);
       return {-y[1] / impact.v0_mps, evaluations};

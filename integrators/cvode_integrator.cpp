@@ -1,5 +1,7 @@
 #include "hertzdash/integrators/cvode_integrator.hpp"
 
+#include "hertzdash/integrators/cvode_check.hpp"
+
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_band.h>
@@ -9,7 +11,6 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -18,20 +19,6 @@ namespace hertzdash {
 const char* to_string(CvodeMethod m) { return m == CvodeMethod::adams ? "adams" : "bdf"; }
 
 namespace {
-
-// Every SUNDIALS return code is checked; failures name the call and CVODE's flag.
-void check(int flag, const char* call) {
-  if (flag < 0) {
-    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS: ours to free
-    const std::string text = std::string("CVODE: ") + call + " failed with " + (name ? name : "?");
-    std::free(name);
-    throw std::runtime_error(text);
-  }
-}
-template <class T> T* check_ptr(T* p, const char* call) {
-  if (p == nullptr) throw std::runtime_error(std::string("CVODE: ") + call + " returned NULL");
-  return p;
-}
 
 int rhs_thunk(realtype t, N_Vector y, N_Vector dy, void* user_data) {
   auto* cb = static_cast<CvodeCallbacks*>(user_data);
@@ -80,36 +67,36 @@ CvodeIntegrator::CvodeIntegrator(int dimension, int event_count, const CvodeOpti
   d.dimension = dimension;
   d.event_count = event_count;
   d.roots.assign(static_cast<std::size_t>(event_count), 0);
-  check(SUNContext_Create(nullptr, &d.ctx), "SUNContext_Create");
-  d.y = check_ptr(N_VNew_Serial(dimension, d.ctx), "N_VNew_Serial");
+  check_cvode_flag(SUNContext_Create(nullptr, &d.ctx), "SUNContext_Create");
+  d.y = check_cvode_ptr(N_VNew_Serial(dimension, d.ctx), "N_VNew_Serial");
   N_VConst(0.0, d.y);
-  d.atol = check_ptr(N_VClone(d.y), "N_VClone");
+  d.atol = check_cvode_ptr(N_VClone(d.y), "N_VClone");
   N_VConst(options.atol, d.atol);
-  d.mem = check_ptr(CVodeCreate(options.method == CvodeMethod::adams ? CV_ADAMS : CV_BDF, d.ctx), "CVodeCreate");
-  check(CVodeInit(d.mem, rhs_thunk, 0.0, d.y), "CVodeInit");
-  check(CVodeSetUserData(d.mem, &callbacks_), "CVodeSetUserData");
-  check(CVodeSVtolerances(d.mem, options.rtol, d.atol), "CVodeSVtolerances");
-  check(CVodeSetMaxNumSteps(d.mem, options.max_num_steps), "CVodeSetMaxNumSteps");
-  if (options.max_step > 0) check(CVodeSetMaxStep(d.mem, options.max_step), "CVodeSetMaxStep");
+  d.mem = check_cvode_ptr(CVodeCreate(options.method == CvodeMethod::adams ? CV_ADAMS : CV_BDF, d.ctx), "CVodeCreate");
+  check_cvode_flag(CVodeInit(d.mem, rhs_thunk, 0.0, d.y), "CVodeInit");
+  check_cvode_flag(CVodeSetUserData(d.mem, &callbacks_), "CVodeSetUserData");
+  check_cvode_flag(CVodeSVtolerances(d.mem, options.rtol, d.atol), "CVodeSVtolerances");
+  check_cvode_flag(CVodeSetMaxNumSteps(d.mem, options.max_num_steps), "CVodeSetMaxNumSteps");
+  if (options.max_step > 0) check_cvode_flag(CVodeSetMaxStep(d.mem, options.max_step), "CVodeSetMaxStep");
   if (options.method == CvodeMethod::adams) {
     // Non-stiff: a fixed-point corrector needs no Jacobian.
-    d.NLS = check_ptr(SUNNonlinSol_FixedPoint(d.y, 0, d.ctx), "SUNNonlinSol_FixedPoint");
-    check(CVodeSetNonlinearSolver(d.mem, d.NLS), "CVodeSetNonlinearSolver");
+    d.NLS = check_cvode_ptr(SUNNonlinSol_FixedPoint(d.y, 0, d.ctx), "SUNNonlinSol_FixedPoint");
+    check_cvode_flag(CVodeSetNonlinearSolver(d.mem, d.NLS), "CVodeSetNonlinearSolver");
   } else {
     if (options.band_half_width >= 0 && options.band_half_width < dimension - 1) {
       const int w = options.band_half_width;
-      d.A = check_ptr(SUNBandMatrix(dimension, w, w, d.ctx), "SUNBandMatrix");
-      d.LS = check_ptr(SUNLinSol_Band(d.y, d.A, d.ctx), "SUNLinSol_Band");
+      d.A = check_cvode_ptr(SUNBandMatrix(dimension, w, w, d.ctx), "SUNBandMatrix");
+      d.LS = check_cvode_ptr(SUNLinSol_Band(d.y, d.A, d.ctx), "SUNLinSol_Band");
     } else {
-      d.A = check_ptr(SUNDenseMatrix(dimension, dimension, d.ctx), "SUNDenseMatrix");
-      d.LS = check_ptr(SUNLinSol_Dense(d.y, d.A, d.ctx), "SUNLinSol_Dense");
+      d.A = check_cvode_ptr(SUNDenseMatrix(dimension, dimension, d.ctx), "SUNDenseMatrix");
+      d.LS = check_cvode_ptr(SUNLinSol_Dense(d.y, d.A, d.ctx), "SUNLinSol_Dense");
     }
-    check(CVodeSetLinearSolver(d.mem, d.LS, d.A), "CVodeSetLinearSolver");
+    check_cvode_flag(CVodeSetLinearSolver(d.mem, d.LS, d.A), "CVodeSetLinearSolver");
   }
   d.direction.assign(static_cast<std::size_t>(event_count), -1);
   if (event_count > 0) {
-    check(CVodeRootInit(d.mem, event_count, events_thunk), "CVodeRootInit");
-    check(CVodeSetRootDirection(d.mem, d.direction.data()), "CVodeSetRootDirection");
+    check_cvode_flag(CVodeRootInit(d.mem, event_count, events_thunk), "CVodeRootInit");
+    check_cvode_flag(CVodeSetRootDirection(d.mem, d.direction.data()), "CVodeSetRootDirection");
   }
 }
 
@@ -126,20 +113,20 @@ void CvodeIntegrator::restart(double t, const double* y, const double* atol) {
   double* yv = N_VGetArrayPointer(d.y);
   double* av = N_VGetArrayPointer(d.atol);
   for (int i = 0; i < d.dimension; ++i) yv[i] = y[i], av[i] = atol[i];
-  check(CVodeReInit(d.mem, t, d.y), "CVodeReInit");
-  check(CVodeSVtolerances(d.mem, options_.rtol, d.atol), "CVodeSVtolerances");  // copies d.atol
+  check_cvode_flag(CVodeReInit(d.mem, t, d.y), "CVodeReInit");
+  check_cvode_flag(CVodeSVtolerances(d.mem, options_.rtol, d.atol), "CVodeSVtolerances");  // copies d.atol
   d.stop_time = NAN;
 }
 
 int CvodeIntegrator::step(double t_end, double& t, double* y) {
   Impl& d = *impl_;
   if (!(d.stop_time == t_end)) {  // once per restart, not every step
-    check(CVodeSetStopTime(d.mem, t_end), "CVodeSetStopTime");
+    check_cvode_flag(CVodeSetStopTime(d.mem, t_end), "CVodeSetStopTime");
     d.stop_time = t_end;
   }
   realtype t_reached = t;
   const int flag = CVode(d.mem, t_end, d.y, &t_reached, CV_ONE_STEP);
-  check(flag, "CVode");
+  check_cvode_flag(flag, "CVode");
   t = t_reached;
   const double* yv = N_VGetArrayPointer(d.y);
   for (int i = 0; i < d.dimension; ++i) y[i] = yv[i];
@@ -149,16 +136,16 @@ int CvodeIntegrator::step(double t_end, double& t, double* y) {
 }
 
 const int* CvodeIntegrator::roots_found() {
-  check(CVodeGetRootInfo(impl_->mem, impl_->roots.data()), "CVodeGetRootInfo");
+  check_cvode_flag(CVodeGetRootInfo(impl_->mem, impl_->roots.data()), "CVodeGetRootInfo");
   return impl_->roots.data();
 }
 
 IntegrationStats CvodeIntegrator::work_since_restart() const {
   long steps = 0, rhs = 0, lin_rhs = 0;
-  check(CVodeGetNumSteps(impl_->mem, &steps), "CVodeGetNumSteps");
-  check(CVodeGetNumRhsEvals(impl_->mem, &rhs), "CVodeGetNumRhsEvals");
+  check_cvode_flag(CVodeGetNumSteps(impl_->mem, &steps), "CVodeGetNumSteps");
+  check_cvode_flag(CVodeGetNumRhsEvals(impl_->mem, &rhs), "CVodeGetNumRhsEvals");
   if (options_.method == CvodeMethod::bdf) {
-    check(CVodeGetNumLinRhsEvals(impl_->mem, &lin_rhs), "CVodeGetNumLinRhsEvals");
+    check_cvode_flag(CVodeGetNumLinRhsEvals(impl_->mem, &lin_rhs), "CVodeGetNumLinRhsEvals");
   }
   IntegrationStats s;
   s.steps = steps;

@@ -41,4 +41,18 @@ std::string latex_scientific(double v) {
   return fmt::format("${:.1f}\\times 10^{{{}}}$", mantissa, exponent);
 }
 
+std::string latex_escaped(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '_': case '%': case '&': case '#': case '$': case '{': case '}': out += '\\'; out += c; break;
+      case '~': out += "\\textasciitilde{}"; break;
+      case '^': out += "\\textasciicircum{}"; break;
+      case '\\': out += "\\textbackslash{}"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace hertzdash

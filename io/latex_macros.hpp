@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace hertzdash {
 
@@ -30,5 +31,10 @@ class LatexMacros {
 /// v as LaTeX math in scientific notation with two significant digits: $5.2\times 10^{-6}$
 /// ($0$ for zero).
 std::string latex_scientific(double v);
+
+/// `text` safe as LaTeX text (inside a macro argument or a table cell): the ten characters
+/// LaTeX treats specially are escaped, _ % & # $ { } with a backslash, ~ ^ \ as
+/// \textasciitilde{}, \textasciicircum{}, \textbackslash{}; every other byte is kept.
+std::string latex_escaped(std::string_view text);
 
 }  // namespace hertzdash

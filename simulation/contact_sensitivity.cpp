@@ -3,6 +3,7 @@
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/force_rate.hpp"
 #include "hertzdash/model/hertz.hpp"
+#include "hertzdash/integrators/cvode_check.hpp"
 
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
@@ -10,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -20,18 +20,8 @@ namespace {
 
 constexpr int Ns = 4;  // sensitivity parameters q = (K, tau, m, v0)
 
-void check(int flag, const char* call) {
-  if (flag < 0) {
-    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS: ours to free
-    const std::string text = std::string("CVODES: ") + call + " failed with " + (name ? name : "?");
-    std::free(name);
-    throw std::runtime_error(text);
-  }
-}
-template <class T> T* check_ptr(T* p, const char* call) {
-  if (p == nullptr) throw std::runtime_error(std::string("CVODES: ") + call + " returned NULL");
-  return p;
-}
+void check(int flag, const char* call) { check_cvode_flag(flag, call, "CVODES"); }
+template <class T> T* check_ptr(T* p, const char* call) { return check_cvode_ptr(p, call, "CVODES"); }
 
 /// The contact-phase model: the paper's force and its partial derivatives, all from the
 /// law (HongoPaper::gradient_of_root at u = x^{1/2}), and the acceleration.

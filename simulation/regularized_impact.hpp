@@ -2,7 +2,7 @@
 // One drop test the fast way: the free fall in closed form, then the contact in
 // regularising variables (model/regularized_contact.hpp) with any integrator of the
 // table whose row has Variables::regularized (dopri5-regularized, cvode-regularized,
-// gbs8-regularized).
+// gbs8-regularized, taylor-regularized).
 //
 // Why: in the physical variables the contact force grows like sqrt(t - t_on) after
 // onset and (damped laws) vanishes like sqrt(t_s - t) before separation, so an
@@ -10,12 +10,12 @@
 // (integrators/dormand_prince.hpp checks those steps by step doubling). In the
 // variables u = x^{1/2}, dt/dtau = 2u the contact is smooth through onset and
 // separation for every law of the form x^{1/2} * (polynomial in x, x') that declares
-// it (RootPolynomialLaw), so the embedded estimate is reliable everywhere and the
-// steps stay long (the system declares smooth_at_events, so dopri5 drops its
-// singular-point checks; for other laws they stay on), and CVODE's error follows its tolerance
-// where in the physical variables it does not. The fall needs no integration at all: from
-// rest at x = -h under gravity g, contact begins at t_on = v0/g with v0 = sqrt(2 g h)
-// (approach_speed), exactly.
+// it (RootPolynomialLaw), so the error estimates (embedded, extrapolated, or the decay of
+// the Taylor coefficients) are reliable everywhere and the steps stay long (the system
+// declares smooth_at_events, so dopri5 drops its singular-point checks; for other laws they
+// stay on), and CVODE's error follows its tolerance where in the physical variables it does
+// not. The fall needs no integration at all: from rest at x = -h under gravity g, contact
+// begins at t_on = v0/g with v0 = sqrt(2 g h) (approach_speed), exactly.
 //
 // The summary is the same as ImpactSimulator's physical-variable run, to within the
 // tolerance: onset from the closed form, separation (u = 0 decreasing, v < 0) and the

@@ -37,9 +37,10 @@ struct SolverSettings {
   friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
 };
 
-/// Throws InvalidParameter, naming the option, for a setting the chosen integrator reads
-/// that is out of range: a non-positive step or tolerance, a negative largest step, or a
-/// largest step for a regularised path (whose steps are in tau, not in time).
+/// Throws InvalidParameter, naming the option, for any setting out of range, whether or not
+/// the chosen integrator reads it (a bad value is a mistake even where it does not matter):
+/// a non-positive step [s], a tolerance outside (0, 1), a negative largest step [s], or a
+/// largest step other than 0 for a regularised path (whose steps are in tau, not in time).
 void validate(const SolverSettings& s);
 
 }  // namespace hertzdash

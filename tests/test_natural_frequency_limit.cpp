@@ -36,18 +36,25 @@ TEST_CASE("corrected eq. (9) at e = 1 gives w = v0 / X, X the undamped Hertz pea
 
 TEST_CASE("the printed eq. (9) differs from the corrected one by X^{1/4}, which depends on the unit",
           "[model][natural-frequency][erratum]") {
+  // Expected values, from the two formulas:
+  //   as printed / corrected = sqrt(4K/(5m)) X^{1/2} / sqrt((4K/(5m)) X^{1/2})
+  //                          = X^{1/2} / X^{1/4} = X^{1/4};
+  // in the millimetre-kilogram-second system (force in kg mm/s^2 = 1e-3 N) the numbers
+  // become K_mm = 1e3 (1e-3)^{3/2} K = 10^{-3/2} K and X_mm = 1e3 X, so
+  //   corrected_mm / corrected_SI = (10^{-3/2} (1e3)^{1/2})^{1/2} = 1   (a frequency),
+  //   printed_mm / printed_SI     = (10^{-3/2})^{1/2} (1e3)^{1/2} = 10^{3/4} = (1e3)^{1/4}.
   const double K = 3.54e8, m = 0.778, v0 = 0.626;  // steel rod, h = 20 mm
   const double X = paper_peak_deformation(K, m, v0, 1.0);
   const double w_corrected = hertz_natural_frequency(K, m, X);
-  const double w_printed_SI = std::sqrt(4 * K / (5 * m)) * std::sqrt(X);
-  // The consistent millimetre-kilogram-second system: force in kg mm/s^2 = 1e-3 N, so
-  // K [kg mm s^-2 / mm^{3/2}] = 1e3 (1e-3)^{3/2} K [SI] and X [mm] = 1e3 X [m].
+  const double w_printed_SI = as_printed_natural_frequency(K, m, X);
   const double K_mm = K * 1e3 * std::pow(1e-3, 1.5), X_mm = 1e3 * X;
   const double w_corrected_mm = hertz_natural_frequency(K_mm, m, X_mm);
-  const double w_printed_mm = std::sqrt(4 * K_mm / (5 * m)) * std::sqrt(X_mm);
+  const double w_printed_mm = as_printed_natural_frequency(K_mm, m, X_mm);
+  // Each side is a few sqrt, pow and products (relative error ~1e-15); 1e-13 leaves room
+  // for the pow's own rounding, and is far below any misplaced exponent (X^{1/4} ~ 0.1).
   CHECK(w_printed_SI / w_corrected == Approx(std::pow(X, 0.25)).epsilon(1e-13));
-  // A frequency [1/s] is the same in any unit of length: the corrected w is; the
-  // printed one changes by (1e3)^{1/4}, the erratum the article's Table II states.
+  // The erratum the article's Table II states: the corrected w does not depend on the
+  // unit of length, the printed one changes by (1e3)^{1/4}.
   CHECK(w_corrected_mm == Approx(w_corrected).epsilon(1e-13));
   CHECK(w_printed_mm / w_printed_SI == Approx(std::pow(1e3, 0.25)).epsilon(1e-13));
 }

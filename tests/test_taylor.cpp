@@ -5,6 +5,7 @@
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/kelvin_voigt.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/simulation/convergence_runs.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/simulation/paper_parameters.hpp"
 
@@ -12,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -41,17 +43,6 @@ struct Riccati {
   EventAction handle_event(int, double, const State&) const { return EventAction::stop; }
 };
 
-/// Least-squares slope of log10(error) against log10(tolerance).
-double slope(const std::vector<double>& tols, const std::vector<double>& errors) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(tols.size());
-  for (std::size_t i = 0; i < tols.size(); ++i) {
-    const double x = std::log10(tols[i]), y = std::log10(errors[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 /// The paper's steel rod at v0 = 0.626 m/s with no gravity (the closed forms' conditions).
 DropTestSetup contact_without_gravity(double restitution) {
   DropTestSetup s = paper_setup(load_paper_parameters(), "steel", 0.02);
@@ -71,6 +62,26 @@ SolverSettings taylor(double tol) {
 }
 
 const std::vector<double> tolerances{1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
+
+/// Law's contact `setup` with taylor-regularized at each of `tolerances`: `error_of(tol,
+/// summary)` within 10 tol at every one, and the least-squares slope of log error against
+/// log tolerance within 0.8..1.2 (error proportional to tolerance).
+template <class Law, class ErrorOf>
+void check_error_proportional_to_tolerance(const DropTestSetup& setup, const ErrorOf& error_of) {
+  std::vector<double> errors;
+  for (double tol : tolerances) {
+    ImpactSimulator sim(taylor(tol));
+    const ImpactSummary s = sim.run<Law>(setup);
+    REQUIRE(s.separated);
+    const double err = error_of(tol, s);
+    errors.push_back(std::max(err, 1e-16));
+    CHECK(err <= 10 * tol);
+  }
+  const double k = convergence::fitted_slope(tolerances, errors);
+  std::printf("  least-squares slope of log error against log tolerance: %.3f\n", k);
+  CHECK(k >= 0.8);
+  CHECK(k <= 1.2);
+}
 
 }  // namespace
 
@@ -185,20 +196,10 @@ TEST_CASE("taylor-regularized: undamped Hertz impact against the closed forms, e
   // against log tol over 1e-4..1e-12 within 0.8..1.2.
   const DropTestSetup setup = contact_without_gravity(1.0);
   const UndampedHertzImpact exact = undamped_hertz_impact(hertz_stiffness(setup), setup.mass_kg, 0.626);
-  std::vector<double> errors;
   std::printf("taylor-regularized undamped Hertz: tol, |e-1|, rel err X, rel err F, rel err t_c, rhs evaluations\n");
-  for (double tol : tolerances) {
-    ImpactSimulator sim(taylor(tol));
-    const ImpactSummary s = sim.run<Undamped>(setup);
-    REQUIRE(s.separated);
-    const testing::UndampedHertzErrors err = testing::undamped_hertz_errors(tol, s, exact);
-    errors.push_back(std::max(err.largest(), 1e-16));
-    CHECK(err.largest() <= 10 * tol);
-  }
-  const double k = slope(tolerances, errors);
-  std::printf("  least-squares slope of log error against log tolerance: %.3f\n", k);
-  CHECK(k >= 0.8);
-  CHECK(k <= 1.2);
+  check_error_proportional_to_tolerance<Undamped>(setup, [&](double tol, const ImpactSummary& s) {
+    return testing::undamped_hertz_errors(tol, s, exact).largest();
+  });
 }
 
 TEST_CASE("taylor-regularized: Kelvin-Voigt returns its input restitution exactly, error proportional to tolerance",
@@ -208,21 +209,12 @@ TEST_CASE("taylor-regularized: Kelvin-Voigt returns its input restitution exactl
   // whose rebound speed is e v0. In u = x^{1/2} its force k u^2 + c v is a polynomial.
   // |e_eff - e| within 10 tol down to 1e-12; slope within 0.8..1.2.
   const DropTestSetup setup = contact_without_gravity(0.8);
-  std::vector<double> errors;
   std::printf("taylor-regularized Kelvin-Voigt, e = 0.8: tol, |e_eff - e|\n");
-  for (double tol : tolerances) {
-    ImpactSimulator sim(taylor(tol));
-    const ImpactSummary s = sim.run<KelvinVoigt>(setup);
-    REQUIRE(s.separated);
+  check_error_proportional_to_tolerance<KelvinVoigt>(setup, [](double tol, const ImpactSummary& s) {
     const double err = std::abs(s.e_effective - 0.8);
     std::printf("  %.0e  %.3e\n", tol, err);
-    errors.push_back(std::max(err, 1e-16));
-    CHECK(err <= 10 * tol);
-  }
-  const double k = slope(tolerances, errors);
-  std::printf("  least-squares slope of log error against log tolerance: %.3f\n", k);
-  CHECK(k >= 0.8);
-  CHECK(k <= 1.2);
+    return err;
+  });
 }
 
 TEST_CASE("taylor-regularized: the paper's law agrees with dopri5 in the physical variables",

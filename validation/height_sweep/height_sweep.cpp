@@ -18,6 +18,7 @@
 #include "hertzdash/simulation/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
 #include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/convergence_runs.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/simulation/parallel_sweep.hpp"
@@ -34,17 +35,6 @@ using namespace hertzdash;
 namespace {
 
 constexpr double lowest_height_m = 0.002, highest_height_m = 0.100;
-
-// Least-squares slope of log(y) against log(x).
-double log_log_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double u = std::log(x[i]), v = std::log(y[i]);
-    sx += u, sy += v, sxx += u * u, sxy += u * v;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 }  // namespace
 
@@ -98,15 +88,15 @@ int main(int argc, char** argv) try {
     const auto [e_lo, e_hi] = std::minmax_element(e.begin(), e.end());
     e_spread = std::max(e_spread, *e_hi - *e_lo);
     const std::string tag = "sweep" + rod_macro_tag(rod.name);
-    macros.add(tag + "ForceSlope", log_log_slope(v0, force), "{:.3f}");
-    macros.add(tag + "DeformationSlope", log_log_slope(v0, depth), "{:.3f}");
-    macros.add(tag + "ContactTimeSlope", log_log_slope(v0, duration), "{:.3f}");
+    macros.add(tag + "ForceSlope", convergence::fitted_slope(v0, force), "{:.3f}");
+    macros.add(tag + "DeformationSlope", convergence::fitted_slope(v0, depth), "{:.3f}");
+    macros.add(tag + "ContactTimeSlope", convergence::fitted_slope(v0, duration), "{:.3f}");
     macros.add(tag + "RestitutionMin", *e_lo, "{:.4f}");
     macros.add(tag + "RestitutionMax", *e_hi, "{:.4f}");
     std::cout << fmt::format("{:12} slopes vs v0: force {:.4f} (6/5), deformation {:.4f} (4/5), contact time {:.4f} "
                              "(-1/5); e_effective {:.4f}..{:.4f} (input {})\n",
-                             rod.name, log_log_slope(v0, force), log_log_slope(v0, depth),
-                             log_log_slope(v0, duration), *e_lo, *e_hi, rod.restitution);
+                             rod.name, convergence::fitted_slope(v0, force), convergence::fitted_slope(v0, depth),
+                             convergence::fitted_slope(v0, duration), *e_lo, *e_hi, rod.restitution);
   }
   macros.add("sweepLowestHeightMm", 1e3 * lowest_height_m, "{:.0f}");
   macros.add("sweepHighestHeightMm", 1e3 * highest_height_m, "{:.0f}");

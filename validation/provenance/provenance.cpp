@@ -55,21 +55,6 @@ std::string gnuplot_version() {
   return v;
 }
 
-/// Text safe inside a LaTeX argument: the characters LaTeX treats specially are escaped.
-std::string latex_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '_': case '%': case '&': case '#': case '$': case '{': case '}': out += '\\'; out += c; break;
-      case '~': out += "\\textasciitilde{}"; break;
-      case '^': out += "\\textasciicircum{}"; break;
-      case '\\': out += "\\textbackslash{}"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) try {

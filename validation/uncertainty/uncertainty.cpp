@@ -162,7 +162,8 @@ Linearised linearise(const PaperParameters& paper, const RodData& rod, const Dro
   return lin;
 }
 
-// Text for LaTeX: _ % & # escaped, "+-" as a plus-minus sign, | in math (OT1 text has none).
+// Text for LaTeX: the special characters escaped (latex_escaped), "+-" as a plus-minus sign,
+// | in math (OT1 text has none).
 std::string latex_text(const std::string& s) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -172,8 +173,7 @@ std::string latex_text(const std::string& s) {
     } else if (s[i] == '|') {
       out += "$|$";
     } else {
-      if (std::string_view("_%&#").find(s[i]) != std::string_view::npos) out += '\\';
-      out += s[i];
+      out += latex_escaped(std::string_view(s).substr(i, 1));
     }
   }
   return out;
@@ -206,9 +206,116 @@ std::string latex_distribution(const InputDistribution& dist) {
   return describe(dist);
 }
 
+// ---- The study's set-up.
+
 struct Sizes {
-  std::size_t n, n_band, grid, replicates;
+  std::size_t n;           ///< rows N of each of A and B
+  std::size_t n_band;      ///< band runs from each of A and B
+  std::size_t grid;        ///< time points of the band CSV
+  std::size_t replicates;  ///< bootstrap resamples of the Sobol intervals
 };
+
+// The sample sizes of --reduced (the pipeline test), `make figures` and --full.
+Sizes sizes_for(const StudyArgs& args) {
+  return args.reduced ? Sizes{64, 16, 121, 200} : args.full ? Sizes{65536, 2048, 401, 1000} : Sizes{4096, 512, 301, 1000};
+}
+
+// What every part of the study shares: the sizes, the drop height, the solver of the sweeps,
+// the Sobol options and the provenance header of every file.
+struct Study {
+  Sizes sizes;
+  double height_m;
+  SolverSettings solver;
+  SobolOptions sobol;
+  Parameters header;
+};
+
+Study set_up_study(const StudyArgs& args, const PaperParameters& paper) {
+  Study st{sizes_for(args), paper.uncertain_input("drop_height_m").value, {}, {}, {}};
+  // The fast path of the sweeps; rtol 1e-10 puts its error far below every effect sampled.
+  st.solver.integrator = IntegratorKind::gbs8_regularized;
+  st.solver.rtol = 1e-10;
+  validate(st.solver);
+  st.sobol = SobolOptions{.replicates = st.sizes.replicates, .confidence = 0.95, .seed = 17};
+  const Sizes& sizes = st.sizes;
+  st.header = all_rods_parameters(paper, st.solver, st.height_m, {"ball_E_Pa", "ball_nu", "ball_radius_m", "height_m"});
+  st.header.emplace_back("design", fmt::format("Saltelli: N = {} rows of A and B and A_B^(i) from a {}-dimensional Sobol "
+                                               "sequence (sample_design.hpp), d = {} inputs, N (d + 2) = {} runs per rod",
+                                               sizes.n, 2 * d, d, sizes.n * (d + 2)));
+  st.header.emplace_back("inputs", "independent, distributions of data/assumptions.csv (see uncertainty_inputs.csv)");
+  st.header.emplace_back("restitution_centre", "Table 2 e; rod A: the mean of its two printed values");
+  st.header.emplace_back("sobol", fmt::format("first order Saltelli 2010, total Jansen 1999, 95 % percentile bootstrap "
+                                              "intervals over {} resamples of the N rows, seed {}",
+                                              st.sobol.replicates, st.sobol.seed));
+  return st;
+}
+
+// The article's macros of the design: sizes, the drop height, the restitution's centre and
+// spread, the nylon modulus's range.
+LatexMacros design_macros(const Study& st, const StudyArgs& args, const PaperParameters& paper) {
+  const Sizes& sizes = st.sizes;
+  LatexMacros tex("hertzdash uncertainty: the paper's results under joint input uncertainty (validation/uncertainty)",
+                  {{"N", std::to_string(sizes.n)}, {"reduced", args.reduced ? "true" : "false"},
+                   {"full", args.full ? "true" : "false"}});
+  tex.add("uqN", static_cast<double>(sizes.n), "{:.0f}");
+  tex.add("uqInputs", static_cast<double>(d), "{:.0f}");
+  tex.add("uqRunsPerRod", static_cast<double>(sizes.n * (d + 2)), "{:.0f}");
+  tex.add("uqReplicates", static_cast<double>(sizes.replicates), "{:.0f}");
+  tex.add("uqHeightMm", 1e3 * st.height_m, "{:.0f}");
+  tex.add("uqRodARestitution", paper.rod("duralumin-a").restitution, "{:.3f}");
+  tex.add("uqRodARestitutionSecond", paper.rod("duralumin-a").restitution_second, "{:.3f}");
+  tex.add("uqRestitutionSd", paper.uncertain_input("restitution_deviation").distribution.p2, "{:.4f}");
+  tex.add("uqNylonRangeRatio", paper.ball.E_max_Pa / paper.ball.E_min_Pa, "{:.1f}");
+  return tex;
+}
+
+// A LaTeX fragment of GENERATED under the study's provenance header (as comments).
+void write_latex_fragment(const StudyArgs& args, const Study& st, const std::string& file, const std::string& body) {
+  std::string provenance = provenance_header("uncertainty tables (validation/uncertainty)", st.header);
+  std::replace(provenance.begin(), provenance.end(), '#', '%');
+  write_file_atomically(args.generated_dir / file, provenance + body);
+}
+
+// The inputs as stated, for the reader (OUT/uncertainty_inputs.csv) and the article
+// (GENERATED/uncertainty_inputs_table.tex).
+void write_inputs(const Study& st, const PaperParameters& paper, const StudyArgs& args) {
+  CsvWriter inputs_csv("hertzdash uncertainty: the distributions of the jointly drawn inputs (data/assumptions.csv)",
+                       st.header, {"parameter", "unit", "assumed_value", "distribution", "mean", "sd", "reason"});
+  std::string inputs_table = "{\\footnotesize\\begin{tabularx}{\\textwidth}{@{}llX@{}}\n\\toprule\n"
+                             "input [unit] & distribution & why\\\\\n\\midrule\n";
+  for (const UncertainInput& in : paper.uncertain_inputs) {
+    const auto [mean, sd] = distribution_moments(in.distribution);
+    inputs_csv.add_row({in.parameter, in.unit, in.value, describe(in.distribution), mean, sd, in.reason});
+    inputs_table += fmt::format("\\texttt{{{}}} [{}] & {} & {}\\\\\n", latex_text(in.parameter), latex_text(in.unit),
+                                latex_distribution(in.distribution), latex_text(in.reason));
+  }
+  inputs_table += "\\bottomrule\n\\end{tabularx}}\n";
+  inputs_csv.save(args.out_dir / "uncertainty_inputs.csv");
+  write_latex_fragment(args, st, "uncertainty_inputs_table.tex", inputs_table);
+}
+
+// ---- The runs.
+
+// One rod's Saltelli design: the draws (design order) and the outputs of every run.
+struct RodSample {
+  std::vector<std::array<double, d>> draws;
+  std::array<std::vector<double>, outputs.size()> y;
+};
+
+RodSample run_design(const Study& st, const PaperParameters& paper, const RodData& rod, const std::vector<double>& unit) {
+  const std::size_t runs = st.sizes.n * (d + 2);
+  RodSample sample{std::vector<std::array<double, d>>(runs), {}};
+  for (std::size_t r = 0; r < runs; ++r)
+    for (std::size_t k = 0; k < d; ++k) sample.draws[r][k] = slot_input(paper, rod.name, k).distribution.quantile(unit[r * d + k]);
+  for (auto& v : sample.y) v.resize(runs);
+  parallel_sweep(runs, st.solver, [&](ImpactSimulator& sim, std::size_t r) {
+    const DropTestSetup s = drawn_setup(paper, rod, sample.draws[r]);
+    const ImpactSummary summary = sim.run<HongoPaper>(s);
+    if (!summary.separated) throw std::runtime_error("uncertainty: a run of rod " + rod.name + " did not separate");
+    for (std::size_t o = 0; o < outputs.size(); ++o) sample.y[o][r] = output_value(summary, o);
+  }, {.label = "uncertainty " + rod.name});
+  return sample;
+}
 
 // The five panels of one figure: pointwise quantiles of the histories, the paper's model at
 // the assumed values, and the loops of three representative runs.
@@ -306,168 +413,151 @@ void write_band_figure(const std::string& name, const RodData& rod, const PaperP
   tex.add("uq" + tag + "LoopPeakHighN", band_peak[loop[2]], "{:.0f}");
 }
 
+// ---- What the runs say.
+
+// Over all rods, outputs and inputs.
+struct Tallies {
+  double largest_gap = 0;      ///< the largest |S_T - linear share|
+  double widest_interval = 0;  ///< the widest bootstrap interval of S or S_T
+  double minor_total = 0;      ///< the largest S_T of the rod's nu and E, R and m
+  double through_K_gap = 0;    ///< the largest |S_T / share - 1| of the rod's nu and E (peak force, contact time)
+  int shares_outside = 0;      ///< linear shares outside their S's interval
+  int indices = 0;
+};
+
+// The study's findings: the outputs' spread and the Sobol indices (CSV), the article's Sobol
+// table (steel rod) and the tallies.
+struct Findings {
+  CsvWriter outputs_csv, sobol_csv;
+  std::string sobol_table;
+  Tallies tallies;
+};
+
+Findings start_findings(const Study& st) {
+  return {CsvWriter("hertzdash uncertainty: e_effective, peak force and contact time per rod under the joint input "
+                    "uncertainty: quantiles over the 2N draws of A and B, and the spread the linearisation predicts",
+                    st.header,
+                    {"rod", "output", "assumed_value", "mean", "sd", "q05", "q50", "q95", "sample_cv", "linear_cv"}),
+          CsvWriter("hertzdash uncertainty: first-order (S) and total (ST) Sobol indices with 95 % bootstrap "
+                    "intervals, and the first-order variance share of the linearisation el^2 CV^2 / sum",
+                    st.header,
+                    {"rod", "output", "input", "S", "S_lower", "S_upper", "ST", "ST_lower", "ST_upper", "elasticity",
+                     "input_cv", "linear_share"}),
+          {},
+          {}};
+}
+
+// Output o of one rod: its quantiles over the 2N joint draws and its spread beside the
+// linearisation's; its Sobol indices beside the linear shares, each input's appended to its
+// row of the article's table (`table_rows`).
+void analyse_output(std::size_t o, const Study& st, const PaperParameters& paper, const RodData& rod,
+                    const std::vector<double>& y, const ImpactSummary& at_assumed, const Linearised& lin,
+                    Findings& f, LatexMacros& tex, std::array<std::string, d>& table_rows) {
+  const std::size_t n = st.sizes.n;
+  const std::vector<double> joint(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(2 * n));
+  const SobolIndices si = sobol_indices(y, n, d, st.sobol);
+  double linear_var = 0;
+  for (std::size_t k = 0; k < d; ++k) linear_var += std::pow(lin.elasticity[o][k] * lin.cv[k], 2);
+  const double sd = std::sqrt(si.variance);
+  const std::array<double, 3> q{sample_quantile(joint, 0.05), sample_quantile(joint, 0.50), sample_quantile(joint, 0.95)};
+  f.outputs_csv.add_row({rod.name, std::string(outputs[o].name), output_value(at_assumed, o), si.mean, sd, q[0], q[1], q[2],
+                         sd / si.mean, std::sqrt(linear_var)});
+  const std::string t = "uq" + rod_macro_tag(rod.name) + outputs[o].tag;
+  const double scale = o == 0 ? 1.0 : o == 1 ? 1.0 : 1e3;  // contact time in ms
+  const char* spec = o == 0 ? "{:.3f}" : o == 1 ? "{:.0f}" : "{:.3f}";
+  tex.add(t + "Qfive", scale * q[0], spec);
+  tex.add(t + "Qfifty", scale * q[1], spec);
+  tex.add(t + "Qninetyfive", scale * q[2], spec);
+  tex.add(t + "SampleCvPct", 100 * sd / si.mean, "{:.1f}");
+  tex.add(t + "LinearCvPct", 100 * std::sqrt(linear_var), "{:.1f}");
+  double sum_first = 0, sum_total = 0;
+  Tallies& tally = f.tallies;
+  for (std::size_t k = 0; k < d; ++k) {
+    const double share = std::pow(lin.elasticity[o][k] * lin.cv[k], 2) / linear_var;
+    const IndexEstimate& S = si.first[k];
+    const IndexEstimate& ST = si.total[k];
+    sum_first += S.value;
+    sum_total += ST.value;
+    f.sobol_csv.add_row({rod.name, std::string(outputs[o].name), slot_input(paper, rod.name, k).parameter, S.value, S.lower,
+                         S.upper, ST.value, ST.lower, ST.upper, lin.elasticity[o][k], lin.cv[k], share});
+    tally.largest_gap = std::max(tally.largest_gap, std::abs(ST.value - share));
+    tally.shares_outside += share < S.lower || share > S.upper;
+    const std::string tag = slots[k].tag;
+    if (tag == "RodNu" || tag == "RodE" || tag == "Radius" || tag == "Mass") tally.minor_total = std::max(tally.minor_total, ST.value);
+    if ((tag == "RodNu" || tag == "RodE") && o > 0) tally.through_K_gap = std::max(tally.through_K_gap, std::abs(ST.value / share - 1));
+    ++tally.indices;
+    tally.widest_interval = std::max({tally.widest_interval, S.upper - S.lower, ST.upper - ST.lower});
+    tex.add(t + "S" + slots[k].tag, S.value, "{:.2f}");
+    tex.add(t + "SHalfWidth" + slots[k].tag, 0.5 * (S.upper - S.lower), "{:.3f}");
+    tex.add(t + "ST" + slots[k].tag, ST.value, "{:.4f}");
+    tex.add(t + "Lin" + slots[k].tag, share, "{:.4f}");
+    table_rows[k] += fmt::format(" & ${:.3f}$ & ${:.4f}$ & ${:.4f}$", S.value, ST.value, share);
+  }
+  tex.add(t + "SumFirst", sum_first, "{:.3f}");
+  tex.add(t + "SumTotal", sum_total, "{:.3f}");
+}
+
+// One rod's sample analysed, output by output, against the linearisation at the assumed
+// values; returns the rows of the article's Sobol table (S, S_T, linear share per output).
+std::array<std::string, d> analyse_rod(const Study& st, const PaperParameters& paper, const RodData& rod,
+                                       const RodSample& sample, Findings& f, LatexMacros& tex) {
+  const DropTestSetup tabled = paper_setup(paper, rod.name, st.height_m);  // free fall from h, for the elasticities
+  validate(tabled);
+  const ImpactSummary at_assumed = ImpactSimulator(st.solver).run<HongoPaper>(from_onset(tabled));
+  const Linearised lin = linearise(paper, rod, tabled);
+  std::array<std::string, d> table_rows;
+  for (std::size_t o = 0; o < outputs.size(); ++o)
+    analyse_output(o, st, paper, rod, sample.y[o], at_assumed, lin, f, tex, table_rows);
+  return table_rows;
+}
+
+// The article's Sobol table (GENERATED/uncertainty_sobol_table.tex) from its rows.
+std::string article_sobol_table(const std::array<std::string, d>& table_rows) {
+  std::string table = "\\begin{tabular}{lrrrrrrrrr}\n\\toprule\n"
+                      "& \\multicolumn{3}{c}{$e_\\mathrm{eff}$} & \\multicolumn{3}{c}{$P_\\mathrm{max}$} & "
+                      "\\multicolumn{3}{c}{$t_c$}\\\\\n\\cmidrule(lr){2-4}\\cmidrule(lr){5-7}\\cmidrule(lr){8-10}\n"
+                      "input & $S_i$ & $S_{Ti}$ & lin. & $S_i$ & $S_{Ti}$ & lin. & $S_i$ & $S_{Ti}$ & lin.\\\\\n\\midrule\n";
+  for (std::size_t k = 0; k < d; ++k) table += slots[k].symbol + table_rows[k] + "\\\\\n";
+  return table + "\\bottomrule\n\\end{tabular}\n";
+}
+
+void add_tallies(const Tallies& t, LatexMacros& tex) {
+  tex.add_text("uqLargestTotalLinearGap", latex_scientific(t.largest_gap));
+  tex.add("uqSharesOutsideFirstInterval", t.shares_outside, "{:.0f}");
+  tex.add("uqIndexCount", t.indices, "{:.0f}");
+  tex.add_text("uqMinorLargestTotal", latex_scientific(t.minor_total));
+  tex.add("uqRodThroughKShareGapPct", 100 * t.through_K_gap, "{:.0f}");
+  tex.add("uqWidestInterval", t.widest_interval, "{:.3f}");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const PaperParameters paper = load_paper_parameters();
-  const Sizes sizes = args.reduced ? Sizes{64, 16, 121, 200}
-                      : args.full  ? Sizes{65536, 2048, 401, 1000}
-                                   : Sizes{4096, 512, 301, 1000};
-  const double height_m = paper.uncertain_input("drop_height_m").value;
-  SolverSettings solver;  // the fast path of the sweeps; rtol 1e-10 puts its error far below every effect sampled
-  solver.integrator = IntegratorKind::gbs8_regularized;
-  solver.rtol = 1e-10;
-  validate(solver);
-  const SobolOptions sobol_options{.replicates = sizes.replicates, .confidence = 0.95, .seed = 17};
+  const Study st = set_up_study(args, paper);
+  LatexMacros tex = design_macros(st, args, paper);
+  write_inputs(st, paper, args);
 
-  Parameters header = all_rods_parameters(paper, solver, height_m, {"ball_E_Pa", "ball_nu", "ball_radius_m", "height_m"});
-  header.emplace_back("design", fmt::format("Saltelli: N = {} rows of A and B and A_B^(i) from a {}-dimensional Sobol "
-                                            "sequence (sample_design.hpp), d = {} inputs, N (d + 2) = {} runs per rod",
-                                            sizes.n, 2 * d, d, sizes.n * (d + 2)));
-  header.emplace_back("inputs", "independent, distributions of data/assumptions.csv (see uncertainty_inputs.csv)");
-  header.emplace_back("restitution_centre", "Table 2 e; rod A: the mean of its two printed values");
-  header.emplace_back("sobol", fmt::format("first order Saltelli 2010, total Jansen 1999, 95 % percentile bootstrap "
-                                           "intervals over {} resamples of the N rows, seed {}",
-                                           sobol_options.replicates, sobol_options.seed));
-  LatexMacros tex("hertzdash uncertainty: the paper's results under joint input uncertainty (validation/uncertainty)",
-                  {{"N", std::to_string(sizes.n)}, {"reduced", args.reduced ? "true" : "false"},
-                   {"full", args.full ? "true" : "false"}});
-  tex.add("uqN", static_cast<double>(sizes.n), "{:.0f}");
-  tex.add("uqInputs", static_cast<double>(d), "{:.0f}");
-  tex.add("uqRunsPerRod", static_cast<double>(sizes.n * (d + 2)), "{:.0f}");
-  tex.add("uqReplicates", static_cast<double>(sizes.replicates), "{:.0f}");
-  tex.add("uqHeightMm", 1e3 * height_m, "{:.0f}");
-  tex.add("uqRodARestitution", paper.rod("duralumin-a").restitution, "{:.3f}");
-  tex.add("uqRodARestitutionSecond", paper.rod("duralumin-a").restitution_second, "{:.3f}");
-  tex.add("uqRestitutionSd", paper.uncertain_input("restitution_deviation").distribution.p2, "{:.4f}");
-  tex.add("uqNylonRangeRatio", paper.ball.E_max_Pa / paper.ball.E_min_Pa, "{:.1f}");
-
-  // The inputs as stated, for the reader and the article.
-  CsvWriter inputs_csv("hertzdash uncertainty: the distributions of the jointly drawn inputs (data/assumptions.csv)",
-                       header, {"parameter", "unit", "assumed_value", "distribution", "mean", "sd", "reason"});
-  std::string inputs_table = "{\\footnotesize\\begin{tabularx}{\\textwidth}{@{}llX@{}}\n\\toprule\n"
-                             "input [unit] & distribution & why\\\\\n\\midrule\n";
-  for (const UncertainInput& in : paper.uncertain_inputs) {
-    const auto [mean, sd] = distribution_moments(in.distribution);
-    inputs_csv.add_row({in.parameter, in.unit, in.value, describe(in.distribution), mean, sd, in.reason});
-    inputs_table += fmt::format("\\texttt{{{}}} [{}] & {} & {}\\\\\n", latex_text(in.parameter), in.unit,
-                                latex_distribution(in.distribution), latex_text(in.reason));
-  }
-  inputs_table += "\\bottomrule\n\\end{tabularx}}\n";
-
-  CsvWriter outputs_csv("hertzdash uncertainty: e_effective, peak force and contact time per rod under the joint input "
-                        "uncertainty: quantiles over the 2N draws of A and B, and the spread the linearisation predicts",
-                        header,
-                        {"rod", "output", "assumed_value", "mean", "sd", "q05", "q50", "q95", "sample_cv", "linear_cv"});
-  CsvWriter sobol_csv("hertzdash uncertainty: first-order (S) and total (ST) Sobol indices with 95 % bootstrap "
-                      "intervals, and the first-order variance share of the linearisation el^2 CV^2 / sum",
-                      header,
-                      {"rod", "output", "input", "S", "S_lower", "S_upper", "ST", "ST_lower", "ST_upper", "elasticity",
-                       "input_cv", "linear_share"});
-  std::string sobol_table;
-  // Over all rods, outputs and inputs: the largest |ST - linear share|, the shares outside their S's
-  // interval, the widest interval.
-  double largest_gap = 0, widest_interval = 0;
-  double minor_total = 0;  // the largest S_T of the rod's nu and E, R and m
-  double through_K_gap = 0;  // the largest |S_T / share - 1| of the rod's nu and E (peak force, contact time)
-  int shares_outside = 0, indices = 0;
-
-  const std::vector<double> unit = saltelli_unit_points(SampleMethod::sobol, sizes.n, d, 0);
-  const std::size_t runs = sizes.n * (d + 2);
+  Findings findings = start_findings(st);
+  const std::vector<double> unit = saltelli_unit_points(SampleMethod::sobol, st.sizes.n, d, 0);
   for (const RodData& rod : paper.rods) {
-    const std::string rod_tag = rod_macro_tag(rod.name);
-    std::vector<std::array<double, d>> draws(runs);
-    for (std::size_t r = 0; r < runs; ++r)
-      for (std::size_t k = 0; k < d; ++k) draws[r][k] = slot_input(paper, rod.name, k).distribution.quantile(unit[r * d + k]);
-    std::array<std::vector<double>, outputs.size()> y;
-    for (auto& v : y) v.resize(runs);
-    parallel_sweep(runs, solver, [&](ImpactSimulator& sim, std::size_t r) {
-      const DropTestSetup s = drawn_setup(paper, rod, draws[r]);
-      const ImpactSummary summary = sim.run<HongoPaper>(s);
-      if (!summary.separated) throw std::runtime_error("uncertainty: a run of rod " + rod.name + " did not separate");
-      for (std::size_t o = 0; o < outputs.size(); ++o) y[o][r] = output_value(summary, o);
-    }, {.label = "uncertainty " + rod.name});
-
-    const DropTestSetup tabled = paper_setup(paper, rod.name, height_m);  // free fall from h, for the elasticities
-    validate(tabled);
-    const DropTestSetup assumed = from_onset(tabled);
-    const ImpactSummary at_assumed = ImpactSimulator(solver).run<HongoPaper>(assumed);
-    const Linearised lin = linearise(paper, rod, tabled);
-    std::array<std::string, d> table_rows;  // the article's table (steel rod): S, ST, linear share per output
-    for (std::size_t o = 0; o < outputs.size(); ++o) {
-      const std::vector<double> joint(y[o].begin(), y[o].begin() + static_cast<std::ptrdiff_t>(2 * sizes.n));
-      const SobolIndices si = sobol_indices(y[o], sizes.n, d, sobol_options);
-      double linear_var = 0;
-      for (std::size_t k = 0; k < d; ++k) linear_var += std::pow(lin.elasticity[o][k] * lin.cv[k], 2);
-      const double sd = std::sqrt(si.variance);
-      const std::array<double, 3> q{sample_quantile(joint, 0.05), sample_quantile(joint, 0.50), sample_quantile(joint, 0.95)};
-      outputs_csv.add_row({rod.name, std::string(outputs[o].name), output_value(at_assumed, o), si.mean, sd, q[0], q[1], q[2],
-                           sd / si.mean, std::sqrt(linear_var)});
-      const std::string t = "uq" + rod_tag + outputs[o].tag;
-      const double scale = o == 0 ? 1.0 : o == 1 ? 1.0 : 1e3;  // contact time in ms
-      const char* spec = o == 0 ? "{:.3f}" : o == 1 ? "{:.0f}" : "{:.3f}";
-      tex.add(t + "Qfive", scale * q[0], spec);
-      tex.add(t + "Qfifty", scale * q[1], spec);
-      tex.add(t + "Qninetyfive", scale * q[2], spec);
-      tex.add(t + "SampleCvPct", 100 * sd / si.mean, "{:.1f}");
-      tex.add(t + "LinearCvPct", 100 * std::sqrt(linear_var), "{:.1f}");
-      double sum_first = 0, sum_total = 0;
-      for (std::size_t k = 0; k < d; ++k) {
-        const double share = std::pow(lin.elasticity[o][k] * lin.cv[k], 2) / linear_var;
-        const IndexEstimate& S = si.first[k];
-        const IndexEstimate& ST = si.total[k];
-        sum_first += S.value;
-        sum_total += ST.value;
-        sobol_csv.add_row({rod.name, std::string(outputs[o].name), slot_input(paper, rod.name, k).parameter, S.value, S.lower, S.upper,
-                           ST.value, ST.lower, ST.upper, lin.elasticity[o][k], lin.cv[k], share});
-        largest_gap = std::max(largest_gap, std::abs(ST.value - share));
-        shares_outside += share < S.lower || share > S.upper;
-        const std::string tag = slots[k].tag;
-        if (tag == "RodNu" || tag == "RodE" || tag == "Radius" || tag == "Mass") minor_total = std::max(minor_total, ST.value);
-        if ((tag == "RodNu" || tag == "RodE") && o > 0) through_K_gap = std::max(through_K_gap, std::abs(ST.value / share - 1));
-        ++indices;
-        widest_interval = std::max({widest_interval, S.upper - S.lower, ST.upper - ST.lower});
-        tex.add(t + "S" + slots[k].tag, S.value, "{:.2f}");
-        tex.add(t + "SHalfWidth" + slots[k].tag, 0.5 * (S.upper - S.lower), "{:.3f}");
-        tex.add(t + "ST" + slots[k].tag, ST.value, "{:.4f}");
-        tex.add(t + "Lin" + slots[k].tag, share, "{:.4f}");
-        table_rows[k] += fmt::format(" & ${:.3f}$ & ${:.4f}$ & ${:.4f}$", S.value, ST.value, share);
-      }
-      tex.add(t + "SumFirst", sum_first, "{:.3f}");
-      tex.add(t + "SumTotal", sum_total, "{:.3f}");
-    }
-    if (rod.name == "steel" || rod.name == "duralumin-c") {
-      // The band figure needs the draws and peak forces of A and B; the runs are repeated with a trace.
-      const bool five = rod.name == "steel";
-      write_band_figure(five ? "uncertainty_fig5" : "uncertainty_fig6", rod, paper, draws, y[1], sizes, header, args,
-                        tex, five ? "Five" : "Six");
-    }
-    if (rod.name == "steel") {
-      sobol_table = "\\begin{tabular}{lrrrrrrrrr}\n\\toprule\n"
-                    "& \\multicolumn{3}{c}{$e_\\mathrm{eff}$} & \\multicolumn{3}{c}{$P_\\mathrm{max}$} & "
-                    "\\multicolumn{3}{c}{$t_c$}\\\\\n\\cmidrule(lr){2-4}\\cmidrule(lr){5-7}\\cmidrule(lr){8-10}\n"
-                    "input & $S_i$ & $S_{Ti}$ & lin. & $S_i$ & $S_{Ti}$ & lin. & $S_i$ & $S_{Ti}$ & lin.\\\\\n\\midrule\n";
-      for (std::size_t k = 0; k < d; ++k) sobol_table += slots[k].symbol + table_rows[k] + "\\\\\n";
-      sobol_table += "\\bottomrule\n\\end{tabular}\n";
-    }
-    std::cout << fmt::format("uncertainty: {} done ({} runs)\n", rod.name, runs);
+    const RodSample sample = run_design(st, paper, rod, unit);
+    const std::array<std::string, d> table_rows = analyse_rod(st, paper, rod, sample, findings, tex);
+    // The band figures need the draws and peak forces of A and B; their runs are repeated with a trace.
+    if (rod.name == "steel")
+      write_band_figure("uncertainty_fig5", rod, paper, sample.draws, sample.y[1], st.sizes, st.header, args, tex, "Five");
+    if (rod.name == "duralumin-c")
+      write_band_figure("uncertainty_fig6", rod, paper, sample.draws, sample.y[1], st.sizes, st.header, args, tex, "Six");
+    if (rod.name == "steel") findings.sobol_table = article_sobol_table(table_rows);
+    std::cout << fmt::format("uncertainty: {} done ({} runs)\n", rod.name, sample.draws.size());
   }
-  tex.add_text("uqLargestTotalLinearGap", latex_scientific(largest_gap));
-  tex.add("uqSharesOutsideFirstInterval", shares_outside, "{:.0f}");
-  tex.add("uqIndexCount", indices, "{:.0f}");
-  tex.add_text("uqMinorLargestTotal", latex_scientific(minor_total));
-  tex.add("uqRodThroughKShareGapPct", 100 * through_K_gap, "{:.0f}");
-  tex.add("uqWidestInterval", widest_interval, "{:.3f}");
+  add_tallies(findings.tallies, tex);
 
-  inputs_csv.save(args.out_dir / "uncertainty_inputs.csv");
-  outputs_csv.save(args.out_dir / "uncertainty_outputs.csv");
-  sobol_csv.save(args.out_dir / "uncertainty_sobol.csv");
+  findings.outputs_csv.save(args.out_dir / "uncertainty_outputs.csv");
+  findings.sobol_csv.save(args.out_dir / "uncertainty_sobol.csv");
   tex.save(args.generated_dir / "uncertainty.tex");
-  std::string provenance = provenance_header("uncertainty tables (validation/uncertainty)", header);
-  std::replace(provenance.begin(), provenance.end(), '#', '%');
-  write_file_atomically(args.generated_dir / "uncertainty_inputs_table.tex", provenance + inputs_table);
-  write_file_atomically(args.generated_dir / "uncertainty_sobol_table.tex", provenance + sobol_table);
+  write_latex_fragment(args, st, "uncertainty_sobol_table.tex", findings.sobol_table);
   std::cout << "uncertainty: written to " << args.out_dir.string() << " and " << args.generated_dir.string() << "\n";
   return 0;
 } catch (const std::exception& e) {

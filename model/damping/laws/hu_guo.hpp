@@ -13,7 +13,7 @@ namespace hertzdash {
 /// original paper could not be consulted while this library was written (no network
 /// access), so which of the two forms the original prints is NOT verified here; the
 /// restitution map (validation/damping_laws) shows what this form returns, and checking
-/// the original is an open item (README, "Damping laws").
+/// the original is an open item (docs/damping-laws.md, "Open item").
 class HuGuo : public HertzProportionalDashpot<HuGuo> {
  public:
   static constexpr LawInfo info{
