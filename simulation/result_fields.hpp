@@ -198,10 +198,10 @@ inline constexpr std::array result_fields{
                 .meaning = "whether the iteration converged", .in = {.json = true},
                 .value = &result_field_detail::of_omega_n_iteration<&OmegaNIteration::converged>},
     ResultField{.name = "relative_change", .group = "omega_n_fixed_point", .unit = "1",
-                .meaning = "`|w_k - w_{k-1}| / w_k` at the last iteration", .in = {.json = true},
+                .meaning = "`abs(w_k - w_{k-1}) / w_k` at the last iteration", .in = {.json = true},
                 .value = &result_field_detail::of_omega_n_iteration<&OmegaNIteration::relative_change>},
     ResultField{.name = "contraction", .group = "omega_n_fixed_point", .unit = "1",
-                .meaning = "the last observed `|dG| / |dw|` (below 1 for a contraction)", .in = {.json = true},
+                .meaning = "the last observed `abs(dG) / abs(dw)` (below 1 for a contraction)", .in = {.json = true},
                 .value = &result_field_detail::of_omega_n_iteration<&OmegaNIteration::contraction>},
     ResultField{.name = "elastic_rod", .type = ResultType::group,
                 .meaning = "only with `--rod-model elastic` ([elastic-rod.md](elastic-rod.md)): [its "
