@@ -6,6 +6,7 @@
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
+#include "hertzdash/simulation/result_output.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
 
 #include <fmt/format.h>
@@ -48,33 +49,7 @@ void print_text(const SimulateRun& r) {
   const IntegratorKind asked = r.solver.integrator;
   std::cout << fmt::format("hertzdash simulate: damping law '{}', integrator {}{}\n", r.law, to_string(asked),
                            s.integrator_used == asked ? "" : fmt::format(" (ran {})", to_string(s.integrator_used)));
-  auto line = [](std::string_view name, double value) { std::cout << fmt::format("  {:<30} {:.6g}\n", name, value); };
-  line("impact_velocity_mps", s.impact_velocity_mps);
-  line("rebound_velocity_mps", s.rebound_velocity_mps);
-  line("e_effective", s.e_effective);
-  line("peak_force_N", s.peak_force_N);
-  line("max_deformation_m", s.max_deformation_m);
-  line("peak_contact_pressure_Pa", s.peak_contact_pressure_Pa);
-  line("contact_time_s", s.contact_time_s);
-  line("K_N_per_m_1_5", s.K);
-  for (const NamedValue& c : s.law_coefficients) line(c.name, c.value);
-  std::cout << fmt::format("  {:<30} {} steps, {} rhs evaluations\n", "work", s.work.steps, s.work.rhs_evaluations);
-  if (const auto& it = s.omega_n_iteration)
-    std::cout << fmt::format("  {:<30} {} iterations, {} (last relative change {:.3g}, contraction {:.3g})\n",
-                             "omega_n_fixed_point", it->iterations, it->converged ? "converged" : "NOT converged",
-                             it->relative_change, it->contraction);
-  if (const auto& e = s.elastic_rod) {
-    std::cout << fmt::format("  elastic rod: {} elements, first longitudinal frequency {:.6g} Hz, 2L/c = {:.6g} s\n",
-                             e->elements, e->first_frequency_hz, e->wave_round_trip_s);
-    line("peak_load_cell_force_N", e->peak_load_cell_force_N);
-    line("energy_in_J", e->energy_in_J);
-    line("energy_rigid_body_out_J", e->energy_rigid_body_out_J);
-    line("energy_rod_vibration_J", e->energy_rod_vibration_J);
-    line("energy_cell_J", e->energy_cell_J);
-    line("energy_dissipated_contact_J", e->energy_dissipated_contact_J);
-    line("energy_dissipated_material_J", e->energy_dissipated_material_J);
-    line("energy_balance_error_J", e->energy_balance_error_J);
-  }
+  std::cout << result_text_block(s, r.setup);
 }
 
 void write_trace(const SimulateRun& r, const std::string& path) {

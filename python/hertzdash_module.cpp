@@ -12,6 +12,7 @@
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/simulation/result_fields.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
 #include "hertzdash/simulation/uniform_trace.hpp"
 
@@ -328,19 +329,41 @@ py::list py_integrators() {
 }
 
 // simulate_many: numeric set-up options may be 1-D arrays (broadcast against scalars);
-// the solver options are one setting for the whole sweep.
-struct ManyOutput {
-  const char* name;
-  double ImpactSummary::*field;
-};
-constexpr std::array<ManyOutput, 6> many_outputs{{{"e_effective", &ImpactSummary::e_effective},
-                                                  {"peak_force_N", &ImpactSummary::peak_force_N},
-                                                  {"max_deformation_m", &ImpactSummary::max_deformation_m},
-                                                  {"contact_time_s", &ImpactSummary::contact_time_s},
-                                                  {"impact_velocity_mps", &ImpactSummary::impact_velocity_mps},
-                                                  {"rebound_velocity_mps", &ImpactSummary::rebound_velocity_mps}}};
+// the solver options are one setting for the whole sweep. Its outputs are the result fields
+// Python's simulate_many() reports (simulation/result_fields.hpp).
+constexpr auto many_outputs = result_fields_reported<&ResultReports::python_many>();
+static_assert(std::ranges::all_of(many_outputs,
+                                  [](const ResultField& f) {
+                                    return f.type == ResultType::number || f.type == ResultType::boolean ||
+                                           f.type == ResultType::warnings;
+                                  }),
+              "simulate_many() returns numbers, booleans and the warnings' codes");
 
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// Each point's codes (the "code"s of simulate()'s "warnings"), and one warning per code.
+py::list warning_codes(const std::vector<ImpactSummary>& results) {
+  py::list codes;
+  DiagnosticSet any;
+  for (const ImpactSummary& r : results) {
+    py::list point;
+    for (const DiagnosticInfo& d : diagnostic_table)
+      if (r.diagnostics.has(d.code)) {
+        point.append(std::string(d.name));
+        any.add(d.code);
+      }
+    codes.append(point);
+  }
+  for (const DiagnosticInfo& d : diagnostic_table) {
+    if (!any.has(d.code)) continue;
+    const auto count = std::count_if(results.begin(), results.end(),
+                                     [&](const ImpactSummary& r) { return r.diagnostics.has(d.code); });
+    warn(fmt::format("{} of {} points: {} (the point's entry of 'warnings' says which; "
+                     "hertzdash.simulate() at a point gives the message)",
+                     count, results.size(), d.name));
+  }
+  return codes;
+}
 
 py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   RunOptions base;
@@ -397,36 +420,48 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
         n, solver, [&](ImpactSimulator& sim, std::size_t i) { results[i] = sim.run(setups[i], base.damping); }, sweep);
   }
   py::dict out;
-  for (const ManyOutput& output : many_outputs) {
-    py::array_t<double> a(static_cast<py::ssize_t>(n));
-    for (std::size_t i = 0; i < n; ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = results[i].*output.field;
-    out[output.name] = a;
-  }
-  py::array_t<bool> separated(static_cast<py::ssize_t>(n));
-  for (std::size_t i = 0; i < n; ++i) separated.mutable_at(static_cast<py::ssize_t>(i)) = results[i].separated;
-  out["separated"] = separated;
-  // Each point's codes (the "code"s of simulate()'s "warnings"), and one warning per code.
-  py::list codes;
-  DiagnosticSet any;
-  for (const ImpactSummary& r : results) {
-    py::list point;
-    for (const DiagnosticInfo& d : diagnostic_table)
-      if (r.diagnostics.has(d.code)) {
-        point.append(std::string(d.name));
-        any.add(d.code);
-      }
-    codes.append(point);
-  }
-  out["warnings"] = codes;
-  for (const DiagnosticInfo& d : diagnostic_table) {
-    if (!any.has(d.code)) continue;
-    const auto count = std::count_if(results.begin(), results.end(),
-                                     [&](const ImpactSummary& r) { return r.diagnostics.has(d.code); });
-    warn(fmt::format("{} of {} points: {} (the point's entry of 'warnings' says which; "
-                     "hertzdash.simulate() at a point gives the message)",
-                     count, n, d.name));
+  const auto points = static_cast<py::ssize_t>(n);
+  for (const ResultField& output : many_outputs) {
+    const std::string name(output.name);
+    if (output.type == ResultType::number) {
+      py::array_t<double> a(points);
+      for (std::size_t i = 0; i < n; ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = output.value(results[i], setups[i]);
+      out[name.c_str()] = a;
+    } else if (output.type == ResultType::boolean) {
+      py::array_t<bool> a(points);
+      for (std::size_t i = 0; i < n; ++i)
+        a.mutable_at(static_cast<py::ssize_t>(i)) = output.value(results[i], setups[i]) != 0;
+      out[name.c_str()] = a;
+    } else {
+      out[name.c_str()] = warning_codes(results);
+    }
   }
   return out;
+}
+
+py::list py_result_fields() {
+  py::list list;
+  for (const ResultField& f : result_fields) {
+    py::dict d;
+    d["name"] = std::string(f.name);
+    d["group"] = std::string(f.group);
+    d["type"] = std::string(json_type_name(f.type));
+    d["unit"] = std::string(f.unit);
+    d["meaning"] = std::string(f.meaning);
+    d["json"] = f.in.json;
+    d["sweep"] = f.in.sweep;
+    d["simulate_many"] = f.in.python_many;
+    list.append(d);
+  }
+  return list;
+}
+
+// The names of the top-level fields `report` marks, comma-separated, in table order.
+std::string result_names(bool ResultReports::*report) {
+  std::string names;
+  for (const ResultField& f : result_fields)
+    if (f.in.*report && f.group.empty()) names += (names.empty() ? "" : ", ") + std::string(f.name);
+  return names;
 }
 
 std::string options_doc() {
@@ -460,14 +495,14 @@ PYBIND11_MODULE(hertzdash, m) {
   const std::string options = options_doc();
   m.def("simulate", &py_simulate,
         ("simulate(**options) -> dict\n\nOne drop test of the paper's set-up (a rod falling onto the nylon "
-         "hemisphere), exactly `hertzdash simulate --json`: e_effective, peak_force_N, max_deformation_m, "
-         "peak_contact_pressure_Pa, yield_onset_pressure_Pa (None without a check), exceeds_yield_onset, "
-         "contact_time_s, impact_velocity_mps, rebound_velocity_mps, separated, K_N_per_m_1_5, law_coefficients, "
-         "steps, rhs_evaluations, events, integrator_used, omega_n_fixed_point (iterated omega_n variants only), "
-         "elastic_rod (rod_model='elastic' only), inputs, schema_version, git_revision (docs/json-output.md). "
-         "Values are SI, units in the keys. Bad values raise ValueError with the program's message, naming "
-         "the keyword. A fall-back of the integrator, an under-resolved fixed step, a step shortened "
-         "for stability and a Hertz peak pressure above the onset of yield (1.60 ball_yield_stress) are "
+         "hemisphere), exactly `hertzdash simulate --json`: schema_version, " +
+         result_names(&ResultReports::json) +
+         ", inputs, git_revision (docs/json-output.md, result_fields(); yield_onset_pressure_Pa is None without a "
+         "check, omega_n_fixed_point only for the iterated omega_n variants, elastic_rod only with "
+         "rod_model='elastic'). Values are SI, units in the keys. Bad values raise ValueError with the program's "
+         "message, naming the keyword. A fall-back of the integrator, an under-resolved fixed step, a step shortened "
+         "for stability and a Hertz peak pressure above the onset of yield (ball_yield_stress times a factor of "
+         "ball_nu, Johnson) are "
          "reported as UserWarnings, as the program reports them on stderr.\n\n" +
          options)
             .c_str());
@@ -541,13 +576,20 @@ PYBIND11_MODULE(hertzdash, m) {
   m.def("integrators", &py_integrators,
         "integrators() -> list of dict\n\nThe integrator table: name, step_control, variables, reads_cvode_method, "
         "needs_root_polynomial_law and the fall-backs.");
+  m.def("result_fields", &py_result_fields,
+        "result_fields() -> list of dict\n\nThe result fields of an impact, declared once "
+        "(simulation/result_fields.hpp), in the order of simulate()'s keys: name (units in it), group (the key of "
+        "the object it sits in, e.g. elastic_rod; empty at the top level), type (as docs/json-output.md names it), "
+        "unit (SI; '1' dimensionless, empty for no quantity), meaning, and where each is reported: json "
+        "(simulate()), sweep (a column of `hertzdash sweep`), simulate_many.");
   m.def("simulate_many", &py_simulate_many, py::arg("threads") = 0,
         ("simulate_many(threads=0, **options) -> dict of NumPy arrays\n\nMany drop tests in parallel in C++ (the "
          "GIL released; threads=0: all cores). Numeric set-up options may be 1-D arrays of one common length "
-         "(scalars and length-1 arrays broadcast); the solver options are one setting for all. Returns arrays "
-         "e_effective, peak_force_N, max_deformation_m, contact_time_s, impact_velocity_mps, rebound_velocity_mps "
-         "and separated (bool), element i equal to simulate() of point i, and warnings (a list per point of the "
-         "codes of simulate()'s warnings; one UserWarning per code says how many points carry it). A bad value "
+         "(scalars and length-1 arrays broadcast); the solver options are one setting for all. Returns " +
+         result_names(&ResultReports::python_many) +
+         ": NumPy arrays (bool for separated), element i equal to simulate() of point i, except warnings (a list "
+         "per point of the codes of simulate()'s warnings; one UserWarning per code says how many points carry "
+         "it). A bad value "
          "raises ValueError naming the option and the point; a result that contradicts the model, RuntimeError.\n\n" +
          options)
             .c_str());

@@ -7,6 +7,7 @@
 #include "hertzdash/simulation/calibrate_restitution.hpp"
 #include "hertzdash/simulation/impact_history.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/result_output.hpp"
 #include "hertzdash/simulation/step_resolution.hpp"
 
 #include <fmt/format.h>
@@ -64,57 +65,9 @@ std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run, const std::st
 }
 
 nlohmann::ordered_json to_json(const SimulateRun& run, const std::string& trace_note) {
-  const ImpactSummary& s = run.summary;
   nlohmann::ordered_json j;
   j["schema_version"] = json_schema_version;
-  j["e_effective"] = s.e_effective;
-  j["peak_force_N"] = s.peak_force_N;
-  j["max_deformation_m"] = s.max_deformation_m;
-  j["peak_contact_pressure_Pa"] = s.peak_contact_pressure_Pa;
-  const double yield_onset = hertz_yield_onset_pressure_Pa(run.setup.ball_yield_stress_Pa, run.setup.ball.nu);
-  j["yield_onset_pressure_Pa"] = std::isfinite(yield_onset) ? nlohmann::ordered_json(yield_onset) : nlohmann::ordered_json(nullptr);
-  j["exceeds_yield_onset"] = s.peak_contact_pressure_Pa > yield_onset;
-  const double profile_error = hertz_profile_error(s.max_deformation_m, run.setup.ball_radius_m);
-  j["hertz_profile_error"] = profile_error;
-  j["exceeds_small_deformation"] = profile_error > hertz_profile_error_limit;
-  j["contact_time_s"] = s.contact_time_s;
-  j["impact_velocity_mps"] = s.impact_velocity_mps;
-  j["rebound_velocity_mps"] = s.rebound_velocity_mps;
-  j["separated"] = s.separated;
-  j["K_N_per_m_1_5"] = s.K;
-  nlohmann::ordered_json coefficients = nlohmann::ordered_json::object();
-  for (const NamedValue& c : s.law_coefficients) coefficients[c.name] = c.value;
-  j["law_coefficients"] = coefficients;
-  j["steps"] = s.work.steps;
-  j["rhs_evaluations"] = s.work.rhs_evaluations;
-  j["events"] = s.work.events;
-  j["integrator_used"] = to_string(s.integrator_used);
-  j["warnings"] = to_json(run_diagnostics(run, trace_note));
-  if (const auto& it = s.omega_n_iteration) {
-    j["omega_n_fixed_point"] = {{"iterations", it->iterations},
-                                {"converged", it->converged},
-                                {"relative_change", it->relative_change},
-                                {"contraction", it->contraction}};
-  }
-  if (const auto& e = s.elastic_rod) {
-    nlohmann::ordered_json r;
-    r["elements"] = e->elements;
-    r["first_frequency_hz"] = e->first_frequency_hz;
-    r["wave_round_trip_s"] = e->wave_round_trip_s;
-    if (e->step_used_s > 0) {
-      r["stable_step_s"] = e->stable_step_s;
-      r["step_used_s"] = e->step_used_s;
-    }
-    r["peak_load_cell_force_N"] = e->peak_load_cell_force_N;
-    r["energy_in_J"] = e->energy_in_J;
-    r["energy_rigid_body_out_J"] = e->energy_rigid_body_out_J;
-    r["energy_rod_vibration_J"] = e->energy_rod_vibration_J;
-    r["energy_cell_J"] = e->energy_cell_J;
-    r["energy_dissipated_contact_J"] = e->energy_dissipated_contact_J;
-    r["energy_dissipated_material_J"] = e->energy_dissipated_material_J;
-    r["energy_balance_error_J"] = e->energy_balance_error_J;
-    j["elastic_rod"] = r;
-  }
+  add_result_fields(j, run.summary, run.setup, to_json(run_diagnostics(run, trace_note)));
   add_inputs_and_revision(j, run.inputs);
   return j;
 }

@@ -139,7 +139,7 @@ SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs,
           const RunOptions run = c.options(runs[j]);
           const DropTestSetup setup = resolve_setup(run, paper);
           const ImpactSummary s = simulators(resolve_solver(run)).run(setup, run.damping);
-          for (std::size_t k = 0; k < outputs.size(); ++k) r.values[j * r.outputs + k] = outputs[k]->value(s);
+          for (std::size_t k = 0; k < outputs.size(); ++k) r.values[j * r.outputs + k] = outputs[k]->value(s, setup);
           r.diagnostics[j] = s.diagnostics;
           r.errors[j].clear();
         } catch (const std::exception& e) {

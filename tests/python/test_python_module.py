@@ -118,6 +118,44 @@ def test_simulate_many_is_simulate_point_by_point():
             assert one_thread[key][i] == expected, (key, i)
 
 
+def fields_of(group, report):
+    """The names of the result fields (simulation/result_fields.hpp) of `group` a front end reports."""
+    return [f["name"] for f in hertzdash.result_fields() if f[report] and f["group"] == group]
+
+
+@pytest.mark.parametrize("options, group", [
+    (dict(rod="steel", height=0.02), None),
+    (dict(rod="steel", height=0.02, omega_n="self-consistent"), "omega_n_fixed_point"),
+    (dict(rod="steel", height=0.02, rod_model="elastic", integrator="rk4"), "elastic_rod"),
+])
+def test_simulate_returns_the_result_fields_table_in_its_order(options, group):
+    # The top-level fields, less the groups the run has not; a group's keys are its fields (a
+    # fixed step: the elastic rod's step fields included).
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = hertzdash.simulate(**options)
+    groups = {f["group"] for f in hertzdash.result_fields() if f["group"]}
+    top = [name for name in fields_of("", "json") if name not in groups or name == group]
+    assert list(r) == ["schema_version", *top, "inputs", "git_revision"]
+    if group:
+        assert list(r[group]) == fields_of(group, "json")
+
+
+def test_simulate_many_returns_the_result_fields_table_in_its_order():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = hertzdash.simulate_many(height=[0.01, 0.02], rod="steel")
+    fields = [f for f in hertzdash.result_fields() if f["simulate_many"]]
+    assert list(r) == [f["name"] for f in fields]
+    for f in fields:
+        if f["type"] == "boolean":
+            assert r[f["name"]].dtype == np.bool_, f["name"]
+        elif f["type"] == "number":
+            assert r[f["name"]].dtype == np.float64, f["name"]
+        else:
+            assert f["name"] == "warnings" and [type(w) for w in r["warnings"]] == [list, list]
+
+
 def test_simulate_many_broadcasts_scalars_and_length_one_arrays():
     r = hertzdash.simulate_many(height=[0.01, 0.02, 0.03], ball_E=[2.5e9], rod="steel")
     assert all(len(v) == 3 for v in r.values())
