@@ -1,6 +1,7 @@
 // One declaration per input (model/parameter.hpp, simulation/run_options.hpp) and every front
-// end generated from it. Checked here: the command line's options, the case-file keys, the fit's
-// names and bounds and docs/parameters.md against the declarations; the refusals' keys in each
+// end generated from it. Checked here: the command line's options, the fit's names and bounds
+// and docs/parameters.md against the declarations (the case-file keys in
+// tests/test_sweep_case_keys.cpp, built with TOML only); the refusals' keys in each
 // spelling; and that no option is silently ignored: over the whole matrix of option x law x rig
 // x integrator, an option is either read (the run's description, the provenance header of every
 // output, changes with it) or refused with exit-status-2 InvalidParameter naming it and what
@@ -10,9 +11,9 @@
 #include "hertzdash/simulation/parameter_reference.hpp"
 #include "hertzdash/simulation/run_options.hpp"
 #include "hertzdash/simulation/run_reports.hpp"
-#include "hertzdash/simulation/sweep_case.hpp"
 #include "hertzdash/simulation/trace_fit.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/parameter_samples.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -28,62 +29,9 @@ using Catch::Matchers::StartsWith;
 
 namespace {
 
-const PaperParameters& paper() {
-  static const PaperParameters p = load_paper_parameters();
-  return p;
-}
-
-// The options that choose what runs; every run reads them, and the matrix varies them.
-bool is_selection(const RunOption& o) {
-  return o.name == "rod" || o.name == "damping" || o.name == "rod-model" || o.name == "integrator";
-}
-
-// A valid value of option o that differs from its default, set into `options`:
-// - a fittable number: 1.1 times its default in the run, where that is finite and not zero (a
-//   10 % change keeps every default impact of the paper's rods inside the Hertz model's domain:
-//   X stays far below R);
-// - the other numbers, by their meaning: a yield stress of 1e8 Pa, 2 elements, a reference speed
-//   of 1 m/s, a step of 1e-7 s (below t_H / 1000 of every default impact, ~1.2e-3 s), tolerances
-//   of 1e-6 and 1e-10, a largest step of 1e-5 s, a time constant of 1 us, a linear contact
-//   stiffness of 1e6 N/m (the matched one, m v0^2 / X^2, is ~7e5 N/m for the steel rod at 20 mm);
-// - a text: a choice other than the default; a flag: on.
-void set_sample(RunOptions& options, const RunOption& o) {
-  switch (o.decl.type) {
-    case ParameterType::flag: set_flag(options, o, true); return;
-    case ParameterType::text: {
-      const std::vector<std::string> choices = split_option_list(std::string(o.decl.choices));
-      for (std::string c : choices) {
-        c.erase(0, c.find_first_not_of(' '));
-        if (c != o.decl.default_value && c != "self-consistent" && c != "contact-time") {
-          set_text(options, o, c);
-          return;
-        }
-      }
-      FAIL("no second choice for " << o.name);
-      return;
-    }
-    case ParameterType::number: break;
-  }
-  if (o.value_in_setup) {
-    RunOptions reading = options;
-    reading.rod_model = "elastic";  // the elastic rod's inputs have their defaults only there
-    if (!o.readers.laws.empty()) reading.damping = o.readers.laws.front();
-    const std::optional<double> v = o.value_in_setup(resolve_setup(reading, paper()));
-    if (v && std::isfinite(*v) && *v != 0) {
-      set_number(options, o, std::min(1.1 * *v, std::nextafter(o.decl.range.hi, 0.0)));
-      return;
-    }
-  }
-  const std::map<std::string, double> by_meaning{{"ball-yield-stress", 1e8}, {"rod-elements", 2},
-                                                 {"reference-velocity", 1.0}, {"dt", 1e-7},
-                                                 {"rtol", 1e-6},              {"atol", 1e-10},
-                                                 {"max-step", 1e-5},          {"viscous-time-constant", 1e-6},
-                                                 {"linear-stiffness", 1e6},   {"rod-damping-ratio", 0.01},
-                                                 {"cell-damping-ratio", 0.05}};
-  const auto it = by_meaning.find(o.name);
-  if (it == by_meaning.end()) FAIL("no sample value for " << o.name);
-  set_number(options, o, it->second);
-}
+using test::is_selection;
+using test::paper;
+using test::set_sample;
 
 // Whether o's readers read it in this run.
 bool read_in(const RunOption& o, const RunOptions& run) {
@@ -134,20 +82,6 @@ TEST_CASE("the command line's options are the declarations", "[parameters][cli]"
       const bool takes = std::string(command) != "fit" || o.group == RunOption::Group::setup;
       CHECK((r.out.find("--" + o.name + " ") != std::string::npos) == takes);
     }
-  }
-}
-
-TEST_CASE("a case file takes every option under its key", "[parameters][sweep]") {
-  for (const RunOption& o : run_options()) {
-    if (is_selection(o)) continue;
-    RunOptions expected;
-    set_sample(expected, o);
-    const std::string value = given_text(expected, o);
-    const std::string toml = o.decl.type == ParameterType::text ? "\"" + value + "\"" : value;
-    INFO(o.name << " = " << toml);
-    const SweepCase c = parse_sweep_case("[base]\n" + o.name + " = " + toml + "\n", "case.toml");
-    CHECK(is_given(c.base, o));
-    CHECK(given_text(c.base, o) == value);
   }
 }
 
@@ -264,4 +198,41 @@ TEST_CASE("restitution reads the wall's moduli, refuses what it cannot read", "[
   gravity.impact_velocity_mps = 1.0;
   gravity.gravity_mps2 = 9.81;
   CHECK(refused_key(gravity) == "gravity");
+}
+
+TEST_CASE("no option is ignored by restitution: each read or refused", "[parameters]") {
+  // The command's own dimension of the matrix: restitution runs the contact phase alone, so it
+  // sets the wall and gravity itself. Each option, given with a law, rig and integrator that read
+  // it, either changes the contact that runs (its description) or is refused naming the option.
+  auto restitution_contact = [](const RunOptions& o) {
+    const RestitutionRun r = run_restitution(o, paper(), std::nullopt);
+    return describe_run(r.setup, r.law, r.solver);
+  };
+  std::size_t read = 0, refused = 0;
+  for (const RunOption& o : run_options()) {
+    if (is_selection(o)) continue;
+    RunOptions base;
+    if (!o.readers.laws.empty()) base.damping = o.readers.laws.front();
+    if (o.readers.elastic_rod) base.rod_model = "elastic";
+    if (o.readers.integrators)
+      for (const IntegratorTraits& row : all_integrator_traits)
+        if (o.readers.integrators(row)) {
+          base.integrator = std::string(row.name);
+          break;
+        }
+    RunOptions with = base;
+    set_sample(with, o);
+    INFO(o.name << " = " << given_text(with, o));
+    try {
+      const Parameters given = restitution_contact(with);
+      CHECK(given != restitution_contact(base));
+      ++read;
+    } catch (const InvalidParameter& e) {
+      // Refused by name: the option itself, or the elastic rod it needs (restitution has none).
+      CHECK((e.key == o.name || (o.readers.elastic_rod && e.key == "rod-model")));
+      ++refused;
+    }
+  }
+  CHECK(read > 0);
+  CHECK(refused > 0);
 }
