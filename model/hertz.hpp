@@ -1,5 +1,6 @@
 #pragma once
 // Hertz contact of a sphere on a flat, eq. (3) of Hongo et al.
+#include <cmath>
 
 namespace hertzdash {
 
@@ -18,6 +19,11 @@ double compliance(const Material& m);
 /// so that the elastic contact force is K x^{3/2} for a deformation x [m].
 /// A rigid body (E = +inf) contributes nothing to the compliance sum.
 double hertz_stiffness(double sphere_radius_m, const Material& sphere, const Material& flat);
+
+/// The Hertz spring, eq. (3): F = K x^{3/2} [N] for a deformation x >= 0 [m] and the stiffness
+/// K [N/m^{3/2}] of hertz_stiffness(). The laws whose dashpot also carries x^{1/2} (the paper's,
+/// kuwabara-kono) write K x^{1/2} (x + tau xdot) instead, to take one square root.
+inline double hertz_spring_force(double K, double x) noexcept { return K * x * std::sqrt(x); }
 
 /// Deformation scale of a Hertz impact of mass m [kg] at speed v0 [m/s]:
 /// X* = (m v0^2 / K)^{2/5} [m], the only length that m, K and v0 form.

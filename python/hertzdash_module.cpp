@@ -319,7 +319,7 @@ py::list py_integrators() {
     d["name"] = std::string(r.name);
     d["step_control"] = r.step_control == StepControl::fixed_step ? "fixed-step" : "adaptive";
     d["variables"] = r.variables == Variables::physical ? "physical" : "regularized";
-    d["reads_cvode_method"] = r.reads_cvode_method;
+    d["method"] = std::string(method_traits(r.method).name);
     d["needs_root_polynomial_law"] = r.needs_root_polynomial;
     d["fallback_for_other_laws"] = to_string(r.fallback_for_other_laws);
     d["physical_counterpart"] = to_string(r.physical_counterpart);
@@ -574,7 +574,7 @@ PYBIND11_MODULE(hertzdash, m) {
         "uniform|normal|lognormal with lower and upper (the truncation, +-inf if none), mean and sd (normal), median "
         "and log_sd (lognormal), and reason), and data_dir, the directory they were read from.");
   m.def("integrators", &py_integrators,
-        "integrators() -> list of dict\n\nThe integrator table: name, step_control, variables, reads_cvode_method, "
+        "integrators() -> list of dict\n\nThe integrator table: name, step_control, method, variables, "
         "needs_root_polynomial_law and the fall-backs.");
   m.def("result_fields", &py_result_fields,
         "result_fields() -> list of dict\n\nThe result fields of an impact, declared once "

@@ -81,7 +81,7 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
   }
   p.emplace_back("integrator", to_string(solver.integrator));
   const IntegratorTraits& row = integrator_traits(solver.integrator);
-  if (row.reads_cvode_method) p.emplace_back("cvode_method", to_string(solver.cvode_method));
+  if (row.method == IntegratorMethod::cvode) p.emplace_back("cvode_method", to_string(solver.cvode_method));
   if (row.step_control == StepControl::adaptive) {
     p.emplace_back("rtol", num(solver.rtol));
     p.emplace_back("atol", num(solver.atol));

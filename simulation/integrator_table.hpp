@@ -5,8 +5,9 @@
 //
 // Adding an integrator: write it in integrators/ (it knows only ode/), add its
 // enumerator to IntegratorKind (simulation/solver_settings.hpp) and one row here: a
-// struct with its traits and a static integrate() that calls it, listed in
-// IntegratorTable. Nothing else changes.
+// struct with its traits (a method of method_table in physical or regularised variables)
+// and a static integrate() that calls it, listed in IntegratorTable; a new method is one
+// more entry of method_table. Nothing else changes.
 //
 // A row's integrate(sys, y, t0, t1, settings, workspace, observer) integrates any
 // OdeSystem: the drop test in physical variables (model/drop_test.hpp) for rows with
@@ -44,13 +45,44 @@ enum class Variables {
   regularized,  ///< the fall in closed form, the contact in u = x^{1/2} (simulation/regularized_impact.hpp)
 };
 
-/// What the table says of one integrator.
+/// The numerical method of a row, whatever the variables it runs in (Variables): the method
+/// decides the step control and which settings apply (cvode's --cvode-method, for one).
+enum class IntegratorMethod { euler, rk4, cvode, dopri5, gbs8, taylor };
+
+/// What a method is, apart from the variables it integrates.
+struct MethodTraits {
+  IntegratorMethod method;
+  std::string_view name;
+  StepControl step_control;
+};
+
+inline constexpr std::array<MethodTraits, 6> method_table{{
+    {IntegratorMethod::euler, "euler", StepControl::fixed_step},
+    {IntegratorMethod::rk4, "rk4", StepControl::fixed_step},
+    {IntegratorMethod::cvode, "cvode", StepControl::adaptive},
+    {IntegratorMethod::dopri5, "dopri5", StepControl::adaptive},
+    {IntegratorMethod::gbs8, "gbs8", StepControl::adaptive},
+    {IntegratorMethod::taylor, "taylor", StepControl::adaptive},
+}};
+
+static_assert(
+    [] {
+      for (std::size_t i = 0; i < method_table.size(); ++i)
+        if (static_cast<std::size_t>(method_table[i].method) != i) return false;
+      return true;
+    }(),
+    "method_table is indexed by IntegratorMethod");
+
+constexpr const MethodTraits& method_traits(IntegratorMethod m) { return method_table[static_cast<std::size_t>(m)]; }
+
+/// What the table says of one integrator: a method in a formulation (physical or regularised
+/// variables).
 struct IntegratorTraits {
   IntegratorKind kind;
   std::string_view name;  ///< the CLI spelling
-  StepControl step_control;
+  IntegratorMethod method;
   Variables variables;
-  bool reads_cvode_method = false;  ///< takes --cvode-method
+  StepControl step_control = method_traits(method).step_control;  ///< the method's
   /// Runs only laws whose force is a polynomial in x^{1/2} (RootPolynomialLaw); others
   /// run `fallback_for_other_laws`.
   bool needs_root_polynomial = false;
@@ -109,14 +141,14 @@ struct CallFixedStep {
 
 struct Euler : CallFixedStep<ExplicitEuler> {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::euler, .name = "euler",
-                                           .step_control = StepControl::fixed_step, .variables = Variables::physical,
+                                           .method = IntegratorMethod::euler, .variables = Variables::physical,
                                            .min_steps_per_contact_located = 10240,
                                            .min_steps_per_contact_unlocated = 10240};
 };
 
 struct Rk4 : CallFixedStep<ClassicalRk4> {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::rk4, .name = "rk4",
-                                           .step_control = StepControl::fixed_step, .variables = Variables::physical,
+                                           .method = IntegratorMethod::rk4, .variables = Variables::physical,
                                            .min_steps_per_contact_located = 10,
                                            .min_steps_per_contact_unlocated = 1280};
 };
@@ -154,26 +186,25 @@ struct CallDopri5 {
 
 struct Cvode : CallCvode {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::cvode, .name = "cvode",
-                                           .step_control = StepControl::adaptive, .variables = Variables::physical,
-                                           .reads_cvode_method = true};
+                                           .method = IntegratorMethod::cvode, .variables = Variables::physical};
 };
 
 struct Dopri5 : CallDopri5 {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::dopri5, .name = "dopri5",
-                                           .step_control = StepControl::adaptive, .variables = Variables::physical};
+                                           .method = IntegratorMethod::dopri5, .variables = Variables::physical};
 };
 
 struct Dopri5Regularized : CallDopri5 {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::dopri5_regularized, .name = "dopri5-regularized",
-                                           .step_control = StepControl::adaptive,
+                                           .method = IntegratorMethod::dopri5,
                                            .variables = Variables::regularized,
                                            .physical_counterpart = IntegratorKind::dopri5};
 };
 
 struct CvodeRegularized : CallCvode {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::cvode_regularized, .name = "cvode-regularized",
-                                           .step_control = StepControl::adaptive,
-                                           .variables = Variables::regularized, .reads_cvode_method = true,
+                                           .method = IntegratorMethod::cvode,
+                                           .variables = Variables::regularized,
                                            .physical_counterpart = IntegratorKind::cvode};
 };
 
@@ -181,7 +212,7 @@ struct CvodeRegularized : CallCvode {
 /// path, for laws smooth through onset and separation in u = x^{1/2}.
 struct Gbs8Regularized {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::gbs8_regularized, .name = "gbs8-regularized",
-                                           .step_control = StepControl::adaptive,
+                                           .method = IntegratorMethod::gbs8,
                                            .variables = Variables::regularized,
                                            .needs_root_polynomial = true,
                                            .fallback_for_other_laws = IntegratorKind::dopri5_regularized,
@@ -201,7 +232,7 @@ struct Gbs8Regularized {
 /// whose force is a polynomial in u = x^{1/2}.
 struct TaylorRegularized {
   static constexpr IntegratorTraits traits{.kind = IntegratorKind::taylor_regularized, .name = "taylor-regularized",
-                                           .step_control = StepControl::adaptive,
+                                           .method = IntegratorMethod::taylor,
                                            .variables = Variables::regularized,
                                            .needs_root_polynomial = true,
                                            .fallback_for_other_laws = IntegratorKind::dopri5_regularized,

@@ -25,7 +25,7 @@ bool reads_tolerances(const IntegratorTraits& r) { return r.step_control == Step
 bool reads_max_step(const IntegratorTraits& r) {
   return r.step_control == StepControl::adaptive && r.variables == Variables::physical;
 }
-bool reads_cvode_method(const IntegratorTraits& r) { return r.reads_cvode_method; }
+bool reads_cvode_method(const IntegratorTraits& r) { return r.method == IntegratorMethod::cvode; }
 
 using R = RunOptions;
 using G = RunOption::Group;

@@ -15,6 +15,7 @@
 //  - the effective restitution depends on chi v0 alone (a Lambert-W closed form),
 //    hence on e alone, not on m, K or v0.
 #include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <cmath>
 
@@ -29,7 +30,7 @@ class HertzProportionalDashpot {
       : K_(c.K), chi_(Derived::chi_v0(c.restitution) / c.v0_mps) {}
 
   /// F = K x^{3/2} (1 + chi xdot) [N]
-  double force(double x, double xdot) const noexcept { return K_ * x * std::sqrt(x) * (1.0 + chi_ * xdot); }
+  double force(double x, double xdot) const noexcept { return hertz_spring_force(K_, x) * (1.0 + chi_ * xdot); }
   /// The same at u = x^{1/2}: K u^3 (1 + chi xdot) [N] (RootPolynomialLaw)
   template <class T>
   auto force_of_root(const T& u, const T& xdot) const noexcept { return K_ * u * u * u * (1.0 + chi_ * xdot); }

@@ -1,6 +1,7 @@
 #pragma once
 // The DEM dashpot with x^{1/4} weighting (Tsuji et al. 1992 family).
 #include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <cmath>
 
@@ -48,7 +49,7 @@ class TsujiDem {
 
   double force(double x, double xdot) const noexcept {
     const double x_quarter = std::sqrt(std::sqrt(x));
-    return K_ * x * std::sqrt(x) + c_ * x_quarter * xdot;
+    return hertz_spring_force(K_, x) + c_ * x_quarter * xdot;
   }
 
   std::vector<NamedValue> coefficients() const { return {{"beta", beta_}, {"c_N_s_per_m_1_25", c_}}; }

@@ -1,6 +1,7 @@
 #pragma once
 // Undamped Hertz contact: the elastic force of eq. (3) alone.
 #include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/hertz.hpp"
 
 #include <cmath>
 
@@ -19,7 +20,7 @@ class Undamped {
   static constexpr bool conservative = true;  ///< ConservativeLaw
 
   Undamped(const ImpactConditions& c, const DampingSettings&) : K_(c.K) {}
-  double force(double x, double /*xdot*/) const noexcept { return K_ * x * std::sqrt(x); }
+  double force(double x, double /*xdot*/) const noexcept { return hertz_spring_force(K_, x); }
   /// The same at u = x^{1/2}: K u^3 [N] (RootPolynomialLaw)
   template <class T>
   auto force_of_root(const T& u, const T& /*xdot*/) const noexcept { return K_ * u * u * u; }
