@@ -16,9 +16,10 @@ install(TARGETS ${hertzdash_libraries} EXPORT hertzdashTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-# Headers of an optional part that was left out (simulation/CMakeLists.txt) are not installed.
+# Headers of an optional part that was left out, and the internal headers of a library's own
+# sources (simulation/CMakeLists.txt), are not installed.
 set(hertzdash_headers_not_built)
-foreach(header IN LISTS HERTZDASH_HEADERS_NOT_BUILT)
+foreach(header IN LISTS HERTZDASH_HEADERS_NOT_BUILT HERTZDASH_INTERNAL_HEADERS)
   list(APPEND hertzdash_headers_not_built REGEX "/${header}$" EXCLUDE)
 endforeach()
 foreach(layer IN LISTS HERTZDASH_LAYERS)
