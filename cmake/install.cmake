@@ -19,7 +19,7 @@ install(TARGETS ${hertzdash_libraries} EXPORT hertzdashTargets
 # Headers of an optional part that was left out, and the internal headers of a library's own
 # sources (simulation/CMakeLists.txt), are not installed.
 set(hertzdash_headers_not_built)
-foreach(header IN LISTS HERTZDASH_HEADERS_NOT_BUILT HERTZDASH_INTERNAL_HEADERS)
+foreach(header IN LISTS HERTZDASH_HEADERS_NOT_BUILT HERTZDASH_INTERNAL_HEADERS HERTZDASH_INTERNAL_INTEGRATOR_HEADERS)
   list(APPEND hertzdash_headers_not_built REGEX "/${header}$" EXCLUDE)
 endforeach()
 foreach(layer IN LISTS HERTZDASH_LAYERS)

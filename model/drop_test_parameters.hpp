@@ -42,8 +42,8 @@ inline constexpr ParameterDecl ball_radius{
 inline constexpr ParameterDecl ball_yield_stress{
     .key = "ball-yield-stress", .unit = "Pa", .column_unit = "Pa", .range = R::positive_or_infinite(),
     .default_value = "7.0e7", .default_source = "assumed, unfilled nylon datasheets (data/assumptions.csv)",
-    .help = "Yield stress Y of the sphere [Pa]; a Hertz peak pressure above the onset of yield (1.74 Y at nu = "
-            "0.4, Johnson) is flagged; inf: no check"};
+    .help = "Yield stress Y of the sphere [Pa]; a Hertz peak pressure above the onset of yield (Y times a factor "
+            "of `ball-nu`, Johnson; model/hertz.hpp) is flagged; inf: no check"};
 inline constexpr ParameterDecl rod_E{
     .key = "rod-E", .unit = "Pa", .column_unit = "Pa", .range = R::positive_or_infinite(),
     .default_value = "Table 3", .default_source = "the paper's Table 3",

@@ -3,8 +3,8 @@
 //   hertzdash.simulate(rod="steel", height=0.02, ball_E=3e9)
 // returns, as a dict, exactly what `hertzdash simulate --rod steel --height 0.02 --ball-E 3e9
 // --json` prints (bounce(), restitution() and calibrate_restitution() likewise for their
-// commands). Bad input raises ValueError with the command line's message (naming the
-// option and its valid range); the notes and warnings the command line writes to stderr are
+// commands). Bad input raises ValueError with the command line's message, the option
+// named by its keyword (ball_E, not --ball-E), and its valid range; the notes and warnings the command line writes to stderr are
 // UserWarnings. Every call releases the GIL while it integrates; simulate_many() runs its
 // impacts on all cores.
 #include "hertzdash/io/provenance.hpp"
@@ -536,8 +536,8 @@ PYBIND11_MODULE(hertzdash, m) {
          "schema_version, git_revision; viscous_time_constant_s for kuwabara-kono, and interval_calibration "
          "when target_interval_restitution (in (0, 1]) asks for the input e whose first interval ratio is it. "
          "bounces: impacts followed, the first included, in [1, 1000]; min_rebound_velocity [m/s] >= 0 ends the "
-         "sequence after a slower rebound. Bad values raise ValueError naming --bounces, "
-         "--min-rebound-velocity, --target-interval-restitution or the option.\n\n" +
+         "sequence after a slower rebound. Bad values raise ValueError naming bounces, "
+         "min_rebound_velocity, target_interval_restitution or the option.\n\n" +
          options)
             .c_str());
   m.def("virtual_measurement", &py_virtual_measurement, py::arg("path"), py::arg("sample_rate") = MeasurementChain{}.sample_rate_Hz,

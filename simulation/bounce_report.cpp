@@ -31,6 +31,9 @@ bool run_level(Diagnostic d) {
 BounceRun run_bounce(const RunOptions& options, const PaperParameters& paper, const BounceOptions& bounce,
                      std::optional<double> interval_target) {
   BounceRun r;
+  if (interval_target && options.restitution)
+    throw InvalidParameter("restitution", format_value(*options.restitution),
+                           "omitted with `target-interval-restitution` (the calibration finds the input e)");
   r.setup = resolve_setup(options, paper);
   r.law = options.damping;
   r.solver = resolve_solver(options);

@@ -25,6 +25,7 @@ const RunOption* find_fittable(const std::string& name) {
 std::vector<double> trace_fit_detail::initial_values(const RunOptions& base, const PaperParameters& paper,
                                                      const std::vector<FitParameter>& parameters) {
   const DropTestSetup s = resolve_setup(base, paper);
+  for (const FitParameter& p : parameters) require_read(base, *find_run_option(p.option), "(fitted)");
   std::vector<double> v;
   for (const FitParameter& p : parameters) {
     const std::optional<double> x = find_fittable(p.option)->value_in_setup(s);

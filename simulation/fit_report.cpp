@@ -19,6 +19,8 @@ FitRun run_fit(const std::string& trace_path, const RunOptions& base, const Pape
   FitRun r;
   r.settings = settings;
   resolve_setup(base, paper);  // bad options are reported before the file is read
+  if (compare_all_laws && base.damping != RunOptions{}.damping)
+    throw InvalidParameter("damping", base.damping, "omitted with `compare-laws` (every registered law is fitted)");
   r.trace = read_measured_trace(trace_path);
   if (compare_all_laws) {
     LawComparison c = compare_laws(r.trace, base, paper, settings);

@@ -12,6 +12,9 @@ namespace hertzdash {
 RestitutionRun run_restitution(const RunOptions& options, const PaperParameters& paper, std::optional<double> e_target) {
   RestitutionRun r;
   r.law = options.damping;
+  if (e_target && options.restitution)
+    throw InvalidParameter("restitution", format_value(*options.restitution),
+                           "omitted with `target-restitution` (the calibration finds the input e)");
   const DropTestSetup drop = resolve_setup(options, paper);
   // The contact phase alone: the rigid rod against a rigid wall unless the wall's moduli are
   // given, no gravity in contact (gravity only turns `height` into the approach speed).

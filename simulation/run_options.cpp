@@ -328,21 +328,22 @@ void check_given_options(const RunOptions& o) {
     }
   }
   // Then what reads each.
+  for (const RunOption& option : run_options())
+    if (is_given(o, option)) require_read(o, option, given_text(o, option));
+}
+
+void require_read(const RunOptions& o, const RunOption& option, const std::string& value) {
   const IntegratorTraits& integrator = integrator_traits(parse_integrator(o.integrator));
-  for (const RunOption& option : run_options()) {
-    if (!is_given(o, option)) continue;
-    const OptionReaders& r = option.readers;
-    std::string run;  // what this run has instead, when that is not what reads the option
-    if (!r.laws.empty() && std::find(r.laws.begin(), r.laws.end(), o.damping) == r.laws.end())
-      run = key_reference("damping") + " is " + o.damping;
-    else if (r.elastic_rod && o.rod_model != "elastic")
-      run = key_reference("rod-model") + " is " + o.rod_model;
-    else if (r.integrators && !r.integrators(integrator))
-      run = key_reference("integrator") + " is " + std::string(integrator.name);
-    if (!run.empty())
-      throw InvalidParameter(option.name, given_text(o, option),
-                             fmt::format("given only with {} (what reads it); {}", r.describe(), run));
-  }
+  const OptionReaders& r = option.readers;
+  std::string run;  // what this run has instead, when that is not what reads the option
+  if (!r.laws.empty() && std::find(r.laws.begin(), r.laws.end(), o.damping) == r.laws.end())
+    run = key_reference("damping") + " is " + o.damping;
+  else if (r.elastic_rod && o.rod_model != "elastic")
+    run = key_reference("rod-model") + " is " + o.rod_model;
+  else if (r.integrators && !r.integrators(integrator))
+    run = key_reference("integrator") + " is " + std::string(integrator.name);
+  if (!run.empty())
+    throw InvalidParameter(option.name, value, fmt::format("given only with {} (what reads it); {}", r.describe(), run));
 }
 
 DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
@@ -387,10 +388,15 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   if (o.viscous_time_constant_s && o.reference_velocity_mps)
     throw InvalidParameter("reference-velocity", format_value(*o.reference_velocity_mps),
                            "omitted when `viscous-time-constant` is given (the reference speed only calibrates A)");
+  if (o.viscous_time_constant_s && o.restitution)
+    throw InvalidParameter("restitution", format_value(*o.restitution),
+                           "omitted when `viscous-time-constant` is given (the law's damping is then the time "
+                           "constant; e only calibrates it)");
   return s;
 }
 
 SolverSettings resolve_solver(const RunOptions& o) {
+  check_given_options(o);
   SolverSettings s;
   s.integrator = parse_integrator(o.integrator);
   s.dt_s = o.dt_s.value_or(s.dt_s);
@@ -401,7 +407,6 @@ SolverSettings resolve_solver(const RunOptions& o) {
   if (const std::string method = o.cvode_method.value_or("adams"); method == "adams") s.cvode_method = CvodeMethod::adams;
   else if (method == "bdf") s.cvode_method = CvodeMethod::bdf;
   else throw InvalidParameter("cvode-method", method, "one of: adams, bdf");
-  check_given_options(o);
   validate(s);
   return s;
 }

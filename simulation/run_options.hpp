@@ -145,6 +145,10 @@ std::string python_keyword(std::string_view option_name);
 /// has>"}. resolve_setup() and resolve_solver() begin with it.
 void check_given_options(const RunOptions& o);
 
+/// Refuses option `option` (shown with `value`) where nothing in run `o` reads it (its law, rig or
+/// integrator), as check_given_options does; `fit --fit` asks it of each parameter it fits.
+void require_read(const RunOptions& o, const RunOption& option, const std::string& value);
+
 /// The paper's set-up for the chosen rod with the given overrides; validated (throws
 /// InvalidParameter naming the option and its valid range, an unknown law included).
 DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper);

@@ -60,8 +60,8 @@ struct FitParameter {
 };
 
 /// The parameters of a --fit list, "ball-E,restitution" or "ball-E:1e9:3e9,restitution"; each
-/// without bounds gets the option's range (restitution (0, 1), Poisson ratios (-1, 0.5), damping
-/// ratios (0, 1), others (0, inf)). Throws InvalidParameter("fit", ...).
+/// without bounds gets the bounds of the option's declared range (docs/parameters.md). Throws
+/// InvalidParameter("fit", ...).
 std::vector<FitParameter> parse_fit_parameters(const std::string& list);
 
 /// The options that may be fitted, comma-separated (for help and messages).

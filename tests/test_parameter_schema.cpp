@@ -6,6 +6,7 @@
 // x integrator, an option is either read (the run's description, the provenance header of every
 // output, changes with it) or refused with exit-status-2 InvalidParameter naming it and what
 // reads it. The Python keywords are compared in tests/python/test_python_module.py.
+#include "hertzdash/model/drop_test_parameters.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/parameter_reference.hpp"
@@ -19,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <set>
 #include <string>
@@ -69,6 +71,26 @@ TEST_CASE("every option is declared once, with a key, a help text and a valid de
     CHECK(o.unit == o.decl.column_unit);
     // A fittable option has its value in a resolved set-up, the fit's starting point.
     CHECK(o.decl.fittable == static_cast<bool>(o.value_in_setup));
+  }
+}
+
+TEST_CASE("every input the model declares is an option, bound to its declaration", "[parameters]") {
+  // The drop test's, the elastic rod's and each law's declarations (model/) against the table:
+  // an input declared in the model but not bound in simulation/run_options.cpp could be given
+  // by no front end.
+  std::vector<ParameterDecl> declared(std::begin(drop_test_parameters::all), std::end(drop_test_parameters::all));
+  declared.insert(declared.end(), std::begin(elastic_rod_parameters::all), std::end(elastic_rod_parameters::all));
+  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
+    for (const ParameterDecl& d : law_parameters<Law>()) declared.push_back(d);
+  });
+  REQUIRE(declared.size() > 12);
+  for (const ParameterDecl& d : declared) {
+    INFO(d.key);
+    const RunOption* o = find_run_option(d.key);
+    REQUIRE(o != nullptr);
+    CHECK(o->decl.help == d.help);
+    CHECK(o->decl.unit == d.unit);
+    CHECK(o->decl.type == d.type);
   }
 }
 
