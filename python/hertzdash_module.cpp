@@ -399,6 +399,7 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   }
   // Resolve every point first (validation raises here, naming the option and the point), then run.
   const SolverSettings solver = resolve_solver(base);
+  refuse_trace_only_options(base, "simulate_many()");
   std::vector<DropTestSetup> setups;
   setups.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {

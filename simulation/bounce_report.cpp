@@ -35,6 +35,7 @@ BounceRun run_bounce(const RunOptions& options, const PaperParameters& paper, co
     throw InvalidParameter("restitution", format_value(*options.restitution),
                            "omitted with `target-interval-restitution` (the calibration finds the input e)");
   r.setup = resolve_setup(options, paper);
+  refuse_trace_only_options(options, "hertzdash bounce");
   r.law = options.damping;
   r.solver = resolve_solver(options);
   r.options = bounce;

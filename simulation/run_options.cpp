@@ -140,7 +140,7 @@ std::vector<RunOption> make_run_options() {
                      elastic_value(&ElasticRodSetup::cell_damping_ratio)));
   o.push_back(option(e::hemisphere_mass, &R::hemisphere_mass_kg, G::setup, elastic,
                      elastic_value(&ElasticRodSetup::hemisphere_mass_kg)));
-  o.push_back(option(e::accelerometer, &R::accelerometer, G::setup, elastic));
+  o.push_back(option(e::accelerometer, &R::accelerometer, G::setup, {.elastic_rod = true, .trace_only = true}));
 
   // The solver: which integrators read a setting is the integrator table's.
   static const std::string dt_help = fmt::format(
@@ -330,6 +330,18 @@ void check_given_options(const RunOptions& o) {
   // Then what reads each.
   for (const RunOption& option : run_options())
     if (is_given(o, option)) require_read(o, option, given_text(o, option));
+}
+
+std::string trace_only_range(std::string_view what) {
+  return fmt::format("given only where a trace is recorded (hertzdash simulate with a trace file, hertzdash fit, "
+                     "Python's trace()): it says where the recorded acceleration is taken, and {} records none",
+                     what);
+}
+
+void refuse_trace_only_options(const RunOptions& o, std::string_view what) {
+  for (const RunOption& option : run_options())
+    if (option.readers.trace_only && is_given(o, option))
+      throw InvalidParameter(option.name, given_text(o, option), trace_only_range(what));
 }
 
 void require_read(const RunOptions& o, const RunOption& option, const std::string& value) {

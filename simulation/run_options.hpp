@@ -76,6 +76,7 @@ struct OptionReaders {
   std::vector<std::string> laws{};                        ///< non-empty: only these laws
   bool elastic_rod = false;                               ///< only --rod-model elastic
   bool (*integrators)(const IntegratorTraits&) = nullptr; ///< non-null: only the integrators it accepts
+  bool trace_only = false;  ///< read only where a trace is recorded (refuse_trace_only_options)
   /// What reads it, as a refusal says it: "`damping` hongo", "`rod-model` elastic",
   /// "`integrator` euler, rk4"; empty for an option every run reads.
   std::string describe() const;
@@ -144,6 +145,13 @@ std::string python_keyword(std::string_view option_name);
 /// that nothing reads with InvalidParameter{key, value, "given only with <readers>; <what the run
 /// has>"}. resolve_setup() and resolve_solver() begin with it.
 void check_given_options(const RunOptions& o);
+
+/// What a command that records no trace (`what`: "hertzdash bounce") says of an option read only
+/// into a trace (the accelerometer's face): InvalidParameter{key, value, "given only where a
+/// trace is recorded ..."}. The commands and functions without a trace call it.
+void refuse_trace_only_options(const RunOptions& o, std::string_view what);
+/// The range of that refusal.
+std::string trace_only_range(std::string_view what);
 
 /// Refuses option `option` (shown with `value`) where nothing in run `o` reads it (its law, rig or
 /// integrator), as check_given_options does; `fit --fit` asks it of each parameter it fits.

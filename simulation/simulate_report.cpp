@@ -12,6 +12,7 @@ using report_detail::add_inputs_and_revision;
 SimulateRun run_simulate(const RunOptions& options, const PaperParameters& paper, bool record_trace) {
   SimulateRun r;
   r.setup = resolve_setup(options, paper);
+  if (!record_trace) refuse_trace_only_options(options, "hertzdash simulate without a trace file");
   r.law = options.damping;
   r.solver = resolve_solver(options);
   r.inputs = describe_run(r.setup, r.law, r.solver);

@@ -259,6 +259,7 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
   auto claim = [&](const RunOption& o, const std::string& key, const toml::node& node) {
     if (std::find(given.begin(), given.end(), &o) != given.end())
       r.fail(key, node, "a second value", "given once in the whole case ([base], [grid] and [sample] each set an option once)");
+    if (o.readers.trace_only) r.fail(key, node, r.describe(node), trace_only_range("a sweep"));
     given.push_back(&o);
   };
 

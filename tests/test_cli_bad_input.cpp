@@ -442,6 +442,8 @@ TEST_CASE("CLI: each subcommand's own bad input exits 2, names the option and wh
       {"simulate --trace-format measured", "--trace-format", "given with --trace FILE"},
       {"simulate --trace OUT --trace-format measured --channels colour", "--channels", "distinct channels from: force_N"},
       {"simulate --trace OUT --noise 0.1", "--noise", "given only with --trace-format measured"},
+      {"simulate --rod-model elastic --accelerometer bottom", "--accelerometer", "given only where a trace is recorded"},
+      {"bounce --rod-model elastic --accelerometer bottom", "--accelerometer", "given only where a trace is recorded"},
       {"simulate --trace OUT --trace-format measured --noise 2", "--noise", "in [0, 1]"},
       {"simulate --trace OUT --trace-format measured --sample-rate 0", "--sample-rate", "> 0"},
       {"simulate --trace OUT --trace-format measured --anti-alias 1e9", "--anti-alias", "0 (no filter) or a cut-off in"},

@@ -17,6 +17,7 @@
 #include "tests/parameter_samples.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -257,4 +258,56 @@ TEST_CASE("no option is ignored by restitution: each read or refused", "[paramet
   }
   CHECK(read > 0);
   CHECK(refused > 0);
+}
+
+TEST_CASE("no option is ignored: each set-up option a run reads changes what simulate reports", "[parameters]") {
+  // The matrix above decides "read" by the run's description, which lists every input whether
+  // the physics uses it or not. Here each set-up option given with a law and rig that read it
+  // must change simulate's report itself (every number of its JSON but the inputs, and the trace
+  // it records): an option the model receives and then ignores fails here. CVODE at its defaults.
+  // One physical no-op is exempt: the tension clamp (no-tension) changes nothing for a law whose
+  // force never turns tensile in the impact (the undamped law; the Hunt-Crossley family where
+  // 1 + chi xdot >= 1 - a(e) > 0 on rebound, a(e) < 1 as at the paper's e), so it is not asked to
+  // change every law's report; tests/test_tension_clamp.cpp checks the clamp where it acts.
+  // One hole is known and exempt until fit --compare-laws fits each law only what it reads
+  // (issue 30): the undamped law ignores the input restitution (its e is 1).
+  auto report = [](const RunOptions& o) {
+    const SimulateRun r = run_simulate(o, paper(), true);
+    nlohmann::ordered_json j = to_json(r);
+    j.erase("inputs");
+    j.erase("git_revision");
+    std::string text = j.dump();
+    for (const TraceSample& t : r.trace)
+      for (const TraceColumn& c : trace_column_table) text += fmt::format(" {}", t.*c.field);
+    return text;
+  };
+  std::map<std::pair<std::string, std::string>, std::string> base_reports;  // (law, rig) -> report
+  std::size_t compared = 0;
+  for (const RunOption& o : run_options()) {
+    if (is_selection(o) || o.group != RunOption::Group::setup || o.name == "no-tension") continue;
+    for (const LawInfo& law : registered_laws())
+      for (const char* rig : {"rigid", "elastic"}) {
+        RunOptions base;
+        base.damping = std::string(law.name);
+        base.rod_model = rig;
+        RunOptions with = base;
+        set_sample(with, o);
+        if (!read_in(o, with)) continue;  // refused: the matrix above
+        if (o.name == "restitution" && law.name == "none") continue;  // the known hole above
+        INFO(o.name << " = " << given_text(with, o) << " with damping " << law.name << ", rod-model " << rig);
+        std::string changed;
+        try {
+          changed = report(with);
+        } catch (const InvalidParameter& e) {
+          // Refused by a rule beyond the readers (a law that ignores e, ...): named, not ignored.
+          CHECK(e.key == o.name);
+          continue;
+        }
+        auto [it, fresh] = base_reports.try_emplace({std::string(law.name), rig});
+        if (fresh) it->second = report(base);
+        CHECK(changed != it->second);
+        ++compared;
+      }
+  }
+  CHECK(compared > 300);
 }

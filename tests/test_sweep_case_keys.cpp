@@ -1,6 +1,6 @@
 // The case-file keys are the option table's (simulation/run_options.hpp): every option, set in
-// a case file's [base] under its key, is given with the value written (built with TOML only;
-// tests/CMakeLists.txt).
+// a case file's [base] under its key, is given with the value written, or refused by its key
+// where a sweep cannot read it (built with TOML only; tests/CMakeLists.txt).
 #include "hertzdash/simulation/sweep_case.hpp"
 #include "tests/parameter_samples.hpp"
 
@@ -18,7 +18,12 @@ TEST_CASE("a case file takes every option under its key", "[parameters][sweep]")
     const std::string value = given_text(expected, o);
     const std::string toml = o.decl.type == ParameterType::text ? "\"" + value + "\"" : value;
     INFO(o.name << " = " << toml);
-    const SweepCase c = parse_sweep_case("[base]\n" + o.name + " = " + toml + "\n", "case.toml");
+    const std::string text = "[base]\n" + o.name + " = " + toml + "\n";
+    if (o.readers.trace_only) {  // a sweep records no trace: refused by its key
+      CHECK_THROWS_WITH(parse_sweep_case(text, "case.toml"), Catch::StartsWith("invalid base." + o.name + " "));
+      continue;
+    }
+    const SweepCase c = parse_sweep_case(text, "case.toml");
     CHECK(is_given(c.base, o));
     CHECK(given_text(c.base, o) == value);
   }
