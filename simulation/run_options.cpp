@@ -86,8 +86,9 @@ void add_law_options(std::vector<RunOption>& out) {
       it->second.emplace_back(Law::info.name);
     }
   });
-  for (auto& [d, laws] : declared) {
-    OptionReaders readers{.laws = std::move(laws)};
+  for (auto& entry : declared) {  // no structured binding: clang 14 (make fuzz) cannot capture one
+    const ParameterDecl d = entry.first;
+    OptionReaders readers{.laws = std::move(entry.second)};
     if (d.key == "zeta") out.push_back(option(d, &R::zeta, G::setup, readers));
     else if (d.key == "omega-n") out.push_back(option(d, &R::omega_n, G::setup, readers));
     else if (d.key == "viscous-time-constant")
