@@ -43,6 +43,7 @@ nlohmann::ordered_json number_or_null(double v) {
 nlohmann::ordered_json to_json(const TraceFit& f, const PaperParameters& paper) {
   nlohmann::ordered_json j;
   j["law"] = f.law;
+  if (!f.left_out.empty()) j["left_out"] = f.left_out;  // compare_laws: options this law does not read
   nlohmann::ordered_json parameters = nlohmann::ordered_json::array();
   for (const FittedParameter& p : f.parameters)
     parameters.push_back({{"name", p.name},

@@ -76,6 +76,16 @@ const ParameterDecl cvode_method_decl{.key = "cvode-method", .type = ParameterTy
                                       .default_value = "adams", .default_source = "non-stiff contact",
                                       .help = "CVODE's linear multistep method"};
 
+// The laws that read the input e: all but those that conserve the energy they store (the
+// undamped law, whose restitution is 1 whatever e is).
+std::vector<std::string> dissipative_law_names() {
+  std::vector<std::string> names;
+  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
+    if (!ConservativeLaw<Law>) names.emplace_back(Law::info.name);
+  });
+  return names;
+}
+
 // Every law's own inputs, bound to the fields the simulator reads or to law_numbers.
 void add_law_options(std::vector<RunOption>& out) {
   std::vector<std::pair<ParameterDecl, std::vector<std::string>>> declared;  // each key once, with its laws
@@ -116,7 +126,8 @@ std::vector<RunOption> make_run_options() {
       option(p::height, &R::height_m, G::setup, {}, [](Setup s) -> V { return s.height_m; }),
       option(p::impact_velocity, &R::impact_velocity_mps, G::setup, {}, [](Setup s) -> V { return approach_speed(s); }),
       option(p::mass, &R::mass_kg, G::setup, {}, [](Setup s) -> V { return s.mass_kg; }),
-      option(p::restitution, &R::restitution, G::setup, {}, [](Setup s) -> V { return s.restitution; }),
+      option(p::restitution, &R::restitution, G::setup, {.laws = dissipative_law_names()},
+             [](Setup s) -> V { return s.restitution; }),
       option(p::ball_E, &R::ball_E_Pa, G::setup, {}, [](Setup s) -> V { return s.ball.E_Pa; }),
       option(p::ball_nu, &R::ball_nu, G::setup, {}, [](Setup s) -> V { return s.ball.nu; }),
       option(p::ball_radius, &R::ball_radius_m, G::setup, {}, [](Setup s) -> V { return s.ball_radius_m; }),

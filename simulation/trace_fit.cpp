@@ -244,8 +244,31 @@ LawComparison compare_laws(const MeasuredTrace& trace, const RunOptions& base, c
   for (const LawInfo& law : registered_laws()) {
     RunOptions o = base;
     o.damping = std::string(law.name);
+    // Each law is fitted with what it reads: an option given, or a parameter fitted, that this
+    // law does not read is left out of its fit, and said so (TraceFit::left_out).
+    TraceFitSettings own = settings;
+    std::vector<std::string> left_out;
+    auto reads = [&](const RunOption& option) {
+      try {
+        require_read(o, option, "");
+        return true;
+      } catch (const InvalidParameter&) {
+        return false;
+      }
+    };
+    for (const RunOption& option : run_options())
+      if (is_given(o, option) && !reads(option)) {
+        clear_option(o, option);
+        left_out.push_back(option.name);
+      }
+    std::erase_if(own.parameters, [&](const FitParameter& p) {
+      const bool unread = !reads(*find_run_option(p.option));
+      if (unread && std::find(left_out.begin(), left_out.end(), p.option) == left_out.end()) left_out.push_back(p.option);
+      return unread;
+    });
     try {
-      out.fits.push_back(fit_trace(trace, o, paper, settings));
+      out.fits.push_back(fit_trace(trace, o, paper, own));
+      out.fits.back().left_out = left_out;
     } catch (const DataError&) {
       throw;  // the trace's fault, the same for every law
     } catch (const std::exception& e) {

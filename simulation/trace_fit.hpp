@@ -111,6 +111,9 @@ struct TraceFit {
   double contact_time_s = 0;                         ///< of the fitted model
   ImpactSummary model_summary;                       ///< the fitted model's impact (its diagnostics)
   RunOptions fitted_options;                         ///< the run options at the estimate
+  /// compare_laws only: the options given for the comparison that this law does not read (the
+  /// input e for the undamped law, another law's own input), left out of its fit.
+  std::vector<std::string> left_out;
 
   /// The fitted parameter called `name` (an option's name or "onset-time"); std::out_of_range if none.
   const FittedParameter& parameter(const std::string& name) const;

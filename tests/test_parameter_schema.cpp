@@ -269,8 +269,6 @@ TEST_CASE("no option is ignored: each set-up option a run reads changes what sim
   // force never turns tensile in the impact (the undamped law; the Hunt-Crossley family where
   // 1 + chi xdot >= 1 - a(e) > 0 on rebound, a(e) < 1 as at the paper's e), so it is not asked to
   // change every law's report; tests/test_tension_clamp.cpp checks the clamp where it acts.
-  // One hole is known and exempt until fit --compare-laws fits each law only what it reads
-  // (issue 30): the undamped law ignores the input restitution (its e is 1).
   auto report = [](const RunOptions& o) {
     const SimulateRun r = run_simulate(o, paper(), true);
     nlohmann::ordered_json j = to_json(r);
@@ -293,7 +291,6 @@ TEST_CASE("no option is ignored: each set-up option a run reads changes what sim
         RunOptions with = base;
         set_sample(with, o);
         if (!read_in(o, with)) continue;  // refused: the matrix above
-        if (o.name == "restitution" && law.name == "none") continue;  // the known hole above
         INFO(o.name << " = " << given_text(with, o) << " with damping " << law.name << ", rod-model " << rig);
         std::string changed;
         try {
