@@ -6,6 +6,7 @@
 // x integrator, an option is either read (the run's description, the provenance header of every
 // output, changes with it) or refused with exit-status-2 InvalidParameter naming it and what
 // reads it. The Python keywords are compared in tests/python/test_python_module.py.
+#include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/drop_test_parameters.hpp"
 #include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
@@ -307,4 +308,48 @@ TEST_CASE("no option is ignored: each set-up option a run reads changes what sim
       }
   }
   CHECK(compared > 300);
+}
+
+TEST_CASE("the declarations' choices and defaults are those of their sources", "[parameters]") {
+  // A declaration states its valid values and its default as a user reads them; where the value
+  // lives elsewhere (an enum, the paper's tables and assumptions, SolverSettings) they must agree,
+  // or the help and docs/parameters.md would say one thing and the run do another.
+  auto decl = [](std::string_view key) -> const ParameterDecl& { return find_run_option(key)->decl; };
+  auto joined = [](const auto& names) {
+    std::string s;
+    for (const auto& n : names) s += (s.empty() ? "" : ", ") + std::string(n);
+    return s;
+  };
+  std::vector<std::string> rods, variants;
+  for (const RodData& r : paper().rods) rods.push_back(r.name);
+  for (OmegaNVariant v : all_omega_n_variants) variants.emplace_back(to_string(v));
+  CHECK(decl("rod").choices == joined(rods));
+  CHECK(decl("omega-n").choices == joined(variants));
+  CHECK(decl("zeta").choices == joined(std::vector<std::string>{to_string(ZetaForm::paper), to_string(ZetaForm::exact)}));
+  CHECK(decl("cvode-method").choices ==
+        joined(std::vector<std::string>{to_string(CvodeMethod::adams), to_string(CvodeMethod::bdf)}));
+  CHECK(decl("accelerometer").choices ==
+        joined(std::vector<std::string>{to_string(Accelerometer::top), to_string(Accelerometer::bottom)}));
+  // Numeric defaults, read back as numbers.
+  auto number = [&](std::string_view key) {
+    const std::optional<double> v = parse_option_number(std::string(decl(key).default_value));
+    INFO(key << " default " << decl(key).default_value);
+    REQUIRE(v);
+    return *v;
+  };
+  const SolverSettings solver;
+  CHECK(number("dt") == solver.dt_s);
+  CHECK(number("rtol") == solver.rtol);
+  CHECK(number("atol") == solver.atol);
+  CHECK(number("max-step") == solver.max_step_s);
+  CHECK(number("height") == default_height_m);
+  CHECK(number("rod-elements") == ElasticRodSetup::default_elements);
+  CHECK(number("ball-E") == paper().ball.E_Pa);
+  CHECK(number("ball-nu") == paper().ball.nu);
+  CHECK(number("ball-radius") == paper().ball.radius_m);
+  CHECK(number("ball-yield-stress") == paper().ball.yield_stress_Pa);
+  CHECK(number("gravity") == paper().gravity_mps2);
+  CHECK(std::string(decl("integrator").default_value) == to_string(solver.integrator));
+  CHECK(std::string(decl("damping").default_value) == default_damping_law);
+  CHECK(std::string(decl("cvode-method").default_value) == to_string(solver.cvode_method));
 }
