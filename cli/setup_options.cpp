@@ -31,7 +31,8 @@ void add_run_options(CLI::App& app, RunOptions& options) {
 }
 
 void report_diagnostics(const std::vector<RunDiagnostic>& diagnostics) {
-  for (const RunDiagnostic& d : diagnostics) std::cerr << "hertzdash: " << d.kind << ": " << d.message << "\n";
+  for (const RunDiagnostic& d : diagnostics)
+    std::cerr << "hertzdash: " << d.kind << ": " << spell_key_references(d.message, KeySpelling::command_line) << "\n";
 }
 
 }  // namespace hertzdash::cli

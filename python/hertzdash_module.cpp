@@ -129,7 +129,7 @@ void warn(const std::string& message) {
 }
 
 void warn_about(const std::vector<RunDiagnostic>& diagnostics) {
-  for (const RunDiagnostic& d : diagnostics) warn(d.message);
+  for (const RunDiagnostic& d : diagnostics) warn(spell_key_references(d.message, KeySpelling::python));
 }
 
 // ---- the functions ----

@@ -1,6 +1,7 @@
 #include "hertzdash/simulation/diagnostic_messages.hpp"
 
 #include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/integrator_table.hpp"
 #include "hertzdash/simulation/result_checks.hpp"
 #include "hertzdash/simulation/step_resolution.hpp"
@@ -15,7 +16,7 @@ namespace {
 
 std::string stability_note(const ImpactSummary& s, const SolverSettings& solver) {
   return fmt::format("the elastic rod's fastest mode limits {} to steps of {:.6g} s; it ran with that step instead of "
-                     "--dt {:.6g} s",
+                     "`dt` {:.6g} s",
                      to_string(s.integrator_used), s.elastic_rod->step_used_s, solver.dt_s);
 }
 
@@ -23,15 +24,15 @@ std::string resolution_warning(const ImpactSummary& s, const DropTestSetup& setu
   const auto res = under_resolved_contact(s, setup.mass_kg, solver);
   return fmt::format(
       "the fixed step resolved the contact with only {:.0f} steps per undamped Hertz contact time (t_H = {:.6g} s, "
-      "--dt {:.6g} s); the convergence study needs at least {} steps per t_H with {} ({}) for errors below {:g} % "
+      "`dt` {:.6g} s); the convergence study needs at least {} steps per t_H with {} ({}) for errors below {:g} % "
       "(docs/convergence.md)",
       res->steps_per_contact, res->hertz_contact_time_s, solver.dt_s, res->required, to_string(solver.integrator),
-      solver.locate_events ? "events located" : "--no-event-location", 100 * step_resolution_target_error);
+      solver.locate_events ? "events located" : "`no-event-location`", 100 * step_resolution_target_error);
 }
 
 std::string tolerance_warning(const ImpactSummary& s, const SolverSettings& solver) {
   const bool rtol_loose = solver.rtol > loose_rtol_limit;
-  const std::string option = rtol_loose ? "--rtol" : "--atol";
+  const std::string option = key_reference(rtol_loose ? "rtol" : "atol");
   return fmt::format("{} {:g} is above {:g}: measured on the paper's impacts, {} and the other adaptive integrators "
                      "give e_effective within the {:g} % the fixed steps are held to at {:g}, not all of them at {:g} "
                      "(tests/test_tolerance_limit.cpp); use a smaller {}",
@@ -43,7 +44,7 @@ std::string yield_warning(const ImpactSummary& s, const DropTestSetup& setup) {
   const double p0 = s.peak_contact_pressure_Pa,
                onset = hertz_yield_onset_pressure_Pa(setup.ball_yield_stress_Pa, setup.ball.nu);
   return fmt::format("the Hertz peak pressure {:.4g} MPa exceeds the onset of yield in the hemisphere, {:.3g} Y = {:.4g} "
-                     "MPa (--ball-yield-stress {:.4g} Pa, --ball-nu {:.3g}): the contact may deform plastically, which "
+                     "MPa (`ball-yield-stress` {:.4g} Pa, `ball-nu` {:.3g}): the contact may deform plastically, which "
                      "the elastic contact law does not model (docs/bounce.md)",
                      p0 / 1e6, hertz_yield_onset_factor(setup.ball.nu), onset / 1e6, setup.ball_yield_stress_Pa,
                      setup.ball.nu);
@@ -62,7 +63,7 @@ std::string deformation_warning(const ImpactSummary& s, const DropTestSetup& set
 
 std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::string& why) {
   if (used == asked) return {};
-  return fmt::format("--integrator {} fell back to {}: {}", to_string(asked), to_string(used), why);
+  return fmt::format("`integrator` {} fell back to {}: {}", to_string(asked), to_string(used), why);
 }
 
 std::string diagnostic_message(Diagnostic code, const ImpactSummary& s, const DropTestSetup& setup,
@@ -93,7 +94,9 @@ std::vector<RunDiagnostic> impact_diagnostic_list(const ImpactSummary& s, const 
 nlohmann::ordered_json to_json(const std::vector<RunDiagnostic>& diagnostics) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const RunDiagnostic& d : diagnostics) {
-    nlohmann::ordered_json item{{"kind", d.kind}, {"code", d.code}, {"message", d.message}};
+    // The JSON is the program's output (Python's dicts are the same): options spelled --key.
+    nlohmann::ordered_json item{
+        {"kind", d.kind}, {"code", d.code}, {"message", spell_key_references(d.message, KeySpelling::command_line)}};
     if (d.impact) item["impact"] = *d.impact;
     list.push_back(item);
   }

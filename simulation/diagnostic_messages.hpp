@@ -19,11 +19,11 @@ namespace hertzdash {
 struct RunDiagnostic {
   std::string kind;     ///< "note" or "warning" (DiagnosticInfo::kind)
   std::string code;     ///< a DiagnosticInfo::name, or another front end's own (e.g. fit's, measured_trace)
-  std::string message;
+  std::string message;  ///< options written as key_reference()s: each front end spells them (--dt, dt)
   std::optional<int> impact;  ///< bounce: the impact (from 0) it concerns; JSON "impact"
 };
 
-/// "--integrator X fell back to Y: why" when the integrator that ran is not the one asked
+/// "`integrator` X fell back to Y: why" when the integrator that ran is not the one asked
 /// for, else empty.
 std::string fallback_note(IntegratorKind asked, IntegratorKind used, const std::string& why);
 

@@ -28,10 +28,10 @@ IntegratorKind integrator_used(IntegratorKind asked, const ImpactNeeds& needs, s
     k = integrator_traits(k).physical_counterpart;
     reason = needs.elastic_rod
                  ? fmt::format("{} integrates a rigid rod's contact in regularising variables; the elastic rod "
-                               "(--rod-model elastic) runs in the physical variables, so {} runs instead",
+                               "(`rod-model` elastic) runs in the physical variables, so {} runs instead",
                                to_string(asked), to_string(k))
                  : fmt::format("{} integrates the contact in regularising variables, which have no event for the "
-                               "tension clamp (--no-tension ends contact where the force reaches zero); {} runs in "
+                               "tension clamp (`no-tension` ends contact where the force reaches zero); {} runs in "
                                "the physical variables instead",
                                to_string(asked), to_string(k));
   }

@@ -24,7 +24,7 @@ std::string virtual_measurement_note(const SimulateRun& run, const MeasurementCh
   for (std::size_t i = 1; i < run.trace.size(); ++i) longest = std::max(longest, run.trace[i].t_s - run.trace[i - 1].t_s);
   if (!(longest > 1.0 / chain.sample_rate_Hz)) return {};
   return fmt::format("{} took steps up to {:.3g} s, longer than the sampling interval {:.3g} s: the samples between its "
-                     "steps are linear interpolations (bound the step with --max-step, or use a fixed --dt, for a "
+                     "steps are linear interpolations (bound the step with `max-step`, or use a fixed `dt`, for a "
                      "faithful virtual experiment)",
                      to_string(run.summary.integrator_used), longest, 1.0 / chain.sample_rate_Hz);
 }
