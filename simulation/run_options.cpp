@@ -199,10 +199,7 @@ std::optional<ElasticRodSetup> resolve_elastic_rod(const RunOptions& o, const Pa
                     .hemisphere_mass_kg = o.hemisphere_mass_kg.value_or(paper.ball.mass_kg),
                     .cell_stiffness_N_per_m = o.cell_stiffness_N_per_m.value_or(paper.rig.cell_stiffness_N_per_m),
                     .cell_damping_ratio = o.cell_damping_ratio.value_or(paper.rig.cell_damping_ratio)};
-  if (o.rod_elements) {
-    require_in_range(elastic_rod_parameters::elements, *o.rod_elements);
-    e.elements = static_cast<int>(*o.rod_elements);
-  }
+  if (o.rod_elements) e.elements = static_cast<int>(*o.rod_elements);  // an integer: check_given_options
   const std::string face = o.accelerometer.value_or("top");
   if (face == "top") e.accelerometer = Accelerometer::top;
   else if (face == "bottom") e.accelerometer = Accelerometer::bottom;
@@ -371,7 +368,7 @@ void require_read(const RunOptions& o, const RunOption& option, const std::strin
 }
 
 DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
-  check_given_options(o);
+  check_given_options(o);  // every given value is within its declared range from here on
   DropTestSetup s = paper_setup(paper, o.rod, o.height_m.value_or(default_height_m));
   if (o.impact_velocity_mps) s.impact_velocity_mps = *o.impact_velocity_mps;
   if (o.mass_kg) s.mass_kg = *o.mass_kg;
@@ -389,15 +386,11 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   else throw InvalidParameter("zeta", zeta, "one of: paper, exact");
   s.damping.omega_n = parse_omega_n_variant(o.omega_n.value_or(to_string(OmegaNVariant::paper)));
   s.damping.viscous_time_constant_s = o.viscous_time_constant_s;
-  if (o.reference_velocity_mps) {
-    require_positive("reference-velocity", *o.reference_velocity_mps, "m/s");
-    s.damping.reference_velocity_mps = *o.reference_velocity_mps;
-  }
+  if (o.reference_velocity_mps) s.damping.reference_velocity_mps = *o.reference_velocity_mps;
   for (const auto& [key, value] : o.law_numbers) {
     const RunOption* option = find_run_option(key);
     if (!option || !std::holds_alternative<LawNumber>(option->field))
       throw InvalidParameter(key, format_value(value), "a number a damping law declares (`hertzdash models`)");
-    require_in_range(option->decl, value);
     s.damping.law_values.emplace_back(option->decl.key, value);
   }
   s.elastic_rod = resolve_elastic_rod(o, paper);
