@@ -20,7 +20,7 @@
 #include "hertzdash/model/drop_test.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/model/regularized_contact.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <algorithm>
 #include <array>

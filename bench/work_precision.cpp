@@ -20,15 +20,15 @@
 #include "bench/impact_solvers.hpp"
 #include "hertzdash/integrators/dormand_prince.hpp"
 #include "hertzdash/integrators/taylor.hpp"
-#include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/model/damping/laws/undamped.hpp"
-#include "hertzdash/model/regularized_contact_singularities.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
-#include "hertzdash/simulation/sample_quantile.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/model/regularized_contact_singularities.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
+#include "hertzdash/simulation/uncertainty/sample_quantile.hpp"
 
 #include <fmt/format.h>
 

@@ -1,14 +1,14 @@
 // `hertzdash bounce`: a drop from --height and the impacts that follow it, with any law,
 // integrator and rod model; per impact the onset, separation and contact times, approach and
 // rebound speeds and peak force, and the restitution the paper's method would measure from the
-// intervals between impacts beside the true velocity ratios (simulation/bounce_sequence.hpp).
+// intervals between impacts beside the true velocity ratios (simulation/run/bounce_sequence.hpp).
 // With --target-interval-restitution it first finds the input e whose first interval ratio is
 // the target: the e the paper should have put into its dashpot.
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/setup_options.hpp"
-#include "hertzdash/simulation/integrator_table.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <fmt/format.h>
 

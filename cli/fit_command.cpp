@@ -1,5 +1,5 @@
 // `hertzdash fit`: identify parameters of the drop test from a measured trace
-// (data/measurements/README.md) by weighted least squares (simulation/trace_fit.hpp): the
+// (data/measurements/README.md) by weighted least squares (simulation/fit/trace_fit.hpp): the
 // estimates, their standard errors and correlation, the residuals per channel, whether the
 // trace determines the parameters; --compare-laws fits every registered law and ranks them by
 // AIC; --curves writes the trace, the fitted model and the residuals for a figure
@@ -8,8 +8,8 @@
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
-#include "hertzdash/simulation/virtual_measurement.hpp"
+#include "hertzdash/simulation/fit/virtual_measurement.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
 
 #include <fmt/format.h>
 

@@ -74,8 +74,9 @@ int main(int argc, char** argv) {
   } catch (const hertzdash::DataError& e) {
     std::cerr << "hertzdash: bad data file: " << e.what() << "\n";
     return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "hertzdash: error: " << e.what() << "\n";
+  } catch (const std::exception& e) {  // a key named in the message, in the command line's spelling: --dt
+    std::cerr << "hertzdash: error: " << hertzdash::spell_key_references(e.what(), hertzdash::KeySpelling::command_line)
+              << "\n";
     return 1;
   }
   return 1;

@@ -2,7 +2,7 @@
 // coefficients, validity and whether its force is continuous at contact onset.
 #include "cli/command.hpp"
 #include "hertzdash/model/damping/registry.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
 
 #include <fmt/format.h>
 

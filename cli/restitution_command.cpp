@@ -6,8 +6,8 @@
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/setup_options.hpp"
-#include "hertzdash/simulation/integrator_table.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <fmt/format.h>
 

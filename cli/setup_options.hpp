@@ -1,10 +1,10 @@
 #pragma once
 // The command-line options of a run: every option of the library's table
-// (simulation/run_options.hpp) as --name, bound to one RunOptions. Parsing only: the
+// (simulation/options/run_options.hpp) as --name, bound to one RunOptions. Parsing only: the
 // library validates (resolve_setup, resolve_solver) and names the option in its message.
-#include "hertzdash/simulation/diagnostic_messages.hpp"
-#include "hertzdash/simulation/run_options.hpp"
-#include "hertzdash/simulation/solver_settings.hpp"
+#include "hertzdash/simulation/options/run_options.hpp"
+#include "hertzdash/simulation/reports/diagnostic_messages.hpp"
+#include "hertzdash/simulation/run/solver_settings.hpp"
 
 #include <CLI/CLI.hpp>
 

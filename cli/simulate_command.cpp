@@ -5,9 +5,9 @@
 #include "cli/setup_options.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/integrator_table.hpp"
-#include "hertzdash/simulation/result_output.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
+#include "hertzdash/simulation/reports/result_output.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <fmt/format.h>
 

@@ -9,7 +9,7 @@
 #include "cli/output_files.hpp"
 #include "cli/process_group.hpp"
 #include "hertzdash/io/atomic_file.hpp"
-#include "hertzdash/simulation/sweep_run.hpp"
+#include "hertzdash/simulation/sweep/sweep_run.hpp"
 
 #include <fmt/format.h>
 
@@ -114,6 +114,7 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   const PaperParameters paper = load_paper_parameters();
   const auto start = std::chrono::steady_clock::now();
   SweepResults results;
+  unsigned threads_used = threads;
   {
     const InterruptGuard guard;
     results = run_sweep(c, mine, paper,
@@ -121,8 +122,13 @@ int run_sweep_command(const SweepCommandOptions& opt) {
                          .label = group.size() > 1 ? fmt::format("sweep (rank 0 of {})", group.size()) : "sweep",
                          .progress = !opt.quiet && group.rank() == 0,
                          .log_interval_s = 10,
-                         .cancel = &interrupted});
+                         .cancel = &interrupted,
+                         .threads_used = &threads_used});
   }
+  if (threads_used < std::min<std::size_t>(threads, mine.size()))
+    std::cerr << fmt::format("hertzdash: note: --threads {} asked for more threads than the system could create; the "
+                             "sweep ran on {}\n",
+                             threads, threads_used);
   if (group.any(interrupted)) {
     if (group.rank() == 0) std::cerr << "hertzdash: sweep interrupted; no file written\n";
     return 130;
@@ -140,7 +146,8 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string timing =
       fmt::format("timing: {:.3f} s on {} process{} x {} thread{}, {:.3g} runs/s", seconds, group.size(),
-                  group.size() > 1 ? "es" : "", threads, threads > 1 ? "s" : "", static_cast<double>(c.size()) / seconds);
+                  group.size() > 1 ? "es" : "", threads_used, threads_used > 1 ? "s" : "",
+                  static_cast<double>(c.size()) / seconds);
   create_output_directories(out.string(), opt.mkdir);
   write_file_atomically(out, sweep_table(c, all, timing));
   if (summary) create_output_directories(summary_out.string(), opt.mkdir);

@@ -1,6 +1,6 @@
 # `cmake --install build --prefix P`: the program, the libraries, their headers under
 # P/include/hertzdash/<layer>/, the data tables under P/share/hertzdash/data (where the
-# library looks for them, simulation/paper_parameters.hpp), and the CMake package
+# library looks for them, simulation/paper/paper_parameters.hpp), and the CMake package
 # P/lib/cmake/hertzdash, so a project of yours can
 #   find_package(hertzdash CONFIG REQUIRED)
 #   target_link_libraries(my_program PRIVATE hertzdash::hertzdash)

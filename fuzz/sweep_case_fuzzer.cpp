@@ -1,10 +1,10 @@
-// libFuzzer harness: the sweep case-file reader (simulation/sweep_case.hpp), from TOML text to
+// libFuzzer harness: the sweep case-file reader (simulation/sweep/sweep_case.hpp), from TOML text to
 // the options of every run. Any input must parse or be refused with a DataError (not TOML) or
 // an InvalidParameter (a key, type or value the format does not allow); a case that parsed must
 // give the options of its first and last runs. No run is simulated.
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/sweep_case.hpp"
+#include "hertzdash/simulation/sweep/sweep_case.hpp"
 
 #include <cstddef>
 #include <cstdint>

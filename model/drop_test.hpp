@@ -23,10 +23,10 @@
 // the undamped Hertz maximum compression at the impact speed, and x' ~ v0, the impact
 // speed (model/hertz.hpp, undamped_hertz_impact); before the first contact the approach
 // speed of the set-up, from each onset on that impact's own.
-#include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/model/force_rate.hpp"
+#include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 
 #include <Eigen/Core>
 

@@ -4,7 +4,7 @@
 // bodies are the sphere (s) and the wall (w): here the falling body is the rod, whose flat end
 // face is the wall, and the sphere is the nylon hemisphere ("ball"). The defaults are the
 // paper's Tables 1-3 and the assumptions of data/assumptions.csv, read by
-// simulation/paper_parameters.hpp.
+// simulation/paper/paper_parameters.hpp.
 #include "hertzdash/model/parameter.hpp"
 
 namespace hertzdash::drop_test_parameters {
@@ -19,7 +19,7 @@ inline constexpr ParameterDecl height{
 inline constexpr ParameterDecl impact_velocity{
     .key = "impact-velocity", .unit = "m/s", .column_unit = "mps", .range = R::positive(),
     .default_value = "sqrt(2 g h)", .default_source = "computed from `height` and `gravity`",
-    .help = "Approach speed at contact onset [m/s]; overrides `height`", .fittable = true};
+    .help = "Approach speed at contact onset [m/s], instead of `height`", .fittable = true};
 inline constexpr ParameterDecl mass{
     .key = "mass", .unit = "kg", .column_unit = "kg", .range = R::positive(), .default_value = "Table 1",
     .default_source = "the paper's Table 1 (the rod's mass)", .help = "Mass of the falling body (the rod) [kg]",

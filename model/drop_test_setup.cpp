@@ -9,12 +9,10 @@
 
 #include <cmath>
 #include <string>
-#include <string_view>
-#include <tuple>
 
 namespace hertzdash {
 
-void validate(const DropTestSetup& s, const GivenScaleInputs& given) {
+void validate(const DropTestSetup& s) {
   namespace p = drop_test_parameters;
   require_in_range(p::mass, s.mass_kg);
   require_in_range(p::ball_radius, s.ball_radius_m);
@@ -43,61 +41,46 @@ void validate(const DropTestSetup& s, const GivenScaleInputs& given) {
                              "a finite modulus [Pa] with `rod-model` elastic (inf is the rigid rod: `rod-model` rigid)");
     validate(*s.elastic_rod);
   }
-  validate_hertz_scale(s, given);
+  validate_hertz_scale(s);
 }
 
-void validate_hertz_scale(const DropTestSetup& s, const GivenScaleInputs& given) {
-  const double K = hertz_stiffness(s), v0 = approach_speed(s), m = s.mass_kg, R = s.ball_radius_m;
-  const double X = undamped_hertz_impact(K, m, v0).max_deformation_m;
-  const bool too_large = !(X < R);
-  if (!too_large && X >= min_hertz_deformation_m) return;
-  // The deformation the bound is at, and the approach speed and mass that give it:
-  // X^{5/2} = 5 m v0^2 / (4 K).
-  const double X_bound = too_large ? R : min_hertz_deformation_m;
-  const double v_bound = std::sqrt(4.0 * K * std::pow(X_bound, 2.5) / (5.0 * m));
-  const double m_bound = 4.0 * K * std::pow(X_bound, 2.5) / (5.0 * v0 * v0);
-  const char* side = too_large ? "below" : "at least";
-  const bool fall = !s.impact_velocity_mps;
+HertzScale hertz_scale(const DropTestSetup& s) {
+  HertzScale h{};
+  h.stiffness_N_per_m1_5 = hertz_stiffness(s);
+  h.approach_speed_mps = approach_speed(s);
+  const double K = h.stiffness_N_per_m1_5, v0 = h.approach_speed_mps, m = s.mass_kg;
+  h.deformation_m = undamped_hertz_impact(K, m, v0).max_deformation_m;
+  h.too_large = !(h.deformation_m < s.ball_radius_m);
+  h.too_small = !h.too_large && h.deformation_m < min_hertz_deformation_m;
+  h.bound_m = h.too_small ? min_hertz_deformation_m : s.ball_radius_m;
+  // X^{5/2} = 5 m v0^2 / (4 K) at X = bound_m, solved for v0 and for m.
+  h.speed_at_bound_mps = std::sqrt(4.0 * K * std::pow(h.bound_m, 2.5) / (5.0 * m));
+  h.mass_at_bound_kg = 4.0 * K * std::pow(h.bound_m, 2.5) / (5.0 * v0 * v0);
+  return h;
+}
 
-  auto input = [](const char* key, double value, const char* unit, bool was_given) {
-    return fmt::format("{} {:g}{}{}", key_reference(key), value, unit, was_given ? "" : " (default)");
-  };
-  std::string inputs = fall ? input("height", s.height_m, " m", given.height) + ", " +
-                                  input("gravity", s.gravity_mps2, " m/s^2", given.gravity)
-                            : input("impact-velocity", v0, " m/s", true);
-  inputs += ", " + input("mass", m, " kg", given.mass) + ", " + input("ball-radius", R, " m", given.ball_radius) +
-            fmt::format(" and K = {:.4g} N/m^1.5 from", K);
-  for (const auto& [option, value, was_given] :
-       {std::tuple{"ball-E", s.ball.E_Pa, given.ball_E}, std::tuple{"rod-E", s.rod.E_Pa, given.rod_E},
-        std::tuple{"ball-nu", s.ball.nu, given.ball_nu}, std::tuple{"rod-nu", s.rod.nu, given.rod_nu}})
-    inputs += std::string(std::string_view(option) == "ball-E" ? " " : ", ") +
-              input(option, value, std::string_view(option).ends_with("E") ? " Pa" : "", was_given);
-  const std::string why =
-      fmt::format("(with {}, the undamped Hertz deformation X = (5 m v0^2 / 4K)^(2/5) is {:.3g} m; {})", inputs, X,
-                  too_large ? "at or above the ball radius the small-deformation Hertz contact does not hold"
-                            : fmt::format("X >= {:g} m is required: below that, far under atomic dimensions, no "
-                                          "continuum contact model applies",
-                                          min_hertz_deformation_m));
+std::string HertzScale::reason() const {
+  return too_large ? "at or above the ball radius the small-deformation Hertz contact does not hold"
+                   : fmt::format("X >= {:g} m is required: below that, far under atomic dimensions, no continuum "
+                                 "contact model applies",
+                                 min_hertz_deformation_m);
+}
 
-  if (!fall) throw InvalidParameter("impact-velocity", format_value(v0), fmt::format("{} {:.4g} m/s {}", side, v_bound, why));
-  if (given.height)
-    throw InvalidParameter("height", format_value(s.height_m),
-                           fmt::format("{} {:.4g} m {}", side, v_bound * v_bound / (2.0 * s.gravity_mps2), why));
-  if (given.gravity)
-    throw InvalidParameter("gravity", format_value(s.gravity_mps2),
-                           fmt::format("{} {:.4g} m/s^2 {}", side, v_bound * v_bound / (2.0 * s.height_m), why));
-  if (given.mass)
-    throw InvalidParameter("mass", format_value(m), fmt::format("{} {:.4g} kg {}", side, m_bound, why));
-  for (const auto& [option, value, was_given] :
-       {std::tuple{"ball-radius", R, given.ball_radius}, std::tuple{"ball-E", s.ball.E_Pa, given.ball_E},
-        std::tuple{"rod-E", s.rod.E_Pa, given.rod_E}, std::tuple{"ball-nu", s.ball.nu, given.ball_nu},
-        std::tuple{"rod-nu", s.rod.nu, given.rod_nu}})
-    if (was_given)
-      throw InvalidParameter(option, format_value(value),
-                             std::string("a value that, with the others, gives a Hertz deformation X ") +
-                                 (too_large ? "below the ball radius " : "of at least 1e-12 m ") + why);
-  throw InvalidParameter("height", format_value(s.height_m) + " (default)",
-                         fmt::format("{} {:.4g} m {}", side, v_bound * v_bound / (2.0 * s.gravity_mps2), why));
+void validate_hertz_scale(const DropTestSetup& s) {
+  const HertzScale h = hertz_scale(s);
+  if (h.within()) return;
+  const char* side = h.too_large ? "below" : "at least";
+  const std::string why = fmt::format(
+      "(with m = {:g} kg, R = {:g} m and K = {:.4g} N/m^1.5, the undamped Hertz deformation X = (5 m v0^2 / 4K)^(2/5) "
+      "is {:.3g} m at v0 = {:g} m/s; {})",
+      s.mass_kg, s.ball_radius_m, h.stiffness_N_per_m1_5, h.deformation_m, h.approach_speed_mps, h.reason());
+  if (s.impact_velocity_mps)
+    throw HertzScaleRefused("impact-velocity", format_value(*s.impact_velocity_mps),
+                            fmt::format("{} {:.4g} m/s {}", side, h.speed_at_bound_mps, why), h);
+  throw HertzScaleRefused("height", format_value(s.height_m),
+                          fmt::format("{} {:.4g} m {}", side,
+                                      h.speed_at_bound_mps * h.speed_at_bound_mps / (2.0 * s.gravity_mps2), why),
+                          h);
 }
 
 const char* to_string(Accelerometer a) { return a == Accelerometer::top ? "top" : "bottom"; }

@@ -3,9 +3,11 @@
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/elastic_rod_setup.hpp"
 #include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 
 #include <cmath>
 #include <optional>
+#include <string>
 
 namespace hertzdash {
 
@@ -30,17 +32,8 @@ struct DropTestSetup {
   std::optional<ElasticRodSetup> elastic_rod;
 };
 
-/// Which of the inputs that set the impact's scale a user gave (an impact velocity, when set,
-/// is always given); the others are defaults. A refusal of the scale names an input the user
-/// gave and marks the defaults among the values it lists. All true (the default): a C++
-/// caller's set-up, every value its own.
-struct GivenScaleInputs {
-  bool height = true, gravity = true, mass = true, ball_radius = true, ball_E = true, rod_E = true, ball_nu = true,
-       rod_nu = true;
-};
-
-/// Throws InvalidParameter naming the CLI option and its valid range; includes validate_hertz_scale.
-void validate(const DropTestSetup& s, const GivenScaleInputs& given = {});
+/// Throws InvalidParameter naming the parameter and its valid range; includes validate_hertz_scale.
+void validate(const DropTestSetup& s);
 
 /// The least undamped Hertz deformation a set-up may have [m]: a picometre, a hundredth of an
 /// atom's size, below which no continuum contact model applies. A physical bound, not a
@@ -49,16 +42,39 @@ void validate(const DropTestSetup& s, const GivenScaleInputs& given = {});
 /// double precision itself cannot hold (X^{5/2}, m v0^2 under- or overflowing) lies far beyond.
 inline constexpr double min_hertz_deformation_m = 1e-12;
 
-/// The impact's own scale is one the Hertz model describes: the undamped Hertz deformation
-/// X = (5 m v0^2 / (4 K))^{2/5} (model/hertz.hpp) is finite, below the ball radius R (the
-/// small-deformation assumption) and at least min_hertz_deformation_m. Otherwise throws
-/// InvalidParameter naming the first input of these the user gave, with the bound on it where
-/// one input alone sets it: --impact-velocity (v0 = sqrt(4 K X^{5/2} / (5 m)) at X = R or
-/// X = min_hertz_deformation_m), --height (v0^2 / 2g), --gravity (v0^2 / 2h), --mass
-/// (4 K X^{5/2} / (5 v0^2)); then --ball-radius, --ball-E, --rod-E, --ball-nu, --rod-nu (which
-/// enter through K and R). The message lists the inputs that together give X, "(default)" after
-/// each the user did not give.
-void validate_hertz_scale(const DropTestSetup& s, const GivenScaleInputs& given = {});
+/// The impact's own scale against the bounds of the Hertz model: the undamped Hertz deformation
+/// X = (5 m v0^2 / (4 K))^{2/5} (model/hertz.hpp) must be finite, below the ball radius R (the
+/// small-deformation assumption) and at least min_hertz_deformation_m. Where X breaks a bound,
+/// the approach speed and the mass that put it on the bound follow from X^{5/2} = 5 m v0^2 / (4 K).
+struct HertzScale {
+  double stiffness_N_per_m1_5;  ///< K, eq. (3)
+  double approach_speed_mps;    ///< v0
+  double deformation_m;         ///< X
+  bool too_large;               ///< X >= R (or not finite)
+  bool too_small;               ///< X < min_hertz_deformation_m
+  double bound_m;               ///< the bound X breaks: R or min_hertz_deformation_m (R when within)
+  double speed_at_bound_mps;    ///< v0 that gives X = bound_m with this K and m
+  double mass_at_bound_kg;      ///< m that gives X = bound_m with this K and v0
+  bool within() const { return !too_large && !too_small; }
+  /// Why X is refused, without naming inputs: "at or above the ball radius ...".
+  std::string reason() const;
+};
+HertzScale hertz_scale(const DropTestSetup& s);
+
+/// The refusal of a set-up's scale: an InvalidParameter that also carries the numbers, so that
+/// a front end which knows which inputs its user gave can name one of those instead
+/// (simulation/options/hertz_scale_refusal.hpp).
+class HertzScaleRefused : public InvalidParameter {
+ public:
+  HertzScaleRefused(const std::string& refused_key, const std::string& refused_value, const std::string& range,
+                    const HertzScale& numbers)
+      : InvalidParameter(refused_key, refused_value, range), scale(numbers) {}
+  HertzScale scale;
+};
+
+/// Throws HertzScaleRefused when hertz_scale(s) is not within(), naming the approach speed:
+/// `impact-velocity` when the set-up has one, else `height`, with the bound on it.
+void validate_hertz_scale(const DropTestSetup& s);
 
 /// Hertz stiffness of the set-up, eq. (3) [N/m^{3/2}].
 double hertz_stiffness(const DropTestSetup& s);

@@ -35,12 +35,12 @@
 // its cell); each impact calibrates the law afresh from its approach speed x' at onset, as the
 // rigid model does, and the sequence ends early when a rebound (centre-of-mass speed) is slower
 // than v_min.
-#include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/model/elastic_bar.hpp"
 #include "hertzdash/model/force_rate.hpp"
 #include "hertzdash/model/load_cell.hpp"
+#include "hertzdash/ode/ode_system.hpp"
 
 #include <Eigen/Core>
 

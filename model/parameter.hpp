@@ -2,7 +2,7 @@
 // One declaration per input (docs/parameters.md): its key, unit, valid range, default and where
 // the default comes from, whether it can be fitted, and its help text. The model declares the
 // inputs it reads (the drop test's below in drop_test_parameters.hpp, the elastic rod's in
-// elastic_rod_setup.hpp, a damping law's in its own header); simulation/run_options.cpp binds
+// elastic_rod_setup.hpp, a damping law's in its own header); simulation/options/run_options.cpp binds
 // each to the option a front end sets, and the command line, Python, case files, the fit's
 // bounds, the refusals and docs/parameters.md are all generated from these declarations.
 #include "hertzdash/model/invalid_parameter.hpp"
@@ -61,7 +61,7 @@ struct ParameterDecl {
   std::string_view choices{};         ///< a text input's valid values, "a, b, c"; empty for a number
   std::string_view default_value{};   ///< the default as a user reads it ("0.02", "Table 2", "unset")
   /// The default of a number a law reads through DampingSettings::number() (NaN: none; the
-  /// other inputs take theirs from the paper's tables, simulation/paper_parameters.hpp).
+  /// other inputs take theirs from the paper's tables, simulation/paper/paper_parameters.hpp).
   double default_number = std::numeric_limits<double>::quiet_NaN();
   std::string_view default_source{};  ///< where it comes from ("the paper", "data/assumptions.csv", "computed: ...")
   std::string_view help{};            ///< one sentence, units in brackets

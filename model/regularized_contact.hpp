@@ -34,11 +34,11 @@
 // Scales (state_scale, the integrators' absolute tolerances, ode/ode_system.hpp): u ~ X^{1/2},
 // v ~ v0, t ~ t_H, with X and t_H the undamped Hertz maximum compression and contact time
 // at v0 (model/hertz.hpp, undamped_hertz_impact).
-#include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/force_jet.hpp"
 #include "hertzdash/model/force_rate.hpp"
 #include "hertzdash/model/hertz.hpp"
+#include "hertzdash/ode/ode_system.hpp"  // the ODE-system vocabulary (EventAction), shared with integrators/
 
 #include <Eigen/Core>
 

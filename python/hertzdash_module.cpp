@@ -1,5 +1,5 @@
-// The Python module `hertzdash`: the library's front-end API (simulation/run_options.hpp,
-// simulation/run_reports.hpp) with Python keywords for the command line's options, so
+// The Python module `hertzdash`: the library's front-end API (simulation/options/run_options.hpp,
+// simulation/reports/run_reports.hpp) with Python keywords for the command line's options, so
 //   hertzdash.simulate(rod="steel", height=0.02, ball_E=3e9)
 // returns, as a dict, exactly what `hertzdash simulate --rod steel --height 0.02 --ball-E 3e9
 // --json` prints (bounce(), restitution() and calibrate_restitution() likewise for their
@@ -7,14 +7,14 @@
 // named by its keyword (ball_E, not --ball-E), and its valid range; the notes and warnings the command line writes to stderr are
 // UserWarnings. Every call releases the GIL while it integrates; simulate_many() runs its
 // impacts on all cores.
+#include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/io/csv_table.hpp"
-#include "hertzdash/simulation/integrator_table.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
-#include "hertzdash/simulation/result_fields.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
-#include "hertzdash/simulation/uniform_trace.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
+#include "hertzdash/simulation/run/result_fields.hpp"
+#include "hertzdash/simulation/run/uniform_trace.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -123,7 +123,7 @@ const PaperData& paper_data() {
 
 const PaperParameters& paper() { return paper_data().tables; }
 
-// The front ends' notes and warnings (simulation/run_reports.hpp) as Python warnings.
+// The front ends' notes and warnings (simulation/reports/run_reports.hpp) as Python warnings.
 void warn(const std::string& message) {
   if (!message.empty() && PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
 }
@@ -241,7 +241,7 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
     const RunOption& o = option_named(key.cast<std::string>(), "fit");
     if (o.group != RunOption::Group::setup)
       throw py::type_error(fmt::format("fit() got the solver option '{}': the fit integrates its model itself "
-                                       "(simulation/trace_fit.hpp)",
+                                       "(simulation/fit/trace_fit.hpp)",
                                        python_keyword(o.name)));
     set_option(options, o, value);
   }
@@ -330,7 +330,7 @@ py::list py_integrators() {
 
 // simulate_many: numeric set-up options may be 1-D arrays (broadcast against scalars);
 // the solver options are one setting for the whole sweep. Its outputs are the result fields
-// Python's simulate_many() reports (simulation/result_fields.hpp).
+// Python's simulate_many() reports (simulation/run/result_fields.hpp).
 constexpr auto many_outputs = result_fields_reported<&ResultReports::python_many>();
 static_assert(std::ranges::all_of(many_outputs,
                                   [](const ResultField& f) {
@@ -482,7 +482,8 @@ PYBIND11_MODULE(hertzdash, m) {
   m.attr("git_revision") = git_revision();
   m.attr("schema_version") = json_schema_version;
 
-  // A refusal is a ValueError naming the Python keyword (ball_E, not --ball-E).
+  // A refusal is a ValueError naming the Python keyword (ball_E, not --ball-E); a RuntimeError
+  // names keys the same way.
   py::register_local_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -490,6 +491,10 @@ PYBIND11_MODULE(hertzdash, m) {
       PyErr_SetString(PyExc_ValueError, e.message(KeySpelling::python).c_str());
     } catch (const DataError& e) {
       PyErr_SetString(PyExc_ValueError, (std::string("bad data file: ") + e.what()).c_str());
+    } catch (const py::builtin_exception&) {
+      throw;  // pybind11's own (StopIteration, ValueError, ...): its translator maps them
+    } catch (const std::runtime_error& e) {  // a result that contradicts the model; keys as keywords: dt
+      PyErr_SetString(PyExc_RuntimeError, spell_key_references(e.what(), KeySpelling::python).c_str());
     }
   });
 
@@ -579,7 +584,7 @@ PYBIND11_MODULE(hertzdash, m) {
         "needs_root_polynomial_law and the fall-backs.");
   m.def("result_fields", &py_result_fields,
         "result_fields() -> list of dict\n\nThe result fields of an impact, declared once "
-        "(simulation/result_fields.hpp), in the order of simulate()'s keys: name (units in it), group (the key of "
+        "(simulation/run/result_fields.hpp), in the order of simulate()'s keys: name (units in it), group (the key of "
         "the object it sits in, e.g. elastic_rod; empty at the top level), type (as docs/json-output.md names it), "
         "unit (SI; '1' dimensionless, empty for no quantity), meaning, and where each is reported: json "
         "(simulate()), sweep (a column of `hertzdash sweep`), simulate_many.");

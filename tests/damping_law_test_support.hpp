@@ -4,9 +4,9 @@
 // rigid-wall, gravity-free contact set-up with a prescribed K, m and v0.
 #include "example_law.hpp"
 #include "hertzdash/model/damping/registry.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/calibrate_restitution.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/calibrate_restitution.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <algorithm>
 #include <cmath>

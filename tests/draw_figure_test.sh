@@ -9,6 +9,8 @@
 #    on PATH: it recreates the temporary 0.5 s after SIGTERM) runs: the wrapper waits for it to
 #    exit before removing the temporaries, so none is left. Before, the wrapper removed them at
 #    once and the late write left one behind.
+# 5. a script whose data file is missing (gnuplot only warns and draws an empty plot) fails with
+#    exit 1 naming the cause, and leaves the previous PNG and no temporary.
 # Before the wrapper, gnuplot wrote OUT/fig.png in place: cases 2 and 3 left a new or empty file.
 set -uo pipefail
 source_dir=${1:?usage: draw_figure_test.sh SOURCE_DIR}
@@ -40,6 +42,7 @@ mkdir -p "$scratch/out"
 write_script good "plot x"
 write_script bad "plot x" "this_is_not_a_command"
 write_script slow "plot x" "pause 30"
+write_script missing "plot '$scratch/no_such_file.csv' using 1:2"
 
 previous
 "$draw" "$scratch/good.gp" "$scratch/out" || fail "good: exit $?"
@@ -48,6 +51,13 @@ previous
 previous
 "$draw" "$scratch/bad.gp" "$scratch/out" 2>/dev/null && fail "bad: exit 0"
 check_previous_kept bad
+
+previous
+"$draw" "$scratch/missing.gp" "$scratch/out" 2> "$scratch/missing.err"
+status=$?
+[ "$status" -eq 1 ] || fail "missing data: exit $status, not 1"
+grep -q "reads a data file that does not exist" "$scratch/missing.err" || fail "missing data: the cause is not named"
+check_previous_kept "missing data"
 
 previous
 "$draw" "$scratch/slow.gp" "$scratch/out" &

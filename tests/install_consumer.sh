@@ -27,21 +27,31 @@ for f in "${installed[@]}"; do
     *) echo "FAILED: $f has run path '$runpath', not relative to \$ORIGIN" >&2; exit 1 ;;
   esac
 done
-# The README's C++ example: the ```cpp block after the line that names this script.
-awk '/tests\/install_consumer.sh/ {found = 1; next} found && /^```cpp$/ {inside = 1; next}
-     inside && /^```$/ {exit} inside {print}' "$src/README.md" > "$work/readme_example.cpp"
-[ -s "$work/readme_example.cpp" ] || { echo "FAILED: no C++ example found in README.md" >&2; exit 1; }
-# The package needs no nlohmann_json of its users (cmake/hertzdashConfig.cmake.in): the consumer is
+# The README's project: its ```cmake and ```cpp blocks after the line that names this script,
+# built exactly as written (no C++ standard set: the package must bring it).
+readme_block() {
+  awk -v lang="$1" '/tests\/install_consumer.sh/ {found = 1; next} found && $0 == "```" lang {inside = 1; next}
+       inside && /^```$/ {exit} inside {print}' "$src/README.md"
+}
+mkdir -p "$work/readme_project"
+readme_block cmake > "$work/readme_project/CMakeLists.txt"
+readme_block cpp > "$work/readme_project/my_program.cpp"
+for f in CMakeLists.txt my_program.cpp; do
+  [ -s "$work/readme_project/$f" ] || { echo "FAILED: no $f for the README's project found in README.md" >&2; exit 1; }
+done
+# The package needs no nlohmann_json of its users (cmake/hertzdashConfig.cmake.in): the projects are
 # configured as if it were not installed.
-"$cmake" -S "$src/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$prefix" -DREADME_EXAMPLE="$work/readme_example.cpp" -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=TRUE > /dev/null
-"$cmake" --build "$work/consumer" > /dev/null
-"$work/consumer/consumer"
+for project in "$work/readme_project" "$src/tests/install_consumer"; do
+  "$cmake" -S "$project" -B "$work/build-$(basename "$project")" -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=TRUE > /dev/null
+  "$cmake" --build "$work/build-$(basename "$project")" > /dev/null
+done
+"$work/build-install_consumer/consumer"
 # The README example prints the values `hertzdash simulate` reports for the same run.
 expected=$("$build/hertzdash" simulate --integrator gbs8-regularized --json |
   "$python" -c 'import json, sys; j = json.load(sys.stdin)
 print("e_effective %.6f, peak force %.1f N" % (j["e_effective"], j["peak_force_N"]))')
-got=$("$work/consumer/readme_example")
+got=$("$work/build-readme_project/my_program")
 [ "$got" = "$expected" ] || { echo "FAILED: README example printed '$got', expected '$expected'" >&2; exit 1; }
 echo "README C++ example: $got"
 "$prefix/bin/hertzdash" --version

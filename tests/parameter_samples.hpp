@@ -1,7 +1,7 @@
 #pragma once
 // A valid sample value of every option, for the tests that walk the option table
 // (tests/test_parameter_schema.cpp, tests/test_sweep_case_keys.cpp).
-#include "hertzdash/simulation/run_options.hpp"
+#include "hertzdash/simulation/options/run_options.hpp"
 #include "tests/elastic_rod_support.hpp"  // test::paper()
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// The bounce sequence (simulation/bounce_sequence.hpp) and the restitution the paper's method
+// The bounce sequence (simulation/run/bounce_sequence.hpp) and the restitution the paper's method
 // reads from it: kinematics against the closed-form flights, energy conservation without
 // damping, no drift against a tight-tolerance reference, the rigid limit of the integrated
 // elastic flights, the calibration round trip, and the Hertz peak pressure of the
@@ -6,8 +6,8 @@
 #include "cli_runner.hpp"
 #include "damping_law_test_support.hpp"
 
-#include "hertzdash/simulation/bounce_sequence.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/run/bounce_sequence.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -88,7 +88,7 @@ TEST_CASE("bounce: the sequence does not drift, onset-time error per bounce", "[
   // Flights are closed form, so the onset time of impact n carries only the errors of the
   // contacts before it: each contact's time and rebound speed; an error delta e in a rebound
   // speed e v changes the next flight by 2 v delta e / g. CVODE at its default rtol 1e-8 gives
-  // e_effective to ~1e-7 (simulation/calibrate_restitution.hpp), so with ten times that,
+  // e_effective to ~1e-7 (simulation/run/calibrate_restitution.hpp), so with ten times that,
   // delta e <= 1e-6, each bounce adds at most 2e-6 v0 / g ~ 1.3e-7 s and the error of onset n
   // stays below n times that: linear growth, no drift. Reference: gbs8 at rtol 1e-12.
   const DropTestSetup s = steel_20mm();

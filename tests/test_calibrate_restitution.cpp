@@ -1,4 +1,4 @@
-// Calibration of the input restitution (simulation/calibrate_restitution.hpp):
+// Calibration of the input restitution (simulation/run/calibrate_restitution.hpp):
 // GSL's Brent solver on e_effective(e_input) = target. Each check compares the input e
 // found with one known independently of the solver.
 #include "damping_law_test_support.hpp"

@@ -92,6 +92,8 @@ TEST_CASE("CLI: each invalid parameter exits 2, names it and its range, writes n
       {"--damping kuwabara-kono --reference-velocity 0", "--reference-velocity", "> 0"},
       {"--damping kuwabara-kono --reference-velocity 0.5 --viscous-time-constant 1e-4", "--reference-velocity",
        "omitted when --viscous-time-constant is given"},
+      // Issue 30: the height was silently ignored beside an impact velocity.
+      {"--height 0.05 --impact-velocity 0.5", "--height", "omitted when --impact-velocity is given"},
       {"--ball-yield-stress 0", "--ball-yield-stress", "> 0 or inf"},
       {"--ball-yield-stress nan", "--ball-yield-stress", "> 0 or inf"},
       // Issue 19: hexadecimal was read (0x10 as 16), an empty text as 0, and "1e" named no range.

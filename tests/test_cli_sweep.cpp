@@ -4,7 +4,7 @@
 #include "cli_runner.hpp"
 
 #include "hertzdash/io/csv_table.hpp"
-#include "hertzdash/simulation/sweep_outputs.hpp"
+#include "hertzdash/simulation/sweep/sweep_outputs.hpp"
 
 #include <catch2/catch.hpp>
 

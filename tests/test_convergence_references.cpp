@@ -2,11 +2,11 @@
 // the regularised contact system, CVODE on the undamped law without gravity (the
 // peak force coincides with maximum compression there), and the simulate warning.
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/model/regularized_contact.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/step_resolution.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/run/step_resolution.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

@@ -40,7 +40,7 @@ TEMPLATE_LIST_TEST_CASE("Every law: no energy gain (e_effective <= 1) across e a
 
 TEMPLATE_LIST_TEST_CASE("Every law: its ConservativeLaw trait says whether it dissipates", "[damping][standard]",
                         TestedLaws) {
-  // The result checks (simulation/result_checks.hpp) name a law dissipative unless it declares
+  // The result checks (simulation/run/result_checks.hpp) name a law dissipative unless it declares
   // `conservative`. A conservative law returns e_effective = 1 whatever the input e; a dissipative
   // one, given e = 0.5, loses energy: its e_effective is below 1 by far more than the solver's
   // error (each law's deficit at e = 0.5 is of order 1 - e, tens of per cent).

@@ -1,4 +1,4 @@
-// The fast path dopri5-regularized (simulation/regularized_impact.hpp): the
+// The fast path dopri5-regularized (simulation/run/regularized_impact.hpp): the
 // free fall in closed form, the contact in regularising variables u = x^{1/2},
 // dt/dtau = 2u (model/regularized_contact.hpp) with Dormand-Prince 5(4), and the
 // laws' declarations force_of_root(u, v) = force(u^2, v) (RootPolynomialLaw) it
@@ -9,8 +9,8 @@
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/force_jet.hpp"
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "undamped_hertz_errors.hpp"
 
 #include <catch2/catch.hpp>

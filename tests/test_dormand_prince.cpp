@@ -6,9 +6,9 @@
 #include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/model/drop_test.hpp"
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 #include "undamped_hertz_errors.hpp"
 #include "tests/allocation_count.hpp"
 

@@ -1,6 +1,6 @@
-// CVODES forward sensitivities of the paper's impact (simulation/contact_sensitivity,
+// CVODES forward sensitivities of the paper's impact (simulation/run/contact_sensitivity,
 // paper_law_elasticities) against central finite differences of the full drop-test
-// simulation (simulation/impact_simulator: free fall + contact, events located).
+// simulation (simulation/run/impact_simulator: free fall + contact, events located).
 //
 // The two share no code beyond the force law: the FD side perturbs the physical set-up
 // (E_b, nu_b, e, m, h, R) and lets the model recompute K, v0, zeta, omega_n; the CVODES
@@ -14,9 +14,9 @@
 // Elasticities are O(1e-3..1); an absolute tolerance of 2e-6 is ~5x the budget and still
 // resolves the smallest elasticities (e_effective to E, m, R, h, which act only through
 // gravity during contact) to a few per cent of their size.
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/paper_law_elasticities.hpp"
+#include "hertzdash/simulation/paper/paper_law_elasticities.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 // Energy identities of the drop test.
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // After contact onset every integrator must judge crossings by the contact's own
 // event functions, not by the values they had in flight.
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

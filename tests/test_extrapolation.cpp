@@ -5,8 +5,8 @@
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include "harmonic_oscillator.hpp"
 

@@ -6,7 +6,7 @@
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
 
 #include <catch2/catch.hpp>
 

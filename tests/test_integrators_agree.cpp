@@ -9,8 +9,8 @@
 // per kink: bound 1e-5.
 // Euler at h = 1e-7 s: energy error pi^2 h/t_c = 7.9e-4 over the contact, half of it
 // in the rebound speed: bound 1e-3 (the free fall adds O(h/t_fall) = 1.5e-6).
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

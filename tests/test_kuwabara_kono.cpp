@@ -113,7 +113,7 @@ TEST_CASE("kuwabara-kono equals the paper's law where their damping constants ag
 }
 
 TEST_CASE("kuwabara-kono: A calibrated from e at the reference speed returns e there", "[damping][viscoelastic]") {
-  // Unset A: the simulator solves e_effective(A; v_ref) = e (simulation/viscous_time_constant.hpp,
+  // Unset A: the simulator solves e_effective(A; v_ref) = e (simulation/run/viscous_time_constant.hpp,
   // rtol 1e-12 runs, Brent to 1e-12 in A), so the contact phase at v_ref returns the input e
   // to ~1e-10; the default v_ref is the run's approach speed. At another speed the law's e
   // differs, and e = 1 needs A = 0.

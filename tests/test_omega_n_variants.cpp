@@ -1,6 +1,6 @@
 // The omega_n assumptions of the paper's law (model/omega_n_variant.hpp,
 // model/damping/laws/hongo_paper.hpp) and the fixed-point iteration of the
-// iterated ones (simulation/omega_n_fixed_point.hpp).
+// iterated ones (simulation/run/omega_n_fixed_point.hpp).
 //
 // Each closed-form variant is checked against its defining energy balance, not
 // against a re-typed copy of its formula: from omega_n = sqrt((4K/(5m)) X^{1/2})
@@ -8,8 +8,8 @@
 // strain energy (2/5) K X^{5/2} must equal the energy the variant names.
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/omega_n_fixed_point.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/omega_n_fixed_point.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -10,9 +10,9 @@
 // So the height sweep must follow the Hertz exponents exactly without gravity, and a
 // band over the nylon modulus is a rescaling of one curve.
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_history.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_history.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

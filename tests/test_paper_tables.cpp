@@ -1,8 +1,8 @@
 // Table 2's printed damping ratios follow from eq. (6), and both zeta forms
 // satisfy their defining relations.
 #include "hertzdash/io/csv_table.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/model/restitution.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// One declaration per input (model/parameter.hpp, simulation/run_options.hpp) and every front
+// One declaration per input (model/parameter.hpp, simulation/options/run_options.hpp) and every front
 // end generated from it. Checked here: the command line's options, the fit's names and bounds
 // and docs/parameters.md against the declarations (the case-file keys in
 // tests/test_sweep_case_keys.cpp, built with TOML only); the refusals' keys in each
@@ -8,12 +8,13 @@
 // reads it. The Python keywords are compared in tests/python/test_python_module.py.
 #include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/drop_test_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/integrator_table.hpp"
-#include "hertzdash/simulation/parameter_reference.hpp"
-#include "hertzdash/simulation/run_options.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
-#include "hertzdash/simulation/trace_fit.hpp"
+#include "hertzdash/simulation/fit/trace_fit.hpp"
+#include "hertzdash/simulation/options/parameter_reference.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/options/run_options.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/parameter_samples.hpp"
 
@@ -39,11 +40,7 @@ using test::set_sample;
 
 // Whether o's readers read it in this run.
 bool read_in(const RunOption& o, const RunOptions& run) {
-  const OptionReaders& r = o.readers;
-  if (!r.laws.empty() && std::find(r.laws.begin(), r.laws.end(), run.damping) == r.laws.end()) return false;
-  if (r.elastic_rod && run.rod_model != "elastic") return false;
-  if (r.integrators && !r.integrators(integrator_traits(parse_integrator(run.integrator)))) return false;
-  return true;
+  return o.readers.read_by(run.damping, run.rod_model == "elastic", integrator_traits(parse_integrator(run.integrator)));
 }
 
 Parameters description(const RunOptions& o) {
@@ -78,7 +75,7 @@ TEST_CASE("every option is declared once, with a key, a help text and a valid de
 
 TEST_CASE("every input the model declares is an option, bound to its declaration", "[parameters]") {
   // The drop test's, the elastic rod's and each law's declarations (model/) against the table:
-  // an input declared in the model but not bound in simulation/run_options.cpp could be given
+  // an input declared in the model but not bound in simulation/options/run_options.cpp could be given
   // by no front end.
   std::vector<ParameterDecl> declared(std::begin(drop_test_parameters::all), std::end(drop_test_parameters::all));
   declared.insert(declared.end(), std::begin(elastic_rod_parameters::all), std::end(elastic_rod_parameters::all));
@@ -182,6 +179,36 @@ TEST_CASE("no option is ignored: option x law x rig x integrator, each read or r
   // somewhere, the set-up's options read everywhere).
   CHECK(read > 0);
   CHECK(refused > 0);
+}
+
+TEST_CASE("the run description lists each option the run reads, under its column name", "[parameters]") {
+  // Every output's header and the JSON's "inputs" are made from the option table: for each law,
+  // rig and integrator, an option appears (as its Python keyword and unit, `ball_E_Pa`) exactly
+  // when the run reads it and holds a value of it (a law's computed default is none).
+  std::size_t runs = 0;
+  for (const LawInfo& law : registered_laws())
+    for (const char* rig : {"rigid", "elastic"})
+      for (const IntegratorTraits& integrator : all_integrator_traits) {
+        RunOptions run;
+        run.damping = std::string(law.name);
+        run.rod_model = rig;
+        run.integrator = std::string(integrator.name);
+        const DropTestSetup setup = resolve_setup(run, paper());
+        const SolverSettings solver = resolve_solver(run);
+        const Parameters d = describe_run(setup, run.damping, solver);
+        ++runs;
+        for (const RunOption& o : run_options()) {
+          if (!o.value_in_run) continue;
+          const std::string name = column_name(o);
+          const auto listed = std::find_if(d.begin(), d.end(), [&](const auto& entry) { return entry.first == name; });
+          INFO(name << " with damping " << law.name << ", rod-model " << rig << ", integrator " << integrator.name);
+          const bool expected = read_in(o, run) && o.value_in_run(setup, solver).has_value();
+          CHECK((listed != d.end()) == expected);
+          if (expected && listed != d.end()) CHECK(listed->second == *o.value_in_run(setup, solver));
+        }
+        CHECK(std::count_if(d.begin(), d.end(), [](const auto& e) { return e.first == "damping"; }) == 1);
+      }
+  CHECK(runs == registered_laws().size() * 2 * all_integrator_traits.size());
 }
 
 TEST_CASE("restitution reads the wall's moduli, refuses what it cannot read", "[parameters]") {

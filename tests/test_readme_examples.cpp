@@ -2,7 +2,7 @@
 // that starts with "$ build/hertzdash ARGS" shows exactly what `hertzdash ARGS` prints; and
 // docs/simulate.md names every integrator.
 #include "cli_runner.hpp"
-#include "hertzdash/simulation/integrator_table.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -45,7 +45,7 @@ TEST_CASE("README and docs/: every hertzdash example prints what the page shows"
 
 TEST_CASE("docs/simulate.md lists every integrator of the table, in its order", "[readme]") {
   // The page spells the choices as `--integrator a|b|...`; a row added to the integrator
-  // table (simulation/integrator_table.hpp) without the page left it out once.
+  // table (simulation/run/integrator_table.hpp) without the page left it out once.
   const std::string page = slurp(std::filesystem::path(HERTZDASH_SOURCE_DIR) / "docs" / "simulate.md");
   const std::string key = "`--integrator ";
   const auto start = page.find(key);

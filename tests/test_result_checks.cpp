@@ -1,5 +1,5 @@
 // Results that violate the model's own assumptions are errors or flagged warnings in every
-// front end, never silent numbers (issue 19): the checks of simulation/result_checks.hpp as
+// front end, never silent numbers (issue 19): the checks of simulation/run/result_checks.hpp as
 // `simulate`, `restitution`, `bounce`, `fit` and `sweep` report them.
 //
 // The set-up of every row: the paper's steel rod from 20 mm, v0 = sqrt(2 g h) = 0.626 m/s, whose
@@ -9,8 +9,8 @@
 #include "scratch_dir.hpp"
 #include "cli_runner.hpp"
 
-#include "hertzdash/simulation/result_checks.hpp"
-#include "hertzdash/simulation/step_resolution.hpp"
+#include "hertzdash/simulation/run/result_checks.hpp"
+#include "hertzdash/simulation/run/step_resolution.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -98,15 +98,16 @@ TEST_CASE("An adaptive run beyond its bound asks for a tighter tolerance, within
   const hertzdash::LawInfo law{"hongo", "", "", "", "", false};
   CHECK_NOTHROW(hertzdash::require_physical_restitution(s, solver, law, true));
   s.e_effective = 1.002;
+  // what() writes the keys as key references (`rtol`); each front end spells them (--rtol, rtol).
   CHECK_THROWS_WITH(hertzdash::require_physical_restitution(s, solver, law, true),
-                    Catch::Contains("exceeds 1.001") && Catch::Contains("use a tighter --rtol and --atol (they are 0.001"));
+                    Catch::Contains("exceeds 1.001") && Catch::Contains("use a tighter `rtol` and `atol` (they are 0.001"));
   s.separated = false;
   CHECK_NOTHROW(hertzdash::require_physical_restitution(s, solver, law, true));
 }
 
 TEST_CASE("A fixed step coarser than the study's resolution is flagged by restitution and bounce", "[cli][result_checks]") {
   // Euler at --dt 1e-6: t_H / dt = 1211 steps per contact, below the 10240 Euler needs for 0.1 %
-  // (simulation/integrator_table.hpp); e_effective 0.835 < 1, so a warning, not an error.
+  // (simulation/run/integrator_table.hpp); e_effective 0.835 < 1, so a warning, not an error.
   const std::string args = " --integrator euler --dt 1e-6 --ball-yield-stress inf";
   const auto r = run_cli("restitution" + args + " --json");
   REQUIRE(r.exit_code == 0);

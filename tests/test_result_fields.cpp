@@ -1,16 +1,16 @@
 // Every front end that shows an impact's result against the one table of result fields
-// (simulation/result_fields.hpp): the keys and values of `hertzdash simulate --json`, the lines
+// (simulation/run/result_fields.hpp): the keys and values of `hertzdash simulate --json`, the lines
 // of simulate's text block, the columns of a sweep, and the tables of docs/json-output.md.
 // (Python's simulate() and simulate_many(): tests/python/test_python_module.py.)
 #include "cli_runner.hpp"
 #include "scratch_dir.hpp"
 
 #include "hertzdash/io/csv_table.hpp"
-#include "hertzdash/simulation/integrator_table.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/result_fields.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
-#include "hertzdash/simulation/sweep_outputs.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
+#include "hertzdash/simulation/run/result_fields.hpp"
+#include "hertzdash/simulation/sweep/sweep_outputs.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

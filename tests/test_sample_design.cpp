@@ -1,8 +1,8 @@
 // Input distributions (quantile functions) and unit-cube designs of the sweep and uncertainty
 // studies, against closed forms and the defining properties of each design.
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/input_distribution.hpp"
-#include "hertzdash/simulation/sample_design.hpp"
+#include "hertzdash/simulation/uncertainty/input_distribution.hpp"
+#include "hertzdash/simulation/uncertainty/sample_design.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -4,9 +4,9 @@
 #include "cli_runner.hpp"
 
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/run_options.hpp"
-#include "hertzdash/simulation/step_resolution.hpp"
+#include "hertzdash/simulation/options/run_options.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/step_resolution.hpp"
 
 #include <catch2/catch.hpp>
 

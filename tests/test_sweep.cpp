@@ -1,11 +1,11 @@
-// Sweeps from case files (simulation/sweep_case.hpp, sweep_run.hpp): the runs a case means, the
+// Sweeps from case files (simulation/sweep/sweep_case.hpp, sweep_run.hpp): the runs a case means, the
 // physics of what they return, failures kept per row, the summary's statistics, and tables that
 // do not depend on how the runs were shared out.
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/sha256.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/sweep_run.hpp"
+#include "hertzdash/simulation/sweep/sweep_run.hpp"
 
 #include <catch2/catch.hpp>
 

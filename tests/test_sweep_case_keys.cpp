@@ -1,7 +1,7 @@
-// The case-file keys are the option table's (simulation/run_options.hpp): every option, set in
+// The case-file keys are the option table's (simulation/options/run_options.hpp): every option, set in
 // a case file's [base] under its key, is given with the value written, or refused by its key
 // where a sweep cannot read it (built with TOML only; tests/CMakeLists.txt).
-#include "hertzdash/simulation/sweep_case.hpp"
+#include "hertzdash/simulation/sweep/sweep_case.hpp"
 #include "tests/parameter_samples.hpp"
 
 #include <catch2/catch.hpp>

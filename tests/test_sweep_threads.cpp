@@ -1,12 +1,17 @@
 // HERTZDASH_THREADS: the thread count of a sweep that does not set one (the studies of
 // `make figures`; tests/study_threads.sh runs them on 1 and 3 threads and compares the files).
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <set>
@@ -87,4 +92,56 @@ TEST_CASE("a small sweep spreads over every thread: chunks are a quarter of each
   std::set<int> used(ran_on.begin(), ran_on.end());
   CHECK(used.size() == 3);
   CHECK(used.count(-1) == 0);
+}
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define HERTZDASH_TEST_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define HERTZDASH_TEST_SANITIZED 1
+#endif
+#endif
+
+TEST_CASE("a sweep asking for more threads than the system creates runs on those it gets", "[sweep_threads]") {
+#ifdef HERTZDASH_TEST_SANITIZED
+  SUCCEED("not under AddressSanitizer: it reserves terabytes of address space, which the limit below forbids");
+#else
+  // Before, `sweep --threads 40000` died with "terminate called without an active exception"
+  // (exit 134) once std::thread could not be created (EAGAIN). A child process whose address
+  // space is capped 256 MiB above what it uses cannot map more than about 30 thread stacks of
+  // 8 MiB; asked for 4096 threads, the sweep must still run every index, on fewer threads, and
+  // say how many it ran on.
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    std::size_t mapped_kib = 0;  // VmSize of this process
+    {
+      std::FILE* status = std::fopen("/proc/self/status", "r");
+      char line[256];
+      while (status && std::fgets(line, sizeof line, status))
+        if (std::sscanf(line, "VmSize: %zu kB", &mapped_kib) == 1) break;
+      if (status) std::fclose(status);
+    }
+    const rlimit cap{(mapped_kib + 256 * 1024) * 1024, (mapped_kib + 256 * 1024) * 1024};
+    if (mapped_kib == 0 || ::setrlimit(RLIMIT_AS, &cap) != 0) ::_exit(3);
+    std::vector<std::atomic<int>> ran(10000);
+    unsigned used = 0;
+    try {
+      hertzdash::parallel_for_chunks(
+          ran.size(), [] { return 0; }, [&](int, std::size_t i) { ++ran[i]; },
+          {.threads = 4096, .chunk = 1, .progress = false, .threads_used = &used});
+    } catch (...) {
+      ::_exit(4);
+    }
+    for (const auto& r : ran)
+      if (r != 1) ::_exit(5);
+    ::_exit(used >= 1 && used < 4096 ? 0 : 6);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  INFO("child exit status " << (WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status))
+                            << " (3: no limit set, 4: the sweep threw, 5: an index not run once, 6: thread count)");
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+#endif
 }

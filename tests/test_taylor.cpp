@@ -5,9 +5,9 @@
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/kelvin_voigt.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
-#include "hertzdash/simulation/convergence_runs.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/paper/convergence_runs.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include "undamped_hertz_errors.hpp"
 

@@ -6,8 +6,8 @@
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/model/regularized_contact_singularities.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // The tension clamp (--no-tension): the contact force never pulls, and contact ends
 // where the force reaches zero.
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 

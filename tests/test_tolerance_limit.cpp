@@ -1,4 +1,4 @@
-// The limit above which a tolerance is flagged loose_tolerance (simulation/result_checks.hpp,
+// The limit above which a tolerance is flagged loose_tolerance (simulation/run/result_checks.hpp,
 // loose_rtol_limit = 1e-4) rests on a measurement, made here and printed as a table:
 // the relative error of e_effective of every adaptive integrator at rtol 1e-2, 1e-3 and
 // 1e-4 against the same integrator at rtol 1e-12 (atol at its default, relative to the
@@ -9,10 +9,10 @@
 // what the fixed steps are held to); at ten times the limit at least one is not, so the
 // limit could not be looser. The reference's own error (rtol 1e-12) is below 1e-10, far
 // under either bound.
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/result_checks.hpp"
-#include "hertzdash/simulation/step_resolution.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/run/result_checks.hpp"
+#include "hertzdash/simulation/run/step_resolution.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -6,8 +6,8 @@
 #include "hertzdash/integrators/dormand_prince.hpp"
 #include "hertzdash/integrators/extrapolation.hpp"
 #include "hertzdash/model/damping/laws/hunt_crossley.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 #include <gsl/gsl_sf_lambert.h>

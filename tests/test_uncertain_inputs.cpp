@@ -1,8 +1,8 @@
-// The input distributions of data/assumptions.csv (simulation/uncertain_inputs.hpp): they agree
+// The input distributions of data/assumptions.csv (simulation/uncertainty/uncertain_inputs.hpp): they agree
 // with the paper's own tables where those fix them, and a malformed row is refused naming the
 // file and the parameter.
 #include "hertzdash/io/csv_table.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
 
 #include <catch2/catch.hpp>
 

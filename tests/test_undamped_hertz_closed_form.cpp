@@ -11,8 +11,8 @@
 // is also checked against an independent quadrature of the same integral.
 #include "hertzdash/model/hertz.hpp"
 #include "undamped_hertz_errors.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 #include <gsl/gsl_integration.h>

@@ -2,7 +2,7 @@
 // Relative errors of an undamped Hertz impact against its closed forms (model/hertz.hpp),
 // shared by the integrator tests that check them.
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // The physics extension point: a damping law (the numerical one, an integrator, is a
-// row of simulation/integrator_table.hpp).
+// row of simulation/run/integrator_table.hpp).
 //
 // A law is a small class in its own header under model/damping/laws/, listed
 // once in model/damping/registry.hpp. It carries
@@ -43,14 +43,14 @@ struct DampingSettings {
   double omega_n_rad_per_s = 0;  ///< omega_n [rad/s] used by the iterated variants (> 0 then), else ignored
   /// Laws with a material time constant (MaterialTimeConstantLaw): A [s] >= 0. Unset, the
   /// simulator calibrates it so that the law's restitution at reference_velocity_mps is the
-  /// input e (simulation/viscous_time_constant.hpp); other laws ignore it.
+  /// input e (simulation/run/viscous_time_constant.hpp); other laws ignore it.
   std::optional<double> viscous_time_constant_s;
   /// Approach speed [m/s] at which that calibration holds, > 0; 0 means the set-up's own
   /// approach speed (of its first impact).
   double reference_velocity_mps = 0;
   /// The numbers a user gave for the inputs a law declares in its own `parameters` list and
   /// reads through number() (a law's own inputs need no field here): {key, value}, set by
-  /// simulation/run_options.cpp, validated there against the declaration's range.
+  /// simulation/options/run_options.cpp, validated there against the declaration's range.
   std::vector<std::pair<std::string_view, double>> law_values;
 
   /// The value given for the law's input `p`, else its declared default.
@@ -138,11 +138,11 @@ concept RootPolynomialLaw = DampingLaw<L> && requires(const L& law, double u, de
 /// restitution depends on the impact speed (the viscoelastic Hertz law). Such a law declares
 /// `static constexpr bool material_time_constant = true` and requires A in its constructor;
 /// when the user gives none, the simulator supplies it by calibrating the law's restitution to
-/// the input e at the reference speed (simulation/viscous_time_constant.hpp).
+/// the input e at the reference speed (simulation/run/viscous_time_constant.hpp).
 /// Optional for a law: `static constexpr bool conservative = true` declares that the contact
 /// returns all the energy it stores, e_effective = 1 (the undamped Hertz law). Every other law
 /// dissipates, e_effective < 1. Either way no law creates energy: an e_effective above 1 beyond
-/// the run's accuracy is an under-resolved run (simulation/result_checks.hpp), and the message
+/// the run's accuracy is an under-resolved run (simulation/run/result_checks.hpp), and the message
 /// says which of the two the law is.
 template <class L>
 concept ConservativeLaw = DampingLaw<L> && requires { requires L::conservative; };

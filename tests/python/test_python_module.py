@@ -119,7 +119,7 @@ def test_simulate_many_is_simulate_point_by_point():
 
 
 def fields_of(group, report):
-    """The names of the result fields (simulation/result_fields.hpp) of `group` a front end reports."""
+    """The names of the result fields (simulation/run/result_fields.hpp) of `group` a front end reports."""
     return [f["name"] for f in hertzdash.result_fields() if f[report] and f["group"] == group]
 
 
@@ -244,8 +244,10 @@ def test_result_checks_are_the_programs():
         # The dict is the program's JSON (options as --key); the UserWarnings name keywords.
         assert [as_keywords(w["message"]) for w in r["warnings"]] == [str(w.message) for w in record]
         assert r == cli_json(command, "--integrator", "euler", "--dt", "1e-6", "--ball-yield-stress", "inf")
-        with pytest.raises(RuntimeError, match="the run is under-resolved: e_effective = 1.2"):
+        # The error names the keyword to change (dt), as the program names --dt.
+        with pytest.raises(RuntimeError, match="the run is under-resolved: e_effective = 1.2") as error:
             function(integrator="euler", dt=1e-4)
+        assert "a smaller dt (it is 0.0001 s" in str(error.value) and "--dt" not in str(error.value)
     # rtol above 1e-4: loose_tolerance; at 1e-4: nothing.
     with pytest.warns(UserWarning, match="rtol 0.5 is above 0.0001"):
         assert [w["code"] for w in hertzdash.simulate(rtol=0.5, **clean)["warnings"]] == ["loose_tolerance"]

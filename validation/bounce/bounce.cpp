@@ -5,7 +5,7 @@
 // the model: each interval contains a contact time as well as a flight, so the interval
 // ratio is not the velocity ratio; and the paper's dashpot does not return its input e
 // (steel: input 0.795 gives e_effective 0.829). This study closes the loop with the bounce
-// sequence (simulation/bounce_sequence.hpp, `hertzdash bounce`):
+// sequence (simulation/run/bounce_sequence.hpp, `hertzdash bounce`):
 //  1. For each rod dropped from 20 mm (an assumption: the paper does not say from which height
 //     it measured e), what interval ratio does the paper's own model produce when fed Table 2's
 //     e, and which input e would have reproduced Table 2's e as an interval ratio, the quantity
@@ -25,10 +25,10 @@
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/simulation/bounce_sequence.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/run_options.hpp"
+#include "hertzdash/simulation/options/run_options.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/bounce_sequence.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "validation/common/all_rods.hpp"
 #include "validation/common/study_args.hpp"
 

@@ -7,7 +7,7 @@
 // identical glass spheres meeting at 20 m/s, and an aluminium alloy sphere striking a rigid flat
 // at 0.2 m/s. Along the line of centres each is the drop test's rigid-rod model with the
 // benchmark's effective mass, effective radius and E*, no gravity
-// (simulation/chung_ooi_benchmark.hpp maps the benchmark's bodies onto the set-up's names:
+// (simulation/paper/chung_ooi_benchmark.hpp maps the benchmark's bodies onto the set-up's names:
 // the moving "rod" carries m*, the "hemisphere" the sphere's radius R* and elastic constants, and
 // the "rod's flat end" those of what the sphere strikes). We run it with the undamped law "none".
 //
@@ -26,12 +26,12 @@
 // at least that far, so this is the stricter reading of the README's "~1 % of full scale"):
 // the vertical deviation at the digitised abscissa, and the distance to the curve in both
 // columns at once, which is what a digitisation error in both columns moves
-// (simulation/chung_ooi_benchmark.hpp). Also the peak force, the largest overlap and the contact
+// (simulation/paper/chung_ooi_benchmark.hpp). Also the peak force, the largest overlap and the contact
 // time read off the curves against ours.
 //
 // Part 3, test 2's restitution map: the effective restitution of every registered law against
 // its input e in test 2's set-up (rigid flat, no gravity: already the contact phase of
-// simulation/calibrate_restitution.hpp), tension allowed and clamped. Every law builds its
+// simulation/run/calibrate_restitution.hpp), tension allowed and clamped. Every law builds its
 // coefficients from (e, v0, K, m) alone, so e_effective depends on e alone
 // (validation/damping_laws): the map must be the one of the paper's steel contact phase (h = 20 mm),
 // although mass, stiffness and speed all differ (11.3 against 0.778 kg, K 92 times larger, 0.2
@@ -46,11 +46,12 @@
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"
-#include "hertzdash/simulation/calibrate_restitution.hpp"
-#include "hertzdash/simulation/chung_ooi_benchmark.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/paper/chung_ooi_benchmark.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/calibrate_restitution.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -1,8 +1,9 @@
 #pragma once
 // Helpers for studies that run every rod of Table 1: names for tables and LaTeX
 // macros, and the provenance parameters shared by all rods of a study.
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -8,12 +8,21 @@ namespace hertzdash {
 
 StudyArgs parse_study_args(int argc, char** argv) {
   StudyArgs a;
+  const std::string usage_line = std::string("usage: ") + argv[0] + " --out DIR [--generated DIR] [--reduced | --full]\n";
   auto usage = [&] {
-    std::cerr << "usage: " << argv[0] << " --out DIR [--generated DIR] [--reduced | --full]\n";
+    std::cerr << usage_line << "(" << argv[0] << " --help explains them)\n";
     std::exit(2);
   };
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::cout << usage_line
+                << "  --out DIR        where the study's CSV data (and the figures drawn from it) go, e.g. paper/figures\n"
+                   "  --generated DIR  where its LaTeX fragments go (default: DIR/../generated)\n"
+                   "  --reduced        a small, fast version of the study (the pipeline test)\n"
+                   "  --full           the full sample size of a study that `make figures` cuts\n";
+      std::exit(0);
+    }
     if (arg == "--out" && i + 1 < argc) a.out_dir = argv[++i];
     else if (arg == "--generated" && i + 1 < argc) a.generated_dir = argv[++i];
     else if (arg == "--reduced") a.reduced = true;

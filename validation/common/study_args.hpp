@@ -18,7 +18,8 @@ struct StudyArgs {
   bool full = false;
 };
 
-/// Parses the arguments; prints usage and exits with code 2 on bad ones.
+/// Parses the arguments; prints usage and exits with code 2 on bad ones, with code 0 after
+/// --help (-h).
 StudyArgs parse_study_args(int argc, char** argv);
 
 /// What a study's main does with an exception that ends it (`int main(...) try { ... } catch

@@ -8,7 +8,7 @@
 // CVODE Adams and BDF (against tolerance), and RK4 in regularising variables
 // (model/regularized_contact.hpp), the remedy this study arrives at.
 //
-// The problem (simulation/convergence_runs.hpp): the paper's steel rod
+// The problem (simulation/paper/convergence_runs.hpp): the paper's steel rod
 // meeting the nylon hemisphere at v0 = sqrt(2 g h), h = 20 mm, gravity off during
 // the contact, starting in flight a fraction of a step before onset. Two laws:
 //   - `none` (undamped Hertz, F = K x^{3/2}): exact references in closed form
@@ -57,9 +57,10 @@
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
-#include "hertzdash/simulation/step_resolution.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/run/step_resolution.hpp"
 #include "validation/common/study_args.hpp"
-#include "hertzdash/simulation/convergence_runs.hpp"
+#include "hertzdash/simulation/paper/convergence_runs.hpp"
 
 #include <fmt/format.h>
 
@@ -308,7 +309,7 @@ int main(int argc, char** argv) try {
   print_table("paper's ('hongo')", paper);
 
   // The simulate warning's thresholds (the rows' min_steps_per_contact_* in
-  // simulation/integrator_table.hpp) must be what this sweep finds; say so loudly if
+  // simulation/run/integrator_table.hpp) must be what this sweep finds; say so loudly if
   // they drift apart.
   std::cout << fmt::format("\nSteps per contact for every error <= {:g} (both laws; the sweep doubles N):\n", target_error);
   for (const auto& [integrator, location, constant] :
@@ -319,7 +320,7 @@ int main(int argc, char** argv) try {
     const long found = steps_needed_both(hertz, paper, integrator, location);
     std::cout << fmt::format("  {:6} {:10} {:>6} (integrator table: {}){}\n", integrator, location,
                              found < 0 ? std::string("> sweep") : std::to_string(found), constant,
-                             !args.reduced && found != constant ? "  <-- MISMATCH: update simulation/integrator_table.hpp" : "");
+                             !args.reduced && found != constant ? "  <-- MISMATCH: update simulation/run/integrator_table.hpp" : "");
   }
 
   // The set-up as `hertzdash simulate` describes it, without the entries the sweep varies.

@@ -4,7 +4,7 @@
 // Every registered law (model/damping/registry.hpp) turns an input coefficient of
 // restitution e into damping coefficients by its own approximation. What a law
 // really returns is its effective restitution, the rebound over the approach speed
-// of the contact alone: rigid flat, no gravity (simulation/calibrate_restitution.hpp).
+// of the contact alone: rigid flat, no gravity (simulation/run/calibrate_restitution.hpp).
 // All our laws build their coefficients from (e, v0, K, m) only, so by dimensional
 // analysis (tests/test_damping_law_restitution.cpp) e_effective is a function of e
 // alone; the map is taken at the paper's steel case (h = 20 mm), and holds for any
@@ -30,15 +30,16 @@
 // GENERATED/damping_laws.tex (macros \dl...), GENERATED/damping_laws_table.tex and
 // GENERATED/damping_laws_table.md (the same table: the paper's and docs/damping-laws.md's).
 // Prints the table.
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/io/atomic_file.hpp"
-#include "hertzdash/simulation/calibrate_restitution.hpp"
-#include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/calibrate_restitution.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -15,13 +15,13 @@
 // Writes: OUT/height_sweep.csv (plotted by height_sweep.gp),
 // GENERATED/height_sweep.tex (macros \sweep...).
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/simulation/convergence_runs.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/io/latex_macros.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/simulation/paper/convergence_runs.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -3,14 +3,14 @@
 // to the real (elastic) rod have done to the estimates?
 //
 // No measured trace of the paper exists (it printed its traces only as plots), so every trace
-// here is SYNTHETIC: a virtual experiment with known truth (simulation/virtual_measurement.hpp).
+// here is SYNTHETIC: a virtual experiment with known truth (simulation/fit/virtual_measurement.hpp).
 // The measurement chain is an assumption, stated once and used throughout: the load cell under
 // the hemisphere and the accelerometer on the rod's top face, each sampled at 500 kHz through a
 // second-order Butterworth anti-alias filter at 100 kHz, with white noise of 1 % of each
 // channel's peak. The truth: the four rods of Table 1 dropped from 20 mm, nylon E = 1.7 GPa
 // (inside the 1.2-2.9 GPa the paper leaves open) and e = Table 2's. The fit starts from the
 // paper's assumed E = 2.0 GPa and e = 0.9, and fits E, e and the onset time
-// (simulation/trace_fit.hpp).
+// (simulation/fit/trace_fit.hpp).
 //
 //  1. Coverage. The rigid model's traces (the paper's model, so the fitted model is right) with
 //     `draws` independent noise draws per rod: how often does the 1-sigma interval contain the
@@ -28,7 +28,7 @@
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
-#include "hertzdash/simulation/run_reports.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
 #include "validation/common/all_rods.hpp"
 #include "validation/common/study_args.hpp"
 

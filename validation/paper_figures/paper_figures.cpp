@@ -20,13 +20,14 @@
 // Writes: OUT/fig5.csv, OUT/fig6.csv (exactly what fig5.gp and fig6.gp plot),
 // OUT/fig5_measured_<k>.csv / fig6_measured_<k>.csv if measured traces exist,
 // GENERATED/paper_figures.tex (macros \figs...).
-#include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/model/damping/laws/undamped.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/simulation/impact_history.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/io/measured_trace.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_history.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -35,15 +35,15 @@
 //   GENERATED/unstated_parameters_table.tex   the table of unstated parameters
 // All impacts: CVODE (Adams, rtol 1e-8, atol 1e-12 of the impact's scales), the paper's tension-allowing
 // force law, g acting throughout, free fall from rest.
-#include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/io/csv_table.hpp"
-#include "hertzdash/io/decimal_number.hpp"
-#include "hertzdash/model/hertz.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
+#include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -16,9 +16,9 @@
 // GENERATED/table3_table.tex (tabular fragments, booktabs) and
 // GENERATED/paper_tables.tex (macros \tabs...).
 #include "hertzdash/io/csv_table.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/model/restitution.hpp"
 #include "hertzdash/model/rod_vibration.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"

@@ -18,12 +18,12 @@
 // Writes: OUT/rods_h20.csv (plotted by rods_h20.gp), GENERATED/rods_h20_table.tex,
 // GENERATED/rods_h20.tex (macros \rods...).
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/simulation/impact_simulator.hpp"
 #include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -26,13 +26,13 @@
 //   omega_n_hysteresis.csv              force-deformation loops at h = 20 mm (figure)
 //   ../generated/sensitivity_omega_n.tex        \sens... macros for the paper
 //   ../generated/sensitivity_omega_n_table.tex  the h = 20 mm comparison table
-#include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
-#include "hertzdash/simulation/omega_n_fixed_point.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/omega_n_fixed_point.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

@@ -7,11 +7,11 @@
 // height to the printed digits). The other studies vary them one at a time (paper_figures: the
 // nylon modulus band; elasticities: derivatives at one point). Here they are drawn jointly,
 // each from the distribution data/assumptions.csv states with its reason
-// (simulation/uncertain_inputs.hpp), independent of each other:
+// (simulation/uncertainty/uncertain_inputs.hpp), independent of each other:
 //   nylon E, nylon nu, the rod's nu, e (Table 2 + deviation), R, h, m (Table 1 + deviation),
 //   the rod's E (Table 3 x (1 + deviation)).
 // For every rod at the paper's h = 20 mm the paper's model (law "hongo") runs on the rows of a
-// Saltelli design (simulation/sobol_indices.hpp: N rows each of A, B and the d matrices
+// Saltelli design (simulation/uncertainty/sobol_indices.hpp: N rows each of A, B and the d matrices
 // A_B^(i); Sobol points, so N (d + 2) runs, each started at contact onset with v0 = sqrt(2 g h))
 // and gives
 //   - the 5 %, 50 % and 95 % quantiles of e_effective, peak force and contact time over the
@@ -42,12 +42,12 @@
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/simulation/impact_history.hpp"
-#include "hertzdash/simulation/paper_law_elasticities.hpp"
-#include "hertzdash/simulation/paper_parameters.hpp"
-#include "hertzdash/simulation/parallel_sweep.hpp"
-#include "hertzdash/simulation/sample_quantile.hpp"
-#include "hertzdash/simulation/sobol_indices.hpp"
+#include "hertzdash/simulation/paper/paper_law_elasticities.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/impact_history.hpp"
+#include "hertzdash/simulation/sweep/parallel_sweep.hpp"
+#include "hertzdash/simulation/uncertainty/sample_quantile.hpp"
+#include "hertzdash/simulation/uncertainty/sobol_indices.hpp"
 #include "validation/common/all_rods.hpp"
 #include "validation/common/study_args.hpp"
 

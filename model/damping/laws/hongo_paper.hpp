@@ -36,7 +36,7 @@ inline double as_printed_natural_frequency(double K, double mass_kg, double ampl
 /// omega_n [rad/s] of the paper's law for one impact, by the chosen variant (OmegaNVariant).
 /// The iterated variants (self-consistent, contact-time) take the given
 /// settings.omega_n_rad_per_s, which their fixed-point iteration supplies
-/// (simulation/omega_n_fixed_point.hpp); throws InvalidParameter if it is not > 0.
+/// (simulation/run/omega_n_fixed_point.hpp); throws InvalidParameter if it is not > 0.
 inline double paper_law_natural_frequency(const ImpactConditions& c, const DampingSettings& s) {
   const double K = c.K, m = c.mass_kg, v0 = c.v0_mps, e = c.restitution;
   switch (s.omega_n) {
@@ -102,7 +102,7 @@ class HongoPaper {
   double time_constant_s() const noexcept { return tau_; }
 
   /// The force at u = x^{1/2} >= 0 for given (K, tau) and its partial derivatives, for
-  /// forward sensitivities (simulation/contact_sensitivity.cpp):
+  /// forward sensitivities (simulation/run/contact_sensitivity.cpp):
   ///   F = K u (u^2 + tau xdot),   F_u = K (3u^2 + tau xdot),   F_xdot = K tau u,
   ///   F_K = u (u^2 + tau xdot),   F_tau = K u xdot.
   struct Gradient {

@@ -1,0 +1,165 @@
+// `fit`'s run and report (simulation/reports/run_reports.hpp): read a measured trace and fit it (one law,
+// or every law ranked), the JSON of a fit and of the run, the curves file, and the fit's
+// warnings.
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/reports/report_json.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+
+namespace hertzdash {
+
+using report_detail::json_value;
+
+FitRun run_fit(const std::string& trace_path, const RunOptions& base, const PaperParameters& paper,
+               const TraceFitSettings& settings, bool compare_all_laws) {
+  FitRun r;
+  r.settings = settings;
+  resolve_setup(base, paper);  // bad options are reported before the file is read
+  if (compare_all_laws && base.damping != RunOptions{}.damping)
+    throw InvalidParameter("damping", base.damping, "omitted with `compare-laws` (every registered law is fitted)");
+  r.trace = read_measured_trace(trace_path);
+  if (compare_all_laws) {
+    LawComparison c = compare_laws(r.trace, base, paper, settings);
+    r.fits = std::move(c.fits);
+    r.failures = std::move(c.failures);
+  } else {
+    r.fits.push_back(fit_trace(r.trace, base, paper, settings));
+  }
+  return r;
+}
+
+namespace {
+
+nlohmann::ordered_json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const TraceFit& f, const PaperParameters& paper) {
+  nlohmann::ordered_json j;
+  j["law"] = f.law;
+  if (!f.left_out.empty()) j["left_out"] = f.left_out;  // compare_laws: options this law does not read
+  nlohmann::ordered_json parameters = nlohmann::ordered_json::array();
+  for (const FittedParameter& p : f.parameters)
+    parameters.push_back({{"name", p.name},
+                          {"initial", p.initial},
+                          {"estimate", p.estimate},
+                          {"standard_error", number_or_null(p.standard_error)},
+                          {"lower", number_or_null(p.lower)},
+                          {"upper", number_or_null(p.upper)},
+                          {"at_bound", p.at_bound}});
+  j["parameters"] = parameters;
+  nlohmann::ordered_json correlation = nlohmann::ordered_json::array();
+  for (const auto& row : f.correlation) {
+    nlohmann::ordered_json r = nlohmann::ordered_json::array();
+    for (double c : row) r.push_back(number_or_null(c));
+    correlation.push_back(r);
+  }
+  j["correlation"] = correlation;
+  nlohmann::ordered_json channels = nlohmann::ordered_json::array();
+  for (const ChannelFit& c : f.channels)
+    channels.push_back({{"name", c.name},
+                        {"samples", c.samples},
+                        {"noise_sigma", c.noise_sigma},
+                        {"residual_rms", c.residual_rms}});
+  j["channels"] = channels;
+  j["samples"] = f.samples;
+  j["chi_square"] = f.chi_square;
+  j["reduced_chi_square"] = f.reduced_chi_square;
+  j["condition_number"] = number_or_null(f.condition_number);
+  j["identifiable"] = f.identifiable;
+  j["aic"] = f.aic;
+  j["bic"] = f.bic;
+  j["iterations"] = f.iterations;
+  j["model_runs"] = f.model_runs;
+  j["stop_reason"] = f.stop_reason;
+  j["converged"] = f.converged;
+  j["contact_time_s"] = f.contact_time_s;
+  nlohmann::ordered_json in;
+  const DropTestSetup s = resolve_setup(f.fitted_options, paper);
+  for (const auto& [name, value] : describe_run(s, f.law, f.model_solver)) in[name] = json_value(value);
+  j["fitted_inputs"] = in;
+  return j;
+}
+
+nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper) {
+  nlohmann::ordered_json j;
+  j["schema_version"] = json_schema_version;
+  j["trace"] = {{"path", run.trace.path.string()},   {"source", run.trace.source},
+                {"rod", run.trace.rod},               {"height_m", run.trace.height_m},
+                {"synthetic", run.trace.synthetic},   {"samples", run.trace.t_s.size()}};
+  nlohmann::ordered_json fits = nlohmann::ordered_json::array();
+  for (const TraceFit& f : run.fits) fits.push_back(to_json(f, paper));
+  j["fits"] = fits;
+  nlohmann::ordered_json failures = nlohmann::ordered_json::array();
+  for (const auto& [law, why] : run.failures) failures.push_back({{"law", law}, {"error", why}});
+  j["failures"] = failures;
+  j["warnings"] = to_json(fit_diagnostics(run, paper));
+  j["git_revision"] = git_revision();
+  return j;
+}
+
+void write_fit_curves(const TraceFit& f, const MeasuredTrace& trace, const std::filesystem::path& path) {
+  std::vector<std::string> columns{"t_s"};
+  for (const ChannelFit& c : f.channels)
+    for (const char* what : {"measured", "model", "residual"}) columns.push_back(c.name + "_" + what);
+  Parameters header{{"trace", trace.path.string()}, {"trace_source", trace.source},
+                    {"synthetic", trace.synthetic ? "true" : "false"}, {"damping", f.law}};
+  for (const FittedParameter& p : f.parameters) header.emplace_back(p.name + "_estimate", fmt::format("{}", p.estimate));
+  CsvWriter csv("hertzdash fit: the trace, the fitted model and the residuals (time on the trace's clock)", header,
+                columns);
+  std::map<double, std::vector<CsvWriter::Cell>> rows;  // by sample time: channels may have gaps
+  for (std::size_t c = 0; c < f.channels.size(); ++c) {
+    const ChannelFit& ch = f.channels[c];
+    for (std::size_t i = 0; i < ch.t_s.size(); ++i) {
+      auto& row = rows[ch.t_s[i]];
+      if (row.empty()) row.assign(columns.size(), std::string());
+      row[0] = ch.t_s[i];
+      row[1 + 3 * c] = ch.measured[i];
+      row[2 + 3 * c] = ch.model[i];
+      row[3 + 3 * c] = ch.measured[i] - ch.model[i];
+    }
+  }
+  for (const auto& [t, row] : rows) csv.add_row(row);
+  csv.save(path);
+}
+
+std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParameters& paper) {
+  std::vector<RunDiagnostic> w;
+  auto warn = [&w](const char* code, std::string message) { w.push_back({"warning", code, std::move(message), {}}); };
+  if (run.trace.synthetic) warn("synthetic_trace", "the trace says 'synthetic: true': it is not a measurement");
+  for (const TraceFit& f : run.fits) {
+    const std::string law = run.fits.size() > 1 ? " (" + f.law + ")" : "";
+    if (!f.converged)
+      warn("not_converged",
+           fmt::format("the fit{} did not converge ({}): the estimates are where it stopped", law, f.stop_reason));
+    if (!f.identifiable)
+      warn("not_identifiable",
+           fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (limit {:g}), a "
+                       "correlation beyond {:g} or an infinite standard error; fit fewer parameters or add a channel",
+                       law, f.condition_number, identifiable_condition_limit, identifiable_correlation_limit));
+    for (const FittedParameter& p : f.parameters)
+      if (p.at_bound)
+        warn("at_bound", fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law,
+                                     p.estimate));
+    if (f.reduced_chi_square > 2)
+      warn("poor_fit", fmt::format("the model{} does not explain the trace to its noise: reduced chi-square {:.3g} "
+                                   "(about 1 if it did); the standard errors are scaled by it",
+                                   law, f.reduced_chi_square));
+    DropTestSetup s = resolve_setup(f.fitted_options, paper);
+    s.impact_velocity_mps = approach_speed(s);  // the fit's model starts at contact onset
+    for (RunDiagnostic& d : impact_diagnostic_list(f.model_summary, s, f.model_solver, {})) {
+      d.message = "the fitted model" + law + ": " + d.message;
+      w.push_back(std::move(d));
+    }
+  }
+  return w;
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,358 @@
+#include "hertzdash/simulation/sweep/sweep_case.hpp"
+
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/sweep/sweep_outputs.hpp"
+
+#include <toml++/toml.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <type_traits>
+
+namespace hertzdash {
+
+namespace {
+
+// Where a node is, for messages: "(case.toml line 7)".
+std::string where(const std::string& source, const toml::source_region& r) {
+  return fmt::format("({} line {})", source, r.begin.line);
+}
+
+class CaseReader {
+ public:
+  explicit CaseReader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& key, const toml::node& node, const std::string& value,
+                         const std::string& range) const {
+    throw InvalidParameter(key + " " + where(source_, node.source()), value, range);
+  }
+
+  std::string describe(const toml::node& node) const {
+    std::ostringstream s;
+    if (node.is_table()) return "a table";
+    if (node.is_array()) return "a list";
+    node.visit([&](const auto& v) {
+      if constexpr (toml::is_string<decltype(v)>) s << '"' << v.get() << '"';
+      else s << v;
+    });
+    return s.str();
+  }
+
+  // A number: a TOML float other than nan (inf is a value: a rigid rod-E, an open distribution
+  // bound), or a decimal integer (0x10, 0o7, 0b1 are refused: numbers are decimal).
+  double number(const std::string& key, const toml::node& node) const {
+    if (const auto* f = node.as_floating_point()) {
+      if (std::isnan(f->get())) fail(key, node, describe(node), "a decimal number (nan is not a number)");
+      return f->get();
+    }
+    if (const auto* i = node.as_integer()) {
+      if (i->flags() != toml::value_flags::none)  // format_as_binary, _octal or _hexadecimal
+        fail(key, node, describe(node), "a decimal number (no hexadecimal, octal or binary)");
+      return static_cast<double>(i->get());
+    }
+    fail(key, node, describe(node), "a number");
+  }
+
+  // A count: a decimal integer in [lo, hi].
+  std::size_t count(const std::string& key, const toml::node& node, std::size_t lo, std::size_t hi) const {
+    const double v = number(key, node);
+    if (!node.is_integer() || v < static_cast<double>(lo) || v > static_cast<double>(hi))
+      fail(key, node, describe(node), fmt::format("an integer in [{}, {}]", lo, hi));
+    return static_cast<std::size_t>(v);
+  }
+
+  std::string text(const std::string& key, const toml::node& node) const {
+    if (const auto* s = node.as_string()) return s->get();
+    fail(key, node, describe(node), "a string in quotes");
+  }
+
+  bool boolean(const std::string& key, const toml::node& node) const {
+    if (const auto* b = node.as_boolean()) return b->get();
+    fail(key, node, describe(node), "true or false");
+  }
+
+  const toml::table& table(const std::string& key, const toml::node& node) const {
+    if (const auto* t = node.as_table()) return *t;
+    fail(key, node, describe(node), "a table");
+  }
+
+  // The option a key names (command-line or Python spelling).
+  const RunOption& option(const std::string& section, const toml::key& key, const toml::node& node) const {
+    const RunOption* o = find_run_option(key.str());
+    if (!o) {
+      std::string names;
+      for (const RunOption& r : run_options()) names += (names.empty() ? "" : ", ") + r.name;
+      fail(section + "." + std::string(key.str()), node, "an unknown option", "one of the simulate options: " + names);
+    }
+    return *o;
+  }
+
+  // One value of an option, typed as the option is.
+  SweepValue value(const RunOption& o, const std::string& key, const toml::node& node) const {
+    switch (o.decl.type) {
+      case ParameterType::flag: return boolean(key, node);
+      case ParameterType::text: return text(key, node);
+      case ParameterType::number: return number(key, node);
+    }
+    return {};
+  }
+
+  // Keys of a table in the file's order (toml++ keeps them sorted by name).
+  static std::vector<std::pair<const toml::key*, const toml::node*>> in_file_order(const toml::table& t) {
+    std::vector<std::pair<const toml::key*, const toml::node*>> items;
+    for (const auto& [k, v] : t) items.emplace_back(&k, &v);
+    std::sort(items.begin(), items.end(), [](const auto& a, const auto& b) {
+      const auto &sa = a.first->source().begin, &sb = b.first->source().begin;
+      return std::pair(sa.line, sa.column) < std::pair(sb.line, sb.column);
+    });
+    return items;
+  }
+
+  void check_keys(const std::string& section, const toml::table& t, std::initializer_list<std::string_view> allowed,
+                  std::string_view what) const {
+    for (const auto& [k, v] : t)
+      if (std::find(allowed.begin(), allowed.end(), k.str()) == allowed.end())
+        fail(section + "." + std::string(k.str()), v, "an unknown key", std::string(what));
+  }
+
+  // A grid axis: a list of values, or a range table.
+  std::vector<SweepValue> axis(const RunOption& o, const std::string& key, const toml::node& node) const {
+    std::vector<SweepValue> values;
+    if (const auto* list = node.as_array()) {
+      if (list->empty()) fail(key, node, "[]", "a list of at least one value");
+      for (const toml::node& v : *list) values.push_back(value(o, key, v));
+      return values;
+    }
+    const auto* range = node.as_table();
+    const bool numeric = o.decl.type == ParameterType::number;
+    if (!range || !numeric)
+      fail(key, node, describe(node),
+           numeric ? "a list of values or a range { from, to, count, spacing = \"linear\" | \"log\" }" : "a list of values");
+    check_keys(key, *range, {"from", "to", "count", "spacing"}, "from, to, count, spacing");
+    for (const char* needed : {"from", "to", "count"})
+      if (!range->contains(needed)) fail(key + "." + needed, node, "missing", "given (a range needs from, to and count)");
+    const double from = number(key + ".from", *range->get("from")), to = number(key + ".to", *range->get("to"));
+    const std::size_t n = count(key + ".count", *range->get("count"), 1, max_sweep_runs);
+    std::string spacing = "linear";
+    if (const toml::node* s = range->get("spacing")) spacing = text(key + ".spacing", *s);
+    if (spacing != "linear" && spacing != "log") fail(key + ".spacing", *range->get("spacing"), spacing, "linear or log");
+    for (const auto& [end, v] : {std::pair{"from", from}, std::pair{"to", to}}) {
+      if (!std::isfinite(v)) fail(key + "." + end, *range->get(end), format_value(v), "a finite number");
+      if (spacing == "log" && !(v > 0)) fail(key + "." + end, *range->get(end), format_value(v), "> 0 (spacing = \"log\")");
+    }
+    if (n == 1 && from != to) fail(key + ".count", *range->get("count"), "1", "at least 2 when from != to");
+    for (std::size_t k = 0; k < n; ++k) {
+      const double f = n == 1 ? 0.0 : static_cast<double>(k) / static_cast<double>(n - 1);
+      // The ends exactly as written; interior points by the spacing's formula.
+      const double v = k == 0 ? from : k + 1 == n ? to
+                       : spacing == "log" ? from * std::pow(to / from, f)
+                                          : from + f * (to - from);
+      values.emplace_back(v);
+    }
+    return values;
+  }
+
+  InputDistribution distribution(const std::string& key, const toml::node& node) const {
+    const toml::table& t = table(key, node);
+    const toml::node* kind_node = t.get("distribution");
+    if (!kind_node) fail(key + ".distribution", node, "missing", "given: uniform, normal or lognormal");
+    const DistributionKind kind = parse_distribution_kind(text(key + ".distribution", *kind_node), key + " " + where(source_, kind_node->source()));
+    auto get = [&](const char* name, std::optional<double> fallback) {
+      if (const toml::node* v = t.get(name)) return number(key + "." + name, *v);
+      if (!fallback) fail(key + "." + name, node, "missing", fmt::format("given for a {} distribution", to_string(kind)));
+      return *fallback;
+    };
+    InputDistribution d;
+    switch (kind) {
+      case DistributionKind::uniform:
+        check_keys(key, t, {"distribution", "min", "max"}, "distribution, min, max");
+        d = uniform_distribution(get("min", {}), get("max", {}));
+        break;
+      case DistributionKind::normal:
+        check_keys(key, t, {"distribution", "mean", "sd", "min", "max"}, "distribution, mean, sd, min, max");
+        d = normal_distribution(get("mean", {}), get("sd", {}), get("min", -INFINITY), get("max", INFINITY));
+        break;
+      case DistributionKind::lognormal:
+        check_keys(key, t, {"distribution", "log_mean", "log_sd", "min", "max"}, "distribution, log_mean, log_sd, min, max");
+        d = lognormal_distribution(get("log_mean", {}), get("log_sd", {}), get("min", 0.0), get("max", INFINITY));
+        break;
+    }
+    validate(d, key + " " + where(source_, node.source()));
+    return d;
+  }
+
+  const std::string& source() const { return source_; }
+
+ private:
+  std::string source_;
+};
+
+void set_option(RunOptions& options, const RunOption& o, const SweepValue& v) {
+  switch (o.decl.type) {
+    case ParameterType::flag: set_flag(options, o, std::get<bool>(v)); break;
+    case ParameterType::text: set_text(options, o, std::get<std::string>(v)); break;
+    case ParameterType::number: set_number(options, o, std::get<double>(v)); break;
+  }
+}
+
+bool is_numeric(const RunOption& o) { return o.decl.type == ParameterType::number; }
+
+}  // namespace
+
+std::size_t SweepCase::size() const {
+  std::size_t n = sample ? sample->count : 1;
+  for (const SweepAxis& a : grid) n *= a.values.size();
+  return n;
+}
+
+std::vector<std::string> SweepCase::parameter_columns() const {
+  std::vector<std::string> columns;
+  for (const SweepAxis& a : grid) columns.push_back(column_name(*a.option));
+  if (sample)
+    for (const SweepAxis& a : sample->inputs) columns.push_back(column_name(*a.option));
+  return columns;
+}
+
+std::vector<SweepValue> SweepCase::parameters(std::size_t run) const {
+  std::vector<SweepValue> values(grid.size());
+  std::size_t point = run;
+  if (sample) point /= sample->count;
+  for (std::size_t k = grid.size(); k-- > 0;) {  // the last axis varies fastest
+    values[k] = grid[k].values[point % grid[k].values.size()];
+    point /= grid[k].values.size();
+  }
+  if (sample) {
+    const std::size_t draw = run % sample->count, d = sample->inputs.size();
+    for (std::size_t j = 0; j < d; ++j) values.emplace_back(sample->values[draw * d + j]);
+  }
+  return values;
+}
+
+RunOptions SweepCase::options(std::size_t run) const {
+  RunOptions o = base;
+  const std::vector<SweepValue> values = parameters(run);
+  std::size_t k = 0;
+  for (const SweepAxis& a : grid) set_option(o, *a.option, values[k++]);
+  if (sample)
+    for (const SweepAxis& a : sample->inputs) set_option(o, *a.option, values[k++]);
+  return o;
+}
+
+SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
+  toml::table doc;
+  try {
+    doc = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw DataError(fmt::format("{}:{}:{}: {}", source, e.source().begin.line, e.source().begin.column, e.description()));
+  }
+  const CaseReader r(source);
+  SweepCase c;
+  c.source = source;
+  c.text = std::string(text);
+  r.check_keys("case", doc, {"base", "grid", "sample", "output"}, "one of the sections [base], [grid], [sample], [output]");
+  std::vector<const RunOption*> given;  // every option the case sets, once
+  auto claim = [&](const RunOption& o, const std::string& key, const toml::node& node) {
+    if (std::find(given.begin(), given.end(), &o) != given.end())
+      r.fail(key, node, "a second value", "given once in the whole case ([base], [grid] and [sample] each set an option once)");
+    if (o.readers.trace_only) r.fail(key, node, r.describe(node), trace_only_range("a sweep"));
+    given.push_back(&o);
+  };
+
+  if (const toml::node* base = doc.get("base")) {
+    for (const auto& [k, v] : CaseReader::in_file_order(r.table("base", *base))) {
+      const RunOption& o = r.option("base", *k, *v);
+      const std::string key = "base." + std::string(k->str());
+      claim(o, key, *v);
+      set_option(c.base, o, r.value(o, key, *v));
+    }
+  }
+  if (const toml::node* grid = doc.get("grid")) {
+    for (const auto& [k, v] : CaseReader::in_file_order(r.table("grid", *grid))) {
+      const RunOption& o = r.option("grid", *k, *v);
+      const std::string key = "grid." + std::string(k->str());
+      claim(o, key, *v);
+      c.grid.push_back({.option = &o, .values = r.axis(o, key, *v), .distribution = {}});
+    }
+  }
+  if (const toml::node* sample_node = doc.get("sample")) {
+    const toml::table& t = r.table("sample", *sample_node);
+    SweepSample s;
+    const toml::node* count = t.get("count");
+    if (!count) r.fail("sample.count", *sample_node, "missing", "given: the number of draws, an integer >= 1");
+    s.count = r.count("sample.count", *count, 1, max_sweep_runs);
+    if (const toml::node* m = t.get("method")) s.method = parse_sample_method(r.text("sample.method", *m), "sample.method " + where(source, m->source()));
+    if (const toml::node* seed = t.get("seed"))
+      s.seed = r.count("sample.seed", *seed, 0, std::size_t{1} << 32);
+    for (const auto& [k, v] : CaseReader::in_file_order(t)) {
+      if (k->str() == "count" || k->str() == "method" || k->str() == "seed") continue;
+      const std::string key = "sample." + std::string(k->str());
+      const RunOption& o = r.option("sample", *k, *v);
+      if (!is_numeric(o)) r.fail(key, *v, r.describe(*v), "a numeric option (a text option is varied in [grid])");
+      claim(o, key, *v);
+      s.inputs.push_back({.option = &o, .values = {}, .distribution = r.distribution(key, *v)});
+    }
+    if (s.inputs.empty())
+      r.fail("sample", *sample_node, "no distribution", "at least one option with a distribution, e.g. ball-E = { distribution = \"uniform\", min = 1.2e9, max = 2.9e9 }");
+    // The draws once: the quantiles of the unit-cube design, input by input.
+    s.values = unit_sample(s.method, s.count, s.inputs.size(), s.seed);
+    for (std::size_t i = 0; i < s.values.size(); ++i)
+      s.values[i] = s.inputs[i % s.inputs.size()].distribution->quantile(s.values[i]);
+    c.sample = std::move(s);
+  }
+  if (const toml::node* output = doc.get("output")) {
+    const toml::table& t = r.table("output", *output);
+    r.check_keys("output", t, {"columns", "file", "summary"}, "columns, file, summary");
+    if (const toml::node* columns = t.get("columns")) {
+      const toml::array* list = columns->as_array();
+      std::string names;
+      for (const SweepOutput& o : sweep_output_table) names += (names.empty() ? "" : ", ") + std::string(o.name);
+      if (!list || list->empty()) r.fail("output.columns", *columns, r.describe(*columns), "a list of at least one of: " + names);
+      c.outputs.clear();
+      for (const toml::node& v : *list) {
+        const std::string name = r.text("output.columns", v);
+        if (!find_sweep_output(name)) r.fail("output.columns", v, name, "one of: " + names);
+        if (std::find(c.outputs.begin(), c.outputs.end(), name) != c.outputs.end())
+          r.fail("output.columns", v, name, "listed once");
+        c.outputs.push_back(name);
+      }
+    }
+    if (const toml::node* file = t.get("file")) {
+      c.output_file = r.text("output.file", *file);
+      if (c.output_file.empty()) r.fail("output.file", *file, "\"\"", "a file name");
+    }
+    if (const toml::node* summary = t.get("summary")) c.summary = r.boolean("output.summary", *summary);
+  }
+  // The size, without overflowing on the way.
+  double runs = c.sample ? static_cast<double>(c.sample->count) : 1.0;
+  for (const SweepAxis& a : c.grid) runs *= static_cast<double>(a.values.size());
+  if (runs > static_cast<double>(max_sweep_runs))
+    throw InvalidParameter("the number of runs of " + source, fmt::format("{:g}", runs),
+                           fmt::format("at most {} (grid points times sample count; split the case)", max_sweep_runs));
+  return c;
+}
+
+SweepCase read_sweep_case(const std::filesystem::path& path) {
+  constexpr std::uintmax_t max_bytes = 1 << 20;
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw DataError(fmt::format("{}: cannot read the case file: {}", path.string(), ec.message()));
+  if (size > max_bytes) throw DataError(fmt::format("{}: {} bytes; a case file is at most 1 MiB", path.string(), size));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw DataError(fmt::format("{}: cannot open the case file", path.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_sweep_case(text.str(), path.string());
+}
+
+std::filesystem::path default_sweep_output(const SweepCase& c) {
+  const std::filesystem::path source(c.source);
+  if (!c.output_file.empty()) return source.parent_path() / c.output_file;
+  return std::filesystem::path(source).replace_extension(".csv");
+}
+
+}  // namespace hertzdash
