@@ -58,7 +58,8 @@ Command add_bounce_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "bounce", "A drop and the bounces after it: the paper's restitution from impact intervals beside velocity ratios");
   add_run_options(*sub, opt->run);
-  add_number_option(*sub, "--bounces", opt->bounces, "Impacts to follow, the first included (3 give one interval ratio)");
+  add_number_option(*sub, "--bounces", opt->bounces, "Impacts to follow, the first included (3 give one interval ratio)")
+      ->type_name("INT");
   add_number_option(*sub, "--min-rebound-velocity", opt->bounce.min_rebound_velocity_mps,
                     "End the sequence after a rebound slower than this [m/s]");
   add_number_option(*sub, "--target-interval-restitution", opt->interval_target,

@@ -3,6 +3,7 @@
 // its valid range), 1 any other failure. No output file is left half-written.
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
+#include "cli/option_suggestion.hpp"
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
@@ -64,6 +65,13 @@ int main(int argc, char** argv) {
     } else {
       std::cerr << "hertzdash: a subcommand is required: " << subcommand_names(app) << " (hertzdash --help)\n";
     }
+    return 2;
+  } catch (const CLI::ExtrasError& e) {  // an option the command does not have: name the nearest one
+    const std::vector<CLI::App*> parsed = app.get_subcommands();
+    const CLI::App& command = parsed.empty() ? app : *parsed.front();
+    const std::string unknown = hertzdash::cli::unknown_options_message(command, argc, argv);
+    std::cerr << "hertzdash: " << (unknown.empty() ? std::string(e.what()) : unknown) << " ("
+              << (parsed.empty() ? std::string("hertzdash") : "hertzdash " + command.get_name()) << " --help)\n";
     return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "hertzdash: " << e.what() << "\n";

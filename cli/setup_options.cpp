@@ -6,22 +6,38 @@
 
 namespace hertzdash::cli {
 
+namespace {
+
+/// The heading an option is listed under in --help, from what reads it: the law's inputs, the
+/// elastic rod's, the solver's, and the drop test's.
+const char* help_group(const RunOption& o) {
+  if (o.group == RunOption::Group::solver) return "Solver";
+  if (!o.readers.laws.empty() || o.name == "damping") return "Damping law";
+  if (o.readers.elastic_rod || o.name == "rod-model") return "Elastic rod and load cell (--rod-model elastic)";
+  return "Drop test";
+}
+
+}  // namespace
+
 void add_run_options(CLI::App& app, RunOptions& options, RunOption::Group group) {
   for (const RunOption& o : run_options()) {
     if (o.group != group) continue;
     const std::string flag = "--" + o.name;
+    CLI::Option* added = nullptr;
     switch (o.decl.type) {
       case ParameterType::flag:
-        app.add_flag_callback(flag, [&options, &o] { set_flag(options, o, true); }, o.help);
+        added = app.add_flag_callback(flag, [&options, &o] { set_flag(options, o, true); }, o.help);
         break;
       case ParameterType::text:
-        app.add_option_function<std::string>(flag, [&options, &o](const std::string& v) { set_text(options, o, v); },
-                                             o.help);
+        added = app.add_option_function<std::string>(
+            flag, [&options, &o](const std::string& v) { set_text(options, o, v); }, o.help);
         break;
       case ParameterType::number:
-        add_number_option(app, flag, [&options, &o](double v) { set_number(options, o, v); }, o.help);
+        added = add_number_option(app, flag, [&options, &o](double v) { set_number(options, o, v); }, o.help);
+        if (o.decl.range.kind == NumberRange::Kind::integer) added->type_name("INT");
         break;
     }
+    added->group(help_group(o));
   }
 }
 

@@ -437,7 +437,7 @@ TEST_CASE("CLI: each subcommand's own bad input exits 2, names the option and wh
   REQUIRE(run_cli("simulate --trace " + trace + " --trace-format measured").exit_code == 0);
   std::ofstream(dir.path / "case.toml") << "[grid]\nheight = [0.01]\n";
   const BadInput cases[] = {
-      {"models --bogus", "--bogus", "not expected"},
+      {"models --bogus", "--bogus", "unknown option --bogus (hertzdash models --help)"},
       {"models extra", "extra", "not expected"},
       {"simulate --mass", "--mass", "1 required FLOAT missing"},
       {"simulate --trace OUT --trace-format bogus", "--trace-format", "one of: model, measured"},
@@ -467,11 +467,14 @@ TEST_CASE("CLI: each subcommand's own bad input exits 2, names the option and wh
       {"fit --trace TRACE --curves OUT --fit ball-E:3e9:1e9", "--fit", "LOWER < UPPER"},
       {"fit --trace TRACE --curves OUT --channels colour", "--channels", "distinct channels"},
       {"fit --trace TRACE --curves OUT --resample -1", "--resample", "> 0"},
-      {"fit --trace TRACE --curves OUT --rtol 1e-9", "--rtol", "not expected"},
+      {"fit --trace TRACE --curves OUT --rtol 1e-9", "--rtol", "unknown option --rtol"},
       {"sweep --out OUT", "case", "is required"},
       {"sweep DIR/missing.toml --out OUT", "missing.toml", "cannot read the case file"},
       {"sweep CASE --out OUT --threads -1", "--threads", "a decimal integer in [0, 4294967295]"},
-      {"sweep CASE --out OUT --bogus", "--bogus", "not expected"},
+      {"sweep CASE --out OUT --bogus", "--bogus", "unknown option --bogus"},
+      // A misspelt option names the nearest one (issue 32), also written --name=value.
+      {"simulate --heigth 0.02", "--heigth", "unknown option --heigth: did you mean --height? (hertzdash simulate --help)"},
+      {"bounce --bounce=3", "--bounce", "did you mean --bounces?"},
   };
   for (const BadInput& c : cases) {
     std::string args;

@@ -102,7 +102,17 @@ TEST_CASE("the command line's options are the declarations", "[parameters][cli]"
       // fit runs its own model (RK4 at a fixed step resolved per contact): no solver options.
       const bool takes = std::string(command) != "fit" || o.group == RunOption::Group::setup;
       CHECK((r.out.find("--" + o.name + " ") != std::string::npos) == takes);
+      // An integer is shown as one (issue 32: --rod-elements read FLOAT).
+      if (takes && o.decl.type == ParameterType::number)
+        CHECK(r.out.find("--" + o.name + (o.decl.range.kind == NumberRange::Kind::integer ? " INT" : " FLOAT")) !=
+              std::string::npos);
     }
+    // Grouped by what reads them, each heading once (issue 32: the elastic rod's mixed in).
+    for (const char* heading : {"Drop test:", "Damping law:", "Elastic rod and load cell (--rod-model elastic):"}) {
+      INFO(command << ": " << heading);
+      CHECK(r.out.find(heading) != std::string::npos);
+    }
+    CHECK((r.out.find("Solver:") != std::string::npos) == (std::string(command) != "fit"));
   }
 }
 
