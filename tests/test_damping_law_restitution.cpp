@@ -73,8 +73,9 @@ TEST_CASE("The Lambert-W check runs on the guide's example and at least one regi
   REQUIRE(std::tuple_size_v<HuntCrossleyFormLaws> >= 2);
 }
 
-TEMPLATE_LIST_TEST_CASE("Hunt-Crossley-form laws match the Lambert-W closed form of their restitution",
-                        "[damping][restitution]", HuntCrossleyFormLaws) {
+HERTZDASH_LAW_TEST_CASE(LambertWRestitution, HuntCrossleyFormLaws,
+                        "Hunt-Crossley-form laws match the Lambert-W closed form of their restitution",
+                        "[damping][restitution]") {
   const ContactScales p = paper_steel_contact();
   for (const bool clamp : {false, true})
     for (const double v0 : {0.01, p.v0_mps, 10.0})

@@ -20,8 +20,8 @@ namespace {
 constexpr double solver_bound = 1e-7;
 }
 
-TEMPLATE_LIST_TEST_CASE("Every law: no energy gain (e_effective <= 1) across e and v0", "[damping][standard]",
-                        TestedLaws) {
+HERTZDASH_LAW_TEST_CASE(NoEnergyGain, TestedLaws, "Every law: no energy gain (e_effective <= 1) across e and v0",
+                        "[damping][standard]") {
   // A passive contact can only dissipate: with the spring conservative and the rest of
   // the force a damper, the rebound speed is at most the approach speed. A law whose
   // coefficients turn negative somewhere in (e, v0) fails here. The grid spans the
@@ -38,8 +38,8 @@ TEMPLATE_LIST_TEST_CASE("Every law: no energy gain (e_effective <= 1) across e a
       }
 }
 
-TEMPLATE_LIST_TEST_CASE("Every law: its ConservativeLaw trait says whether it dissipates", "[damping][standard]",
-                        TestedLaws) {
+HERTZDASH_LAW_TEST_CASE(ConservativeTrait, TestedLaws, "Every law: its ConservativeLaw trait says whether it dissipates",
+                        "[damping][standard]") {
   // The result checks (simulation/run/result_checks.hpp) name a law dissipative unless it declares
   // `conservative`. A conservative law returns e_effective = 1 whatever the input e; a dissipative
   // one, given e = 0.5, loses energy: its e_effective is below 1 by far more than the solver's
@@ -51,8 +51,8 @@ TEMPLATE_LIST_TEST_CASE("Every law: its ConservativeLaw trait says whether it di
   else CHECK(e_eff < 0.9);
 }
 
-TEMPLATE_LIST_TEST_CASE("Every law: force at contact onset agrees with its declared continuity",
-                        "[damping][standard]", TestedLaws) {
+HERTZDASH_LAW_TEST_CASE(OnsetContinuity, TestedLaws, "Every law: force at contact onset agrees with its declared continuity",
+                        "[damping][standard]") {
   // LawInfo::force_continuous_at_onset declares whether F(0, v0) = 0. The check uses the
   // law's own force at x = 0 and at x = 1e-9 X* (X* = (m v0^2/K)^{2/5} the contact's
   // length scale), at e = 0.5 where every damper is active:
@@ -76,7 +76,7 @@ TEMPLATE_LIST_TEST_CASE("Every law: force at contact onset agrees with its decla
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("Every law: e_effective tends to 1 as e tends to 1", "[damping][standard]", TestedLaws) {
+HERTZDASH_LAW_TEST_CASE(ElasticLimit, TestedLaws, "Every law: e_effective tends to 1 as e tends to 1", "[damping][standard]") {
   // At e = 1 every law's damper vanishes (zeta = 0, chi = 0, beta = 0), so the contact is
   // conservative and e_effective = 1. Approaching e = 1, every law's damping
   // coefficient is O(1 - e), so 1 - e_effective = O(1 - e): the deficit must shrink

@@ -35,18 +35,18 @@ do for [format in 'pdf png'] {
   set autoscale y
   set offsets 0, 0.5, graph 0.08, graph 0.08
   plot for [law in 'hongo kuwabara-kono'] data using (pick(law, column('impact'))):'e_from_intervals' \
-         with linespoints lc rgb law_lc(law, 0) lw 1.6 pt 7 ps 0.5, \
+         with linespoints lc rgb law_lc(law) lw 1.6 pt 7 ps 0.5, \
        for [law in 'hongo kuwabara-kono'] data using (pick(law, column('impact'))):'e_velocity_ratio' \
-         with linespoints lc rgb law_lc(law, 0) lw 1.2 dt 2 pt 6 ps 0.5
+         with linespoints lc rgb law_lc(law) lw 1.2 dt 2 pt 6 ps 0.5
   set origin 0, 0.01
   set size 1, 0.16
   set margins 0, 0, 0, 0
   eval key_panel
   eval key_row
   set key maxrows 2
-  plot NaN with linespoints lc rgb law_lc('hongo', 0) lw 1.6 pt 7 ps 0.5 title 'hongo (the paper): intervals', \
-       NaN with linespoints lc rgb law_lc('hongo', 0) lw 1.2 dt 2 pt 6 ps 0.5 title 'hongo: velocities', \
-       NaN with linespoints lc rgb law_lc('kuwabara-kono', 0) lw 1.6 pt 7 ps 0.5 title 'kuwabara-kono: intervals', \
-       NaN with linespoints lc rgb law_lc('kuwabara-kono', 0) lw 1.2 dt 2 pt 6 ps 0.5 title 'kuwabara-kono: velocities'
+  plot NaN with linespoints lc rgb law_lc('hongo') lw 1.6 pt 7 ps 0.5 title 'hongo (the paper): intervals', \
+       NaN with linespoints lc rgb law_lc('hongo') lw 1.2 dt 2 pt 6 ps 0.5 title 'hongo: velocities', \
+       NaN with linespoints lc rgb law_lc('kuwabara-kono') lw 1.6 pt 7 ps 0.5 title 'kuwabara-kono: intervals', \
+       NaN with linespoints lc rgb law_lc('kuwabara-kono') lw 1.2 dt 2 pt 6 ps 0.5 title 'kuwabara-kono: velocities'
   unset multiplot
 }

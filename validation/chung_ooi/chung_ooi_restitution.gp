@@ -28,7 +28,7 @@ do for [format in 'pdf png'] {
   set ytics 0.2
   plot x with lines lc rgb '#999999' lw 1 dt 3 notitle, \
        for [i=1:words(laws)] data using (pick(word(laws, i), column('e_input'))):'e_effective' with lines \
-         lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i), i) dt law_dt(word(laws, i), i)
+         lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i))
   eval two_panels_b
   set title '(b) test 2 vs steel'
   set ylabel 'difference in e_{eff}' offset 1, 0
@@ -38,7 +38,7 @@ do for [format in 'pdf png'] {
   set ytics 100
   plot for [i=1:words(laws)] data using (pick(word(laws, i), column('e_input'))): \
          (abs(column('e_effective') - column('e_effective_paper_setup'))) with lines \
-         lw 1.2 lc rgb law_lc(word(laws, i), i) dt law_dt(word(laws, i), i)
+         lw 1.2 lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i))
   eval two_panels_key
   eval key_panel
   eval law_key

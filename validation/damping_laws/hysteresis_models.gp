@@ -23,7 +23,7 @@ do for [format in 'pdf png'] {
     else { unset ylabel; set title '(b) e_{eff} = 0.795'; eval two_panels_b }
     plot for [i=1:words(laws)] data using (strcol('model') eq word(laws, i) && strcol('comparison') eq panel ? \
            1e6*column('x_m') : NaN):(1e-3*column('force_N')) with lines \
-           lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i), i) dt law_dt(word(laws, i), i) notitle
+           lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i)) notitle
   }
   eval two_panels_key
   eval key_panel

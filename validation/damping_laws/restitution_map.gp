@@ -26,7 +26,7 @@ do for [format in 'pdf png'] {
     plot x with lines lc rgb '#999999' lw 1 dt 3 notitle, \
          for [i=1:words(laws)] data using (strcol('model') eq word(laws, i) && strcol('tension') eq panel ? \
            column('e_input') : NaN):'e_effective' with lines \
-           lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i), i) dt law_dt(word(laws, i), i) notitle
+           lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i)) notitle
   }
   eval two_panels_key
   eval key_panel

@@ -30,7 +30,7 @@ do for [format in 'pdf png'] {
     set size 0.5, 0.7
     set label 1 sprintf('(%s) %s', k == 1 ? 'a' : 'b', k == 1 ? 'rigid model' : 'elastic rod')
     plot for [i=1:words(laws)] data using (pick(word(laws, i), model, column('impact_velocity_mps'))):'e_effective' \
-         with lines lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i), i) dt law_dt(word(laws, i), i)
+         with lines lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i))
   }
   unset arrow 1
   unset arrow 1
@@ -40,7 +40,7 @@ do for [format in 'pdf png'] {
   eval key_panel
   eval key_row
   set key maxrows 5
-  plot for [i=1:words(laws)] NaN with lines lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i), i) dt law_dt(word(laws, i), i) title word(laws, i), \
+  plot for [i=1:words(laws)] NaN with lines lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i)) title word(laws, i), \
        NaN with lines lc rgb '#555555' dt 3 lw 1.0 title 'drop from 20 mm'
   unset multiplot
 }
