@@ -10,12 +10,16 @@ FUZZ_SECONDS   ?= 60
 # Extra CMake arguments for every configuration, e.g. CMAKE_ARGS=-DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 CMAKE_ARGS     ?=
 
-.PHONY: all deps configure build test figures convergence uncertainty paper bench sanitize fuzz clean
+.PHONY: all deps deps-paper configure build test figures convergence uncertainty paper bench sanitize fuzz clean
 
 all: build
 
-# TeX is in the test dependencies: the test suite builds the paper.
+# What building, the studies and the figures need; TeX (debian-packages-paper.txt) is installed
+# only for what builds the article: `make paper` and `make test` (the suite builds the paper).
 deps:
+	@tools/install-deps.sh debian-packages.txt
+
+deps-paper:
 	@tools/install-deps.sh debian-packages.txt debian-packages-paper.txt
 
 $(BUILD)/CMakeCache.txt: | deps
@@ -26,7 +30,7 @@ configure: deps $(BUILD)/CMakeCache.txt
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-test: build
+test: build deps-paper
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The studies of bench/ are among the figures: a build without the benchmark peers
@@ -54,7 +58,7 @@ uncertainty: build
 
 # The article: every study and figure, then latexmk in paper/. The date in the PDF
 # is the last commit's (SOURCE_DATE_EPOCH), so the same commit gives the same PDF.
-paper: figures
+paper: figures deps-paper
 	@epoch=$$(git log -1 --format=%ct 2>/dev/null); \
 	if [ -n "$$epoch" ]; then export SOURCE_DATE_EPOCH=$$epoch FORCE_SOURCE_DATE=1; fi; \
 	paper/build.sh paper

@@ -1,6 +1,6 @@
 // `bounce`'s run and report (simulation/reports/run_reports.hpp): a drop and its bounces, with the input
-// e calibrated to an interval ratio if asked, the sequence's notes and warnings (once per run or
-// once per impact), and its JSON.
+// e calibrated to an interval ratio if asked, the sequence's notes and warnings (each code once,
+// with the impacts it holds for), and its JSON.
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/reports/report_json.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -20,6 +20,19 @@ nlohmann::ordered_json codes_json(DiagnosticSet set) {
   for (const DiagnosticInfo& d : diagnostic_table)
     if (set.has(d.code)) list.push_back(d.name);
   return list;
+}
+
+// Ascending indices as runs: {0, 1, 2, 4, 6, 7} -> "0-2, 4, 6-7".
+std::string index_ranges(const std::vector<std::size_t>& indices) {
+  std::string text;
+  for (std::size_t i = 0; i < indices.size();) {
+    std::size_t j = i;
+    while (j + 1 < indices.size() && indices[j + 1] == indices[j] + 1) ++j;
+    text += (text.empty() ? "" : ", ") +
+            (j == i ? std::to_string(indices[i]) : fmt::format("{}-{}", indices[i], indices[j]));
+    i = j + 1;
+  }
+  return text;
 }
 
 // Codes about how a run was made rather than about one impact's result.
@@ -68,13 +81,23 @@ std::vector<RunDiagnostic> run_diagnostics(const BounceRun& run) {
     if (run_level(d.code) && any.has(d.code))
       out.push_back({std::string(d.kind), std::string(d.name),
                      diagnostic_message(d.code, impacts.front(), run.setup, run.solver, run.fallback_reason), {}});
-  for (std::size_t n = 0; n < impacts.size(); ++n)
-    for (const DiagnosticInfo& d : diagnostic_table)
-      if (!run_level(d.code) && d.code != Diagnostic::not_separated && impacts[n].diagnostics.has(d.code))
-        out.push_back({std::string(d.kind), std::string(d.name),
-                       fmt::format("impact {}: {}", n, diagnostic_message(d.code, impacts[n], run.setup, run.solver,
-                                                                           run.fallback_reason)),
-                       static_cast<int>(n)});
+  // A code about an impact's result once, with the impacts it holds for and the message of the
+  // first of them: "impacts 0-4 (5 of 5); at impact 0: ...".
+  for (const DiagnosticInfo& d : diagnostic_table) {
+    if (run_level(d.code) || d.code == Diagnostic::not_separated) continue;
+    std::vector<std::size_t> with;
+    for (std::size_t n = 0; n < impacts.size(); ++n)
+      if (impacts[n].diagnostics.has(d.code)) with.push_back(n);
+    if (with.empty()) continue;
+    const std::size_t first = with.front();
+    const std::string where =
+        with.size() == 1 ? fmt::format("impact {}", first)
+                         : fmt::format("impacts {} ({} of {}); at impact {}", index_ranges(with), with.size(),
+                                       impacts.size(), first);
+    out.push_back({std::string(d.kind), std::string(d.name),
+                   where + ": " + diagnostic_message(d.code, impacts[first], run.setup, run.solver, run.fallback_reason),
+                   static_cast<int>(first)});
+  }
   return out;
 }
 
