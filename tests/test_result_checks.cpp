@@ -74,7 +74,14 @@ TEST_CASE("An e_effective above 1 from an under-resolved fixed step is an error 
     CHECK_THAT(r.err, Catch::Contains("hertzdash: error: the run is under-resolved: e_effective = 1.2"));
     CHECK_THAT(r.err, Catch::Contains("the law 'hongo' dissipates energy"));
     CHECK_THAT(r.err, Catch::Contains("use a smaller --dt (it is 0.0001 s; the convergence study needs 10240 steps"));
+    // The error names the run it ended (issue 32: a study's failure named no law and no e).
+    CHECK_THAT(r.err, Catch::Contains("(the run of law hongo at input e 0.795, approach speed 0.626311 m/s, integrator "
+                                      "euler)"));
   }
+  // A calibration's failure says which calibration it was.
+  const auto calibration = run_cli("restitution --integrator euler --dt 1e-4 --target-restitution 0.7");
+  CHECK(calibration.exit_code == 1);
+  CHECK_THAT(calibration.err, Catch::Contains(", while calibrating the input e of law hongo to e_effective = 0.7"));
   // The undamped law conserves energy: the same step gives e about 1.6, an error too; CVODE at
   // its default tolerances gives 1 to 3e-7, within the bound 1.001, and no error.
   const auto undamped = run_cli("restitution --damping none --integrator euler --dt 1e-4");

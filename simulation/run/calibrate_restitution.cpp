@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <typeinfo>
 
 namespace hertzdash {
 
@@ -49,7 +51,7 @@ RestitutionCalibration calibrate_input_restitution(const std::function<double(do
 }
 
 RestitutionCalibration calibrate_restitution(ImpactSimulator& simulator, const DropTestSetup& s, std::string_view law,
-                                             double target) {
+                                             double target) try {
   DropTestSetup contact = contact_phase_setup(s);
   return calibrate_input_restitution(
       [&](double e_input) {
@@ -57,6 +59,10 @@ RestitutionCalibration calibrate_restitution(ImpactSimulator& simulator, const D
         return simulator.run(contact, law).e_effective;
       },
       target, "target-restitution", fmt::format("effective restitutions law '{}'", law));
+} catch (const std::runtime_error& e) {  // say which calibration (a study calibrates every law)
+  if (typeid(e) != typeid(std::runtime_error)) throw;
+  throw std::runtime_error(
+      fmt::format("{}, while calibrating the input e of law {} to e_effective = {}", e.what(), law, target));
 }
 
 }  // namespace hertzdash

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <typeinfo>
 
 namespace hertzdash {
 
@@ -19,7 +20,11 @@ std::vector<std::string> trace_columns() {
 
 ImpactSimulator::ImpactSimulator(const SolverSettings& settings) : settings_(settings) { validate(settings_); }
 
-ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view law, std::vector<TraceSample>* trace) {
+// A run that fails says which run it was (law, e, approach speed, integrator): a study or a
+// sweep runs thousands, and "did not finish: CVODE took 1000000 steps" alone named none of them.
+// Only a plain std::runtime_error is extended; a typed one (DataError, ...) passes unchanged.
+ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view law,
+                                   std::vector<TraceSample>* trace) try {
   if (is_iterated(setup.damping.omega_n)) {
     if (law != HongoPaper::info.name)
       throw InvalidParameter("omega-n", to_string(setup.damping.omega_n),
@@ -36,6 +41,11 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view 
   ImpactSummary s;
   with_damping_law(law, [&]<class Law>(std::type_identity<Law>) { s = run<Law>(setup, trace); });
   return s;
+} catch (const std::runtime_error& e) {
+  if (typeid(e) != typeid(std::runtime_error)) throw;
+  throw std::runtime_error(fmt::format("{} (the run of law {} at input e {}, approach speed {:.6g} m/s, integrator {})",
+                                       e.what(), law, setup.restitution, approach_speed(setup),
+                                       to_string(settings_.integrator)));
 }
 
 IntegratorKind integrator_used(const SolverSettings& solver, const DropTestSetup& setup, std::string_view law,
