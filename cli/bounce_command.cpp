@@ -12,6 +12,11 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -19,6 +24,33 @@
 namespace hertzdash::cli {
 
 namespace {
+
+/// A progress line on stderr for a sequence that runs long (the elastic rod: seconds per impact):
+/// after 2 s, redrawn on a terminal at most 5 times a second, else a line every 10 s.
+class ProgressLine {
+ public:
+  explicit ProgressLine(int impacts) : impacts_(impacts) {}
+  void operator()(std::size_t done) {
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (elapsed < 2.0 || std::chrono::duration<double>(now - last_).count() < (terminal_ ? 0.2 : 10.0)) return;
+    last_ = now;
+    drawn_ = true;
+    std::cerr << fmt::format("{}hertzdash bounce: impact {} of at most {} after {:.0f} s{}", terminal_ ? "\r" : "",
+                             done, impacts_, elapsed, terminal_ ? "" : "\n")
+              << std::flush;
+  }
+  /// Ends a redrawn line, so that what follows starts on a line of its own.
+  void finish() const {
+    if (drawn_ && terminal_) std::cerr << "\n";
+  }
+
+ private:
+  int impacts_;
+  bool terminal_ = isatty(STDERR_FILENO) != 0;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
+};
 
 struct BounceCommandOptions {
   RunOptions run;
@@ -68,7 +100,10 @@ Command add_bounce_command(CLI::App& app) {
 
   return {sub, [opt]() {
             opt->bounce.impacts = parse_bounces(opt->bounces);
+            auto progress = std::make_shared<ProgressLine>(opt->bounce.impacts);
+            opt->bounce.on_impact = [progress](std::size_t done) { (*progress)(done); };
             const BounceRun r = run_bounce(opt->run, load_paper_parameters(), opt->bounce, opt->interval_target);
+            progress->finish();
             report_diagnostics(run_diagnostics(r));
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";
             else print_text(r);

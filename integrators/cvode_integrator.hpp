@@ -17,6 +17,7 @@
 // may be called any number of times and reuses them (CVodeReInit), so a sweep
 // over many impacts pays for the set-up once. Not thread-safe: one per thread.
 #include "hertzdash/integrators/format_message.hpp"
+#include "hertzdash/integrators/work_bound.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 
 #include <memory>
@@ -98,6 +99,7 @@ IntegrationStats CvodeIntegrator::integrate(S& sys, typename S::State& y, double
     for (int i = 0; i < S::event_count; ++i) g[i] = e[i];
   };
 
+  detail::require_max_step_reach("CVODE", t0, t_end, options_.max_step, static_cast<double>(options_.max_num_steps));
   IntegrationStats total;
   double t = t0;
   restart(t, y.data(), absolute_tolerance(sys, y, options_.atol).data());

@@ -51,6 +51,7 @@
 //
 // No allocation: all state is fixed-size (Eigen::Matrix<double, N, 1>) on the stack.
 #include "hertzdash/integrators/event_landing.hpp"
+#include "hertzdash/integrators/work_bound.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
@@ -191,6 +192,7 @@ class DormandPrinceRun {
       : sys_(sys), y_(y), t_(t0), t_end_(t_end), t_restart_(t0), opt_(opt), observer_(observer) {}
 
   IntegrationStats run() {
+    detail::require_max_step_reach("Dormand-Prince", t_, t_end_, opt_.max_step, static_cast<double>(opt_.max_steps));
     sys_.events(t_, y_, g_);
     observer_.on_step(t_, y_);
     restart();

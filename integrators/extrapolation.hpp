@@ -34,6 +34,7 @@
 // No allocation: all state is fixed-size on the stack.
 #include "hertzdash/integrators/dormand_prince.hpp"  // weighted_rms, the first-step heuristic
 #include "hertzdash/integrators/event_landing.hpp"
+#include "hertzdash/integrators/work_bound.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
@@ -108,6 +109,7 @@ class ExtrapolationRun {
       : sys_(sys), y_(y), t_(t0), t_end_(t_end), opt_(opt), observer_(observer) {}
 
   IntegrationStats run() {
+    detail::require_max_step_reach("extrapolation", t_, t_end_, opt_.max_step, static_cast<double>(opt_.max_steps));
     sys_.events(t_, y_, g_);
     observer_.on_step(t_, y_);
     restart();

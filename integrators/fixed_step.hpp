@@ -10,6 +10,7 @@
 // of the step in which the sign change is seen; convergence studies use this to
 // show what an unlocated kink costs.
 #include "hertzdash/integrators/format_message.hpp"
+#include "hertzdash/integrators/work_bound.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 
 #include <algorithm>
@@ -23,7 +24,7 @@ namespace hertzdash {
 struct FixedStepOptions {
   double dt = 1e-6;            ///< step size [s], > 0
   bool locate_events = true;   ///< cut steps at located event crossings
-  double max_steps = 1e9;      ///< a run needing more steps does not start: std::runtime_error "did not finish"
+  double max_steps = 1e9;      ///< a run needing more steps (or more work: work_bound.hpp) does not start
 };
 
 namespace detail {
@@ -65,10 +66,7 @@ IntegrationStats integrate_fixed_step(S& sys, typename S::State& y, double t0, d
                                       const FixedStepOptions& opt, Observer& observer) {
   if (!(opt.dt > 0)) throw std::invalid_argument("integrate_fixed_step: dt must be > 0");
   // A bound on the work instead of a hang (a step so small that t + dt == t included).
-  if (const double needed = std::ceil((t_end - t0) / opt.dt); needed > opt.max_steps)
-    throw std::runtime_error(detail::format_g("did not finish: a fixed step of %.3g s would need %.3g steps to reach "
-                                              "t = %.6g s, more than the limit of %.3g (take a larger step)",
-                                              opt.dt, needed, t_end, opt.max_steps));
+  detail::require_fixed_step_work(t0, t_end, opt.dt, static_cast<long>(y.size()), opt.max_steps);
   using State = typename S::State;
   using Events = typename S::Events;
   IntegrationStats stats;

@@ -22,13 +22,20 @@
 
 #include <fmt/format.h>
 
-#include <array>
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstddef>
+#include <exception>
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -365,6 +372,54 @@ py::list warning_codes(const std::vector<ImpactSummary>& results) {
   return codes;
 }
 
+// Runs `work` with the GIL released on a thread of its own while this thread checks for signals
+// ten times a second: Python handles a signal (Ctrl-C) only between its own bytecodes, so a
+// sweep of minutes ignored it until done. On a signal whose handler raises, sets `cancel` (the
+// sweep stops handing out work), waits for `work` to return and returns false with the Python
+// error set. Rethrows what `work` threw.
+template <class Work>
+bool run_watching_signals(Work& work, std::atomic<bool>& cancel) {
+  std::mutex mutex;
+  std::condition_variable finished_cv;
+  bool finished = false, interrupted = false;
+  std::exception_ptr failure;
+  {
+    py::gil_scoped_release release;
+    std::thread runner;
+    try {
+      runner = std::thread([&] {
+        try {
+          work();
+        } catch (...) {
+          failure = std::current_exception();
+        }
+        std::lock_guard lock(mutex);
+        finished = true;
+        finished_cv.notify_one();
+      });
+    } catch (const std::system_error&) {  // no thread to spare: run here, without the checks
+      work();
+      return true;
+    }
+    std::unique_lock lock(mutex);
+    while (!finished_cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; })) {
+      if (interrupted) continue;  // the error is set; wait for the sweep to stop
+      lock.unlock();
+      {
+        py::gil_scoped_acquire acquire;
+        interrupted = PyErr_CheckSignals() != 0;
+      }
+      if (interrupted) cancel = true;
+      lock.lock();
+    }
+    lock.unlock();
+    runner.join();
+  }
+  if (interrupted) return false;
+  if (failure) std::rethrow_exception(failure);
+  return true;
+}
+
 py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   RunOptions base;
   std::vector<std::pair<const RunOption*, DoubleArray>> arrays;
@@ -414,12 +469,13 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
     }
   }
   std::vector<ImpactSummary> results(n);
-  {
-    py::gil_scoped_release release;
-    SweepOptions sweep{.threads = threads, .label = "hertzdash.simulate_many", .progress = false};
+  std::atomic<bool> cancel{false};
+  const SweepOptions sweep{.threads = threads, .label = "hertzdash.simulate_many", .progress = false, .cancel = &cancel};
+  const auto run_all = [&] {
     parallel_sweep(
         n, solver, [&](ImpactSimulator& sim, std::size_t i) { results[i] = sim.run(setups[i], base.damping); }, sweep);
-  }
+  };
+  if (!run_watching_signals(run_all, cancel)) throw py::error_already_set();  // KeyboardInterrupt (Ctrl-C)
   py::dict out;
   const auto points = static_cast<py::ssize_t>(n);
   for (const ResultField& output : many_outputs) {

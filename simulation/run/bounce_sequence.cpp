@@ -36,6 +36,7 @@ void run_rigid_bounces(const DropTestSetup& setup, std::string_view law, const S
       b.rebound_speed_mps = r.rebound_velocity_mps;
     }
     out.impacts.push_back(b);
+    if (options.on_impact) options.on_impact(out.impacts.size());
     if (!b.separated || b.rebound_speed_mps < options.min_rebound_velocity_mps) return;
     // Ballistic from the separation at depth x_s (> 0 where the tension clamp ended contact):
     // the face rises x_s before it clears the ball, and meets it again on the way down at

@@ -29,6 +29,8 @@
 #include "hertzdash/simulation/run/impact_summary.hpp"
 #include "hertzdash/simulation/run/solver_settings.hpp"
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -42,6 +44,9 @@ inline constexpr int max_bounces = 1000;
 struct BounceOptions {
   int impacts = 5;                           ///< impacts to follow (--bounces), >= 1
   double min_rebound_velocity_mps = 1e-3;    ///< end the sequence after a slower rebound [m/s], >= 0
+  /// Called with the number of impacts finished so far after each (a front end's progress
+  /// line: a long elastic-rod sequence runs for minutes); empty: nothing is called.
+  std::function<void(std::size_t impacts_done)> on_impact = {};
 };
 
 /// The number of impacts given as a number (the command line, Python): an integer in

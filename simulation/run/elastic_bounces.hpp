@@ -9,6 +9,8 @@
 #include "hertzdash/simulation/run/elastic_impact.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace hertzdash {
@@ -18,8 +20,9 @@ namespace detail {
 template <class System>
 class ElasticBounceObserver {
  public:
-  ElasticBounceObserver(const System& sys, double t_onset_s, std::vector<BounceImpact>& impacts)
-      : sys_(&sys), t0_(t_onset_s), impacts_(&impacts) {}
+  ElasticBounceObserver(const System& sys, double t_onset_s, std::vector<BounceImpact>& impacts,
+                        const std::function<void(std::size_t)>& on_impact)
+      : sys_(&sys), t0_(t_onset_s), impacts_(&impacts), on_impact_(&on_impact) {}
 
   void begin(double t, const typename System::State& y) {
     BounceImpact b;
@@ -44,12 +47,14 @@ class ElasticBounceObserver {
     b.separation_time_s = t0_ + t;
     b.contact_time_s = b.separation_time_s - b.onset_time_s;
     b.rebound_speed_mps = std::max(-sys_->centre_of_mass_velocity_mps(y), 0.0);
+    if (*on_impact_) (*on_impact_)(impacts_->size());
   }
 
  private:
   const System* sys_;
   double t0_;
   std::vector<BounceImpact>* impacts_;
+  const std::function<void(std::size_t)>* on_impact_;
 };
 
 }  // namespace detail
@@ -74,7 +79,7 @@ void run_elastic_bounces(const DropTestSetup& setup, IntegratorKind kind, bool f
   }
 
   const double t_onset_s = setup.impact_velocity_mps ? 0.0 : model.v0_mps / setup.gravity_mps2;
-  detail::ElasticBounceObserver<ElasticDropTest<Law>> observer(sys, t_onset_s, out.impacts);
+  detail::ElasticBounceObserver<ElasticDropTest<Law>> observer(sys, t_onset_s, out.impacts, options.on_impact);
   auto y = sys.initial_state();
   observer.begin(0.0, y);
   out.work = integrate(sys, y, 0.0, t_end, used, observer);
