@@ -86,7 +86,7 @@ struct TraceFitSettings {
   int steps_per_contact = 2000;        ///< the model's RK4 steps per undamped Hertz contact time
   int max_iterations = 200;
   /// Most work of one fit: RK4 steps plus observations interpolated, summed over model runs
-  /// (a good fit of a 1 MHz trace of the paper's contact takes about 3e5; "Work" above).
+  /// (a good fit of a 1 MHz trace of the paper's contact takes about 7e5; "Work" above).
   double max_work = 3e7;
 };
 
