@@ -27,6 +27,19 @@ struct FitCommandOptions {
   bool compare_laws = false, json = false, mkdir = false;
 };
 
+// Exit status of a fit that ran and determined nothing (TraceFit::failed; docs/fit.md).
+constexpr int exit_fit_failed = 3;
+
+// The set-up options given on the command line, even at their default value (--rod steel):
+// the trace's header may not contradict them (simulation/fit/trace_setup.hpp).
+std::vector<std::string> given_options(const CLI::App& sub) {
+  std::vector<std::string> given;
+  for (const RunOption& o : run_options())
+    if (const CLI::Option* option = sub.get_option_no_throw("--" + o.name); option && option->count() > 0)
+      given.push_back(o.name);
+  return given;
+}
+
 // AIC differences below 2 do not prefer one model over another (Burnham and Anderson).
 constexpr double aic_tie = 2.0;
 
@@ -48,9 +61,10 @@ void print_fit(const TraceFit& f) {
                              c.samples, c.noise_sigma, c.residual_rms);
   std::cout << fmt::format("  reduced chi-square {:.4g} ({} residuals), condition number {:.4g} ({}), AIC {:.6g}, BIC {:.6g}\n",
                            f.reduced_chi_square, f.samples, f.condition_number,
-                           f.identifiable ? "identifiable" : "NOT identifiable", f.aic, f.bic);
+                           f.failed ? "fit failed" : f.identifiable ? "identifiable" : "NOT identifiable", f.aic, f.bic);
   std::cout << fmt::format("  {} iterations, {} model runs, stopped: {}; fitted contact time {:.6g} s\n", f.iterations,
                            f.model_runs, f.stop_reason, f.contact_time_s);
+  if (f.failed) std::cout << fmt::format("  FIT FAILED: {}\n", f.failure);
 }
 
 void print_text(const FitRun& r) {
@@ -72,7 +86,10 @@ void print_text(const FitRun& r) {
                              f.bic, f.reduced_chi_square, f.condition_number);
   }
   for (const auto& [law, why] : r.failures) std::cout << fmt::format("  {}: not fitted: {}\n", law, why);
-  std::cout << fmt::format("  best: '{}'{}\n", r.fits.front().law,
+  for (const TraceFit& f : r.fits)
+    if (f.failed) std::cout << fmt::format("  {}: fit failed: {}\n", f.law, f.failure);
+  if (r.fits.front().failed) std::cout << "  best: none, every fit failed\n";
+  else std::cout << fmt::format("  best: '{}'{}\n", r.fits.front().law,
                            ties.empty() ? "" : fmt::format(" (tied within dAIC < {:g}: {})", aic_tie, ties));
   print_fit(r.fits.front());
 }
@@ -96,21 +113,21 @@ Command add_fit_command(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
   add_mkdir_flag(*sub, opt->mkdir);
 
-  return {sub, [opt]() {
+  return {sub, [opt, sub]() {
             prepare_output_file("--curves", opt->curves_path, opt->mkdir);
             TraceFitSettings settings;
             settings.parameters = parse_fit_parameters(opt->fit);
             if (!opt->channels.empty()) settings.channels = parse_channels(opt->channels, "channels");
             settings.resample_Hz = opt->resample_Hz;
             const PaperParameters paper = load_paper_parameters();
-            const FitRun r = run_fit(opt->trace_path, opt->run, paper, settings, opt->compare_laws);
+            const FitRun r = run_fit(opt->trace_path, opt->run, paper, settings, opt->compare_laws, given_options(*sub));
             if (r.fits.empty()) throw std::runtime_error("no damping law could be fitted to the trace");
             report_diagnostics(fit_diagnostics(r, paper));
             create_output_directories(opt->curves_path, opt->mkdir);
             if (!opt->curves_path.empty()) write_fit_curves(r.fits.front(), r.trace, opt->curves_path);
             if (opt->json) std::cout << to_json(r, paper).dump(2) << "\n";
             else print_text(r);
-            return 0;
+            return r.fits.front().failed ? exit_fit_failed : 0;
           }};
 }
 

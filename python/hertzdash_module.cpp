@@ -244,8 +244,10 @@ py::dict py_virtual_measurement(const std::string& path, double sample_rate, dou
 py::dict py_fit(const std::string& trace, const std::string& fit, const std::string& channels, double resample,
                 bool compare_laws, const std::string& curves, const py::kwargs& kwargs) {
   RunOptions options;
+  std::vector<std::string> given;  // even at a default value (rod="steel"): the trace may not contradict it
   for (const auto& [key, value] : kwargs) {
     const RunOption& o = option_named(key.cast<std::string>(), "fit");
+    given.push_back(o.name);
     if (o.group != RunOption::Group::setup)
       throw py::type_error(fmt::format("fit() got the solver option '{}': the fit integrates its model itself "
                                        "(simulation/fit/trace_fit.hpp)",
@@ -259,7 +261,7 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
   FitRun run;
   {
     py::gil_scoped_release release;
-    run = run_fit(trace, options, paper(), settings, compare_laws);
+    run = run_fit(trace, options, paper(), settings, compare_laws, given);
     if (!curves.empty() && !run.fits.empty()) write_fit_curves(run.fits.front(), run.trace, curves);
   }
   warn_about(fit_diagnostics(run, paper()));

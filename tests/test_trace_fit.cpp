@@ -15,9 +15,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <numbers>
+#include <sstream>
+#include <string>
 #include <unistd.h>
+#include <vector>
 
 using namespace hertzdash;
 using hertzdash::test::run_cli;
@@ -357,4 +361,219 @@ TEST_CASE("CLI fit and the virtual measurement: bad options exit 2 naming the op
     CHECK_FALSE(fs::exists("x.csv"));
   }
   fs::remove(trace);
+}
+
+namespace {
+
+// A trace file for the tests of issue 31: the virtual experiment of `o` through `chain`, at `path`.
+fs::path written_trace(const fs::path& path, const RunOptions& o, const MeasurementChain& chain) {
+  write_measured_trace(path, virtual_trace(o, chain), "tests/test_trace_fit.cpp (issue 31)", {});
+  return path;
+}
+
+// `file` with every line passed through `edit(line, sample index, or -1 for a header line and the column row)`.
+void edit_trace(const fs::path& file, const std::function<std::string(const std::string&, int)>& edit) {
+  std::istringstream in(hertzdash::test::slurp(file));
+  std::string line, out;
+  bool columns_seen = false;
+  int sample = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || !columns_seen) {
+      columns_seen = columns_seen || !(line.empty() || line[0] == '#');
+      out += edit(line, -1) + "\n";
+    } else {
+      out += edit(line, sample++) + "\n";
+    }
+  }
+  std::ofstream(file) << out;
+}
+
+// A CSV row's fields.
+std::vector<std::string> fields(const std::string& row) {
+  std::vector<std::string> out;
+  std::istringstream in(row);
+  for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+  return out;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("hertzdash_fit31_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+}  // namespace
+
+TEST_CASE("fit: the trace's header sets the rod and height, validated, a conflicting option refused", "[fit]") {
+  // Issue 31: a duralumin-b trace from 50 mm fitted with default options was fitted as the
+  // steel rod from 20 mm (E = 3.88e9, e = 0.27). Noise-free, the header's set-up gives back the
+  // truth (2.0e9 Pa and Table 2's e = 0.846) to the discretisation error of the first test.
+  RunOptions truth;
+  truth.rod = "duralumin-b";
+  truth.height_m = 0.05;
+  truth.integrator = "rk4";
+  truth.dt_s = 2e-7;
+  const fs::path file = written_trace(scratch("dur.csv"), truth, MeasurementChain{});
+  const PaperParameters paper = load_paper_parameters();
+  const FitRun r = run_fit(file.string(), RunOptions{}, paper, TraceFitSettings{}, false);
+  CHECK(r.fits[0].parameter("ball-E").estimate == Approx(2.0e9).epsilon(1e-4));
+  CHECK(r.fits[0].parameter("restitution").estimate == Approx(0.846).epsilon(1e-4));
+  CHECK(r.fits[0].fitted_options.rod == "duralumin-b");
+  CHECK(r.fits[0].identifiable);
+
+  auto refusal = [&](const RunOptions& o, const std::vector<std::string>& given = {}) -> InvalidParameter {
+    try {
+      run_fit(file.string(), o, paper, TraceFitSettings{}, false, given);
+    } catch (const InvalidParameter& e) {
+      return e;
+    }
+    return InvalidParameter("none", "", "");
+  };
+  SECTION("an option that says the same is no conflict: the height within 0.5 mm") {
+    RunOptions o;
+    o.height_m = 0.0503;
+    o.rod = "duralumin-b";
+    CHECK(run_fit(file.string(), o, paper, TraceFitSettings{}, false).fits[0].identifiable);
+  }
+  SECTION("a conflict names the option and both values") {
+    RunOptions o;
+    o.height_m = 0.02;
+    const InvalidParameter e = refusal(o);
+    CHECK(e.key == "height");
+    CHECK(e.value == "0.02");
+    CHECK(e.valid_range.find("0.05 m") != std::string::npos);
+    CHECK(e.valid_range.find("dur.csv") != std::string::npos);
+    // --rod steel is the default's value, given: a front end says so (`given`).
+    const InvalidParameter rod = refusal(RunOptions{}, {"rod"});
+    CHECK(rod.key == "rod");
+    CHECK(rod.value == "steel");
+    CHECK(rod.valid_range.find("duralumin-b") != std::string::npos);
+  }
+  SECTION("a given approach speed replaces the header's height") {
+    RunOptions o;
+    o.impact_velocity_mps = std::sqrt(2 * 9.80665 * 0.05);  // the same drop
+    CHECK(run_fit(file.string(), o, paper, TraceFitSettings{}, false).fits[0].identifiable);
+  }
+  SECTION("header values are validated like the options, the file named") {
+    edit_trace(file, [](const std::string& line, int) { return line == "# rod: duralumin-b" ? "# rod: wood" : line; });
+    const InvalidParameter wood = refusal(RunOptions{});
+    CHECK(wood.key == "rod");
+    CHECK(wood.value == "wood");
+    CHECK(wood.valid_range.find("one of: steel") != std::string::npos);
+    CHECK(wood.valid_range.find("dur.csv") != std::string::npos);
+    edit_trace(file, [](const std::string& line, int) {
+      return line == "# rod: wood" ? "# rod: duralumin-b" : line.rfind("# height_m:", 0) == 0 ? "# height_m: 1e300" : line;
+    });
+    // From 1e300 m the Hertz deformation would exceed the ball's radius: the set-up's own check.
+    const InvalidParameter high = refusal(RunOptions{});
+    CHECK(high.key == "height");
+    CHECK(high.valid_range.find("height_m: 1e+300") != std::string::npos);
+  }
+  fs::remove_all(file.parent_path());
+}
+
+TEST_CASE("fit: nonsense traces are refused, or their fit fails and says so", "[fit]") {
+  // Issue 31. The 1 % noise trace of the steel rod (truth 1.7 GPa, e = 0.80), spoilt three ways.
+  MeasurementChain chain;
+  chain.noise_fraction = 0.01;
+  chain.sample_rate_Hz = 2e5;  // 300 samples: a fast fit, ample for the contact of 1.3 ms
+  const fs::path file = written_trace(scratch("steel.csv"), truth_options(), chain);
+  const PaperParameters paper = load_paper_parameters();
+  auto fitted = [&](const TraceFitSettings& s = {}) { return run_fit(file.string(), {}, paper, s, false).fits[0]; };
+  auto data_error = [&](const TraceFitSettings& s = {}) -> std::string {
+    try {
+      fitted(s);
+    } catch (const DataError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+
+  SECTION("force in kN read as N: the model cannot reach it, restitution ends at its bound") {
+    // 1000 times the force needs 1000 times the impulse m (1 + e) v0, beyond any e <= 1.
+    edit_trace(file, [](const std::string& line, int sample) {
+      if (sample < 0) return line == "t_s,force_N,accel_mps2,displacement_m" ? std::string("t_s,force_N") : line;
+      const auto f = fields(line);
+      return f[0] + "," + fmt::format("{:.17g}", 1000 * std::stod(f[1]));
+    });
+    const TraceFit f = fitted();
+    CHECK(f.failed);
+    CHECK(f.failure.find("restitution ended at its bound") != std::string::npos);
+    CHECK_FALSE(f.identifiable);
+  }
+  SECTION("one row of 1e300 is an outlier, named by its sample") {
+    edit_trace(file, [](const std::string& line, int sample) {
+      return sample == 150 ? fields(line)[0] + ",1e300,1e300,1e300" : line;
+    });
+    const std::string e = data_error();
+    INFO(e);
+    CHECK(e.find("steel.csv: sample 151") != std::string::npos);
+    CHECK(e.find("is an outlier") != std::string::npos);
+  }
+  SECTION("time steps of 1e-300 s are not resolved against the contact's time scale") {
+    edit_trace(file, [](const std::string& line, int sample) {
+      if (sample < 0) return line;
+      const std::string rest = line.substr(line.find(','));
+      return fmt::format("{:.17g}", sample * 1e-300) + rest;
+    });
+    CHECK(data_error().find("finer than the model resolves") != std::string::npos);
+  }
+  SECTION("a time axis compressed tenfold: the fit stops at its work bound and has failed") {
+    // The trace's contact is 10 times shorter than the model's at the start (E 316 times the
+    // start's would be needed, t_c ~ E^(-2/5)); the fit wanders towards e -> 0, where each model
+    // run lasts its whole window of 20 t_H. A bound of 2e6 stops it after a few iterations; its
+    // work overshoots the bound by at most one iteration (16 trial runs and 2p = 6 Jacobian runs
+    // of at most 20 t_H / (t_H / 2000) = 4e4 steps and 300 x 3 observations each).
+    edit_trace(file, [](const std::string& line, int sample) {
+      if (sample < 0) return line;
+      const std::string rest = line.substr(line.find(','));
+      return fmt::format("{:.17g}", 0.1 * std::stod(fields(line)[0])) + rest;
+    });
+    TraceFitSettings s;
+    s.max_work = 2e6;
+    const TraceFit f = fitted(s);
+    CHECK(f.failed);
+    CHECK_FALSE(f.identifiable);
+    CHECK(f.work <= s.max_work + 22 * (4e4 + 900));
+  }
+  SECTION("a work bound below the first iterations' predicted work is refused before iterating") {
+    // One run at the start: about 2000 steps and 900 observations; 5 iterations of 8 runs.
+    TraceFitSettings s;
+    s.max_work = 1e4;
+    CHECK(data_error(s).find("the fit would exceed its work limit") != std::string::npos);
+  }
+  fs::remove_all(file.parent_path());
+}
+
+TEST_CASE("CLI fit: a failed fit exits 3 and prints no identifiable, refusals exit 2", "[fit][cli]") {
+  const fs::path file = scratch("cli.csv");
+  REQUIRE(run_cli("simulate --ball-E 1.7e9 --restitution 0.80 --trace " + file.string() +
+                  " --trace-format measured --noise 0.01 --sample-rate 2e5")
+              .exit_code == 0);
+  const auto rod = run_cli("fit --trace " + file.string() + " --rod duralumin-a");
+  CHECK(rod.exit_code == 2);
+  const auto steel = run_cli("fit --trace " + file.string() + " --rod steel");  // the header's rod, given: fine
+  CHECK(steel.exit_code == 0);
+  CHECK(steel.out.find("(identifiable)") != std::string::npos);
+  const auto other = run_cli("fit --trace " + file.string() + " --height 0.03");
+  CHECK(other.exit_code == 2);
+  CHECK(other.err.find("--height = 0.03") != std::string::npos);
+  CHECK(other.err.find("0.02 m") != std::string::npos);
+
+  edit_trace(file, [](const std::string& line, int sample) {  // force in kN read as N
+    if (sample < 0) return line == "t_s,force_N,accel_mps2,displacement_m" ? std::string("t_s,force_N") : line;
+    const auto f = fields(line);
+    return f[0] + "," + fmt::format("{:.17g}", 1000 * std::stod(f[1]));
+  });
+  const auto failed = run_cli("fit --trace " + file.string());
+  CHECK(failed.exit_code == 3);
+  CHECK(failed.out.find("identifiable") == std::string::npos);
+  CHECK(failed.out.find("FIT FAILED: ") != std::string::npos);
+  CHECK(failed.err.find("the fit failed") != std::string::npos);
+  const auto json = run_cli("fit --json --trace " + file.string());
+  CHECK(json.exit_code == 3);
+  const auto j = nlohmann::json::parse(json.out);
+  CHECK(j["fits"][0]["failed"] == true);
+  CHECK(j["fits"][0]["identifiable"] == false);
+  fs::remove_all(file.parent_path());
 }

@@ -135,6 +135,17 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
     z0.back() = best_z;
   }
 
+  // The work bound (trace_fit.hpp, "Work"): refused before iterating if the first iterations
+  // alone would exceed it, each model run costing what the one at the starting values did.
+  const double run_cost = static_cast<double>(model.summary().work.steps) + static_cast<double>(n);
+  if (const double predicted = min_predicted_iterations * static_cast<double>(2 * p + 2) * run_cost;
+      predicted > settings.max_work)
+    throw DataError(fmt::format("{}: the fit would exceed its work limit: a model run costs {:.3g} ({} RK4 steps and {} "
+                                "observations), {:g} iterations of {} runs {:.3g}, above {:.3g}; average the trace "
+                                "(--resample) or fit fewer channels (--channels)",
+                                trace.path.string(), run_cost, model.summary().work.steps, n,
+                                min_predicted_iterations, 2 * p + 2, predicted, settings.max_work));
+
   gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
   const std::unique_ptr<gsl_multifit_nlinear_workspace, decltype(&gsl_multifit_nlinear_free)> w(
       gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p), &gsl_multifit_nlinear_free);
@@ -150,12 +161,31 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   int status = gsl_multifit_nlinear_init(&start.vector, &fdf, w.get());
   if (problem.error) std::rethrow_exception(problem.error);
   if (status != GSL_SUCCESS) throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_init failed: ") + gsl_strerror(status));
+  // gsl_multifit_nlinear_driver's loop, with the work bound checked after each iteration (one
+  // iteration is at most 16 trial runs and a Jacobian of 2p runs).
   int info = 0;
-  status = gsl_multifit_nlinear_driver(settings.max_iterations, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w.get());
-  if (problem.error) std::rethrow_exception(problem.error);
+  bool work_limit = false;
+  for (int iteration = 0;; ++iteration) {
+    status = gsl_multifit_nlinear_iterate(w.get());
+    if (problem.error) std::rethrow_exception(problem.error);
+    if (status == GSL_ENOPROG && iteration == 0) break;  // no step from the start lowers the cost
+    status = gsl_multifit_nlinear_test(1e-10, 1e-10, 0.0, &info, w.get());
+    if (status != GSL_CONTINUE) break;
+    if (iteration + 1 >= settings.max_iterations) {
+      status = GSL_EMAXITER;
+      break;
+    }
+    if (problem.work() > settings.max_work) {
+      work_limit = true;
+      status = GSL_EMAXITER;
+      break;
+    }
+  }
+  if (status == GSL_ETOLF || status == GSL_ETOLX || status == GSL_ETOLG) info = status, status = GSL_SUCCESS;
   if (status != GSL_SUCCESS && status != GSL_EMAXITER && status != GSL_ENOPROG)
-    throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_driver failed: ") + gsl_strerror(status));
-  fit.stop_reason = stop_reason(status, info);
+    throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_iterate failed: ") + gsl_strerror(status));
+  fit.stop_reason = work_limit ? fmt::format("work limit reached ({:.3g} RK4 steps and interpolations)", settings.max_work)
+                               : stop_reason(status, info);
   fit.converged = status == GSL_SUCCESS;
   fit.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w.get()));
 
@@ -210,7 +240,22 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   double largest_correlation = 0;
   for (std::size_t i = 0; i < p; ++i)
     for (std::size_t j = 0; j < i; ++j) largest_correlation = std::max(largest_correlation, std::abs(fit.correlation[i][j]));
-  fit.identifiable = finite_errors && fit.condition_number < identifiable_condition_limit &&
+  // A fit that determined nothing has failed (trace_fit.hpp, "Failure").
+  std::vector<std::string> why;
+  if (work_limit)
+    why.push_back(fmt::format("it reached its work limit ({:.3g} RK4 steps and interpolations) after {} model runs",
+                              settings.max_work, model.runs()));
+  else if (status == GSL_EMAXITER && info != GSL_ENOPROG)
+    why.push_back(fmt::format("it reached its iteration limit ({})", settings.max_iterations));
+  for (const FittedParameter& fp : fit.parameters)
+    if (fp.at_bound) why.push_back(fmt::format("{} ended at its bound ({:.6g})", fp.name, fp.estimate));
+  if (fit.parameters.size() > 1 && std::none_of(fit.parameters.begin(), fit.parameters.end() - 1,
+                   [](const FittedParameter& fp) { return std::isfinite(fp.standard_error); }))
+    why.push_back("no fitted parameter has a finite standard error");
+  if (!std::isfinite(fit.chi_square)) why.push_back("the chi-square is not finite");
+  fit.failed = !why.empty();
+  for (const std::string& reason : why) fit.failure += (fit.failure.empty() ? "" : "; ") + reason;
+  fit.identifiable = !fit.failed && finite_errors && fit.condition_number < identifiable_condition_limit &&
                      largest_correlation < identifiable_correlation_limit;
   const double k = static_cast<double>(p);
   fit.aic = fit.chi_square + 2.0 * k;
@@ -232,6 +277,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   for (std::size_t c = 0; c < channels.size(); ++c)
     fit.channels[c].residual_rms = std::sqrt(sum_sq[c] / static_cast<double>(fit.channels[c].samples));
   fit.model_runs = model.runs();
+  fit.work = problem.work();
   fit.fitted_options = model.options_at(estimate);
   fit.model_solver = model.solver();
   return fit;
@@ -275,7 +321,10 @@ LawComparison compare_laws(const MeasuredTrace& trace, const RunOptions& base, c
       out.failures.emplace_back(o.damping, e.what());
     }
   }
-  std::stable_sort(out.fits.begin(), out.fits.end(), [](const TraceFit& a, const TraceFit& b) { return a.aic < b.aic; });
+  // Failed fits last: the best is a fit that determined its parameters, if any did.
+  std::stable_sort(out.fits.begin(), out.fits.end(), [](const TraceFit& a, const TraceFit& b) {
+    return a.failed != b.failed ? b.failed : a.aic < b.aic;
+  });
   return out;
 }
 

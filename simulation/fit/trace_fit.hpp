@@ -40,6 +40,17 @@
 // departs from free fall (force or acceleration, ten noise levels) less where the model's does,
 // so a trace need not start near its onset.
 //
+// Work. Each model run costs its RK4 steps plus one interpolation per observation; the fit's
+// work, summed over its runs, is bounded by TraceFitSettings::max_work. A trace whose first
+// iterations alone would exceed it (a predicted cost: (2p + 2) runs per iteration, each at the
+// starting values' cost, for min_predicted_iterations) is refused before any iteration; a fit
+// that reaches the bound stops there and has failed.
+//
+// Failure. A fit that determined nothing is `failed`, with the reason: a fitted parameter at a
+// bound (the trace pushed it out of the model's range: a wrong unit, another law, the wrong
+// rod), a non-finite standard error or correlation, or a stop at the iteration or work limit.
+// A failed fit is never identifiable.
+//
 // Information criteria with the noise known (sigma_c): AIC = chi^2 + 2k, BIC = chi^2 + k ln n,
 // k the number of fitted parameters including t0.
 #include "hertzdash/io/measured_trace.hpp"
@@ -74,6 +85,9 @@ struct TraceFitSettings {
   double resample_Hz = 0;              ///< > 0: average the trace into bins of 1/resample_Hz first
   int steps_per_contact = 2000;        ///< the model's RK4 steps per undamped Hertz contact time
   int max_iterations = 200;
+  /// Most work of one fit: RK4 steps plus observations interpolated, summed over model runs
+  /// (a good fit of a 1 MHz trace of the paper's contact takes about 7e5; "Work" above).
+  double max_work = 3e7;
 };
 
 /// One fitted parameter. The onset time is the last, named "onset-time" [s].
@@ -108,6 +122,9 @@ struct TraceFit {
   int iterations = 0, model_runs = 0;
   std::string stop_reason;                           ///< GSL's: small step, small gradient, or why not converged
   bool converged = false;                            ///< GSL's test met (not the iteration limit, not stalled)
+  bool failed = false;                               ///< the fit determined nothing ("Failure" above)
+  std::string failure;                               ///< why it failed, empty if not
+  double work = 0;                                   ///< RK4 steps plus observations interpolated, all runs
   double contact_time_s = 0;                         ///< of the fitted model
   ImpactSummary model_summary;                       ///< the fitted model's impact (its diagnostics)
   RunOptions fitted_options;                         ///< the run options at the estimate
@@ -127,14 +144,26 @@ inline constexpr double identifiable_correlation_limit = 0.999;
 
 /// Fewest samples per contact the fit accepts (the sampling check).
 inline constexpr double min_samples_per_contact = 10;
+/// Most samples per contact the fit accepts: the model is integrated at t_H / 2000 and
+/// interpolated linearly between its steps, so finer samples add work and no information; a
+/// sampling this fine is a time column in the wrong unit, or is to be averaged (--resample).
+inline constexpr double max_samples_per_contact = 1e6;
+/// Iterations a fit's predicted work must allow (the work check before the first iteration).
+inline constexpr double min_predicted_iterations = 5;
+/// A sample whose second difference exceeds this multiple of the channel's largest magnitude
+/// elsewhere is an outlier (trace_preparation.hpp): a contact sampled at ten or more samples has
+/// second differences below (pi / 10)^2 = 0.1 of its peak, noise below a few of its sigma.
+inline constexpr double outlier_ratio = 10;
 
 /// Fit `settings.parameters` and the onset time to the trace, starting from the values of
 /// `base` (or the paper's where `base` leaves an option unset). Validates like `simulate`
 /// (InvalidParameter). The trace is resampled if asked, then checked: a channel to fit, a
 /// sampling interval that resolves the model's contact at the starting values
 /// (min_samples_per_contact samples; the message says the least rate), a contact the noise does
-/// not hide (ten noise levels in some channel), no channel that never changes; a trace unfit
-/// for fitting throws DataError naming the file.
+/// not hide (ten noise levels in some channel), no channel that never changes, no outlier
+/// (outlier_ratio), at most max_samples_per_contact, a predicted work within
+/// settings.max_work; a trace unfit for fitting throws DataError naming the file. A fit that
+/// ran and determined nothing is returned with `failed` set.
 TraceFit fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                    const TraceFitSettings& settings);
 

@@ -45,6 +45,7 @@ const ImpactHistory* TraceModel::history(const std::vector<double>& values) {
   std::vector<TraceSample> trace;
   const ImpactSummary summary = simulator_->run(s, base_.damping, &trace);
   ++runs_;
+  steps_ += static_cast<double>(summary.work.steps);
   history_.emplace(std::move(trace), s.gravity_mps2);
   summary_ = summary;
   return &*history_;

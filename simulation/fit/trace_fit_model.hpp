@@ -20,6 +20,8 @@ class TraceModel {
   /// t_H at the initial parameters [s]: the unit of the onset variable and of the step.
   double time_scale_s() const { return time_scale_s_; }
   int runs() const { return runs_; }
+  /// RK4 steps of all runs so far (the model's share of the fit's work, trace_fit.hpp "Work").
+  double steps() const { return steps_; }
   const SolverSettings& solver() const { return solver_; }
 
   RunOptions options_at(const std::vector<double>& values) const;
@@ -46,6 +48,7 @@ class TraceModel {
   std::optional<ImpactHistory> history_;
   ImpactSummary summary_;  // of the last run
   int runs_ = 0;
+  double steps_ = 0;
 };
 
 }  // namespace hertzdash::trace_fit_detail

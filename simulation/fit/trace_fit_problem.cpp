@@ -28,6 +28,7 @@ std::vector<double> FitProblem::physical(const double* z) const {
 std::vector<double> FitProblem::model_values(const double* z) {
   const ImpactHistory* h = model_->history(physical(z));
   if (!h) return {};
+  ++evaluations_;
   const double t0 = onset_s(z);
   std::vector<double> m(obs_.size());
   for (std::size_t i = 0; i < obs_.size(); ++i)

@@ -47,6 +47,9 @@ class FitProblem {
   /// Central differences, step 1e-6 in every z (relative 1e-6 of p - lower; 1e-6 t_H for the onset).
   void jacobian(const double* z, gsl_matrix* J);
 
+  /// The work so far: the model's RK4 steps plus the observations interpolated (trace_fit.hpp, "Work").
+  double work() const { return model_->steps() + evaluations_ * static_cast<double>(n()); }
+
   const std::vector<Observation>& observations() const { return obs_; }
   const std::vector<Transform>& transforms() const { return transforms_; }
   std::exception_ptr error;  ///< thrown inside a thunk: rethrown once GSL has returned
@@ -56,6 +59,7 @@ class FitProblem {
   TraceModel* model_;
   std::vector<Transform> transforms_;
   std::vector<std::string> channels_;
+  double evaluations_ = 0;  // model_values at a point inside the domain
 };
 
 /// gsl_multifit_nlinear_fdf's f and df, `params` a FitProblem: an exception is stored in its

@@ -101,6 +101,37 @@ MeasuredTrace resampled(const MeasuredTrace& in, double rate_Hz) {
   return out;
 }
 
+// An isolated sample far outside its channel (a glitch, a corrupted row): its departure from
+// the mean of its neighbours, |D2 y_i| / 2 inside the trace, above outlier_ratio times the
+// largest magnitude among the samples not next to it (trace_fit.hpp). DataError naming it.
+void refuse_outliers(const MeasuredTrace& trace, const std::string& name) {
+  const std::vector<double>& y = *quantity(trace, name);
+  const std::size_t n = y.size();
+  auto magnitude = [&](std::size_t i) { return std::isfinite(y[i]) ? std::abs(y[i]) : 0.0; };
+  std::vector<double> before(n + 1, 0.0), after(n + 1, 0.0);  // largest magnitude of y[0, i) and y[i, n)
+  for (std::size_t i = 0; i < n; ++i) before[i + 1] = std::max(before[i], magnitude(i));
+  for (std::size_t i = n; i-- > 0;) after[i] = std::max(after[i + 1], magnitude(i));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(y[i])) continue;
+    double sum = 0;
+    int count = 0;
+    if (i > 0 && std::isfinite(y[i - 1])) sum += y[i - 1], ++count;
+    if (i + 1 < n && std::isfinite(y[i + 1])) sum += y[i + 1], ++count;
+    if (count == 0) continue;
+    const double departure = std::abs(y[i] - sum / count);
+    const double elsewhere = std::max(i >= 1 ? before[i - 1] : 0.0, i + 2 <= n ? after[i + 2] : 0.0);
+    if (!(departure > outlier_ratio * elsewhere)) continue;
+    // The outlier's neighbour departs by half as much: name the largest of the three.
+    std::size_t k = i;
+    for (std::size_t j = i > 0 ? i - 1 : 0; j <= std::min(i + 1, n - 1); ++j)
+      if (magnitude(j) > magnitude(k)) k = j;
+    throw DataError(fmt::format("{}: sample {} (t = {:.6g} s) of {}, {:.6g}, is an outlier: it departs from its "
+                                "neighbours by more than {:g} times the column's largest magnitude elsewhere ({:.3g}); "
+                                "correct or remove the row",
+                                trace.path.string(), k + 1, trace.t_s[k], name, y[k], outlier_ratio, elsewhere));
+  }
+}
+
 double median_interval_s(const std::vector<double>& t) {
   std::vector<double> dt;
   for (std::size_t i = 1; i < t.size(); ++i) dt.push_back(t[i] - t[i - 1]);
@@ -112,6 +143,7 @@ double median_interval_s(const std::vector<double>& t) {
 PreparedTrace prepare_trace(const MeasuredTrace& trace, const TraceFitSettings& settings, double contact_time_s,
                             double g) {
   const std::string file = trace.path.string();
+  for (const std::string& name : channels_to_fit(trace, settings)) refuse_outliers(trace, name);
   MeasuredTrace t = trace;
   if (settings.resample_Hz != 0) {
     require_positive("resample", settings.resample_Hz, "Hz");
@@ -126,6 +158,11 @@ PreparedTrace prepare_trace(const MeasuredTrace& trace, const TraceFitSettings& 
     throw DataError(fmt::format("{}: sampled every {:.3g} s ({:.4g} Hz), too coarse: the model's contact lasts {:.3g} s "
                                 "and needs at least {:g} samples, a sampling rate of at least {:.4g} Hz",
                                 file, dt, 1.0 / dt, tc, min_samples_per_contact, min_samples_per_contact / tc));
+  if (!(tc / dt <= max_samples_per_contact))
+    throw DataError(fmt::format("{}: sampled every {:.3g} s, {:.3g} samples in the model's contact of {:.3g} s, more than "
+                                "{:g}: finer than the model resolves (it steps t_H / 2000). Is the time column in its "
+                                "unit (t_s, t_ms, t_us)? A trace sampled this fine is averaged with --resample",
+                                file, dt, tc / dt, tc, max_samples_per_contact));
 
   // A contact must stand out of the noise by ten noise levels in some channel: the force above
   // zero, the deceleration below g, the velocity reversed (a rebound), or the displacement

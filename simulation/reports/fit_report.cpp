@@ -2,6 +2,7 @@
 // or every law ranked), the JSON of a fit and of the run, the curves file, and the fit's
 // warnings.
 #include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/fit/trace_setup.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/reports/report_json.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -16,19 +17,20 @@ namespace hertzdash {
 using report_detail::json_value;
 
 FitRun run_fit(const std::string& trace_path, const RunOptions& base, const PaperParameters& paper,
-               const TraceFitSettings& settings, bool compare_all_laws) {
+               const TraceFitSettings& settings, bool compare_all_laws, const std::vector<std::string>& given) {
   FitRun r;
   r.settings = settings;
   resolve_setup(base, paper);  // bad options are reported before the file is read
   if (compare_all_laws && base.damping != RunOptions{}.damping)
     throw InvalidParameter("damping", base.damping, "omitted with `compare-laws` (every registered law is fitted)");
   r.trace = read_measured_trace(trace_path);
+  const RunOptions options = trace_setup_options(r.trace, base, paper, given);  // the trace's rod and height
   if (compare_all_laws) {
-    LawComparison c = compare_laws(r.trace, base, paper, settings);
+    LawComparison c = compare_laws(r.trace, options, paper, settings);
     r.fits = std::move(c.fits);
     r.failures = std::move(c.failures);
   } else {
-    r.fits.push_back(fit_trace(r.trace, base, paper, settings));
+    r.fits.push_back(fit_trace(r.trace, options, paper, settings));
   }
   return r;
 }
@@ -80,6 +82,9 @@ nlohmann::ordered_json to_json(const TraceFit& f, const PaperParameters& paper) 
   j["model_runs"] = f.model_runs;
   j["stop_reason"] = f.stop_reason;
   j["converged"] = f.converged;
+  j["failed"] = f.failed;
+  j["failure"] = f.failure;
+  j["work"] = f.work;
   j["contact_time_s"] = f.contact_time_s;
   nlohmann::ordered_json in;
   const DropTestSetup s = resolve_setup(f.fitted_options, paper);
@@ -139,7 +144,10 @@ std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParamet
     if (!f.converged)
       warn("not_converged",
            fmt::format("the fit{} did not converge ({}): the estimates are where it stopped", law, f.stop_reason));
-    if (!f.identifiable)
+    if (f.failed)
+      warn("fit_failed", fmt::format("the fit{} failed: {}; its estimates are where it stopped, not results", law,
+                                     f.failure));
+    else if (!f.identifiable)
       warn("not_identifiable",
            fmt::format("the trace does not determine the parameters{}: condition number {:.3g} (limit {:g}), a "
                        "correlation beyond {:g} or an infinite standard error; fit fewer parameters or add a channel",

@@ -66,8 +66,10 @@ struct FitRun {
 };
 
 /// Read the trace, fit (validating like `simulate`: InvalidParameter; a bad trace: DataError).
+/// The trace's header sets the rod and height the options leave unset (trace_setup_options;
+/// `given`: options a front end was given even at their default value, e.g. "rod").
 FitRun run_fit(const std::string& trace_path, const RunOptions& base, const PaperParameters& paper,
-               const TraceFitSettings& settings, bool compare_all_laws);
+               const TraceFitSettings& settings, bool compare_all_laws, const std::vector<std::string>& given = {});
 
 /// One fit: "law", "parameters" (name, initial, estimate, standard_error, lower, upper, at_bound),
 /// "correlation", "channels", the goodness of fit and the criteria, "fitted_inputs".
@@ -84,7 +86,8 @@ nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
 void write_fit_curves(const TraceFit& fit, const MeasuredTrace& trace, const std::filesystem::path& path);
 
 /// The warnings every front end shows for a fit: a synthetic trace (synthetic_trace), and per
-/// fit one that did not converge (not_converged), is not identifiable (not_identifiable), has a
+/// fit one that did not converge (not_converged), failed (fit_failed: TraceFit::failure) or else
+/// is not identifiable (not_identifiable), has a
 /// parameter at its bound (at_bound), does not explain the trace to its noise (poor_fit), and
 /// the diagnostics of the fitted model's impact (simulation/run/diagnostic_codes.hpp).
 std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParameters& paper);
