@@ -115,6 +115,7 @@ Command add_fit_command(CLI::App& app) {
 
   return {sub, [opt, sub]() {
             prepare_output_file("--curves", opt->curves_path, opt->mkdir);
+            refuse_shared_files({{"--trace", opt->trace_path}}, {{"--curves", opt->curves_path}});
             TraceFitSettings settings;
             settings.parameters = parse_fit_parameters(opt->fit);
             if (!opt->channels.empty()) settings.channels = parse_channels(opt->channels, "channels");

@@ -1,10 +1,14 @@
 #include "cli/output_files.hpp"
 
+#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/output_directories.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <filesystem>
+#include <optional>
+#include <sys/stat.h>
 #include <system_error>
+#include <unistd.h>
 #include <vector>
 
 namespace hertzdash::cli {
@@ -44,6 +48,64 @@ void prepare_output_file(const std::string& option, const std::string& path, boo
     throw InvalidParameter(option, path,
                            "a file in an existing directory (" + file.parent_path().string() +
                                " does not exist; --mkdir creates it)");
+  // Found now, not after the runs: a folder the user may not write to, a read-only file system.
+  if (!missing.empty()) {
+    const fs::path existing = missing.front().parent_path();
+    if (::access(existing.empty() ? "." : existing.c_str(), W_OK | X_OK) != 0)
+      throw InvalidParameter(option, path,
+                             "a file in a directory that can be created (cannot create directory " +
+                                 missing.front().string() + ": " + std::generic_category().message(errno) + ")");
+    return;
+  }
+  try {
+    check_writable(file);
+  } catch (const std::runtime_error& e) {
+    throw InvalidParameter(option, path, std::string("a file that can be written (") + e.what() + ")");
+  }
+}
+
+namespace {
+
+// What makes two paths one file: "device:inode" of a file that exists, else where it would be
+// made. nullopt: an output written through, which replaces nothing.
+std::optional<std::string> identity(const std::string& path, bool output) {
+  namespace fs = std::filesystem;
+  fs::path file(path);
+  if (output) {
+    try {
+      const std::optional<fs::path> replaced = replaced_file(file);
+      if (!replaced) return std::nullopt;
+      file = *replaced;
+    } catch (const std::runtime_error&) {  // its directory is still to be made (--mkdir): nothing in it exists
+      std::error_code ec;
+      file = fs::weakly_canonical(fs::absolute(file, ec), ec);
+    }
+  }
+  struct stat st {};
+  if (::stat(file.c_str(), &st) == 0) return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+  std::error_code ec;
+  return fs::weakly_canonical(fs::absolute(file, ec), ec).string();
+}
+
+}  // namespace
+
+void refuse_shared_files(const std::vector<CommandFile>& inputs, const std::vector<CommandFile>& outputs) {
+  std::vector<std::pair<const CommandFile*, std::string>> seen;  // the inputs, then the outputs checked
+  for (const CommandFile& in : inputs)
+    if (!in.path.empty())
+      if (const std::optional<std::string> id = identity(in.path, false)) seen.emplace_back(&in, *id);
+  const std::size_t input_count = seen.size();
+  for (const CommandFile& out : outputs) {
+    if (out.path.empty()) continue;
+    const std::optional<std::string> id = identity(out.path, true);
+    if (!id) continue;
+    for (std::size_t i = 0; i < seen.size(); ++i)
+      if (seen[i].second == *id)
+        throw InvalidParameter(out.option, out.path,
+                               "another file than " + seen[i].first->option + " (" + seen[i].first->path + "), which " +
+                                   (i < input_count ? "is read" : "is written too") + ": they are the same file");
+    seen.emplace_back(&out, *id);
+  }
 }
 
 void create_output_directories(const std::string& path, bool make_directories) {

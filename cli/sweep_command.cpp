@@ -9,6 +9,8 @@
 #include "cli/output_files.hpp"
 #include "cli/process_group.hpp"
 #include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/output_directories.hpp"
+#include "hertzdash/io/output_lock.hpp"
 #include "hertzdash/simulation/sweep/sweep_run.hpp"
 
 #include <fmt/format.h>
@@ -16,8 +18,10 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <deque>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace hertzdash::cli {
@@ -40,14 +44,17 @@ int run_sweep_command(const SweepCommandOptions&) {
   return 2;
 }
 #else
-// Set by SIGINT/SIGTERM while the runs run; a second signal ends the program at once (nothing
-// has been written then: the files are written after the runs).
+// Set by SIGINT/SIGTERM while the runs run; a second signal ends the program at once, through
+// the disposition the runs began with (io/remove_on_signal.hpp's, which removes the lock files;
+// nothing else has been written then: the files are written after the runs).
 std::atomic<bool> interrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free);
+void (*previous_int)(int) = SIG_DFL;
+void (*previous_term)(int) = SIG_DFL;
 
 extern "C" void on_interrupt(int signal) {
   interrupted = true;
-  std::signal(signal, SIG_DFL);
+  std::signal(signal, signal == SIGINT ? previous_int : previous_term);
 }
 
 // The signal handlers for the duration of the runs.
@@ -55,21 +62,17 @@ class InterruptGuard {
  public:
   InterruptGuard() {
     interrupted = false;
-    previous_int_ = std::signal(SIGINT, on_interrupt);
-    previous_term_ = std::signal(SIGTERM, on_interrupt);
-    if (previous_int_ == SIG_ERR || previous_term_ == SIG_ERR)
+    previous_int = std::signal(SIGINT, on_interrupt);
+    previous_term = std::signal(SIGTERM, on_interrupt);
+    if (previous_int == SIG_ERR || previous_term == SIG_ERR)
       throw std::runtime_error("cannot install the SIGINT/SIGTERM handlers of the sweep");
   }
   ~InterruptGuard() {
-    std::signal(SIGINT, previous_int_);
-    std::signal(SIGTERM, previous_term_);
+    std::signal(SIGINT, previous_int);
+    std::signal(SIGTERM, previous_term);
   }
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
-
- private:
-  void (*previous_int_)(int);
-  void (*previous_term_)(int);
 };
 
 std::filesystem::path summary_path(const std::filesystem::path& out) {
@@ -103,8 +106,34 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   const std::filesystem::path out = opt.out.empty() ? default_sweep_output(c) : std::filesystem::path(opt.out);
   const bool summary = c.summary || !opt.summary.empty();
   const std::filesystem::path summary_out = opt.summary.empty() ? summary_path(out) : std::filesystem::path(opt.summary);
-  prepare_output_file(opt.out.empty() ? "[output] file" : "--out", out.string(), opt.mkdir);
-  if (summary) prepare_output_file(opt.summary.empty() ? "[output] summary" : "--summary", summary_out.string(), opt.mkdir);
+  const std::string out_option = opt.out.empty() ? "[output] file" : "--out";
+  const std::string summary_option = opt.summary.empty() ? "[output] summary" : "--summary";
+  prepare_output_file(out_option, out.string(), opt.mkdir);
+  if (summary) prepare_output_file(summary_option, summary_out.string(), opt.mkdir);
+  refuse_shared_files({{"the case file", opt.case_path}},
+                      {{out_option, out.string()}, {summary_option, summary ? summary_out.string() : ""}});
+  // One sweep at a time per output, held from before the runs until both files are written (an
+  // output whose directory --mkdir makes is locked once that is made, right before the write).
+  const std::vector<std::filesystem::path> outputs = summary ? std::vector{out, summary_out} : std::vector{out};
+  std::deque<OutputLock> locks;
+  auto lock = [&locks](const std::filesystem::path& p) {
+    if (const std::optional<std::filesystem::path> file = replaced_file(p)) locks.emplace_back(*file);
+  };
+  std::vector<std::filesystem::path> in_new_directories;
+  std::string refusal;
+  if (group.rank() == 0) try {
+      for (const std::filesystem::path& p : outputs)
+        if (missing_parent_directories(p).empty()) lock(p);
+        else in_new_directories.push_back(p);
+    } catch (const OutputBusy& e) {
+      refusal = std::string(e.what()) + "; wait for it to end, or give another --out/--summary";
+    } catch (const std::exception& e) {
+      refusal = e.what();
+    }
+  if (group.any(!refusal.empty())) {  // every process leaves: none waits for rank 0 in a gather
+    if (group.rank() == 0) std::cerr << "hertzdash: refused: " << refusal << "\n";
+    return 2;
+  }
 
   std::vector<std::size_t> mine;
   for (std::size_t run = static_cast<std::size_t>(group.rank()); run < c.size(); run += static_cast<std::size_t>(group.size()))
@@ -148,10 +177,14 @@ int run_sweep_command(const SweepCommandOptions& opt) {
       fmt::format("timing: {:.3f} s on {} process{} x {} thread{}, {:.3g} runs/s", seconds, group.size(),
                   group.size() > 1 ? "es" : "", threads_used, threads_used > 1 ? "s" : "",
                   static_cast<double>(c.size()) / seconds);
-  create_output_directories(out.string(), opt.mkdir);
-  write_file_atomically(out, sweep_table(c, all, timing));
-  if (summary) create_output_directories(summary_out.string(), opt.mkdir);
-  if (summary) write_file_atomically(summary_out, sweep_summary_table(c, all));
+  for (const std::filesystem::path& p : in_new_directories) {
+    create_output_directories(p.string(), opt.mkdir);
+    lock(p);
+  }
+  // As a pair: a signal leaves both files new or both as they were.
+  std::vector<std::pair<std::filesystem::path, std::string>> files{{out, sweep_table(c, all, timing)}};
+  if (summary) files.emplace_back(summary_out, sweep_summary_table(c, all));
+  write_files_atomically(files);
 
   std::size_t failed = 0;
   for (const std::string& e : all.errors) failed += e.empty() ? 0 : 1;

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <charconv>
 #include <climits>
+#include <deque>
 #include <cstdio>
 #include <fcntl.h>
 #include <stdexcept>
@@ -100,17 +101,9 @@ void write_through(const Target& t, const std::string& content) {
 
 std::atomic<unsigned> temporaries{0};
 
-/// NAME.tmp.PID.N beside `target`, within NAME_MAX bytes: a long NAME is cut short (at a UTF-8
-/// character's start); PID.N alone keeps the name unique.
+/// NAME.tmp.PID.N beside `target`: PID.N alone keeps the name unique.
 fs::path temporary_path(const fs::path& target) {
-  const std::string suffix = ".tmp." + std::to_string(::getpid()) + "." + std::to_string(temporaries++);
-  std::string base = target.filename().string();
-  if (base.size() + suffix.size() > NAME_MAX) {
-    base.resize(NAME_MAX - suffix.size());
-    while (!base.empty() && (static_cast<unsigned char>(base.back()) & 0xC0) == 0x80) base.pop_back();
-    if (!base.empty() && static_cast<unsigned char>(base.back()) >= 0xC0) base.pop_back();  // a cut character's lead
-  }
-  return target.parent_path() / (base + suffix);
+  return sibling_path(target, ".tmp." + std::to_string(::getpid()) + "." + std::to_string(temporaries++));
 }
 
 /// Flush the directory `dir`'s entries to the disk, so that a rename in it survives a power cut.
@@ -122,35 +115,97 @@ void sync_directory(const fs::path& dir) {
   ::close(fd);
 }
 
-void write_by_rename(const Target& t, const std::string& content) {
-  const fs::path tmp = temporary_path(t.path);
-  const RemoveOnSignal registered(tmp);  // before the file exists: no moment when a signal would orphan it
+/// The directory of `file`: a bare name lives in the working directory.
+fs::path directory_of(const fs::path& file) {
+  const fs::path parent = file.parent_path();
+  return parent.empty() ? fs::path(".") : parent;
+}
+
+/// `content` in the temporary `tmp` (registered for removal by the caller), synced, with the
+/// permissions of the file it replaces; 0, or the errno of the failure (the temporary removed).
+int write_temporary(const Target& t, const fs::path& tmp, const std::string& content) {
   struct stat previous {};
   const bool replacing = ::stat(t.path.c_str(), &previous) == 0;
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) fail(t.what, reason_of(errno));
+  if (fd < 0) return errno;
   // The file replaced keeps its permissions (0600 stays 0600, 0755 stays 0755); a new one has
   // 0666 less the umask. Owner and group are the writer's; set-id and sticky bits are not copied.
   int error = replacing && ::fchmod(fd, previous.st_mode & 0777) != 0 ? errno : 0;
   if (error == 0) error = write_all(fd, content);
   if (error == 0 && ::fsync(fd) != 0) error = errno;  // the data on disk before the name points to it
   if (::close(fd) != 0 && error == 0) error = errno;
-  if (error == 0 && ::rename(tmp.c_str(), t.path.c_str()) != 0) error = errno;
-  if (error == 0) {
-    const fs::path parent = t.path.parent_path();
-    sync_directory(parent.empty() ? fs::path(".") : parent);  // a bare name lives in the working directory
-    return;
-  }
-  ::unlink(tmp.c_str());
-  fail(t.what, reason_of(error));
+  if (error != 0) ::unlink(tmp.c_str());
+  return error;
 }
 
 }  // namespace
 
 void write_file_atomically(const fs::path& path, const std::string& content) {
+  write_files_atomically({{path, content}});
+}
+
+void write_files_atomically(const std::vector<std::pair<fs::path, std::string>>& files) {
+  std::vector<Target> targets;
+  for (const auto& file : files) targets.push_back(resolve(file.first));
+  std::vector<fs::path> tmp_paths(files.size());  // empty: written through
+  std::deque<RemoveOnSignal> registered;  // each before its file exists: no moment when a signal would orphan it
+  auto remove_temporaries = [&tmp_paths](std::size_t from) {
+    for (std::size_t i = from; i < tmp_paths.size(); ++i)
+      if (!tmp_paths[i].empty()) ::unlink(tmp_paths[i].c_str());
+  };
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (targets[i].write_through) continue;
+    const fs::path tmp = temporary_path(targets[i].path);
+    registered.emplace_back(tmp);
+    if (const int error = write_temporary(targets[i], tmp, files[i].second)) {
+      remove_temporaries(0);
+      fail(targets[i].what, reason_of(error));
+    }
+    tmp_paths[i] = tmp;
+  }
+  {
+    const SignalHold hold;  // every rename done, or none begun, when a signal ends the program
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      if (tmp_paths[i].empty() || ::rename(tmp_paths[i].c_str(), targets[i].path.c_str()) == 0) continue;
+      const int error = errno;
+      remove_temporaries(i);
+      fail(targets[i].what, reason_of(error) + (i > 0 ? " (the files before it were replaced)" : ""));
+    }
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (targets[i].write_through) write_through(targets[i], files[i].second);
+    else sync_directory(directory_of(targets[i].path));
+  }
+}
+
+std::optional<fs::path> replaced_file(const fs::path& path) {
+  Target t = resolve(path);
+  if (t.write_through) return std::nullopt;
+  return std::move(t.path);
+}
+
+void check_writable(const fs::path& path) {
   const Target t = resolve(path);
-  if (t.write_through) write_through(t, content);
-  else write_by_rename(t, content);
+  if (t.write_through) {
+    if (own_descriptor(t.path) < 0 && ::access(t.path.c_str(), W_OK) != 0) fail(t.what, reason_of(errno));
+    return;
+  }
+  const fs::path tmp = temporary_path(t.path);
+  const RemoveOnSignal registered(tmp);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) fail(t.what, reason_of(errno));
+  ::close(fd);
+  ::unlink(tmp.c_str());
+}
+
+fs::path sibling_path(const fs::path& target, const std::string& suffix) {
+  std::string base = target.filename().string();
+  if (base.size() + suffix.size() > NAME_MAX) {
+    base.resize(NAME_MAX - suffix.size());
+    while (!base.empty() && (static_cast<unsigned char>(base.back()) & 0xC0) == 0x80) base.pop_back();
+    if (!base.empty() && static_cast<unsigned char>(base.back()) >= 0xC0) base.pop_back();  // a cut character's lead
+  }
+  return target.parent_path() / (base + suffix);
 }
 
 }  // namespace hertzdash

@@ -110,9 +110,10 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
   const std::string content = read_bounded(in, t.path_);
   std::size_t n = 0;
   for (std::size_t begin = 0; begin < content.size();) {
-    const std::size_t end = std::min(content.find('\n', begin), content.size());
+    // A line ends at LF (Unix), CR LF (Windows) or a lone CR (classic Mac OS, some loggers).
+    const std::size_t end = std::min(content.find_first_of("\r\n", begin), content.size());
     std::string line = content.substr(begin, end - begin);
-    begin = end + 1;
+    begin = end + (content.compare(end, 2, "\r\n") == 0 ? 2 : 1);
     ++n;
     if (n == 1 && line.rfind(byte_order_mark, 0) == 0) line.erase(0, byte_order_mark.size());
     const std::string s = trim(line);

@@ -1,6 +1,6 @@
 #pragma once
 // Reading the CSV files under data/: '#' comment lines, one header row, then rows
-// with exactly as many fields. A UTF-8 byte-order mark and CRLF line ends are accepted; a
+// with exactly as many fields. A UTF-8 byte-order mark and LF, CRLF or lone CR line ends are accepted; a
 // file larger than max_table_bytes is refused before it is read. Numbers are decimal
 // (io/decimal_number.hpp). Every error names the file, and where it applies the line and
 // column: "FILE:LINE:COL: column 'NAME': ...".

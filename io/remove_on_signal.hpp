@@ -1,8 +1,13 @@
 #pragma once
-// Temporary files that SIGINT, SIGTERM or SIGHUP must not orphan. While a RemoveOnSignal is
-// alive, its path is unlinked if one of those signals ends the process; the signal's default
-// action (termination) follows. The handler is installed only over the default disposition:
-// a program's own handler (the sweep's Ctrl-C, Python's KeyboardInterrupt) is left alone.
+// Temporary files that no signal but SIGKILL may orphan. While a RemoveOnSignal is alive, its
+// path is unlinked if a signal whose default action ends the process arrives (SIGHUP, SIGINT,
+// SIGQUIT, SIGTERM, SIGUSR1/2, SIGALRM, SIGPIPE, SIGXCPU, SIGVTALRM, SIGPROF, SIGIO, SIGPWR,
+// the real-time signals, and SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGTRAP, SIGSYS); the
+// signal's default action follows. The handler is installed only over the default
+// disposition: a program's own handler (the sweep's Ctrl-C, Python's KeyboardInterrupt) is
+// left alone. SIGXFSZ at its default is ignored from the first registration on (as Python
+// does), so a write beyond `ulimit -f` fails with EFBIG, "File too large", which its writer
+// reports after removing its temporary, instead of killing the process silently.
 // At most 64 paths are registered at once; beyond that a file is written unregistered.
 #include <filesystem>
 
@@ -17,6 +22,19 @@ class RemoveOnSignal {
 
  private:
   int slot_;  // -1: not registered
+};
+
+/// While alive, the asynchronous signals above (all but SIGABRT, SIGSEGV, SIGBUS, SIGFPE,
+/// SIGILL, SIGTRAP, SIGSYS, which a program raises against itself and cannot postpone) are held,
+/// in every thread: one that arrives is recorded and delivered, with its default action, when
+/// the last SignalHold ends. A set of renames made under one is all done or not begun when a
+/// signal ends the program.
+class SignalHold {
+ public:
+  SignalHold();
+  ~SignalHold();
+  SignalHold(const SignalHold&) = delete;
+  SignalHold& operator=(const SignalHold&) = delete;
 };
 
 }  // namespace hertzdash

@@ -1,9 +1,11 @@
 // Output files (io/atomic_file.hpp): regular files by temporary + rename, symbolic links
 // followed, FIFOs and devices written through, errno in the messages, no temporaries left
-// behind by a failure or by SIGTERM (io/remove_on_signal.hpp).
+// behind by a failure or by any signal but SIGKILL (io/remove_on_signal.hpp), a set of files
+// replaced together, a file size limit reported, one writer per file (io/output_lock.hpp).
 #include "scratch_dir.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/output_directories.hpp"
+#include "hertzdash/io/output_lock.hpp"
 #include "hertzdash/io/remove_on_signal.hpp"
 #include "cli_runner.hpp"
 
@@ -13,6 +15,7 @@
 #include <chrono>
 #include <climits>
 #include <csignal>
+#include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
@@ -295,4 +298,147 @@ TEST_CASE("atomic file: a replaced file keeps its permissions", "[atomic_file]")
   const fs::path fresh = s.path / "fresh.csv";
   CHECK(message_of(fresh, "x\n").empty());
   CHECK((stat_of(fresh).st_mode & 07777) == (0666 & ~umask_now));
+}
+
+namespace {
+
+// Runs `body` in a child process with `signal` at its default disposition and no core file;
+// returns the child's wait status.
+template <class Body>
+int in_child(int signal, Body body) {
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    const struct rlimit no_core {0, 0};
+    ::setrlimit(RLIMIT_CORE, &no_core);
+    std::signal(signal, SIG_DFL);
+    body();
+    ::_exit(0);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return status;
+}
+
+}  // namespace
+
+TEST_CASE("atomic file: every signal that ends the process removes a registered temporary", "[atomic_file]") {
+  // Before, only SIGINT, SIGTERM and SIGHUP did: SIGQUIT, SIGUSR1, SIGALRM and the others left
+  // NAME.tmp.PID.N behind, although the documentation said only SIGKILL could.
+  for (const int signal : {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGXCPU, SIGVTALRM,
+                           SIGPROF, SIGIO, SIGPWR, SIGRTMIN, SIGRTMAX, SIGABRT}) {
+    INFO("signal " << signal << " (" << strsignal(signal) << ")");
+    const ScratchDir s;
+    const fs::path tmp = s.path / "big.csv.tmp.1.0";
+    std::ofstream(tmp) << "half a file";
+    const int status = in_child(signal, [&] {
+      const hertzdash::RemoveOnSignal registered(tmp);
+      ::raise(signal);
+    });
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == signal);
+    CHECK_FALSE(fs::exists(tmp));
+  }
+}
+
+TEST_CASE("atomic file: beyond ulimit -f a write fails with File too large and leaves no temporary",
+          "[atomic_file]") {
+  // Before, SIGXFSZ killed the process in the write: no message, and the temporary stayed.
+  const ScratchDir s;
+  const fs::path p = s.path / "big.csv";
+  const int status = in_child(SIGXFSZ, [&] {
+    const struct rlimit small {4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    ::_exit(message_of(p, std::string(1 << 16, 'x')) == "cannot write " + p.string() + ": File too large" ? 3 : 4);
+  });
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 3);
+  CHECK(s.names().empty());
+}
+
+TEST_CASE("atomic file: a signal while a set of files is renamed is held until every rename is done",
+          "[atomic_file]") {
+  // The sweep's CSV and summary are renamed under a SignalHold: SIGINT between the two renames
+  // used to leave the new CSV beside the old summary. A signal raised under the hold is
+  // delivered, with its default action and the temporaries removed, when the hold ends.
+  const ScratchDir s;
+  const fs::path tmp = s.path / "out.csv.tmp.1.0", done = s.path / "done";
+  std::ofstream(tmp) << "half a file";
+  const int status = in_child(SIGINT, [&] {
+    const hertzdash::RemoveOnSignal registered(tmp);
+    {
+      const hertzdash::SignalHold hold;
+      ::raise(SIGINT);
+      std::ofstream(done) << "the renames went on";
+    }
+    ::_exit(0);  // not reached: the held SIGINT ends the process here
+  });
+  CHECK(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGINT);
+  CHECK(fs::exists(done));
+  CHECK_FALSE(fs::exists(tmp));
+}
+
+TEST_CASE("atomic file: a set of files is replaced together, or none of them when one fails", "[atomic_file]") {
+  const ScratchDir s;
+  const fs::path csv = s.path / "out.csv", summary = s.path / "out.summary.csv";
+  std::ofstream(csv) << "old csv\n";
+  std::ofstream(summary) << "old summary\n";
+  hertzdash::write_files_atomically({{csv, "new csv\n"}, {summary, "new summary\n"}});
+  CHECK(slurp(csv) == "new csv\n");
+  CHECK(slurp(summary) == "new summary\n");
+  // The second file too large for ulimit -f: its temporary fails, so the first is not renamed.
+  const int status = in_child(SIGXFSZ, [&] {
+    const struct rlimit small {4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    try {
+      hertzdash::write_files_atomically({{csv, "newer csv\n"}, {summary, std::string(1 << 16, 'x')}});
+    } catch (const std::runtime_error&) {
+      ::_exit(3);
+    }
+  });
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 3);
+  CHECK(slurp(csv) == "new csv\n");
+  CHECK(slurp(summary) == "new summary\n");
+  CHECK(s.names() == std::vector<std::string>{"out.csv", "out.summary.csv"});
+}
+
+TEST_CASE("atomic file: check_writable finds a directory no file can be made in, and leaves nothing",
+          "[atomic_file]") {
+  // /sys refuses new files even to root (the tests run as root, so a mode 0500 folder would not do).
+  const auto message = [](const fs::path& p) {
+    try {
+      hertzdash::check_writable(p);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(message("/sys/hertzdash-out.csv") == "cannot write /sys/hertzdash-out.csv: Permission denied");
+  CHECK(message("/proc/hertzdash-out.csv") == "cannot write /proc/hertzdash-out.csv: No such file or directory");
+  const ScratchDir s;
+  CHECK(message(s.path / "out.csv").empty());
+  CHECK(message("/dev/null").empty());
+  CHECK(s.names().empty());
+}
+
+TEST_CASE("output lock: a second writer of the same file is refused, naming the holder, through a link too",
+          "[atomic_file]") {
+  const ScratchDir s;
+  const fs::path out = s.path / "out.csv";
+  fs::create_symlink(out, s.path / "link.csv");
+  {
+    const hertzdash::OutputLock held(out);
+    CHECK(s.names() == std::vector<std::string>{"link.csv", "out.csv.lock"});
+    try {
+      const hertzdash::OutputLock second(*hertzdash::replaced_file(s.path / "link.csv"));
+      FAIL("a second lock was granted");
+    } catch (const hertzdash::OutputBusy& e) {
+      CHECK(std::string(e.what()) == out.string() + " is being written by another process (PID " +
+                                         std::to_string(::getpid()) + " holds " + out.string() + ".lock)");
+    }
+  }
+  CHECK(s.names() == std::vector<std::string>{"link.csv"});  // the lock file goes with the lock
+  const hertzdash::OutputLock again(out);
 }

@@ -189,3 +189,85 @@ TEST_CASE("CLI: an empty output path exits 2 naming the option", "[cli][output]"
   }
   CHECK_FALSE(fs::exists(s.path / "case.csv"));
 }
+
+TEST_CASE("CLI: an output that is the same file as an input or another output exits 2 naming both", "[cli][output]") {
+  // Before, each of these replaced a file with exit 0: the measured trace, the case file, the
+  // per-run table (by the summary, "wrote x.csv and x.csv"). Identity is the file's, not the
+  // name's: a symbolic link, a hard link and another spelling of the path are the same file.
+  const ScratchDir s;
+  const std::string dir = s.path.string();
+  s.write("victim.csv", "the measured trace\n");
+  s.write("ok.toml", "[grid]\nheight = [0.01, 0.02]\n");
+  fs::create_symlink("victim.csv", s.path / "victim-link.csv");
+  fs::create_hard_link(s.path / "victim.csv", s.path / "victim-hard.csv");
+  fs::create_symlink("x.csv", s.path / "x-link.csv");  // dangling: x.csv is not written yet
+  const struct {
+    std::string args, refusal;
+  } cases[] = {
+      {"fit --trace " + dir + "/victim.csv --curves " + dir + "/victim.csv",
+       "invalid --curves = DIR/victim.csv: must be another file than --trace (DIR/victim.csv), which is read"},
+      {"fit --trace " + dir + "/victim.csv --curves " + dir + "/victim-link.csv",
+       "invalid --curves = DIR/victim-link.csv: must be another file than --trace (DIR/victim.csv), which is read"},
+      {"fit --trace " + dir + "/victim.csv --curves " + dir + "/victim-hard.csv",
+       "invalid --curves = DIR/victim-hard.csv: must be another file than --trace (DIR/victim.csv), which is read"},
+      {"sweep " + dir + "/ok.toml --quiet --out " + dir + "/../" + s.path.filename().string() + "/ok.toml",
+       "must be another file than the case file (DIR/ok.toml), which is read"},
+      {"sweep " + dir + "/ok.toml --quiet --out " + dir + "/x.csv --summary " + dir + "/x.csv",
+       "invalid --summary = DIR/x.csv: must be another file than --out (DIR/x.csv), which is written too"},
+      {"sweep " + dir + "/ok.toml --quiet --out " + dir + "/x.csv --summary " + dir + "/x-link.csv",
+       "invalid --summary = DIR/x-link.csv: must be another file than --out (DIR/x.csv), which is written too"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto r = run_cli(c.args);
+    CHECK(r.exit_code == 2);
+    std::string refusal = c.refusal;
+    for (std::size_t at; (at = refusal.find("DIR")) != std::string::npos;) refusal.replace(at, 3, dir);
+    CHECK(contains(r.err, refusal + ": they are the same file"));
+    CHECK(r.out.empty());
+  }
+  CHECK(hertzdash::test::slurp(s.path / "victim.csv") == "the measured trace\n");
+  CHECK(hertzdash::test::slurp(s.path / "ok.toml") == "[grid]\nheight = [0.01, 0.02]\n");
+  CHECK_FALSE(fs::exists(s.path / "x.csv"));
+  // Written through, /dev/null replaces nothing: both outputs may go there.
+  CHECK(run_cli("sweep " + dir + "/ok.toml --quiet --out /dev/null --summary /dev/null").exit_code == 0);
+}
+
+TEST_CASE("CLI: an output no file can be written to exits 2 before any run", "[cli][output]") {
+  // Before, the runs ran (200,000 of them in the report) and the write failed afterwards with
+  // exit 1 and nothing saved. /sys and /proc refuse new files even to root, as the tests run.
+  const ScratchDir s;
+  s.write("ok.toml", "[grid]\nheight = [0.01, 0.02]\n");
+  const std::string case_file = (s.path / "ok.toml").string();
+  const struct {
+    std::string args, refusal;
+  } cases[] = {
+      {"sweep " + case_file + " --quiet --out /sys/hertzdash-out.csv",
+       "invalid --out = /sys/hertzdash-out.csv: must be a file that can be written (cannot write "
+       "/sys/hertzdash-out.csv: Permission denied)"},
+      {"sweep " + case_file + " --quiet --out " + (s.path / "a.csv").string() + " --summary /sys/hertzdash-out.csv",
+       "invalid --summary = /sys/hertzdash-out.csv: must be a file that can be written (cannot write "
+       "/sys/hertzdash-out.csv: Permission denied)"},
+      {"simulate --trace /proc/hertzdash-out.csv",
+       "invalid --trace = /proc/hertzdash-out.csv: must be a file that can be written (cannot write "
+       "/proc/hertzdash-out.csv: No such file or directory)"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto r = run_cli(c.args);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err == "hertzdash: " + c.refusal + "\n");
+    CHECK(r.out.empty());
+  }
+  CHECK(s.names() == std::vector<std::string>{"ok.toml"});
+}
+
+TEST_CASE("CLI: beyond ulimit -f the write fails with File too large, exit 1, no temporary", "[cli][output]") {
+  // Before, SIGXFSZ killed the program in the write: exit 153, no message, NAME.tmp.PID.N left.
+  const ScratchDir s;
+  const auto r = hertzdash::test::run_cli_program("cd " + s.path.string() + " && ulimit -f 1 && " HERTZDASH_BIN,
+                                                  "simulate --trace trace.csv");
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.err, "cannot write trace.csv: File too large"));
+  CHECK(s.names().empty());
+}

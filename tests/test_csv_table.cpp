@@ -101,3 +101,17 @@ TEST_CASE("CSV: a directory given as a table is refused with the read's own reas
   const std::string m = message_of(s.path);
   CHECK_THAT(m, Catch::Contains(s.path.string() + ": cannot read: Is a directory"));
 }
+
+TEST_CASE("CSV: LF, CR LF and lone CR line ends are read alike, line numbers included", "[csv]") {
+  // Before, a file with CR line ends (classic Mac OS, some loggers) was one line: "the table is
+  // empty".
+  const ScratchDir s;
+  for (const std::string end : {"\n", "\r\n", "\r"}) {
+    const fs::path f = s.write("t.csv", "# height_m: 0.02" + end + "t_s,force_N" + end + "0,1" + end + "0.5,x" + end);
+    const CsvTable t = CsvTable::read(f);
+    CHECK(t.columns() == std::vector<std::string>{"t_s", "force_N"});
+    CHECK(t.comment_field("height_m") == std::string("0.02"));
+    CHECK(t.number(0, "force_N") == 1.0);
+    CHECK_THROWS_WITH(t.number(1, "force_N"), Catch::StartsWith(f.string() + ":4:5: "));
+  }
+}

@@ -9,9 +9,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <system_error>
 #include <type_traits>
 
 namespace hertzdash {
@@ -202,6 +206,28 @@ void set_option(RunOptions& options, const RunOption& o, const SweepValue& v) {
 
 bool is_numeric(const RunOption& o) { return o.decl.type == ParameterType::number; }
 
+// The number of runs from the case's own numbers (each list's length, each range's and the
+// sample's count), refused beyond max_sweep_runs before any axis or draw is made: eight axes
+// of 1e7 values are refused at once, not after gigabytes of axes. A count that is no integer
+// >= 1 counts 1 here; the reader refuses it with its line.
+void check_run_count(const toml::table& doc, const std::string& source) {
+  auto count_of = [](const toml::node* n) {
+    const std::optional<std::int64_t> v = n ? n->value_exact<std::int64_t>() : std::nullopt;
+    return v && *v >= 1 ? static_cast<double>(*v) : 1.0;
+  };
+  double runs = 1;  // a double: no overflow on the way
+  if (const toml::table* grid = doc["grid"].as_table())
+    for (const auto& axis : *grid) {
+      if (const toml::array* list = axis.second.as_array()) runs *= std::max<double>(1, static_cast<double>(list->size()));
+      else if (const toml::table* range = axis.second.as_table()) runs *= count_of(range->get("count"));
+    }
+  if (const toml::table* sample = doc["sample"].as_table()) runs *= count_of(sample->get("count"));
+  if (runs > static_cast<double>(max_sweep_runs))
+    throw InvalidParameter("the number of runs of " + source, fmt::format("{:g}", runs),
+                           fmt::format("at most {} (grid points times sample count; split the case)", max_sweep_runs));
+}
+
+
 }  // namespace
 
 std::size_t SweepCase::size() const {
@@ -255,6 +281,7 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
   c.source = source;
   c.text = std::string(text);
   r.check_keys("case", doc, {"base", "grid", "sample", "output"}, "one of the sections [base], [grid], [sample], [output]");
+  check_run_count(doc, source);
   std::vector<const RunOption*> given;  // every option the case sets, once
   auto claim = [&](const RunOption& o, const std::string& key, const toml::node& node) {
     if (std::find(given.begin(), given.end(), &o) != given.end())
@@ -327,26 +354,26 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
     }
     if (const toml::node* summary = t.get("summary")) c.summary = r.boolean("output.summary", *summary);
   }
-  // The size, without overflowing on the way.
-  double runs = c.sample ? static_cast<double>(c.sample->count) : 1.0;
-  for (const SweepAxis& a : c.grid) runs *= static_cast<double>(a.values.size());
-  if (runs > static_cast<double>(max_sweep_runs))
-    throw InvalidParameter("the number of runs of " + source, fmt::format("{:g}", runs),
-                           fmt::format("at most {} (grid points times sample count; split the case)", max_sweep_runs));
   return c;
 }
 
 SweepCase read_sweep_case(const std::filesystem::path& path) {
-  constexpr std::uintmax_t max_bytes = 1 << 20;
-  std::error_code ec;
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) throw DataError(fmt::format("{}: cannot read the case file: {}", path.string(), ec.message()));
-  if (size > max_bytes) throw DataError(fmt::format("{}: {} bytes; a case file is at most 1 MiB", path.string(), size));
+  // Read, not sized first: a FIFO or a process substitution has no size, and a file that grows
+  // while it is read is stopped at the limit.
+  constexpr std::size_t max_bytes = 1 << 20;
+  auto cannot_read = [&path](int error) {
+    return DataError(fmt::format("{}: cannot read the case file: {}", path.string(), std::generic_category().message(error)));
+  };
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw DataError(fmt::format("{}: cannot open the case file", path.string()));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_sweep_case(text.str(), path.string());
+  if (!in) throw cannot_read(errno);
+  std::string text(max_bytes + 1, '\0');
+  errno = 0;
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) throw cannot_read(errno ? errno : EIO);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > max_bytes) throw DataError(fmt::format("{}: more than 1 MiB; a case file is at most 1 MiB", path.string()));
+  return parse_sweep_case(text, path.string());
 }
 
 std::filesystem::path default_sweep_output(const SweepCase& c) {
