@@ -125,7 +125,8 @@ TEST_CASE("CLI: a run that would not finish ends with exit 1 and says so instead
   // 1e6 steps (--max-step 1e-12 would need 8.9e10).
   // Issue 31: the elastic rod at 400 elements (804 state components) ran 190 s at rk4 --dt 1e-10
   // and exited 0, 203 s at --max-step 1e-10: its fixed-step runs are bounded by component-steps,
-  // 2e9 / 804 = 2.5e6 steps (the contact and 20 t_H after it, ~3e-3 s, need 3e7 of 1e-10 s), and
+  // 1e10 / 806 = 1.2e7 steps (the drop, the contact and 20 t_H after it, 0.024 s, need 2.4e8 of
+  // 1e-10 s), and
   // a largest step that alone needs more steps than CVODE's 1e6 is refused before any work.
   for (const char* args : {"--integrator rk4 --dt 1e-12", "--integrator euler --dt 1e-308", "--max-step 1e-12",
                            "--rod-model elastic --rod-elements 400 --integrator rk4 --dt 1e-10",
