@@ -1,6 +1,7 @@
 #include "cli/output_files.hpp"
 
 #include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/file_identity.hpp"
 #include "hertzdash/io/output_directories.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
@@ -64,47 +65,16 @@ void prepare_output_file(const std::string& option, const std::string& path, boo
   }
 }
 
-namespace {
-
-// What makes two paths one file: "device:inode" of a file that exists, else where it would be
-// made. nullopt: an output written through, which replaces nothing.
-std::optional<std::string> identity(const std::string& path, bool output) {
-  namespace fs = std::filesystem;
-  fs::path file(path);
-  if (output) {
-    try {
-      const std::optional<fs::path> replaced = replaced_file(file);
-      if (!replaced) return std::nullopt;
-      file = *replaced;
-    } catch (const std::runtime_error&) {  // its directory is still to be made (--mkdir): nothing in it exists
-      std::error_code ec;
-      file = fs::weakly_canonical(fs::absolute(file, ec), ec);
-    }
-  }
-  struct stat st {};
-  if (::stat(file.c_str(), &st) == 0) return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
-  std::error_code ec;
-  return fs::weakly_canonical(fs::absolute(file, ec), ec).string();
-}
-
-}  // namespace
-
 void refuse_shared_files(const std::vector<CommandFile>& inputs, const std::vector<CommandFile>& outputs) {
-  std::vector<std::pair<const CommandFile*, std::string>> seen;  // the inputs, then the outputs checked
-  for (const CommandFile& in : inputs)
-    if (!in.path.empty())
-      if (const std::optional<std::string> id = identity(in.path, false)) seen.emplace_back(&in, *id);
-  const std::size_t input_count = seen.size();
-  for (const CommandFile& out : outputs) {
-    if (out.path.empty()) continue;
-    const std::optional<std::string> id = identity(out.path, true);
-    if (!id) continue;
-    for (std::size_t i = 0; i < seen.size(); ++i)
-      if (seen[i].second == *id)
-        throw InvalidParameter(out.option, out.path,
-                               "another file than " + seen[i].first->option + " (" + seen[i].first->path + "), which " +
-                                   (i < input_count ? "is read" : "is written too") + ": they are the same file");
-    seen.emplace_back(&out, *id);
+  std::vector<std::string> input_paths, output_paths;
+  for (const CommandFile& f : inputs) input_paths.push_back(f.path);
+  for (const CommandFile& f : outputs) output_paths.push_back(f.path);
+  if (const std::optional<SharedFile> shared = find_shared_file(input_paths, output_paths)) {
+    const CommandFile& out = outputs[shared->output];
+    const CommandFile& other = shared->other_is_input ? inputs[shared->other] : outputs[shared->other];
+    throw InvalidParameter(out.option, out.path,
+                           "another file than " + other.option + " (" + other.path + "), which " +
+                               (shared->other_is_input ? "is read" : "is written too") + ": they are the same file");
   }
 }
 

@@ -8,6 +8,7 @@
 // UserWarnings. Every call releases the GIL while it integrates; simulate_many() runs its
 // impacts on all cores.
 #include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/file_identity.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -254,6 +255,8 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
                                        python_keyword(o.name)));
     set_option(options, o, value);
   }
+  if (find_shared_file({trace}, {curves}))  // curves= would replace the trace it fits (issue 31)
+    throw InvalidParameter("curves", curves, "another file than trace (" + trace + "), which is read: they are the same file");
   TraceFitSettings settings;
   settings.parameters = parse_fit_parameters(fit);
   if (!channels.empty()) settings.channels = parse_channels(channels, "channels");

@@ -78,6 +78,12 @@ std::string diagnostic_message(Diagnostic code, const ImpactSummary& s, const Dr
     case Diagnostic::not_separated:
       return "the rod did not separate from the ball within the simulated time (it came to rest on it); e_effective, "
              "rebound velocity and contact time are not defined";
+    case Diagnostic::no_rebound:
+      return fmt::format("the rod left the hemisphere still moving down, its centre of mass at {:.4g} m/s: the "
+                         "hemisphere sank away from it faster on its load cell (`cell-stiffness` {:g} N/m), so the "
+                         "contact ended without a rebound; e_effective is 0 and no bounce follows",
+                         s.elastic_rod ? -s.elastic_rod->separation_velocity_mps : 0.0,
+                         setup.elastic_rod ? setup.elastic_rod->cell_stiffness_N_per_m : 0.0);
   }
   return {};
 }

@@ -19,6 +19,7 @@ enum class Diagnostic : std::uint8_t {
   yield_onset,          ///< warning: the Hertz peak pressure exceeds the onset of yield
   large_deformation,    ///< warning: the deformation is not small against the ball radius
   not_separated,        ///< warning: the rod did not separate (e_effective, contact time undefined)
+  no_rebound,           ///< warning: the elastic rod separated still moving down (e_effective 0, no bounce)
 };
 
 struct DiagnosticInfo {
@@ -28,7 +29,7 @@ struct DiagnosticInfo {
 };
 
 /// Every code, in enumerator order (the order front ends report them in).
-inline constexpr std::array<DiagnosticInfo, 7> diagnostic_table{{
+inline constexpr std::array<DiagnosticInfo, 8> diagnostic_table{{
     {Diagnostic::integrator_fallback, "integrator_fallback", "note"},
     {Diagnostic::stability_limit, "stability_limit", "note"},
     {Diagnostic::under_resolved, "under_resolved", "warning"},
@@ -36,6 +37,7 @@ inline constexpr std::array<DiagnosticInfo, 7> diagnostic_table{{
     {Diagnostic::yield_onset, "yield_onset", "warning"},
     {Diagnostic::large_deformation, "large_deformation", "warning"},
     {Diagnostic::not_separated, "not_separated", "warning"},
+    {Diagnostic::no_rebound, "no_rebound", "warning"},
 }};
 
 constexpr const DiagnosticInfo& diagnostic_info(Diagnostic d) { return diagnostic_table[static_cast<std::size_t>(d)]; }

@@ -110,6 +110,7 @@ class ElasticImpactObserver {
     s_->t_separation_s = t_onset_s_ + t;
     s_->separation_deformation_m = std::max(sys_->deformation_m(y), 0.0);
     s_->rebound_velocity_mps = std::max(-sys_->centre_of_mass_velocity_mps(y), 0.0);
+    s_->elastic_rod->separation_velocity_mps = -sys_->centre_of_mass_velocity_mps(y);
   }
 
  private:

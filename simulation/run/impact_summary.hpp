@@ -33,6 +33,8 @@ struct ElasticRodReport {
   double stable_step_s = 0;              ///< fixed-step integrators: the stability-limited step (0: adaptive)
   double step_used_s = 0;                ///< fixed-step integrators: min(--dt, stable_step_s) (0: adaptive)
   double peak_load_cell_force_N = 0;     ///< largest force the load cell measured
+  double separation_velocity_mps = 0;    ///< the centre of mass's velocity at separation, upward positive
+                                         ///< (negative: it left the hemisphere still moving down)
   double energy_in_J = 0;                ///< (1/2) m v0^2 plus the work of gravity on the rod during contact
   double energy_rigid_body_out_J = 0;    ///< (1/2) m v_cm^2 at separation
   double energy_rod_vibration_J = 0;     ///< kinetic (relative to the centre of mass) plus strain, at separation

@@ -63,6 +63,7 @@ DiagnosticSet impact_diagnostics(const ImpactSummary& s, const DropTestSetup& se
   if (hertz_profile_error(s.max_deformation_m, setup.ball_radius_m) > hertz_profile_error_limit)
     d.add(Diagnostic::large_deformation);
   if (!s.separated) d.add(Diagnostic::not_separated);
+  if (s.separated && s.elastic_rod && s.elastic_rod->separation_velocity_mps < 0) d.add(Diagnostic::no_rebound);
   return d;
 }
 

@@ -251,6 +251,11 @@ inline constexpr std::array result_fields{
                 .meaning = "the rod's material damping plus the cell's damping", .in = {.json = true, .sweep = true},
                 .text_line = 19,
                 .value = &result_field_detail::of_elastic_rod<&ElasticRodReport::energy_dissipated_material_J>},
+    ResultField{.name = "separation_velocity_mps", .group = "elastic_rod", .unit = "m/s",
+                .meaning = "the centre of mass's velocity at separation, upward positive; negative: the rod left the "
+                           "hemisphere still moving down (warning `no_rebound`)",
+                .in = {.json = true},
+                .value = &result_field_detail::of_elastic_rod<&ElasticRodReport::separation_velocity_mps>},
     ResultField{.name = "energy_balance_error_J", .group = "elastic_rod", .unit = "J",
                 .meaning = "`energy_in_J` minus the five terms above", .in = {.json = true, .sweep = true},
                 .text_line = 20,

@@ -478,6 +478,14 @@ def test_fit_refuses_solver_options_and_bad_lists(tmp_path):
         hertzdash.fit(str(trace), rtol=1e-9)
     with pytest.raises(ValueError, match="invalid fit = "):
         hertzdash.fit(str(trace), fit="ball-colour")
+    # curves= naming the trace, also through a link, would replace it (issue 31): refused, the trace kept.
+    before = trace.read_bytes()
+    link = tmp_path / "link.csv"
+    link.symlink_to(trace)
+    for curves in (trace, link):
+        with pytest.raises(ValueError, match=r"invalid curves = .*: must be another file than trace .*the same file"):
+            hertzdash.fit(str(trace), curves=str(curves))
+    assert trace.read_bytes() == before
 
 
 @pytest.fixture(scope="module")
