@@ -65,7 +65,7 @@ paper: figures deps-paper
 
 # Work precision against Boost.Odeint, GSL and CVODE at full repeats (a few minutes):
 # prints the table and ratios, writes the CSVs the figure is drawn from, the paper's
-# \perf macros, and the measured blocks of docs/performance.md and README.md.
+# \perf macros, and the measured block of docs/performance.md.
 # It first times `make figures` from the built tree (into a scratch directory).
 bench: build
 	$(need_bench)
@@ -73,7 +73,7 @@ bench: build
 	validation/run_studies.sh $(BUILD) $(BUILD)/figures-timing > /dev/null; \
 	ms=$$(( ($$(date +%s%N) - start) / 1000000 )); \
 	$(BUILD)/bench/work_precision_peers --full --out $(FIGURES) --generated paper/generated --performance-page docs/performance.md \
-	  --performance-page README.md --figures-ms $$ms
+	  --figures-ms $$ms
 	validation/draw_figure.sh bench/work_precision_peers/work_precision_peers.gp $(FIGURES)
 
 # The whole ctest suite under AddressSanitizer + UndefinedBehaviorSanitizer, every report fatal

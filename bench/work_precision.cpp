@@ -518,7 +518,7 @@ void report_figures_time(double seconds, unsigned cores, Report& report) {
 
 // ---- The pages' generated block.
 
-/// The generated performance block of docs/performance.md and README.md: the machine, then
+/// The generated performance block of docs/performance.md (--performance-page): the machine, then
 /// the summary table and lines.
 std::string performance_block(const Machine& machine, const std::string& summary_md) {
   return fmt::format("Measured on {} ({} cores, shared), `make bench` (times are medians; regenerate on a quiet "

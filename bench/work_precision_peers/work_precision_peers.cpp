@@ -15,8 +15,8 @@
 // `make figures` runs it briefly, like every study (validation/run_studies.sh), so
 // the figure stays current; --reduced is quicker still, for the pipeline test.
 // `make bench` runs it with --full: many more repeats, the table and ratios printed,
-// and (with --performance-page, once per page) the generated block of docs/performance.md and
-// README.md refreshed; --figures-ms
+// and (with --performance-page, once per page) the generated block of docs/performance.md
+// refreshed; --figures-ms
 // is the measured wall time of `make figures` from a built tree, reported there.
 //
 // Writes OUT/work_precision_peers.csv and OUT/work_precision_peers_drop.csv
