@@ -115,11 +115,19 @@ TEST_CASE("CLI sweep: a bad case exits 2 with no file, every run failing exits 1
   r = run_in(dir.path, "sweep missing.toml");
   CHECK(r.exit_code == 2);
   // Every run invalid: the rows say why, the exit code says it failed.
-  dir.write("all.toml", "[grid]\nrestitution = [1.5, 2]\n");
+  // (Each speed is valid alone; with the steel rod on the nylon ball, above 81.3 m/s the Hertz
+  // deformation passes the ball's radius.)
+  dir.write("all.toml", "[grid]\nimpact-velocity = [100, 200]\n");
   r = run_in(dir.path, "sweep all.toml --quiet");
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.err, Catch::Contains("2 of 2 runs failed"));
-  CHECK_THAT(slurp(dir.path / "all.csv"), Catch::Contains("must be in (0, 1]"));
+  CHECK_THAT(slurp(dir.path / "all.csv"), Catch::Contains("must be below 81.3"));
+  // A value its declaration refuses stops the sweep before any run (issue 32).
+  dir.write("stel.toml", "[base]\nrod = \"stel\"\n[grid]\nheight = [0.01, 0.02]\n");
+  r = run_in(dir.path, "sweep stel.toml");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains("invalid base.rod (stel.toml line 2) = stel: must be one of: steel"));
+  CHECK(!fs::exists(dir.path / "stel.csv"));
 }
 
 TEST_CASE("CLI sweep: Ctrl-C stops the runs and writes no file", "[cli][sweep]") {

@@ -59,3 +59,13 @@ TEST_CASE("docs/simulate.md lists every integrator of the table, in its order", 
   }
   CHECK(page.substr(start + key.size(), end - start - key.size()) == expected);
 }
+
+TEST_CASE("The README is a front page: the two commands first, under 12,000 characters", "[readme]") {
+  // Issue 32: the README had grown to a reference (the measured speed table among it); the
+  // detail lives in docs/, the README says what hertzdash is and links there.
+  const std::string readme = slurp(std::filesystem::path(HERTZDASH_SOURCE_DIR) / "README.md");
+  CHECK(readme.size() < 12000);
+  CHECK(readme.rfind("# hertzdash\n\n```sh\nmake figures", 0) == 0);
+  CHECK(readme.find("\nmake test") < 200);
+  CHECK(readme.find("perf:begin") == std::string::npos);  // the measured table is docs/performance.md's
+}

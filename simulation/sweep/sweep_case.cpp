@@ -97,11 +97,28 @@ class CaseReader {
   }
 
   // One value of an option, typed as the option is.
+  // A value of option `o`, checked against its declaration here, before any run (issue 32:
+  // `rod = "stel"` in [base] failed every run instead).
   SweepValue value(const RunOption& o, const std::string& key, const toml::node& node) const {
     switch (o.decl.type) {
       case ParameterType::flag: return boolean(key, node);
-      case ParameterType::text: return text(key, node);
-      case ParameterType::number: return number(key, node);
+      case ParameterType::text: {
+        const std::string v = text(key, node);
+        bool valid = o.decl.choices.empty();
+        for (std::string c : split_option_list(std::string(o.decl.choices)))
+          valid = valid || c.erase(0, c.find_first_not_of(' ')) == v;
+        if (!valid) fail(key, node, v, "one of: " + std::string(o.decl.choices));
+        return v;
+      }
+      case ParameterType::number: {
+        const double v = number(key, node);
+        try {
+          require_in_range(o.decl, v);
+        } catch (const InvalidParameter& e) {
+          fail(key, node, e.value, e.valid_range);
+        }
+        return v;
+      }
     }
     return {};
   }
