@@ -19,10 +19,12 @@
 #include <chrono>
 #include <csignal>
 #include <deque>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 
 namespace hertzdash::cli {
 
@@ -181,9 +183,12 @@ int run_sweep_command(const SweepCommandOptions& opt) {
     create_output_directories(p.string(), opt.mkdir);
     lock(p);
   }
-  // As a pair: a signal leaves both files new or both as they were.
-  std::vector<std::pair<std::filesystem::path, std::string>> files{{out, sweep_table(c, all, timing)}};
-  if (summary) files.emplace_back(summary_out, sweep_summary_table(c, all));
+  // As a pair: a signal leaves both files new or both as they were. The per-run table goes to
+  // its file as it is formatted, never held whole (a million runs are ~100 MB of text).
+  std::vector<std::pair<std::filesystem::path, ContentPieces>> files{
+      {out, [&](const std::function<void(std::string_view)>& write) { write_sweep_table(c, all, timing, write); }}};
+  const std::string summary_text = summary ? sweep_summary_table(c, all) : std::string();
+  if (summary) files.emplace_back(summary_out, [&](const std::function<void(std::string_view)>& write) { write(summary_text); });
   write_files_atomically(files);
 
   std::size_t failed = 0;

@@ -9,7 +9,9 @@
 #include <deque>
 #include <cstdio>
 #include <fcntl.h>
+#include <functional>
 #include <stdexcept>
+#include <string_view>
 #include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
@@ -28,7 +30,7 @@ namespace fs = std::filesystem;
 std::string reason_of(int error) { return std::generic_category().message(error); }
 
 /// Writes all of `content` to `fd`; 0, or the errno of the failure.
-int write_all(int fd, const std::string& content) {
+int write_all(int fd, std::string_view content) {
   std::size_t done = 0;
   while (done < content.size()) {
     const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
@@ -86,15 +88,25 @@ Target resolve(const fs::path& path) {
   }
 }
 
-void write_through(const Target& t, const std::string& content) {
+/// Every piece of `content` to `fd`: 0, or the errno of the first write that failed (the
+/// pieces after it are still made, and dropped).
+int write_pieces(int fd, const ContentPieces& content) {
+  int error = 0;
+  content([&](std::string_view piece) {
+    if (error == 0) error = write_all(fd, piece);
+  });
+  return error;
+}
+
+void write_through(const Target& t, const ContentPieces& content) {
   if (const int fd = own_descriptor(t.path); fd >= 0) {
     std::fflush(nullptr);  // what the program printed to that descriptor comes first
-    if (const int error = write_all(fd, content)) fail(t.what, reason_of(error));
+    if (const int error = write_pieces(fd, content)) fail(t.what, reason_of(error));
     return;
   }
   const int fd = ::open(t.path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
   if (fd < 0) fail(t.what, reason_of(errno));
-  int error = write_all(fd, content);
+  int error = write_pieces(fd, content);
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error != 0) fail(t.what, reason_of(error));
 }
@@ -123,7 +135,7 @@ fs::path directory_of(const fs::path& file) {
 
 /// `content` in the temporary `tmp` (registered for removal by the caller), synced, with the
 /// permissions of the file it replaces; 0, or the errno of the failure (the temporary removed).
-int write_temporary(const Target& t, const fs::path& tmp, const std::string& content) {
+int write_temporary(const Target& t, const fs::path& tmp, const ContentPieces& content) {
   struct stat previous {};
   const bool replacing = ::stat(t.path.c_str(), &previous) == 0;
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
@@ -131,7 +143,13 @@ int write_temporary(const Target& t, const fs::path& tmp, const std::string& con
   // The file replaced keeps its permissions (0600 stays 0600, 0755 stays 0755); a new one has
   // 0666 less the umask. Owner and group are the writer's; set-id and sticky bits are not copied.
   int error = replacing && ::fchmod(fd, previous.st_mode & 0777) != 0 ? errno : 0;
-  if (error == 0) error = write_all(fd, content);
+  try {
+    if (error == 0) error = write_pieces(fd, content);
+  } catch (...) {  // the content's maker failed: no temporary stays
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    throw;
+  }
   if (error == 0 && ::fsync(fd) != 0) error = errno;  // the data on disk before the name points to it
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error != 0) ::unlink(tmp.c_str());
@@ -145,6 +163,15 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
 }
 
 void write_files_atomically(const std::vector<std::pair<fs::path, std::string>>& files) {
+  std::vector<std::pair<fs::path, ContentPieces>> pieces;
+  for (const auto& file : files) {  // no structured binding: clang 14 (make fuzz) cannot capture one
+    const std::string& content = file.second;
+    pieces.emplace_back(file.first, [&content](const std::function<void(std::string_view)>& write) { write(content); });
+  }
+  write_files_atomically(pieces);
+}
+
+void write_files_atomically(const std::vector<std::pair<fs::path, ContentPieces>>& files) {
   std::vector<Target> targets;
   for (const auto& file : files) targets.push_back(resolve(file.first));
   std::vector<fs::path> tmp_paths(files.size());  // empty: written through
@@ -157,7 +184,14 @@ void write_files_atomically(const std::vector<std::pair<fs::path, std::string>>&
     if (targets[i].write_through) continue;
     const fs::path tmp = temporary_path(targets[i].path);
     registered.emplace_back(tmp);
-    if (const int error = write_temporary(targets[i], tmp, files[i].second)) {
+    int error = 0;
+    try {
+      error = write_temporary(targets[i], tmp, files[i].second);
+    } catch (...) {  // a content's maker failed: the temporaries before it go too
+      remove_temporaries(0);
+      throw;
+    }
+    if (error != 0) {
       remove_temporaries(0);
       fail(targets[i].what, reason_of(error));
     }

@@ -10,8 +10,10 @@
 // - A directory is an error, and so is a missing parent directory: none is created here
 //   (the CLI's --mkdir does that, docs/output-files.md).
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -25,6 +27,14 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 /// written and synced first, then all are renamed with the signals held (SignalHold), so a
 /// signal leaves every file replaced or none. A failure before the renames replaces none.
 void write_files_atomically(const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+
+/// A file's content made piece by piece: it calls `write` with each piece in order, so that a
+/// large table goes to its file as it is formatted instead of being held whole. It must give
+/// the same pieces each time it is called (a file written through is written after the renames).
+using ContentPieces = std::function<void(const std::function<void(std::string_view)>& write)>;
+
+/// write_files_atomically with each content given in pieces.
+void write_files_atomically(const std::vector<std::pair<std::filesystem::path, ContentPieces>>& files);
 
 /// The file a write to `path` replaces by rename (symbolic links followed, parent directory
 /// canonical; it may not exist yet), or nullopt if the write goes through (a FIFO, a device,

@@ -6,6 +6,7 @@
 
 #include <iterator>
 #include <stdexcept>
+#include <utility>
 
 namespace hertzdash {
 
@@ -44,11 +45,15 @@ void CsvWriter::add_row(const std::vector<Cell>& cells) {
   body_ += '\n';
 }
 
-std::string CsvWriter::str() const {
+std::string CsvWriter::head() const {
   std::string header;
   for (std::size_t i = 0; i < columns_.size(); ++i) header += (i ? "," : "") + columns_[i];
-  return provenance_header(what_, parameters_) + comments_ + header + "\n" + body_;
+  return provenance_header(what_, parameters_) + comments_ + header + "\n";
 }
+
+std::string CsvWriter::str() const { return head() + body_; }
+
+std::string CsvWriter::take_rows() { return std::exchange(body_, std::string()); }
 
 void CsvWriter::save(const std::filesystem::path& path) const { write_file_atomically(path, str()); }
 

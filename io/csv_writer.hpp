@@ -25,6 +25,11 @@ class CsvWriter {
   void add_row(const std::vector<Cell>& cells);
 
   std::string str() const;
+  /// The provenance header, comments and column names: str() without the rows.
+  std::string head() const;
+  /// The rows added since the last call, taken out of the writer: a long table written in
+  /// pieces (head(), then take_rows() every few thousand rows) is never held whole.
+  std::string take_rows();
   void save(const std::filesystem::path& path) const;
 
  private:

@@ -169,7 +169,9 @@ std::string diagnostic_counts_text(const SweepResults& results) {
   return out;
 }
 
-std::string sweep_table(const SweepCase& c, const SweepResults& results, const std::string& timing_line) {
+void write_sweep_table(const SweepCase& c, const SweepResults& results, const std::string& timing_line,
+                       const std::function<void(std::string_view)>& write) {
+  constexpr std::size_t rows_per_piece = 4096;
   std::vector<std::string> columns{"run"};
   for (const std::string& p : c.parameter_columns()) columns.push_back(p);
   for (const std::string& o : c.outputs) columns.push_back(o);
@@ -179,6 +181,7 @@ std::string sweep_table(const SweepCase& c, const SweepResults& results, const s
                 case_parameters(c), columns);
   add_case_text(csv, c);
   csv.add_comment(timing_line);
+  write(csv.head());
   for (std::size_t run = 0; run < c.size(); ++run) {
     std::vector<CsvWriter::Cell> row{static_cast<long>(run)};
     for (const SweepValue& v : c.parameters(run)) row.push_back(cell(v));
@@ -189,8 +192,15 @@ std::string sweep_table(const SweepCase& c, const SweepResults& results, const s
     row.emplace_back(diagnostic_names(results.diagnostics[run]));
     row.emplace_back(results.errors[run]);
     csv.add_row(row);
+    if ((run + 1) % rows_per_piece == 0) write(csv.take_rows());
   }
-  return csv.str();
+  write(csv.take_rows());
+}
+
+std::string sweep_table(const SweepCase& c, const SweepResults& results, const std::string& timing_line) {
+  std::string table;
+  write_sweep_table(c, results, timing_line, [&table](std::string_view piece) { table += piece; });
+  return table;
 }
 
 std::string sweep_summary_table(const SweepCase& c, const SweepResults& results) {

@@ -13,7 +13,9 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hertzdash {
@@ -44,6 +46,11 @@ SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs,
 /// one line that may differ between two makings of the same sweep). `results` hold all runs in
 /// order.
 std::string sweep_table(const SweepCase& c, const SweepResults& results, const std::string& timing_line);
+
+/// The same table given to `write` in pieces of a few thousand rows (write_files_atomically's
+/// ContentPieces): a sweep of millions of runs goes to its file without being held as text.
+void write_sweep_table(const SweepCase& c, const SweepResults& results, const std::string& timing_line,
+                       const std::function<void(std::string_view)>& write);
 
 /// Per output (and per value of every text or true/false grid option, e.g. per damping law):
 /// runs, failed, mean, sd, min, q05, q25, median, q75, q95, max of the runs that gave a value.
