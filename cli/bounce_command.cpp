@@ -40,10 +40,12 @@ class ProgressLine {
                              done, impacts_, elapsed, terminal_ ? "" : "\n")
               << std::flush;
   }
-  /// Ends a redrawn line, so that what follows starts on a line of its own.
-  void finish() const {
+  /// Ends a redrawn line, so that what follows (the result, or an error) starts on a line of its own.
+  ~ProgressLine() {
     if (drawn_ && terminal_) std::cerr << "\n";
   }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
 
  private:
   int impacts_;
@@ -100,13 +102,16 @@ Command add_bounce_command(CLI::App& app) {
 
   return {sub, [opt]() {
             opt->bounce.impacts = parse_bounces(opt->bounces);
-            auto progress = std::make_shared<ProgressLine>(opt->bounce.impacts);
-            opt->bounce.on_impact = [progress](std::size_t done) { (*progress)(done); };
-            const BounceRun r = run_bounce(opt->run, load_paper_parameters(), opt->bounce, opt->interval_target);
-            progress->finish();
-            report_diagnostics(run_diagnostics(r));
-            if (opt->json) std::cout << to_json(r).dump(2) << "\n";
-            else print_text(r);
+            std::optional<BounceRun> r;
+            {
+              ProgressLine progress(opt->bounce.impacts);  // its line ends before the result or an error
+              opt->bounce.on_impact = [&progress](std::size_t done) { progress(done); };
+              r = run_bounce(opt->run, load_paper_parameters(), opt->bounce, opt->interval_target);
+              opt->bounce.on_impact = nullptr;
+            }
+            report_diagnostics(run_diagnostics(*r));
+            if (opt->json) std::cout << to_json(*r).dump(2) << "\n";
+            else print_text(*r);
             return 0;
           }};
 }

@@ -157,9 +157,9 @@ int run_sweep_command(const SweepCommandOptions& opt) {
                          .threads_used = &threads_used});
   }
   if (threads_used < std::min<std::size_t>(threads, mine.size()))
-    std::cerr << fmt::format("hertzdash: note: --threads {} asked for more threads than the system could create; the "
-                             "sweep ran on {}\n",
-                             threads, threads_used);
+    std::cerr << fmt::format("hertzdash: note: {} threads asked for{}, more than the system could create; this process "
+                             "ran its share of the sweep on {}\n",
+                             threads, opt.threads ? " (--threads)" : "", threads_used);
   if (group.any(interrupted)) {
     if (group.rank() == 0) std::cerr << "hertzdash: sweep interrupted; no file written\n";
     return 130;

@@ -125,6 +125,9 @@ TEST_CASE("Bad case files are refused naming the key, its line and what is allow
       // Values against their declarations, before any run (issue 32: every run failed instead).
       {"[base]\nrod = \"stel\"\n", "base.rod (bad.toml line 2) = stel: must be one of: steel, duralumin-a"},
       {"[grid]\nrestitution = [0.8, 1.5]\n", "grid.restitution (bad.toml line 2) = 1.5: must be in (0, 1]"},
+      {"[grid]\nrestitution = { from = 0.5, to = 1.5, count = 3 }\n",
+       "grid.restitution (bad.toml line 2) = 1.5: must be in (0, 1] (point 3 of the range)"},
+      {"[grid]\nrod-elements = { from = 2, to = 21, count = 3 }\n", "grid.rod-elements (bad.toml line 2) = 11.5"},
       {"[grid]\ndamping = [\"hongo\", \"hunt\"]\n", "grid.damping (bad.toml line 2) = hunt: must be one of: none, hongo"},
       {"[grid]\nheight = []\n", "grid.height (bad.toml line 2)"},
       {"[grid]\nheight = { from = 1, to = 2 }\n", "grid.height.count"},

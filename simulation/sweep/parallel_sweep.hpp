@@ -114,8 +114,10 @@ void parallel_for_chunks(std::size_t count, MakeState&& make_state, Body&& body,
         const std::size_t begin = next.fetch_add(chunk);
         if (begin >= count || stopped()) return;
         const std::size_t end = std::min(count, begin + chunk);
-        for (std::size_t i = begin; i < end; ++i) body(state, i);
-        done += end - begin;
+        std::size_t i = begin;  // a cancel (Ctrl-C) waits for one run per thread, not for a chunk
+        for (; i < end && !stopped(); ++i) body(state, i);
+        done += i - begin;
+        if (i < end) return;
       }
     } catch (...) {
       std::lock_guard lock(error_mutex);
@@ -141,7 +143,7 @@ void parallel_for_chunks(std::size_t count, MakeState&& make_state, Body&& body,
         while (!finished_cv.wait_for(lock, period, [&] { return finished; }))
           sweep_detail::print_progress(options, done.load(), count, n_threads, elapsed(), terminal);
       });
-    } catch (const std::system_error&) {  // no thread for the progress line: the final line only
+    } catch (...) {  // no thread for the progress line: the final line only
     }
   }
 
@@ -152,7 +154,7 @@ void parallel_for_chunks(std::size_t count, MakeState&& make_state, Body&& body,
   pool.reserve(n_threads);
   try {
     for (unsigned k = 0; k < n_threads; ++k) pool.emplace_back(worker);
-  } catch (const std::system_error&) {  // EAGAIN: a process or thread limit, or no memory for a stack
+  } catch (...) {  // std::system_error (EAGAIN: a process or thread limit, no memory for a stack), bad_alloc
   }
   if (options.threads_used) *options.threads_used = std::max<unsigned>(1, static_cast<unsigned>(pool.size()));
   if (pool.empty()) worker();

@@ -173,6 +173,11 @@ class CaseReader {
       const double v = k == 0 ? from : k + 1 == n ? to
                        : spacing == "log" ? from * std::pow(to / from, f)
                                           : from + f * (to - from);
+      try {  // each point against the option's declaration, as a list's values are
+        require_in_range(o.decl, v);
+      } catch (const InvalidParameter& e) {
+        fail(key, node, e.value, e.valid_range + fmt::format(" (point {} of the range)", k + 1));
+      }
       values.emplace_back(v);
     }
     return values;
