@@ -1,4 +1,5 @@
 #include "hertzdash/simulation/options/run_options.hpp"
+#include "hertzdash/simulation/options/declared_choice.hpp"
 #include "hertzdash/simulation/options/hertz_scale_refusal.hpp"
 
 #include "hertzdash/model/drop_test_parameters.hpp"
@@ -352,6 +353,13 @@ std::string given_text(const RunOptions& options, const RunOption& o) {
       o.field);
 }
 
+bool is_declared_choice(const ParameterDecl& d, const std::string& value) {
+  if (d.choices.empty()) return true;
+  for (std::string c : split_option_list(std::string(d.choices)))
+    if (c.erase(0, c.find_first_not_of(' ')) == value) return true;
+  return false;
+}
+
 std::vector<std::string> split_option_list(const std::string& list) {
   std::vector<std::string> items;
   std::size_t begin = 0;
@@ -387,10 +395,8 @@ void check_given_options(const RunOptions& o) {
       require_in_range(option.decl, v);
     } else if (option.decl.type == ParameterType::text) {
       const std::string value = given_text(o, option);
-      bool valid = false;
-      for (std::string c : split_option_list(std::string(option.decl.choices)))
-        valid = valid || c.erase(0, c.find_first_not_of(' ')) == value;
-      if (!valid) throw InvalidParameter(option.name, value, "one of: " + std::string(option.decl.choices));
+      if (!is_declared_choice(option.decl, value))
+        throw InvalidParameter(option.name, value, "one of: " + std::string(option.decl.choices));
     }
   }
   // Then what reads each.

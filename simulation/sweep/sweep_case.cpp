@@ -2,6 +2,7 @@
 
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/options/declared_choice.hpp"
 #include "hertzdash/simulation/sweep/sweep_outputs.hpp"
 
 #include <toml++/toml.h>
@@ -104,10 +105,7 @@ class CaseReader {
       case ParameterType::flag: return boolean(key, node);
       case ParameterType::text: {
         const std::string v = text(key, node);
-        bool valid = o.decl.choices.empty();
-        for (std::string c : split_option_list(std::string(o.decl.choices)))
-          valid = valid || c.erase(0, c.find_first_not_of(' ')) == v;
-        if (!valid) fail(key, node, v, "one of: " + std::string(o.decl.choices));
+        if (!is_declared_choice(o.decl, v)) fail(key, node, v, "one of: " + std::string(o.decl.choices));
         return v;
       }
       case ParameterType::number: {
