@@ -24,6 +24,7 @@ do for [format in 'pdf png'] {
   set ylabel 'Gap (mm)'
   set yrange [0:22]
   set autoscale xfix
+  set xtics 0.1  # the default 0.05 steps ran their labels together
   plot gaps using 't_s':(1e3*column('gap_m')) with lines ls 1
   set origin 0.5, 0.25
   set size 0.5, 0.75
