@@ -52,7 +52,7 @@ if readelf -d "$module" | grep -q 'R\(UN\)\?PATH'; then
   echo "FAILED: $module has a run path: $(readelf -d "$module" | grep 'R\(UN\)\?PATH')" >&2; exit 1
 fi
 
-"$hertzdash" simulate --rod steel --height 0.02 --json > "$work/program.json"
+"$hertzdash" simulate --rod steel --height 0.02 --json > "$work/program.json" 2> "$work/program.err"
 # Isolated (-I: no PYTHON* variables, not the script's directory on sys.path), from the test's
 # directory: neither tree can supply the module.
 (cd "$work" && "$work/venv/bin/python" -I -B "$src/tests/python_package_check.py" "$work/program.json")
