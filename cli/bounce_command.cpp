@@ -6,8 +6,12 @@
 // the target: the e the paper should have put into its dashpot.
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
+#include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
+#include "cli/trace_file.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/run/bounce_trace.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <fmt/format.h>
@@ -59,7 +63,8 @@ struct BounceCommandOptions {
   BounceOptions bounce;
   double bounces = BounceOptions{}.impacts;  // read as a number, so that 2.5 gets the range in its message
   std::optional<double> interval_target;
-  bool json = false;
+  std::string trace_path;
+  bool json = false, mkdir = false;
 };
 
 void print_text(const BounceRun& r) {
@@ -99,15 +104,36 @@ Command add_bounce_command(CLI::App& app) {
   add_number_option(*sub, "--target-interval-restitution", opt->interval_target,
                     "Calibrate: find the input e whose first interval ratio is this, in (0,1]");
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
+  add_output_file_option(*sub, "--trace", opt->trace_path,
+                         "Write the sequence's time series to this CSV file: every contact at the integrator's steps, "
+                         "each flight in closed form (rigid rod only)");
+  add_mkdir_flag(*sub, opt->mkdir);
 
   return {sub, [opt]() {
             opt->bounce.impacts = parse_bounces(opt->bounces);
+            prepare_output_file("--trace", opt->trace_path, opt->mkdir);
+            if (!opt->trace_path.empty() && opt->run.rod_model == "elastic")
+              throw InvalidParameter("rod-model", "elastic",
+                                     "rigid with `trace` (the elastic rod's flights are integrated with the rod "
+                                     "ringing; its sequence records no time series)");
             std::optional<BounceRun> r;
             {
               ProgressLine progress(opt->bounce.impacts);  // its line ends before the result or an error
               opt->bounce.on_impact = [&progress](std::size_t done) { progress(done); };
               r = run_bounce(opt->run, load_paper_parameters(), opt->bounce, opt->interval_target);
               opt->bounce.on_impact = nullptr;
+            }
+            if (!opt->trace_path.empty()) {
+              Parameters inputs = r->inputs;
+              inputs.emplace_back("integrator_used", to_string(r->sequence.integrator_used));
+              create_output_directories(opt->trace_path, opt->mkdir);
+              write_model_trace(opt->trace_path, bounce_trace(r->sequence, r->setup, r->law, r->solver),
+                                "hertzdash bounce --trace: each contact at the integrator's steps, each flight in "
+                                "closed form",
+                                "hertzdash bounce: the sequence's time series (t_s and displacement_m since the first "
+                                "contact onset; x_m < 0 in flight, the gap; force compressive positive; accel, velocity "
+                                "and displacement of the rod downward positive)",
+                                inputs);
             }
             report_diagnostics(run_diagnostics(*r));
             if (opt->json) std::cout << to_json(*r).dump(2) << "\n";

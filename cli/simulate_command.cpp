@@ -3,7 +3,7 @@
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
-#include "hertzdash/io/csv_writer.hpp"
+#include "cli/trace_file.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/reports/result_output.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -53,17 +53,12 @@ void print_text(const SimulateRun& r) {
 }
 
 void write_trace(const SimulateRun& r, const std::string& path) {
-  Parameters header = r.inputs;
-  header.emplace_back("integrator_used", to_string(r.summary.integrator_used));
-  CsvWriter csv("hertzdash simulate: contact-phase time series (x = deformation, force compressive "
-                "positive, accel/velocity of the rod downward positive)",
-                header, trace_columns());
-  for (const TraceSample& s : r.trace) {
-    std::vector<CsvWriter::Cell> row;
-    for (const TraceColumn& c : trace_column_table) row.emplace_back(s.*c.field);
-    csv.add_row(row);
-  }
-  csv.save(path);
+  Parameters inputs = r.inputs;
+  inputs.emplace_back("integrator_used", to_string(r.summary.integrator_used));
+  write_model_trace(path, r.trace, "hertzdash simulate --trace: the contact phase at every integrator step",
+                    "hertzdash simulate: contact-phase time series (t_s and displacement_m since contact onset; force "
+                    "compressive positive; accel, velocity and displacement of the rod downward positive)",
+                    inputs);
 }
 
 }  // namespace
@@ -74,8 +69,9 @@ Command add_simulate_command(CLI::App& app) {
   add_run_options(*sub, opt->run);
   add_output_file_option(*sub, "--trace", opt->trace_path, "Write the contact-phase time series to this CSV file");
   sub->add_option("--trace-format", opt->trace_format,
-                  "model: every integrator step, all state columns; measured: a virtual experiment in the measured-trace "
-                  "format (data/measurements/README.md), labelled synthetic")
+                  "model: every integrator step, the measured-trace columns and the model's own; measured: a virtual "
+                  "experiment (sampled, filtered, noisy); both in the measured-trace format "
+                  "(data/measurements/README.md), labelled synthetic")
       ->capture_default_str();
   add_number_option(*sub, "--sample-rate", opt->chain.sample_rate_Hz, "Virtual measurement: sampling rate [Hz]");
   add_number_option(*sub, "--anti-alias", opt->chain.anti_alias_cutoff_Hz,

@@ -119,7 +119,7 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
     const std::string s = trim(line);
     if (s.empty()) continue;
     if (s[0] == '#') {
-      if (t.columns_.empty()) t.comments_.push_back({trim(s.substr(1)), n, comment_column(line)});
+      if (t.rows_.empty()) t.comments_.push_back({trim(s.substr(1)), n, comment_column(line)});
       continue;
     }
     Fields fields = split(line);

@@ -1,6 +1,8 @@
 #pragma once
-// Reading the CSV files under data/: '#' comment lines, one header row, then rows
-// with exactly as many fields. A UTF-8 byte-order mark and LF, CRLF or lone CR line ends are accepted; a
+// Reading CSV files: one header row (the column names), then rows with exactly as many fields;
+// '#' comment lines anywhere. The comment lines before the first row (above or below the header
+// row: the suite writes its provenance below the column names, io/csv_writer.hpp) are the
+// file's header lines, "# key: value". A UTF-8 byte-order mark and LF, CRLF or lone CR line ends are accepted; a
 // file larger than max_table_bytes is refused before it is read. Numbers are decimal
 // (io/decimal_number.hpp). Every error names the file, and where it applies the line and
 // column: "FILE:LINE:COL: column 'NAME': ...".
@@ -34,13 +36,14 @@ class CsvTable {
 
   const std::vector<std::string>& columns() const { return columns_; }
   std::size_t rows() const { return rows_.size(); }
-  /// A comment line before the header, without the leading '#' (trimmed), where it is.
+  /// A comment line before the first row (above or below the column names), without the leading
+  /// '#' (trimmed), where it is.
   struct Comment {
     std::string text;
     std::size_t line, column;  ///< 1-based; the column where `text` starts
   };
   const std::vector<Comment>& comments() const { return comments_; }
-  /// The value (trimmed) of the comment line "key: value" before the header, if there is one;
+  /// The value (trimmed) of the comment line "key: value" before the first row, if there is one;
   /// throws DataError naming FILE:LINE:COL if two lines give `key`.
   std::optional<std::string> comment_field(const std::string& key) const;
 

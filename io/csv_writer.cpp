@@ -11,11 +11,16 @@
 namespace hertzdash {
 
 namespace {
-std::string quoted_if_needed(const std::string& v) {
-  if (v.find_first_of(",\"\n") == std::string::npos) return v;
-  std::string q = "\"";
-  for (char c : v) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
+// A text cell as every reader splits it the same way: numpy.genfromtxt does not read quoted
+// fields, so a cell holds no comma, double quote or line break (';', '\'' and ' ' stand for them).
+std::string plain_text_cell(const std::string& v) {
+  std::string out = v;
+  for (char& c : out) {
+    if (c == ',') c = ';';
+    else if (c == '"') c = '\'';
+    else if (c == '\n' || c == '\r') c = ' ';
+  }
+  return out;
 }
 }  // namespace
 
@@ -38,7 +43,7 @@ void CsvWriter::add_row(const std::vector<Cell>& cells) {
           using T = std::decay_t<decltype(v)>;
           if constexpr (std::is_same_v<T, double>) fmt::format_to(std::back_inserter(body_), "{}", v);
           else if constexpr (std::is_same_v<T, long>) body_ += std::to_string(v);
-          else body_ += quoted_if_needed(v);
+          else body_ += plain_text_cell(v);
         },
         cells[i]);
   }
@@ -48,7 +53,7 @@ void CsvWriter::add_row(const std::vector<Cell>& cells) {
 std::string CsvWriter::head() const {
   std::string header;
   for (std::size_t i = 0; i < columns_.size(); ++i) header += (i ? "," : "") + columns_[i];
-  return provenance_header(what_, parameters_) + comments_ + header + "\n";
+  return header + "\n" + provenance_header(what_, parameters_) + comments_;
 }
 
 std::string CsvWriter::str() const { return head() + body_; }

@@ -19,6 +19,11 @@ const std::vector<std::string>& measured_quantity_columns() {
   return columns;
 }
 
+const std::vector<std::string>& model_trace_columns() {
+  static const std::vector<std::string> columns{"x_m", "xdot_mps", "contact_force_N", "rod_accel_mps2"};
+  return columns;
+}
+
 const std::vector<TraceColumnUnit>& trace_column_units() {
   static const std::vector<TraceColumnUnit> units{
       {"t_s", "t_s", 1.0},
@@ -48,7 +53,8 @@ const TraceColumnUnit* find_column_unit(const std::string& column) {
 std::string allowed_columns() {
   std::string s;
   for (const TraceColumnUnit& u : trace_column_units()) s += (s.empty() ? "" : ", ") + std::string(u.column);
-  return s;
+  for (const std::string& c : model_trace_columns()) s += ", " + c;
+  return s + " (the last four: a model trace's own, never fitted)";
 }
 
 }  // namespace
@@ -80,7 +86,12 @@ MeasuredTrace read_measured_trace(const std::filesystem::path& path) {
 
   // Each column is a quantity with its unit (t_us, force_kN, ...), read into SI; one column per quantity.
   std::map<std::string, std::string> column_of;  // SI quantity -> the file's column
+  const std::vector<std::string>& model_only = model_trace_columns();
   for (const std::string& c : t.columns()) {
+    if (std::find(model_only.begin(), model_only.end(), c) != model_only.end()) {
+      m.model_columns.push_back(c);
+      continue;
+    }
     const TraceColumnUnit* u = find_column_unit(c);
     if (!u) throw DataError(file + ": unknown column '" + c + "' (allowed: " + allowed_columns() + ")");
     if (!column_of.emplace(u->quantity, c).second)
@@ -128,11 +139,13 @@ std::vector<double>* quantity(MeasuredTrace& m, const std::string& name) { retur
 
 const std::vector<double>* quantity(const MeasuredTrace& m, const std::string& name) { return quantity_in(m, name); }
 
+std::string measured_trace_header(const MeasuredTrace& m) {
+  return fmt::format("# source: {}\n# rod: {}\n# height_m: {}\n# synthetic: {}\n", m.source, m.rod, m.height_m,
+                     m.synthetic ? "true" : "false");
+}
+
 std::string measured_trace_text(const MeasuredTrace& m, const std::string& what, const Parameters& parameters) {
   std::ostringstream out;
-  out << "# source: " << m.source << "\n# rod: " << m.rod << "\n"
-      << fmt::format("# height_m: {}\n", m.height_m) << "# synthetic: " << (m.synthetic ? "true" : "false") << "\n"
-      << provenance_header(what, parameters);
   std::vector<std::string> names{"t_s"};
   std::vector<const std::vector<double>*> columns{&m.t_s};
   for (const std::string& c : measured_quantity_columns())
@@ -141,7 +154,11 @@ std::string measured_trace_text(const MeasuredTrace& m, const std::string& what,
       columns.push_back(q);
     }
   for (std::size_t i = 0; i < names.size(); ++i) out << (i ? "," : "") << names[i];
-  out << "\n";
+  // The header lines give source, rod, height_m and synthetic: a parameter of the same key is theirs.
+  Parameters others;
+  for (const auto& p : parameters)
+    if (p.first != "source" && p.first != "rod" && p.first != "height_m" && p.first != "synthetic") others.push_back(p);
+  out << "\n" << measured_trace_header(m) << provenance_header(what, others);
   for (std::size_t r = 0; r < m.t_s.size(); ++r) {
     for (std::size_t i = 0; i < columns.size(); ++i) {
       const double v = (*columns[i])[r];

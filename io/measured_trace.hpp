@@ -1,9 +1,10 @@
 #pragma once
 // Measured drop-test traces to overlay on the model (Figs. 5 and 6). The format is
-// defined in data/measurements/README.md: provenance comment lines "# key: value"
-// (source, rod, height_m; optional synthetic), a header row with t_s and at least
-// one of force_N, accel_mps2, velocity_mps, displacement_m (or the same quantities in the
-// other units of trace_column_units(), read into SI), then one row per sample.
+// defined in data/measurements/README.md: a header row with t_s and at least one of force_N,
+// accel_mps2, velocity_mps, displacement_m (or the same quantities in the other units of
+// trace_column_units(), read into SI), header lines "# key: value" (source, rod, height_m;
+// optional synthetic) above or below it, then one row per sample. The trace the model writes
+// (`hertzdash simulate --trace`) is in this format too, with model_trace_columns() besides.
 // No measured trace ships: the paper printed its traces only as plots, and no
 // machine-readable copy exists.
 #include "hertzdash/io/provenance.hpp"
@@ -24,10 +25,18 @@ struct MeasuredTrace {
   double height_m = 0;     ///< drop height [m]
   bool synthetic = false;  ///< true for a made-up trace (tests, demonstrations)
   std::vector<double> t_s, force_N, accel_mps2, velocity_mps, displacement_m;
+  std::vector<std::string> model_columns;  ///< the file's model_trace_columns(): read past, never fitted
 };
 
 /// The quantities a measured trace may carry besides the time, by their SI column names.
 const std::vector<std::string>& measured_quantity_columns();
+
+/// The columns a model trace (`hertzdash simulate --trace`) carries besides t_s and the measured
+/// quantities: x_m (deformation), xdot_mps (its rate), contact_force_N (the force at the contact,
+/// which the load cell reads only through an elastic rod's dynamics) and rod_accel_mps2 (the rod's
+/// centre-of-mass acceleration). No instrument of the drop test measures them: the reader accepts
+/// them and names them in MeasuredTrace::model_columns; nothing fits them.
+const std::vector<std::string>& model_trace_columns();
 
 /// Standard gravity [m/s^2], the unit of an acceleration column in g (accel_g).
 inline constexpr double standard_gravity_mps2 = 9.80665;
@@ -48,8 +57,12 @@ const std::vector<double>* quantity(const MeasuredTrace& m, const std::string& n
 /// Read and check one file; throws DataError naming the file (and line) of any defect.
 MeasuredTrace read_measured_trace(const std::filesystem::path& path);
 
+/// The four header lines of `m`: source, rod, height_m, synthetic ("# key: value").
+std::string measured_trace_header(const MeasuredTrace& m);
+
 /// The file of `m` in the measurement format (SI columns; NaN written as an empty field):
-/// the four header lines, then provenance_header(what, parameters), then the samples.
+/// the column names, the four header lines, provenance_header(what, parameters) without the
+/// parameters those lines give, the samples.
 std::string measured_trace_text(const MeasuredTrace& m, const std::string& what, const Parameters& parameters);
 
 /// measured_trace_text written atomically to `path`.

@@ -15,8 +15,9 @@ const char* git_revision();
 /// Ordered name = value pairs describing a run (units in the names).
 using Parameters = std::vector<std::pair<std::string, std::string>>;
 
-/// Header comment lines, each starting with '#': generator, revision, then one line
-/// per parameter. No timestamp, so identical runs give identical files.
+/// Header comment lines, each "# key: value" (io/csv_table.hpp reads them back with
+/// comment_field): contents (`what`), generator, git_revision, then one line per parameter.
+/// No timestamp, so identical runs give identical files.
 std::string provenance_header(const std::string& what, const Parameters& parameters);
 
 }  // namespace hertzdash

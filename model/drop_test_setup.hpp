@@ -30,6 +30,13 @@ struct DropTestSetup {
   /// hemisphere's load cell (model/elastic_drop_test.hpp); rod.E_Pa is then also the bar's
   /// modulus and must be finite.
   std::optional<ElasticRodSetup> elastic_rod;
+  /// The rod of Tables 1-3 the set-up started from ("steel"; empty for one built otherwise): the
+  /// run's description names it as `rod`.
+  std::string rod_preset;
+  /// Whether `restitution` is the preset's measured e (Table 2) although the pair it was measured
+  /// on was changed (a mass, modulus, Poisson ratio or radius of its own): flagged
+  /// preset_restitution, as e belongs to the preset's rod on the hemisphere, not to this pair.
+  bool restitution_of_other_pair = false;
 };
 
 /// Throws InvalidParameter naming the parameter and its valid range; includes validate_hertz_scale.

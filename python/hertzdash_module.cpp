@@ -177,7 +177,8 @@ py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
   for (const TraceColumn& c : trace_column_table) {
     py::array_t<double> column(static_cast<py::ssize_t>(samples.size()));
     auto a = column.mutable_unchecked<1>();
-    for (std::size_t i = 0; i < samples.size(); ++i) a(static_cast<py::ssize_t>(i)) = samples[i].*c.field;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+      a(static_cast<py::ssize_t>(i)) = c.value(samples[i], run.trace.front());
     out[py::str(c.name)] = column;
   }
   return out;
@@ -574,9 +575,11 @@ PYBIND11_MODULE(hertzdash, m) {
          options)
             .c_str());
   m.def("trace", &py_trace, py::arg("grid_step") = py::none(),
-        ("trace(grid_step=None, **options) -> dict of NumPy arrays\n\nThe contact phase of `simulate`: t_s, x_m "
-         "(deformation), xdot_mps, force_N (compressive positive), accel_mps2, rod_displacement_m, rod_velocity_mps "
-         "(the rod's, downward positive); the columns of `hertzdash simulate --trace`. Samples at the integrator's "
+        ("trace(grid_step=None, **options) -> dict of NumPy arrays\n\nThe contact phase of `simulate`, the columns of "
+         "`hertzdash simulate --trace` (data/measurements/README.md): t_s since contact onset; force_N and accel_mps2, "
+         "what the load cell and the accelerometer read; velocity_mps and displacement_m (since onset) of the rod, "
+         "downward positive; the model's own x_m (deformation), xdot_mps, contact_force_N (compressive positive) and "
+         "rod_accel_mps2. Samples at the integrator's "
          "steps, or, with grid_step [s], on a uniform grid from contact onset (cubic Hermite interpolation of the "
          "positions and velocities, linear of force and acceleration).\n\n" +
          options)

@@ -21,7 +21,7 @@ namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-constexpr const char* trace_header = "t_s,x_m,xdot_mps,force_N";
+constexpr const char* trace_header = "t_s,force_N,accel_mps2,velocity_mps,displacement_m,x_m";
 
 }  // namespace
 

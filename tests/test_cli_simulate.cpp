@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -101,35 +102,41 @@ TEST_CASE("CLI simulate --trace: contact phase under a provenance header", "[cli
   const auto j = nlohmann::json::parse(r.out);
   const auto t = hertzdash::CsvTable::read(path);
   std::filesystem::remove(path);
-  CHECK(t.columns() == std::vector<std::string>{"t_s", "x_m", "xdot_mps", "force_N", "accel_mps2",
-                                                "rod_displacement_m", "rod_velocity_mps", "load_cell_force_N",
-                                                "accelerometer_mps2"});
+  // The measured-trace format (data/measurements/README.md), then the model's own columns.
+  CHECK(t.columns() == std::vector<std::string>{"t_s", "force_N", "accel_mps2", "velocity_mps", "displacement_m",
+                                                "x_m", "xdot_mps", "contact_force_N", "rod_accel_mps2"});
   // The rigid model's instruments: the cell reads the contact force, the accelerometer the rod.
   for (std::size_t i = 0; i < t.rows(); ++i) {
-    CHECK(t.number(i, "load_cell_force_N") == t.number(i, "force_N"));
-    CHECK(t.number(i, "accelerometer_mps2") == t.number(i, "accel_mps2"));
+    CHECK(t.number(i, "force_N") == t.number(i, "contact_force_N"));
+    CHECK(t.number(i, "accel_mps2") == t.number(i, "rod_accel_mps2"));
   }
   bool has_revision = false, has_mass = false;
   for (const auto& c : t.comments()) {
     has_revision |= c.text.rfind("git_revision: ", 0) == 0;
-    has_mass |= c.text == "mass_kg = 0.778";
+    has_mass |= c.text == "mass_kg: 0.778";
   }
   CHECK(has_revision);
   CHECK(has_mass);
+  CHECK(t.comment_field("rod") == std::string("steel"));
+  CHECK(t.comment_field("height_m") == std::string("0.02"));
+  CHECK(t.comment_field("synthetic") == std::string("true"));
   REQUIRE(t.rows() > 10);
-  // Starts at onset (x = 0, approach speed), ends at separation (x = 0, rebound).
+  // Starts at onset (t = 0, x = 0, approach speed), ends at separation (x = 0, rebound).
+  CHECK(t.number(0, "t_s") == 0);
   CHECK(std::abs(t.number(0, "x_m")) < 1e-12);
   CHECK(t.number(0, "xdot_mps") == Approx(j["impact_velocity_mps"].get<double>()));
   const std::size_t last = t.rows() - 1;
   CHECK(std::abs(t.number(last, "x_m")) < 1e-12);
   CHECK(-t.number(last, "xdot_mps") == Approx(j["rebound_velocity_mps"].get<double>()));
-  CHECK(t.number(last, "t_s") - t.number(0, "t_s") == Approx(j["contact_time_s"].get<double>()));
-  // The peak-force event puts a sample on the maximum; eq. (1): accel = g - F/m.
+  CHECK(t.number(last, "t_s") == Approx(j["contact_time_s"].get<double>()));
+  // The peak-force event puts a sample on the maximum; eq. (1): accel = g - F/m; the rigid rod
+  // moves with the deformation on a fixed hemisphere: displacement since onset = x, velocity = x'.
   double peak = 0;
   for (std::size_t i = 0; i < t.rows(); ++i) {
     peak = std::max(peak, t.number(i, "force_N"));
     CHECK(t.number(i, "accel_mps2") == Approx(9.80665 - t.number(i, "force_N") / 0.778).margin(1e-9));
-    CHECK(t.number(i, "rod_displacement_m") == Approx(0.02 + t.number(i, "x_m")).margin(1e-15));
+    CHECK(t.number(i, "displacement_m") == Approx(t.number(i, "x_m")).margin(1e-15));
+    CHECK(t.number(i, "velocity_mps") == t.number(i, "xdot_mps"));
   }
   CHECK(peak == Approx(j["peak_force_N"].get<double>()).epsilon(1e-15));
 }
@@ -160,8 +167,8 @@ TEST_CASE("CLI simulate --rod-model elastic: the instruments, the energy account
   // the cell's dashpot lie between), and the top face's accelerometer is not the centre of mass.
   double cell_gap = 0, accel_gap = 0;
   for (std::size_t i = 0; i < t.rows(); ++i) {
-    cell_gap = std::max(cell_gap, std::abs(t.number(i, "load_cell_force_N") - t.number(i, "force_N")));
-    accel_gap = std::max(accel_gap, std::abs(t.number(i, "accelerometer_mps2") - t.number(i, "accel_mps2")));
+    cell_gap = std::max(cell_gap, std::abs(t.number(i, "force_N") - t.number(i, "contact_force_N")));
+    accel_gap = std::max(accel_gap, std::abs(t.number(i, "accel_mps2") - t.number(i, "rod_accel_mps2")));
   }
   CHECK(cell_gap > 1e-3 * j["peak_force_N"].get<double>());
   CHECK(accel_gap > 0.05 * j["peak_force_N"].get<double>() / 0.778);  // > 5 % of the peak deceleration
@@ -178,4 +185,33 @@ TEST_CASE("CLI simulate --rod-model elastic: the instruments, the energy account
   REQUIRE(gbs.exit_code == 0);
   CHECK(nlohmann::json::parse(gbs.out)["integrator_used"] == "dopri5");
   CHECK(gbs.err.find("--rod-model elastic") != std::string::npos);
+}
+
+TEST_CASE("CLI simulate: a pair changed on top of a preset keeps the preset's e with a note, and the inputs name the preset",
+          "[cli]") {
+  // Table 2's e was measured for each rod on the hemisphere. A run that gives the pair a mass of
+  // its own but no --restitution still uses the steel rod's 0.795: said, not silent.
+  auto codes = [](const nlohmann::json& j) {
+    std::vector<std::string> c;
+    for (const auto& w : j["warnings"]) c.push_back(w["code"]);
+    return c;
+  };
+  const auto custom = run_cli("simulate --mass 1.0 --json");
+  REQUIRE(custom.exit_code == 0);
+  const auto j = nlohmann::json::parse(custom.out);
+  CHECK(j["inputs"]["rod"] == "steel");
+  CHECK(j["inputs"]["restitution"] == 0.795);
+  const auto c = codes(j);
+  CHECK(std::find(c.begin(), c.end(), "preset_restitution") != c.end());
+  CHECK_THAT(custom.err, Catch::Contains("hertzdash: note: the input e = 0.795 is the steel rod's, measured for that "
+                                         "rod on the hemisphere (Table 2); the run changed the pair"));
+  CHECK_THAT(custom.err, Catch::Contains("give --restitution for it"));
+  // With its own e, or with a law that reads none, or with the preset as it is: no note.
+  for (const char* args : {"--mass 1.0 --restitution 0.8", "--mass 1.0 --damping none", "--rod duralumin-a"}) {
+    INFO(args);
+    const auto r = run_cli(std::string("simulate --json ") + args);
+    REQUIRE(r.exit_code == 0);
+    const auto k = codes(nlohmann::json::parse(r.out));
+    CHECK(std::find(k.begin(), k.end(), "preset_restitution") == k.end());
+  }
 }

@@ -4,6 +4,7 @@
 // must exist, be non-empty and, for a CSV, carry exactly its declared columns and at
 // least one data row.
 // The physics behind the figures is tested elsewhere; this checks the plumbing.
+#include "python_csv_readers.hpp"
 #include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
 
@@ -68,6 +69,7 @@ TEST_CASE("run_studies.sh --reduced produces every file the study manifests decl
   REQUIRE(status == 0);
 
   int studies = 0, files = 0;
+  std::vector<fs::path> csv_files;
   std::vector<fs::directory_entry> study_dirs;  // <layer>/<study>/ for layers validation and bench
   for (const char* layer : {"validation", "bench"})
     for (const auto& dir : fs::directory_iterator(source / layer)) study_dirs.push_back(dir);
@@ -89,8 +91,12 @@ TEST_CASE("run_studies.sh --reduced produces every file the study manifests decl
       CHECK(table.columns() == e.columns);
       CHECK(table.rows() >= 1);
       CHECK_FALSE(table.comments().empty());  // the provenance header
+      csv_files.push_back(file);
     }
   }
+  const auto readers = hertzdash::test::read_with_python_readers(csv_files, scratch);
+  INFO(readers.report);
+  CHECK(readers.passed);
   CHECK(studies >= 4);  // at least this issue's: paper_figures, rods_h20, height_sweep, paper_tables
   CHECK(files >= 14);
 }
@@ -124,7 +130,7 @@ TEST_CASE("a trace in the measurements directory is overlaid on Fig. 5", "[pipel
   CHECK(overlay.columns() == std::vector<std::string>{"t_s", "force_N", "accel_mps2", "velocity_mps", "displacement_m"});
   CHECK(overlay.rows() == 3);
   CHECK(overlay.number(1, "force_N") == 1200.0);
-  CHECK(read_text(out / "fig5_measured_1.csv").find("synthetic = true") != std::string::npos);
+  CHECK(read_text(out / "fig5_measured_1.csv").find("synthetic: true") != std::string::npos);
   CHECK_FALSE(fs::exists(out / "fig6_measured_1.csv"));
   CHECK(fs::file_size(out / "fig5.png") > 0);
 }

@@ -314,7 +314,7 @@ TEST_CASE("no option is ignored: each set-up option a run reads changes what sim
     j.erase("git_revision");
     std::string text = j.dump();
     for (const TraceSample& t : r.trace)
-      for (const TraceColumn& c : trace_column_table) text += fmt::format(" {}", t.*c.field);
+      for (const TraceColumn& c : trace_column_table) text += fmt::format(" {}", c.value(t, r.trace.front()));
     return text;
   };
   std::map<std::pair<std::string, std::string>, std::string> base_reports;  // (law, rig) -> report

@@ -1,6 +1,7 @@
 // The examples of the README and of the pages in docs/ are true: every ```console block
-// that starts with "$ build/hertzdash ARGS" shows exactly what `hertzdash ARGS` prints; and
-// docs/simulate.md names every integrator.
+// that starts with "$ build/hertzdash ARGS" shows exactly what `hertzdash ARGS` prints, stderr
+// included, as a terminal shows it: the program's notes and warnings on stderr come before the
+// result it prints on stdout; and docs/simulate.md names every integrator.
 #include "cli_runner.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
@@ -34,7 +35,7 @@ TEST_CASE("README and docs/: every hertzdash example prints what the page shows"
       const auto r = run_cli(args);
       INFO(page.filename().string() << " example: hertzdash " << args);
       CHECK(r.exit_code == 0);
-      CHECK(r.out == expected);
+      CHECK(r.err + r.out == expected);
       ++examples;
       readme_examples += page.filename() == "README.md";
     }

@@ -49,5 +49,5 @@ key_row = "set key at graph 0.03, 0.5 left center vertical maxrows 3 width -2"
 key_panel = "unset logscale; unset border; unset tics; unset grid; unset xlabel; unset ylabel; unset title; unset label; " . \
             "set xrange [0:1]; set yrange [0:1]; set key at graph 0, 0.5 left center Left reverse noopaque nobox font ',8' " . \
             "samplen 2 spacing 1.0 width 0"
-# Read a "# name = value" provenance line from a CSV written by CsvWriter.
-csv_parameter(file, name) = system(sprintf("sed -n 's/^# %s = //p' '%s' | head -n 1", name, file))
+# Read a "# name: value" provenance line from a CSV written by CsvWriter.
+csv_parameter(file, name) = system(sprintf("sed -n 's/^# %s: //p' '%s' | head -n 1", name, file))

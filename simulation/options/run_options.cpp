@@ -158,7 +158,9 @@ std::vector<RunOption> make_run_options() {
     return [f](Setup s) -> V { return s.elastic_rod ? V((*s.elastic_rod).*f) : V(); };
   };
   std::vector<RunOption> o{
-      option(rod_decl, &R::rod, G::setup),
+      described(rod_decl, &R::rod, G::setup, {}, [](Setup s, Solver) -> Text {
+        return s.rod_preset.empty() ? Text() : Text(s.rod_preset);
+      }),
       option(p::height, &R::height_m, G::setup, {}, [](Setup s) -> V { return s.height_m; },
              [](Setup s, Solver) -> Text { return s.impact_velocity_mps ? Text() : Text(number_text(s.height_m)); }),
       option(p::impact_velocity, &R::impact_velocity_mps, G::setup, {}, [](Setup s) -> V { return approach_speed(s); }),
@@ -456,6 +458,11 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
       throw InvalidParameter(key, format_value(value), "a number a damping law declares (`hertzdash models`)");
     s.damping.law_values.emplace_back(option->decl.key, value);
   }
+  const std::vector<std::string>& reading_e = find_run_option("restitution")->readers.laws;  // the dissipative laws
+  const bool law_reads_e = !o.viscous_time_constant_s &&
+                           std::find(reading_e.begin(), reading_e.end(), o.damping) != reading_e.end();
+  s.restitution_of_other_pair = law_reads_e && !o.restitution &&
+                                (o.mass_kg || o.ball_E_Pa || o.ball_nu || o.ball_radius_m || o.rod_E_Pa || o.rod_nu);
   s.elastic_rod = resolve_elastic_rod(o, paper);
   try {
     validate(s);

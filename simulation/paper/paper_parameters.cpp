@@ -138,6 +138,7 @@ DropTestSetup paper_setup(const PaperParameters& p, const std::string& rod_name,
   s.restitution = rod.restitution;
   s.height_m = height_m;
   s.gravity_mps2 = p.gravity_mps2;
+  s.rod_preset = rod_name;
   return s;
 }
 

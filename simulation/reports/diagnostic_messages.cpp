@@ -84,6 +84,11 @@ std::string diagnostic_message(Diagnostic code, const ImpactSummary& s, const Dr
                          "contact ended without a rebound; e_effective is 0 and no bounce follows",
                          s.elastic_rod ? -s.elastic_rod->separation_velocity_mps : 0.0,
                          setup.elastic_rod ? setup.elastic_rod->cell_stiffness_N_per_m : 0.0);
+    case Diagnostic::preset_restitution:
+      return fmt::format("the input e = {:g} is the {} rod's, measured for that rod on the hemisphere (Table 2); the "
+                         "run changed the pair (a mass, modulus, Poisson ratio or radius of its own), for which e is "
+                         "not known: give `restitution` for it",
+                         setup.restitution, setup.rod_preset);
   }
   return {};
 }

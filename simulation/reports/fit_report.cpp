@@ -8,7 +8,9 @@
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -98,7 +100,8 @@ nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper) 
   j["schema_version"] = json_schema_version;
   j["trace"] = {{"path", run.trace.path.string()},   {"source", run.trace.source},
                 {"rod", run.trace.rod},               {"height_m", run.trace.height_m},
-                {"synthetic", run.trace.synthetic},   {"samples", run.trace.t_s.size()}};
+                {"synthetic", run.trace.synthetic},   {"samples", run.trace.t_s.size()},
+                {"model_columns", run.trace.model_columns}};
   nlohmann::ordered_json fits = nlohmann::ordered_json::array();
   for (const TraceFit& f : run.fits) fits.push_back(to_json(f, paper));
   j["fits"] = fits;
@@ -135,10 +138,35 @@ void write_fit_curves(const TraceFit& f, const MeasuredTrace& trace, const std::
   csv.save(path);
 }
 
+namespace {
+
+// Whether the user gave the preset's pair a mass, modulus, Poisson ratio or radius of its own:
+// one of those set in the fitted options that the fit did not estimate.
+bool pair_given(const TraceFit& f) {
+  const RunOptions& o = f.fitted_options;
+  const std::pair<const char*, bool> pair_options[] = {
+      {"mass", o.mass_kg.has_value()},     {"ball-E", o.ball_E_Pa.has_value()}, {"ball-nu", o.ball_nu.has_value()},
+      {"ball-radius", o.ball_radius_m.has_value()}, {"rod-E", o.rod_E_Pa.has_value()}, {"rod-nu", o.rod_nu.has_value()}};
+  for (const auto& option : pair_options) {  // no structured binding: clang 14 (make fuzz) cannot capture one
+    const bool fitted = std::any_of(f.parameters.begin(), f.parameters.end(),
+                                    [&](const FittedParameter& p) { return p.name == option.first; });
+    if (option.second && !fitted) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParameters& paper) {
   std::vector<RunDiagnostic> w;
   auto warn = [&w](const char* code, std::string message) { w.push_back({"warning", code, std::move(message), {}}); };
   if (run.trace.synthetic) warn("synthetic_trace", "the trace says 'synthetic: true': it is not a measurement");
+  if (!run.trace.model_columns.empty())
+    w.push_back({"note", "model_columns",
+                 fmt::format("the trace's model columns ({}) are not fitted: no instrument of the drop test measures "
+                             "them (data/measurements/README.md)",
+                             fmt::join(run.trace.model_columns, ", ")),
+                 {}});
   for (const TraceFit& f : run.fits) {
     const std::string law = run.fits.size() > 1 ? " (" + f.law + ")" : "";
     if (!f.converged)
@@ -163,6 +191,8 @@ std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParamet
     DropTestSetup s = resolve_setup(f.fitted_options, paper);
     s.impact_velocity_mps = approach_speed(s);  // the fit's model starts at contact onset
     for (RunDiagnostic& d : impact_diagnostic_list(f.model_summary, s, f.model_solver, {})) {
+      // A fitted modulus or radius estimates the pair the trace was measured on; it does not change it.
+      if (d.code == diagnostic_info(Diagnostic::preset_restitution).name && !pair_given(f)) continue;
       d.message = "the fitted model" + law + ": " + d.message;
       w.push_back(std::move(d));
     }

@@ -79,21 +79,25 @@ struct TraceSample {
   double xddot_mps2;          ///< x'' (rigid rod on a fixed hemisphere: accel_mps2); not a column
 };
 
-/// The --trace columns: name and field, in column order.
+/// The --trace columns (the measured-trace format, data/measurements/README.md, and the model's
+/// own columns, model_trace_columns()): name and value, in column order. Time and rod
+/// displacement count from `onset`, the trace's first sample (contact onset), as a measurement's do;
+/// force_N and accel_mps2 are what the load cell and the accelerometer read.
 struct TraceColumn {
   const char* name;
-  double TraceSample::*field;
+  double (*value)(const TraceSample& s, const TraceSample& onset);
 };
 inline constexpr std::array<TraceColumn, 9> trace_column_table{{
-    {"t_s", &TraceSample::t_s},
-    {"x_m", &TraceSample::x_m},
-    {"xdot_mps", &TraceSample::xdot_mps},
-    {"force_N", &TraceSample::force_N},
-    {"accel_mps2", &TraceSample::accel_mps2},
-    {"rod_displacement_m", &TraceSample::rod_displacement_m},
-    {"rod_velocity_mps", &TraceSample::rod_velocity_mps},
-    {"load_cell_force_N", &TraceSample::load_cell_force_N},
-    {"accelerometer_mps2", &TraceSample::accelerometer_mps2},
+    {"t_s", [](const TraceSample& s, const TraceSample& onset) { return s.t_s - onset.t_s; }},
+    {"force_N", [](const TraceSample& s, const TraceSample&) { return s.load_cell_force_N; }},
+    {"accel_mps2", [](const TraceSample& s, const TraceSample&) { return s.accelerometer_mps2; }},
+    {"velocity_mps", [](const TraceSample& s, const TraceSample&) { return s.rod_velocity_mps; }},
+    {"displacement_m",
+     [](const TraceSample& s, const TraceSample& onset) { return s.rod_displacement_m - onset.rod_displacement_m; }},
+    {"x_m", [](const TraceSample& s, const TraceSample&) { return s.x_m; }},
+    {"xdot_mps", [](const TraceSample& s, const TraceSample&) { return s.xdot_mps; }},
+    {"contact_force_N", [](const TraceSample& s, const TraceSample&) { return s.force_N; }},
+    {"rod_accel_mps2", [](const TraceSample& s, const TraceSample&) { return s.accel_mps2; }},
 }};
 std::vector<std::string> trace_columns();
 

@@ -64,6 +64,7 @@ DiagnosticSet impact_diagnostics(const ImpactSummary& s, const DropTestSetup& se
     d.add(Diagnostic::large_deformation);
   if (!s.separated) d.add(Diagnostic::not_separated);
   if (s.separated && s.elastic_rod && s.elastic_rod->separation_velocity_mps < 0) d.add(Diagnostic::no_rebound);
+  if (setup.restitution_of_other_pair) d.add(Diagnostic::preset_restitution);
   return d;
 }
 
