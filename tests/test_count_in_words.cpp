@@ -25,7 +25,7 @@ TEST_CASE("count_of_total_in_words: every count of four reads right before \"of 
   CHECK(sentence(4) == "in all of the paper's four drops");
 }
 
-TEST_CASE("count_of_total_in_words: two of two are both; a count outside 0..total is refused", "[io][latex]") {
+TEST_CASE("count_of_total_in_words: two of two are both, and a count outside 0..total is refused", "[io][latex]") {
   CHECK(count_of_total_in_words(2, 2) == "both");
   CHECK(count_of_total_in_words(1, 2) == "one");
   CHECK(count_of_total_in_words(0, 2) == "none");
