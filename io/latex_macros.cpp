@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace hertzdash {
 
@@ -53,6 +54,22 @@ std::string latex_escaped(std::string_view text) {
     }
   }
   return out;
+}
+
+std::string number_in_words(int n) {
+  static constexpr const char* words[] = {"zero", "one", "two",   "three",  "four",   "five",  "six",
+                                          "seven", "eight", "nine", "ten", "eleven", "twelve"};
+  if (n < 0) throw std::invalid_argument("number_in_words: negative count " + std::to_string(n));
+  return n <= 12 ? words[n] : std::to_string(n);
+}
+
+std::string count_of_total_in_words(int count, int total) {
+  if (count < 0 || count > total) {
+    throw std::invalid_argument(fmt::format("count_of_total_in_words: {} of {} is not a count", count, total));
+  }
+  if (count == 0) return "none";
+  if (count == total) return total == 2 ? "both" : "all";
+  return number_in_words(count);
 }
 
 }  // namespace hertzdash

@@ -37,4 +37,13 @@ std::string latex_scientific(double v);
 /// \textasciitilde{}, \textasciicircum{}, \textbackslash{}; every other byte is kept.
 std::string latex_escaped(std::string_view text);
 
+/// n >= 0 in words as prose writes it: "zero" to "twelve", digits from 13 on.
+std::string number_in_words(int n);
+
+/// How many of `total` things, as the quantifier before "of the ...", worded so that the
+/// sentence reads right for every count: "none", "all" ("both" when total is 2), else the
+/// number in words. "in \macro{} of the paper's four drops" reads "in none of", "in three of",
+/// "in all of". Throws std::invalid_argument unless 0 <= count <= total.
+std::string count_of_total_in_words(int count, int total);
+
 }  // namespace hertzdash

@@ -6,10 +6,12 @@
 #    of the article's sources (paper.tex, references.tex, sections/), so nothing left in
 #    the source tree's paper/generated or paper/figures can stand in for a missing
 #    output, and build the article there with paper/build.sh (which fails on LaTeX
-#    errors, undefined references, margin overruns, bitmap fonts, unused outputs).
-# 2. Break the tree in three ways, one at a time, and require paper/build.sh to fail:
-#    a generated macro file removed, a reference to a label that does not exist, and
-#    a figure that the article does not include.
+#    errors, undefined references, margin overruns, '??' in the text, sentences joined
+#    without a space, bitmap fonts, unused outputs).
+# 2. Break the tree in five ways, one at a time, and require paper/build.sh to fail:
+#    a generated macro file removed, a reference to a label that does not exist, a
+#    figure that the article does not include, a "??" in the text, and a sentence run
+#    into the next without a space (a % after a full stop).
 set -euo pipefail
 build=${1:?usage: paper_builds.sh BUILD_DIR SOURCE_DIR}
 src=${2:?usage: paper_builds.sh BUILD_DIR SOURCE_DIR}
@@ -54,3 +56,11 @@ expect_failure undefined_reference "sec:no-such-section"
 fresh_tree "$tmp/unused_figure"
 cp "$tmp/paper/paper.pdf" "$tmp/unused_figure/figures/not_in_the_article.pdf"
 expect_failure unused_figure "figures/not_in_the_article.pdf"
+
+fresh_tree "$tmp/question_marks"
+echo 'A reference typed by hand as ?? stays unresolved.' >>"$tmp/question_marks/sections/conclusions.tex"
+expect_failure question_marks "'??' in the text"
+
+fresh_tree "$tmp/joined_sentence"
+printf '%s\n' 'One sentence ends here.%' ' Another starts without a space.' >>"$tmp/joined_sentence/sections/conclusions.tex"
+expect_failure joined_sentence "here.Another"

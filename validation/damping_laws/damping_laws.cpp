@@ -14,7 +14,8 @@
 // with tension allowed and with the clamp (--no-tension: contact ends where the force
 // reaches zero). Expected from the closed forms: Kelvin-Voigt and the x^{1/4} DEM dashpot
 // lie on the diagonal with tension allowed and above it clamped (same curve for both);
-// the Hunt-Crossley family is unaffected by the clamp; the paper's law is above the
+// the viscoelastic law (kuwabara-kono), whose constant is calibrated at the impact's own speed,
+// returns e too; the Hunt-Crossley family is unaffected by the clamp; the paper's law is above the
 // diagonal (its eq. 6 is the small-damping form, and its amplitude estimate eq. 10
 // is not the contact's actual amplitude).
 //
@@ -24,6 +25,9 @@
 // effective restitution is 0.795 in the rigid-wall contact phase, the definition used
 // throughout (in the drop itself the steel rod's compliance and gravity move it slightly). (b) isolates the SHAPE of each law's damping from
 // its calibration error. "none" (undamped) appears in (a) only: it cannot reach 0.795.
+//
+// The laws that return their input e with tension allowed are counted and named
+// (\dlExactLawCount, \dlExactLaws) for the article's prose.
 //
 // Writes OUT/restitution_map.csv (model, tension, e_input, e_effective),
 // OUT/hysteresis_models.csv (model, comparison, e_input, x_m, force_N),
@@ -43,6 +47,7 @@
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -203,6 +208,7 @@ int main(int argc, char** argv) try {
   macros.add("dlLawCount", static_cast<double>(summaries.size()), "{:.0f}");
   macros.add_text("dlReproductionThreshold", fmt::format("10^{{{:.0f}}}", std::log10(reproduction_threshold)));
   int exact_count = 0;
+  std::vector<std::string> exact_laws;  // \texttt{name} of each law that returns its input e
   std::string tex = commented_header("damping_laws: restitution table", params, "% ", "") +
                     fmt::format("\\begin{{tabular}}{{lccccc}}\n\\toprule\n"
                                 "& \\multicolumn{{2}}{{c}}{{$e_\\mathrm{{eff}}$ at $e={0:.3f}$}} & "
@@ -217,6 +223,7 @@ int main(int argc, char** argv) try {
                            "clamped", "calibrated");
   for (const LawSummary& s : summaries) {
     exact_count += s.reproduces_allowed();
+    if (s.reproduces_allowed()) exact_laws.push_back(fmt::format("\\texttt{{{}}}", s.name));
     const std::string tag = camel(s.name);
     macros.add("dlEffective" + tag, s.e_eff_allowed, "{:.4f}");
     macros.add("dlEffectiveClamped" + tag, s.e_eff_clamped, "{:.4f}");
@@ -236,6 +243,13 @@ int main(int argc, char** argv) try {
   }
   tex += "\\bottomrule\n\\end{tabular}\n";
   macros.add("dlExactLawCount", exact_count, "{:.0f}");
+  // The same laws by name, "a, b and c" ("none"), so that the prose names them as the map finds them.
+  std::string exact_names = exact_laws.empty() ? "none" : exact_laws.back();
+  if (exact_laws.size() > 1) {
+    exact_laws.pop_back();
+    exact_names = fmt::format("{} and {}", fmt::join(exact_laws, ", "), exact_names);
+  }
+  macros.add_text("dlExactLaws", exact_names);
   macros.save(args.generated_dir / "damping_laws.tex");
   write_file_atomically(args.generated_dir / "damping_laws_table.tex", tex);
   write_file_atomically(args.generated_dir / "damping_laws_table.md", md);

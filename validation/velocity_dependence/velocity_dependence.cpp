@@ -200,7 +200,12 @@ int main(int argc, char** argv) try {
   macros.add("velocityYieldStressMinMPa", paper.ball.yield_stress_min_Pa / 1e6, "{:.0f}");
   macros.add("velocityYieldStressMaxMPa", paper.ball.yield_stress_max_Pa / 1e6, "{:.0f}");
   macros.add("velocityYieldOnsetMPa", hertz_yield_onset_pressure_Pa(paper.ball.yield_stress_Pa, paper.ball.nu) / 1e6, "{:.0f}");
+  // The count goes into sentences as words that read right for every value (0 to all rods):
+  // "in \velocityRodsYieldingAtTwentyMmWords{} of the paper's \velocityRodCountWords{} drops".
+  const int rod_count = static_cast<int>(paper.rods.size());
   macros.add("velocityRodsYieldingAtTwentyMm", yielding_at_20mm, "{:.0f}");
+  macros.add_text("velocityRodsYieldingAtTwentyMmWords", count_of_total_in_words(yielding_at_20mm, rod_count));
+  macros.add_text("velocityRodCountWords", number_in_words(rod_count));
   macros.add_text("velocityRodsSafeAtLargestYield",
                   safe_at_20mm.empty() ? "none" : fmt::format("{}", fmt::join(safe_at_20mm, ", ")));
 
