@@ -158,7 +158,8 @@ void print_restitution_text(const RestitutionFitRun& r) {
     std::cout << fmt::format("  {:>3} {:<22} {:>12.6g} {:>10.4g} {:>12.6g} {:>10.6f}-{:<10.6f}{}\n", i + 1, f.law, f.aic,
                              gap, f.bic, f.e_min, f.e_max, cv_columns);
   }
-  for (const auto& [law, why] : r.failures) std::cout << fmt::format("  {}: not fitted: {}\n", law, why);
+  for (const auto& [law, why] : r.failures)
+    std::cout << fmt::format("  {}: not fitted: {}\n", law, spell_key_references(why, KeySpelling::command_line));
   for (const RestitutionFit& f : r.fits)
     if (f.failed) std::cout << fmt::format("  {}: fit failed: {}\n", f.law, f.failure);
   if (r.fits.empty()) {
@@ -228,7 +229,8 @@ Command add_fit_command(CLI::App& app) {
   return {sub, [opt, sub]() {
             if (!opt->table_path.empty()) return run_restitution_table_fit(*opt, *sub);
             if (opt->trace_path.empty())
-              throw InvalidParameter("trace", "(none)", "a measured trace, or `restitution-table` instead");
+              throw CLI::RequiredError("--trace is required (or --restitution-table, a restitution table)",
+                                       CLI::ExitCodes::RequiredError);
             if (opt->cross_validate)
               throw InvalidParameter("cross-validate", "true",
                                      "given only with `restitution-table` (a trace's fit is not cross-validated)");

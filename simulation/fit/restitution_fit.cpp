@@ -389,11 +389,11 @@ RestitutionLawComparison compare_laws_on_restitution(const RestitutionTable& tab
       return unread;
     });
     if (!settings.parameters.empty() && own.parameters.empty()) {
-      out.failures.emplace_back(o.damping, "it reads none of the parameters given with `fit`");
+      out.failures.emplace_back(o.damping, "it reads none of the parameters given to fit");
       continue;
     }
     if (settings.parameters.empty() && default_restitution_fit_parameters(o).empty()) {
-      out.failures.emplace_back(o.damping, "nothing to fit: it reads neither `restitution` nor a time constant (its e "
+      out.failures.emplace_back(o.damping, "nothing to fit: it reads neither the input e nor a time constant (its e "
                                            "does not depend on a parameter of its own)");
       continue;
     }
