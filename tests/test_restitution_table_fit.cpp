@@ -1,0 +1,225 @@
+// `hertzdash fit --restitution-table` (simulation/fit/restitution_fit.hpp) on SYNTHETIC tables
+// made by the suite itself: a law's e_effective at several speeds, computed through
+// run_restitution (CVODE at rtol 1e-12: another integrator than the fit's gbs8), written as a
+// table labelled `synthetic: true`. No measured table ships.
+#include "cli_runner.hpp"
+#include "scratch_dir.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/restitution_table.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace hertzdash;
+using hertzdash::test::run_cli;
+using hertzdash::test::ScratchDir;
+
+namespace {
+
+// The truths: the paper's law at input e = 0.80; Kuwabara-Kono's at A = 7.7e-5 s (about what
+// its calibration gives for the steel rod, docs/bounce.md), both with the steel rod's set-up.
+RunOptions hongo_truth() {
+  RunOptions o;
+  o.restitution = 0.80;
+  return o;
+}
+
+RunOptions kuwabara_kono_truth() {
+  RunOptions o;
+  o.damping = "kuwabara-kono";
+  o.viscous_time_constant_s = 7.7e-5;
+  return o;
+}
+
+// e_effective of one impact at each speed, as `hertzdash restitution --impact-velocity v --rtol 1e-12`.
+std::vector<double> e_effective(RunOptions o, const std::vector<double>& speeds) {
+  const PaperParameters paper = load_paper_parameters();
+  o.rtol = 1e-12;
+  std::vector<double> e;
+  for (double v : speeds) {
+    o.impact_velocity_mps = v;
+    e.push_back(run_restitution(o, paper).e_effective);
+  }
+  return e;
+}
+
+RestitutionTable synthetic_table(const RunOptions& truth, const std::vector<double>& speeds, double sd = 0,
+                                 unsigned seed = 0) {
+  RestitutionTable t;
+  t.path = "synthetic.csv";
+  t.source = "SYNTHETIC: written by tests/test_restitution_table_fit.cpp, law " + truth.damping;
+  t.synthetic = true;
+  t.impact_speed_mps = speeds;
+  t.e = e_effective(truth, speeds);
+  if (sd > 0) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, sd);
+    for (double& e : t.e) e += noise(rng);
+    t.e_sd.assign(speeds.size(), sd);
+  }
+  return t;
+}
+
+const std::vector<double> six_speeds{0.2, 0.4, 0.6, 0.8, 1.0, 1.2};
+
+// 8 speeds x 5 trials.
+std::vector<double> repeated_speeds() {
+  std::vector<double> v;
+  for (int s = 1; s <= 8; ++s)
+    for (int trial = 0; trial < 5; ++trial) v.push_back(0.15 * s);
+  return v;
+}
+
+RestitutionFit fit(const RestitutionTable& t, const std::string& law, bool cross_validate = false) {
+  RunOptions o;
+  o.damping = law;
+  RestitutionFitSettings s;
+  s.cross_validate = cross_validate;
+  const PaperParameters paper = load_paper_parameters();
+  RestitutionFit f = fit_restitution_table(t, o, paper, s);
+  if (cross_validate) f.cross_validation = cross_validate_restitution(t, o, paper, s, f);
+  return f;
+}
+
+}  // namespace
+
+// Accuracy. A table value is e_effective from CVODE at rtol 1e-12, the model's from gbs8 at
+// rtol = atol = 1e-12: each accurate to about 1e-10 (the noise-free fits' residuals are 1e-10).
+// The estimate errs by the residual over de/dp: for the paper's law de_eff/de_in is about 1, so
+// the input e is recovered to ~1e-10; for Kuwabara-Kono e = 1 - C1 beta + ..., beta proportional
+// to A, so de/d(ln A) is about -(1 - e) = -0.2 and ln A errs by ~1e-10 / 0.2 = 5e-10. The
+// assertions allow a hundred times that (GSL stops at xtol 1e-10 relative in the variables).
+TEST_CASE("restitution table: the law that made a noise-free table gives back its parameter", "[restitution_fit]") {
+  const RestitutionFit h = fit(synthetic_table(hongo_truth(), six_speeds), "hongo");
+  CHECK_FALSE(h.failed);
+  CHECK(h.parameters.size() == 1);
+  CHECK(h.parameter("restitution").estimate == Approx(0.80).margin(1e-8));
+  CHECK(h.sigma_estimated);
+
+  const RestitutionFit k = fit(synthetic_table(kuwabara_kono_truth(), six_speeds), "kuwabara-kono");
+  CHECK_FALSE(k.failed);
+  CHECK(k.parameter("viscous-time-constant").estimate == Approx(7.7e-5).epsilon(5e-8));
+}
+
+TEST_CASE("restitution table: a speed-independent table is the paper's law's, a falling one Kuwabara-Kono's",
+          "[restitution_fit]") {
+  // The paper's dashpot scales with the impact (tau = 2 zeta / omega_n(v0)), so its e does not
+  // depend on the speed: the fitted model's range over the table's speeds is the model's accuracy.
+  const RestitutionTable flat = synthetic_table(hongo_truth(), six_speeds);
+  const RestitutionFit h = fit(flat, "hongo");
+  CHECK(h.e_max - h.e_min < 1e-8);
+  // Kuwabara-Kono's e rises towards 1 as the speed falls: its own law fits its table far better.
+  const RestitutionTable falling = synthetic_table(kuwabara_kono_truth(), six_speeds);
+  CHECK(falling.e.front() - falling.e.back() > 0.05);
+  const RestitutionFit kk = fit(falling, "kuwabara-kono"), hk = fit(falling, "hongo");
+  CHECK(kk.aic < hk.aic - 10);
+  CHECK(hk.e_max - hk.e_min < 1e-8);  // hongo cannot follow it: flat at the table's mean
+  CHECK(kk.e_max - kk.e_min > 0.05);
+}
+
+// Known e_sd: chi^2 of the true law's fit follows the chi-square distribution with n - p
+// degrees of freedom (40 rows, 1 parameter: 39); chi^2 / 39 lies in [0.44, 1.85] with
+// probability 0.998 (Wilson-Hilferty: 39 (1 - 2/351 +- 3.09 sqrt(2/351))^3 / 39).
+TEST_CASE("restitution table: noise of known e_sd gives a reduced chi-square near 1", "[restitution_fit]") {
+  const double sd = 0.005;
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const RestitutionTable t = synthetic_table(kuwabara_kono_truth(), repeated_speeds(), sd, seed);
+    const RestitutionFit k = fit(t, "kuwabara-kono");
+    CAPTURE(seed, k.reduced_chi_square);
+    CHECK_FALSE(k.sigma_estimated);
+    CHECK(k.reduced_chi_square > 0.44);
+    CHECK(k.reduced_chi_square < 1.85);
+    // The truth within 3 standard errors.
+    const FittedParameter& A = k.parameter("viscous-time-constant");
+    CHECK(std::abs(A.estimate - 7.7e-5) < 3 * A.standard_error);
+  }
+}
+
+TEST_CASE("restitution table: cross-validation prefers the true law", "[restitution_fit]") {
+  const RestitutionTable t = synthetic_table(kuwabara_kono_truth(), repeated_speeds(), 0.005, 7);
+  const RestitutionFit k = fit(t, "kuwabara-kono", true), h = fit(t, "hongo", true);
+  REQUIRE(k.cross_validation);
+  REQUIRE(h.cross_validation);
+  CHECK(k.cross_validation->failure.empty());
+  CHECK(k.cross_validation->folds == 8);
+  CHECK(k.cross_validation->rms_prediction_error < h.cross_validation->rms_prediction_error);
+  // The true law predicts left-out speeds to about the scatter (the e_sd): the ratio near 1.
+  CHECK(k.cross_validation->ratio < 1.5);
+  CHECK(h.cross_validation->ratio > 2);
+}
+
+TEST_CASE("restitution table: every law compared, ranked by AIC, the undamped law among the failures",
+          "[restitution_fit]") {
+  const RestitutionTable t = synthetic_table(kuwabara_kono_truth(), six_speeds, 0.005, 11);
+  RestitutionFitSettings s;
+  const RestitutionLawComparison c = compare_laws_on_restitution(t, RunOptions{}, load_paper_parameters(), s);
+  REQUIRE_FALSE(c.fits.empty());
+  CHECK(c.fits.front().law == "kuwabara-kono");
+  for (std::size_t i = 1; i < c.fits.size(); ++i) CHECK(c.fits[i - 1].aic <= c.fits[i].aic);
+  bool none_failed = false;
+  for (const auto& [law, why] : c.failures) none_failed = none_failed || (law == "none" && why.find("nothing to fit") != std::string::npos);
+  CHECK(none_failed);
+  CHECK(c.fits.size() + c.failures.size() == registered_laws().size());
+}
+
+TEST_CASE("fit --restitution-table: JSON keys, the synthetic label, refusals with exit 2", "[restitution_fit][cli]") {
+  ScratchDir dir;
+  RestitutionTable t = synthetic_table(kuwabara_kono_truth(), {0.3, 0.6, 0.9, 1.2}, 0.005, 3);
+  const auto file = dir.path / "kk.csv";
+  write_restitution_table(file, t, "tests/test_restitution_table_fit.cpp", {});
+
+  const auto r = run_cli("fit --restitution-table " + file.string() + " --damping kuwabara-kono --cross-validate --json");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("synthetic") != std::string::npos);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["table"]["path"] == file.string());
+  CHECK(j["table"]["synthetic"] == true);
+  CHECK(j["table"]["rows"] == 4);
+  CHECK(j["table"].contains("source"));
+  REQUIRE(j["fits"].size() == 1);
+  const auto& f = j["fits"][0];
+  CHECK(f["law"] == "kuwabara-kono");
+  for (const char* key : {"name", "estimate", "standard_error", "lower", "upper"}) CHECK(f["parameters"][0].contains(key));
+  CHECK(f["parameters"][0]["name"] == "viscous-time-constant");
+  for (const char* key : {"reduced_chi_square", "aic", "bic", "warnings", "e_effective_range", "points", "cross_validation"})
+    CHECK(f.contains(key));
+  CHECK(f["e_effective_range"].size() == 2);
+  REQUIRE(f["points"].size() == 4);
+  for (const char* key : {"impact_speed_mps", "measured", "model", "residual"}) CHECK(f["points"][0].contains(key));
+  CHECK(f["cross_validation"].contains("rms_prediction_error"));
+  CHECK(f["cross_validation"].contains("ratio_to_scatter"));
+  bool synthetic = false;
+  for (const auto& w : f["warnings"]) synthetic = synthetic || w["code"] == "synthetic_table";
+  CHECK(synthetic);
+  CHECK(j.contains("failures"));
+
+  // A bad file: exit 2, the file and its line named, nothing on stdout.
+  const auto bad = dir.write("bad.csv", "impact_speed_m_per_s,e\n# source: x\n0.2,0.9\n0.4,1.5\n");
+  const auto b = run_cli("fit --restitution-table " + bad.string());
+  CHECK(b.exit_code == 2);
+  CHECK(b.err.find(bad.string() + ":4:") != std::string::npos);
+  CHECK(b.out.empty());
+
+  // Meaningless combinations: refused naming both options.
+  for (const std::string& extra : {std::string("--channels force_N"), std::string("--resample 1e5"),
+                                   std::string("--impact-velocity 0.5"), std::string("--trace ") + file.string()}) {
+    const auto x = run_cli("fit --restitution-table " + file.string() + " " + extra);
+    CAPTURE(extra, x.err);
+    CHECK(x.exit_code == 2);
+    CHECK(x.err.find("--restitution-table") != std::string::npos);
+    CHECK(x.err.find(extra.substr(0, extra.find(' '))) != std::string::npos);
+    CHECK(x.out.empty());
+  }
+  const auto cv = run_cli("fit --trace " + file.string() + " --cross-validate");
+  CHECK(cv.exit_code == 2);
+  CHECK(cv.err.find("--cross-validate") != std::string::npos);
+  const auto none = run_cli("fit");
+  CHECK(none.exit_code == 2);
+  CHECK(none.err.find("--restitution-table") != std::string::npos);
+}
