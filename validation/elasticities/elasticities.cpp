@@ -110,7 +110,7 @@ int main(int argc, char** argv) try {
   for (const PaperLawElasticities* el : {&steel_paper, &dural_paper})
     for (int p = 0; p < elasticity_parameter_count; ++p)
       if (p != p_restitution) largest = std::max(largest, std::abs(el->e_effective_el[p]));
-  tex.add("sensElEeffLargestOtherThanE", largest, "{:.1g}");
+  tex.add("sensElEeffLargestOtherThanE", largest, "{:.2g}");
   tex.add("sensElSteelPeakOverNylonRangePct", 100.0 * (std::exp(steel_paper.peak_force_el[p_ball_E] * span) - 1.0),
           "{:.0f}");
   tex.add("sensElSteelContactOverNylonRangePct",

@@ -233,6 +233,7 @@ int main(int argc, char** argv) try {
     macros.add("pnPrintedNineEffectiveRestitution" + t, printed9.e_effective, "{:.3f}");
     macros.add("pnPrintedTwelveDampingFactor" + t, c_e(printed12) / c_e(corrected), "{:.0f}");
     macros.add_text("pnPrintedTwelveRebounds" + t, printed12.separated ? "rebounds" : "comes to rest on the ball");
+    macros.add("pnPrintedTwelveSeparated" + t, printed12.separated ? 1 : 0, "{:.0f}");  // for \ifnum
     macros.add("pnPrintedTwelvePeakForceRatio" + t, printed12.peak_force_N / corrected.peak_force_N, "{:.2f}");
   }
   errata.save(args.out_dir / "errata_effects.csv");

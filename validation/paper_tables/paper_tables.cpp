@@ -31,6 +31,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -56,6 +57,41 @@ std::string gpa_text(double E_Pa) {
     if (i && (digits.size() - i) % 3 == 0) out += "\\,";
     out += digits[i];
   }
+  return out;
+}
+
+// A modulus in GPa in scientific notation for prose, two significant figures, math mode
+// without the dollars: "3.3\times 10^{5}" (the steel row's 326308 GPa reads as two numbers
+// with a thousands separator).
+std::string gpa_scientific(double E_Pa) {
+  const double v = E_Pa / 1e9;
+  const int exponent = static_cast<int>(std::floor(std::log10(v)));
+  if (exponent < 3) return fmt::format("{:.0f}", v);
+  return fmt::format("{:.1f}\\times 10^{{{}}}", v / std::pow(10.0, exponent), exponent);
+}
+
+// Rods named for prose, grouped by material: "the duralumin rods" when the set holds every
+// rod of that material, else "duralumin rod A"; "the steel rod"; joined with "and".
+std::string rods_phrase(const std::vector<std::string>& set, const std::vector<std::string>& all) {
+  auto material = [](const std::string& rod) { return rod.substr(0, rod.find('-')); };
+  std::vector<std::string> parts, done;
+  for (const std::string& rod : set) {
+    const std::string m = material(rod);
+    if (std::find(done.begin(), done.end(), m) != done.end()) continue;
+    const auto count_of = [&](const std::vector<std::string>& v) {
+      return std::count_if(v.begin(), v.end(), [&](const std::string& r) { return material(r) == m; });
+    };
+    const auto in_set = count_of(set), in_all = count_of(all);
+    if (in_set == in_all) {
+      done.push_back(m);
+      parts.push_back(in_all > 1 ? "the " + m + " rods" : "the " + m + " rod");
+    } else {
+      parts.push_back(m + " rod " + rod_label(rod).substr(m.size() + 1));
+    }
+  }
+  if (parts.empty()) return "none";
+  std::string out = parts.front();
+  for (std::size_t i = 1; i < parts.size(); ++i) out += (i + 1 == parts.size() ? " and " : ", ") + parts[i];
   return out;
 }
 
@@ -119,7 +155,8 @@ int main(int argc, char** argv) try {
                      "Rod & $f$ printed (kHz) & $E$ printed (GPa) & $E$ from $f$ (GPa) & consistent \\\\\n"
                      "\\midrule\n";
   int consistent_rows = 0;
-  std::vector<std::string> inconsistent_rods;
+  double duralumin_largest_modulus_deviation = 0;
+  std::vector<std::string> inconsistent_rods, consistent_names, inconsistent_names, all_names;
   for (const RodData& rod : paper.rods) {
     const RodGeometry g{rod.diameter_m, rod.length_m, rod.mass_kg};
     const double E_f = modulus_from_flexural_frequency_Pa(g, rod.natural_frequency_hz);
@@ -127,12 +164,17 @@ int main(int argc, char** argv) try {
     const bool consistent = std::abs(rel) <= consistency_threshold;
     consistent_rows += consistent;
     if (!consistent) inconsistent_rods.push_back(rod_label(rod.name));
+    (consistent ? consistent_names : inconsistent_names).push_back(rod.name);
+    all_names.push_back(rod.name);
+    if (rod.name.rfind("duralumin", 0) == 0)
+      duralumin_largest_modulus_deviation = std::max(duralumin_largest_modulus_deviation, std::abs(rel));
     table3.add_row({rod.name, rod.natural_frequency_hz, rod.E_Pa / 1e9, E_f / 1e9,
                     std::string(consistent ? "yes" : "no")});
     tex3 += fmt::format("{} & {:.4g} & {:.1f} & {} & {} \\\\\n", rod_label(rod.name),
                         rod.natural_frequency_hz / 1e3, rod.E_Pa / 1e9, gpa_text(E_f), consistent ? "yes" : "no");
     const std::string tag = rod_macro_tag(rod.name);
     macros.add_text("tabs" + tag + "EfromFrequencyGPa", gpa_text(E_f));
+    macros.add_text("tabs" + tag + "EfromFrequencyGPaScientific", gpa_scientific(E_f));
     macros.add("tabs" + tag + "EdiffPercent", 100.0 * rel, "{:+.1f}");
     macros.add("tabs" + tag + "FrequencyPrintedkHz", rod.natural_frequency_hz / 1e3, "{:.4g}");
     macros.add("tabs" + tag + "EPrintedGPa", rod.E_Pa / 1e9, "{:.1f}");
@@ -155,6 +197,12 @@ int main(int argc, char** argv) try {
   macros.add_text("tabsRodCountWords", number_in_words(rod_count));
   macros.add_text("tabsTableThreeInconsistentRods",
                   inconsistent_rods.empty() ? "none" : fmt::format("{}", fmt::join(inconsistent_rods, ", ")));
+  // The same, as prose ("the duralumin rods", "the steel rod"), and the largest modulus
+  // deviation of the duralumin rows, rounded up to 0.1 % (a bound: "within ... %").
+  macros.add_text("tabsTableThreeConsistentPhrase", rods_phrase(consistent_names, all_names));
+  macros.add_text("tabsTableThreeInconsistentPhrase", rods_phrase(inconsistent_names, all_names));
+  macros.add("tabsDuraluminMaxModulusDeviationPercent",
+             std::ceil(1000.0 * duralumin_largest_modulus_deviation - 1e-9) / 10.0, "{:.1f}");
   macros.add("tabsConsistencyThresholdPercent", 100.0 * consistency_threshold, "{:.0f}");
   macros.add("tabsBetaOneL", free_free_beta1_L, "{:.4f}");
   macros.save(args.generated_dir / "paper_tables.tex");

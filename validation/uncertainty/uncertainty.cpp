@@ -286,7 +286,11 @@ void write_inputs(const Study& st, const PaperParameters& paper, const StudyArgs
   for (const UncertainInput& in : paper.uncertain_inputs) {
     const auto [mean, sd] = distribution_moments(in.distribution);
     inputs_csv.add_row({in.parameter, in.unit, in.value, describe(in.distribution), mean, sd, in.reason});
-    inputs_table += fmt::format("\\texttt{{{}}} [{}] & {} & {}\\\\\n", latex_text(in.parameter), latex_text(in.unit),
+    // The unit goes in brackets, so the name drops a unit suffix it carries ("nylon_E_Pa" -> "nylon_E").
+    std::string name = in.parameter;
+    if (const std::string suffix = "_" + in.unit; name.size() > suffix.size() && name.ends_with(suffix))
+      name.resize(name.size() - suffix.size());
+    inputs_table += fmt::format("\\texttt{{{}}} [{}] & {} & {}\\\\\n", latex_text(name), latex_text(in.unit),
                                 latex_distribution(in.distribution), latex_text(in.reason));
   }
   inputs_table += "\\bottomrule\n\\end{tabularx}}\n";
