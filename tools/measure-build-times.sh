@@ -39,7 +39,9 @@ touch "$law"
 rebuild_load_start=$(load)
 rebuild_s=$(timed "$build/rebuild.log" cmake --build "$build" -j "$jobs")
 rebuild_load_end=$(load)
-compiled=$(sed -n 's/.*Building CXX object \(.*\)\.o$/\1/p' "$build/rebuild.log" | sed 's|CMakeFiles/[^/]*\.dir/||')
+# Source paths from make's object names; a generated unit is named by its place in the build directory.
+compiled=$(sed -n 's/.*Building CXX object \(.*\)\.o$/\1/p' "$build/rebuild.log" |
+  sed 's|CMakeFiles/[^/]*\.dir/||; s|^.*/__/__/generated/|BUILD/generated/|')
 compiled_count=$(printf '%s\n' "$compiled" | grep -c . || true)
 
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
