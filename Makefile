@@ -6,11 +6,13 @@ FIGURES ?= paper/figures
 # Instrumented builds, each in a folder of its own (docs/reliability.md).
 SANITIZE_BUILD ?= build-sanitize
 FUZZ_BUILD     ?= build-fuzz
+# The scratch build of `make build-times`.
+BUILD_TIMES_BUILD ?= build-times
 FUZZ_SECONDS   ?= 60
 # Extra CMake arguments for every configuration, e.g. CMAKE_ARGS=-DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 CMAKE_ARGS     ?=
 
-.PHONY: all deps deps-paper configure build test figures convergence uncertainty paper bench sanitize fuzz clean
+.PHONY: all deps deps-paper configure build test figures convergence uncertainty paper bench build-times sanitize fuzz clean
 
 all: build
 
@@ -76,6 +78,12 @@ bench: build
 	  --figures-ms $$ms
 	validation/draw_figure.sh bench/work_precision_peers/work_precision_peers.gp $(FIGURES)
 
+# The cold build and the rebuild after editing one damping law's header, ccache off, in a scratch
+# directory of their own (tools/measure-build-times.sh): the generated blocks of docs/build-times.md
+# and of the README. Half an hour and more on 2 cores.
+build-times: deps
+	tools/measure-build-times.sh $(BUILD_TIMES_BUILD) $(JOBS)
+
 # The whole ctest suite under AddressSanitizer + UndefinedBehaviorSanitizer, every report fatal
 # (cmake/sanitizers.cmake). Leaks are checked (LSan) but for the Python interpreter's and Open MPI's
 # (tests/CMakeLists.txt, tests/lsan-suppressions.txt). -O1 with assertions on: -O3 took several
@@ -99,4 +107,4 @@ fuzz: deps
 	fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD) $(BUILD_TIMES_BUILD)

@@ -26,7 +26,7 @@ foreach(layer IN LISTS HERTZDASH_LAYERS)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${layer}/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/hertzdash/${layer}"
     FILES_MATCHING PATTERN "*.hpp" ${hertzdash_headers_not_built})
 endforeach()
-install(FILES "${HERTZDASH_INCLUDE_DIR}/hertzdash/damping_law_headers.hpp"
+install(FILES "${HERTZDASH_INCLUDE_DIR}/hertzdash/registered_law_list.hpp"
   DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/hertzdash")
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/data/" DESTINATION "${CMAKE_INSTALL_DATADIR}/hertzdash/data")
 

@@ -1,9 +1,8 @@
 #pragma once
-// Shared by the damping-law tests: the list of laws every standard check runs on
-// (every registered law plus the worked example of model/README.md), and a
-// rigid-wall, gravity-free contact set-up with a prescribed K, m and v0.
-#include "example_law.hpp"
-#include "hertzdash/model/damping/registry.hpp"
+// Shared by the damping-law tests: a rigid-wall, gravity-free contact set-up with a prescribed
+// K, m and v0, and the e_effective of any law on it. The list of laws every standard check runs
+// on is tests/tested_laws.hpp (it includes every law: only the tests that check every law
+// include it, so editing one law recompiles few tests).
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/calibrate_restitution.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
@@ -14,45 +13,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <tuple>
 
 namespace hertzdash::test {
-
-template <class List, class Extra> struct AppendLaw;
-template <class... L, class Extra> struct AppendLaw<LawList<L...>, Extra> {
-  using type = std::tuple<L..., Extra>;
-};
-
-/// Every registered law, then the guide's example: a newly registered law is checked
-/// without touching the tests.
-using TestedLaws = AppendLaw<RegisteredLaws, ExactHertzDashpot>::type;
-
-/// Registers `check<Law>` as the Catch test case "NAME - LAW" (LAW the law's registered name,
-/// `info.name`) for every Law of the tuple `Laws`: each law's failures are reported and
-/// selectable by name (Catch's TEMPLATE_LIST_TEST_CASE would number them "NAME - 15"). Used
-/// through HERTZDASH_LAW_TEST_CASE.
-template <class Laws, template <class> class Check> bool register_law_tests(const char* name, const char* tags,
-                                                                            const char* file, std::size_t line) {
-  [&]<class... L>(std::type_identity<std::tuple<L...>>) {
-    (Catch::AutoReg(Catch::makeTestInvoker(&Check<L>::run), Catch::SourceLineInfo(file, line), Catch::StringRef(),
-                    Catch::NameAndTags{Catch::StringRef(std::string(name) + " - " + std::string(L::info.name)),
-                                       Catch::StringRef(tags)}),
-     ...);
-  }(std::type_identity<Laws>{});
-  return true;
-}
-
-/// A check run for each law of `Laws`, one test case per law named after it:
-///   HERTZDASH_LAW_TEST_CASE(NoEnergyGain, TestedLaws, "Every law: no energy gain", "[damping]") {
-///     ... TestType is the law ...
-///   }
-#define HERTZDASH_LAW_TEST_CASE(Check, Laws, name, tags)                                                              \
-  template <class TestType> struct Check {                                                                          \
-    static void run();                                                                                              \
-  };                                                                                                                \
-  [[maybe_unused]] static const bool Check##_registered =                                                           \
-      hertzdash::test::register_law_tests<Laws, Check>(name, tags, __FILE__, static_cast<std::size_t>(__LINE__)); \
-  template <class TestType> void Check<TestType>::run()
 
 /// A contact phase with Hertz stiffness K [N/m^{3/2}], mass m [kg], approach speed v0
 /// [m/s], input e: rigid flat, no gravity, nylon-like ball whose modulus is chosen so

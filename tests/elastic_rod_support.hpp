@@ -1,6 +1,7 @@
 #pragma once
 // Set-ups of the elastic rod on the load cell for the tests: the paper's drop test of one rod
 // with --rod-model elastic and overrides, resolved through the same option table as the CLI.
+#include "hertzdash/model/elastic_drop_test.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"

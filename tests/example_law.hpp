@@ -3,8 +3,8 @@
 // type law whose damping factor is chosen so that it returns its input restitution
 // EXACTLY. It lives in tests/ so that the guide's code is compiled and run through
 // the same standard checks as every registered law (tests/test_damping_law_standard.cpp)
-// without adding a law to the CLI; to register it, move it to model/damping/laws/ and
-// add `ExactHertzDashpot,` to RegisteredLaws in model/damping/registry.hpp.
+// without adding a law to the CLI (tests/example_law_runs.cpp compiles its runs); to register
+// it, move it to model/damping/laws/ and add its line to model/damping/registered_laws.cmake.
 #include "hertzdash/model/damping/hertz_proportional_dashpot.hpp"
 
 #include <cmath>

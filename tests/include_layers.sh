@@ -45,7 +45,7 @@ for file in $(find ode io model integrators simulation -name '*.hpp' -o -name '*
   fi
   for included in $(sed -n 's|^#include "hertzdash/\([^"]*\)".*|\1|p' "$file"); do
     checked=$((checked + 1))
-    case "$included" in damping_law_headers.hpp) continue ;; esac
+    case "$included" in registered_law_list.hpp) continue ;; esac
     target=$(folder_of "$included")
     [ "$target" = "$own" ] && continue
     target_rank=$(rank "$target")

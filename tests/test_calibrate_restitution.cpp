@@ -3,6 +3,7 @@
 // found with one known independently of the solver.
 #include "damping_law_test_support.hpp"
 
+#include "hertzdash/model/damping/laws/hunt_crossley.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,8 @@
 // The pieces the convergence study stands on: the undamped closed-form trajectory,
 // the regularised contact system, CVODE on the undamped law without gravity (the
 // peak force coincides with maximum compression there), and the simulate warning.
+#include "hertzdash/model/damping/laws/undamped.hpp"
+#include "hertzdash/model/drop_test.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/regularized_contact.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"

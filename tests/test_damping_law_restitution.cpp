@@ -3,6 +3,7 @@
 // is derived below; the simulations run CVODE at rtol 1e-10 (error in e_effective
 // ~1e-8), so every comparison uses the bound 1e-7.
 #include "damping_law_test_support.hpp"
+#include "tested_laws.hpp"
 
 #include <catch2/catch.hpp>
 #include <gsl/gsl_sf_lambert.h>

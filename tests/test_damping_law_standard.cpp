@@ -1,5 +1,5 @@
 // The checks every damping law gets for free. The test list is every law in
-// RegisteredLaws (model/damping/registry.hpp) plus the worked example of
+// RegisteredLaws (model/damping/registered_laws.cmake) plus the worked example of
 // model/README.md, so registering a law is enough to have it checked here.
 //
 // All runs are the contact phase alone: a rigid flat, no gravity, approach speed v0
@@ -8,6 +8,7 @@
 // steps at 1e-10). The bounds below are 1e-7: ten times that, far below any
 // physical effect tested.
 #include "damping_law_test_support.hpp"
+#include "tested_laws.hpp"
 
 #include <catch2/catch.hpp>
 

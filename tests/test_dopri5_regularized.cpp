@@ -6,7 +6,7 @@
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/damping/laws/tsuji_dem.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
-#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/model/damping/registered_law_types.hpp"
 #include "hertzdash/model/force_jet.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"

@@ -3,7 +3,7 @@
 // row of simulation/run/integrator_table.hpp).
 //
 // A law is a small class in its own header under model/damping/laws/, listed
-// once in model/damping/registry.hpp. It carries
+// once in model/damping/registered_laws.cmake. It carries
 //   - `static constexpr LawInfo info`: name (CLI spelling), citation, formula,
 //     how its coefficients follow from (e, v0, K, m), validity range;
 //   - a constructor from the impact's ImpactConditions and the DampingSettings,
@@ -149,5 +149,8 @@ concept ConservativeLaw = DampingLaw<L> && requires { requires L::conservative; 
 
 template <class L>
 concept MaterialTimeConstantLaw = DampingLaw<L> && requires { requires L::material_time_constant; };
+
+/// A list of laws as types (the registered ones: RegisteredLaws, model/damping/registered_law_types.hpp).
+template <DampingLaw... L> struct LawList {};
 
 }  // namespace hertzdash

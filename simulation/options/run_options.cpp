@@ -108,22 +108,20 @@ const ParameterDecl cvode_method_decl{.key = "cvode-method", .type = ParameterTy
 // undamped law, whose restitution is 1 whatever e is).
 std::vector<std::string> dissipative_law_names() {
   std::vector<std::string> names;
-  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
-    if (!ConservativeLaw<Law>) names.emplace_back(Law::info.name);
-  });
+  for (const RegisteredLaw& law : registered_law_table())
+    if (!law.conservative) names.emplace_back(law.info.name);
   return names;
 }
 
 // Every law's own inputs, bound to the fields the simulator reads or to law_numbers.
 void add_law_options(std::vector<RunOption>& out) {
   std::vector<std::pair<ParameterDecl, std::vector<std::string>>> declared;  // each key once, with its laws
-  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
-    for (const ParameterDecl& d : law_parameters<Law>()) {
+  for (const RegisteredLaw& law : registered_law_table())
+    for (const ParameterDecl& d : law.parameters) {
       auto it = std::find_if(declared.begin(), declared.end(), [&](const auto& e) { return e.first.key == d.key; });
       if (it == declared.end()) declared.push_back({d, {}}), it = declared.end() - 1;
-      it->second.emplace_back(Law::info.name);
+      it->second.emplace_back(law.info.name);
     }
-  });
   for (auto& entry : declared) {  // no structured binding: clang 14 (make fuzz) cannot capture one
     const ParameterDecl d = entry.first;
     OptionReaders readers{.laws = std::move(entry.second)};

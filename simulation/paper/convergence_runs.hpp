@@ -21,12 +21,14 @@
 #include "hertzdash/integrators/explicit_euler.hpp"
 #include "hertzdash/integrators/fixed_step.hpp"
 #include "hertzdash/integrators/rk4.hpp"
-#include "hertzdash/model/damping/registry.hpp"
+#include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/model/drop_test.hpp"
 #include "hertzdash/model/regularized_contact.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/run/physical_impact.hpp"
 
 #include <algorithm>
 #include <array>

@@ -2,13 +2,13 @@
 
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/run/elastic_bounces.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/run/law_runs.hpp"
+#include "hertzdash/simulation/run/result_checks.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <type_traits>
 
 namespace hertzdash {
 
@@ -115,32 +115,21 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
                            "> 0 for a bounce sequence (without gravity the rod never comes back)");
   BounceSequence out;
   DropTestSetup s = setup;
-  with_damping_law(law, [&]<class Law>(std::type_identity<Law>) {
-    if constexpr (MaterialTimeConstantLaw<Law>) {
-      if (!s.damping.viscous_time_constant_s) s = with_calibrated_time_constant<Law>(s);
-      out.viscous_time_constant_s = s.damping.viscous_time_constant_s;
-    }
-    if (!s.elastic_rod) {
-      run_rigid_bounces(s, law, solver, options, out);
-      return;
-    }
+  const LawRuns& runs = law_runs(law);
+  if (runs.calibrated_time_constant) {
+    if (!s.damping.viscous_time_constant_s) s = runs.calibrated_time_constant(s);
+    out.viscous_time_constant_s = s.damping.viscous_time_constant_s;
+  }
+  if (!s.elastic_rod) {
+    run_rigid_bounces(s, law, solver, options, out);
+  } else {
     if (is_iterated(s.damping.omega_n))
       throw InvalidParameter("omega-n", to_string(s.damping.omega_n),
                              "a variant that is not iterated, for a bounce sequence of the elastic rod");
-    out.integrator_used = integrator_used(solver.integrator, impact_needs<Law>(s));
-    IntegratorWorkspace workspace;
-    with_integrator_row(out.integrator_used, [&]<class Row>(std::type_identity<Row>) {
-      if constexpr (Row::traits.variables == Variables::physical) {
-        auto integrate = [&](auto& sys, auto& y, double t0, double t1, const SolverSettings& used, auto& observer) {
-          return Row::integrate(sys, y, t0, t1, used, workspace, observer);
-        };
-        run_elastic_bounces<Law>(s, Row::traits.kind, Row::traits.step_control == StepControl::fixed_step, solver,
-                                 options, integrate, out);
-      }
-    });
+    runs.run_elastic_bounces(s, solver, options, out);
     for (BounceImpact& b : out.impacts)
       b.diagnostics = impact_diagnostics(bounce_impact_summary(b, out, s), s, solver);
-  });
+  }
   for (const BounceImpact& b : out.impacts) {
     out.onset_times_s.push_back(b.onset_time_s);
     if (b.separated) out.e_velocity_ratio.push_back(b.rebound_speed_mps / b.approach_speed_mps);

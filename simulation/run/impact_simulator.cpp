@@ -1,7 +1,9 @@
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
+#include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/run/law_runs.hpp"
 #include "hertzdash/simulation/run/omega_n_fixed_point.hpp"
 
 #include <fmt/format.h>
@@ -16,7 +18,6 @@ std::vector<std::string> trace_columns() {
   for (const TraceColumn& c : trace_column_table) names.emplace_back(c.name);
   return names;
 }
-
 
 ImpactSimulator::ImpactSimulator(const SolverSettings& settings) : settings_(settings) { validate(settings_); }
 
@@ -38,9 +39,7 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view 
     r.summary.omega_n_iteration = static_cast<const OmegaNIteration&>(r);
     return r.summary;
   }
-  ImpactSummary s;
-  with_damping_law(law, [&]<class Law>(std::type_identity<Law>) { s = run<Law>(setup, trace); });
-  return s;
+  return law_runs(law).run_impact(*this, setup, trace);
 } catch (const std::runtime_error& e) {
   if (typeid(e) != typeid(std::runtime_error)) throw;
   throw std::runtime_error(fmt::format("{} (the run of law {} at input e {}, approach speed {:.6g} m/s, integrator {})",
@@ -50,11 +49,7 @@ ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view 
 
 IntegratorKind integrator_used(const SolverSettings& solver, const DropTestSetup& setup, std::string_view law,
                                std::string* why) {
-  IntegratorKind used = solver.integrator;
-  with_damping_law(law, [&]<class Law>(std::type_identity<Law>) {
-    used = integrator_used(solver.integrator, impact_needs<Law>(setup), why);
-  });
-  return used;
+  return integrator_used(solver.integrator, impact_needs(setup, registered_law(law).root_polynomial), why);
 }
 
 }  // namespace hertzdash

@@ -10,16 +10,18 @@
 // observes it into a summary, as the elastic rod on the load cell does
 // (model/elastic_drop_test.hpp, elastic_impact.hpp); a sequence of impacts is a system whose
 // separation event restarts instead of stopping, observed impact by impact.
+//
+// run<Law> is declared here and defined in simulation/run/impact_simulator_run.hpp: each
+// registered law's run is compiled once, in that law's own generated translation unit
+// (simulation/run/law_runs.hpp), and a call of it from anywhere else links to that one. A law no
+// registry knows is run by including impact_simulator_run.hpp where it is called.
+#include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
-#include "hertzdash/simulation/run/elastic_impact.hpp"
+#include "hertzdash/model/hertz.hpp"
 #include "hertzdash/simulation/run/impact_summary.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
-#include "hertzdash/simulation/run/physical_impact.hpp"
-#include "hertzdash/simulation/run/regularized_impact.hpp"
-#include "hertzdash/simulation/run/result_checks.hpp"
 #include "hertzdash/simulation/run/solver_settings.hpp"
-#include "hertzdash/simulation/run/step_resolution.hpp"
 #include "hertzdash/simulation/run/viscous_time_constant.hpp"
 
 #include <algorithm>
@@ -46,6 +48,7 @@ class ImpactSimulator {
 
   /// The same for a law known at compile time: the force inlines into the integrator.
   /// The omega_n variant is used as given (an iterated one needs damping.omega_n_rad_per_s).
+  /// Defined in simulation/run/impact_simulator_run.hpp; compiled once for each registered law.
   template <DampingLaw Law>
   ImpactSummary run(const DropTestSetup& setup, std::vector<TraceSample>* trace = nullptr);
 
@@ -54,11 +57,10 @@ class ImpactSimulator {
   IntegratorWorkspace workspace_;
 };
 
-/// What the impact of `setup` with the law `Law` asks of an integrator.
-template <DampingLaw Law>
-ImpactNeeds impact_needs(const DropTestSetup& setup) {
+/// What the impact of `setup` asks of an integrator, with a law that is a RootPolynomialLaw or not.
+inline ImpactNeeds impact_needs(const DropTestSetup& setup, bool root_polynomial_law) {
   return {.tension_clamp = setup.no_tension, .elastic_rod = setup.elastic_rod.has_value(),
-          .root_polynomial_law = RootPolynomialLaw<Law>};
+          .root_polynomial_law = root_polynomial_law};
 }
 
 /// The integrator that runs the registered law `law` on `setup` when `solver` asks for
@@ -67,7 +69,8 @@ IntegratorKind integrator_used(const SolverSettings& solver, const DropTestSetup
                                std::string* why = nullptr);
 
 /// One impact with a law known at compile time, for instance a law of your own that no
-/// registry knows (it needs only the DampingLaw concept, model/damping/damping_law.hpp):
+/// registry knows (it needs only the DampingLaw concept, model/damping/damping_law.hpp; include
+/// simulation/run/impact_simulator_run.hpp for it):
 ///   const ImpactSummary s = simulate<MyLaw>(setup, {.integrator = IntegratorKind::gbs8_regularized});
 /// Validates the set-up (InvalidParameter). A sweep keeps one ImpactSimulator instead.
 template <DampingLaw Law>
@@ -117,40 +120,6 @@ DropTestSetup with_calibrated_time_constant(const DropTestSetup& setup) {
   last = Remembered{K, c.mass_kg, v, c.restitution, c.no_tension, A};
   out.damping.viscous_time_constant_s = A;
   return out;
-}
-
-template <DampingLaw Law>
-ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
-  if constexpr (MaterialTimeConstantLaw<Law>)
-    if (!setup.damping.viscous_time_constant_s) return run<Law>(with_calibrated_time_constant<Law>(setup), trace);
-  validate_fixed_step(setup, settings_);
-  ImpactSummary s;
-  s.integrator_used = integrator_used(settings_.integrator, impact_needs<Law>(setup));
-  with_integrator_row(s.integrator_used, [&]<class Row>(std::type_identity<Row>) {
-    auto integrate = [&](auto& sys, auto& y, double t0, double t1, auto& observer) {
-      return Row::integrate(sys, y, t0, t1, settings_, workspace_, observer);
-    };
-    if constexpr (Row::traits.variables == Variables::regularized) {
-      run_regularized_impact<Law>(setup, integrate, s, trace);
-    } else if (setup.elastic_rod) {
-      auto integrate_with = [&](auto& sys, auto& y, double t0, double t1, const SolverSettings& used, auto& observer) {
-        return Row::integrate(sys, y, t0, t1, used, workspace_, observer);
-      };
-      run_elastic_impact<Law>(setup, Row::traits.kind, Row::traits.step_control == StepControl::fixed_step, settings_,
-                              integrate_with, s, trace);
-    } else {
-      run_physical_impact<Law>(setup, integrate, s, trace);
-    }
-  });
-  s.peak_contact_pressure_Pa = hertz_peak_pressure_Pa(s.K, setup.ball_radius_m, s.max_deformation_m);
-  if (s.separated) {
-    s.contact_time_s = s.t_separation_s - s.t_onset_s;
-    s.e_effective = s.rebound_velocity_mps / s.impact_velocity_mps;
-  }
-  require_finite_results(s);
-  require_physical_restitution(s, settings_, Law::info, !ConservativeLaw<Law>);
-  s.diagnostics = impact_diagnostics(s, setup, settings_);
-  return s;
 }
 
 }  // namespace hertzdash

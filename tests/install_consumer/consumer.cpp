@@ -8,7 +8,7 @@
 // largest deformation is x_max = (5 m v0^2 / (4 K))^{2/5}, and the contact lasts
 // t_c = c x_max / v0 with c = 2 int_0^1 dz / sqrt(1 - z^{5/2}) = (4/5) B(2/5, 1/2) = 2.94325.
 #include <hertzdash/simulation/run/calibrate_restitution.hpp>
-#include <hertzdash/simulation/run/impact_simulator.hpp>
+#include <hertzdash/simulation/run/impact_simulator_run.hpp>  // run<Law> for a law of your own
 #include <hertzdash/simulation/paper/paper_parameters.hpp>
 
 #include <cmath>

@@ -33,6 +33,7 @@
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
+#include "hertzdash/model/elastic_drop_test.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"

@@ -43,7 +43,7 @@
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
-#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/run/impact_simulator_run.hpp"  // runs laws of its own (HongoAsPrintedEq12)
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>
