@@ -5,10 +5,12 @@
 #include "hertzdash/simulation/fit/restitution_fit.hpp"
 
 #include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/fit/fit_parameters.hpp"
 #include "hertzdash/simulation/fit/restitution_fit_model.hpp"
 #include "hertzdash/simulation/run/gsl_root.hpp"
+#include "hertzdash/simulation/run/law_runs.hpp"
 
 #include <fmt/format.h>
 #include <gsl/gsl_blas.h>
@@ -43,11 +45,7 @@ bool reads(const RunOptions& o, const std::string& option) {
   }
 }
 
-bool has_time_constant(const std::string& law) {
-  bool found = false;
-  with_damping_law(law, [&]<class Law>(std::type_identity<Law>) { found = MaterialTimeConstantLaw<Law>; });
-  return found;
-}
+bool has_time_constant(const std::string& law) { return registered_law(law).material_time_constant; }
 
 double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); }
 
@@ -63,11 +61,8 @@ double calibrated_time_constant(const RunOptions& base, const PaperParameters& p
   o.restitution = e;
   o.viscous_time_constant_s.reset();
   const DropTestSetup s = restitution_contact(o, paper, speed);
-  double A = 0;
-  with_damping_law(base.damping, [&]<class Law>(std::type_identity<Law>) {
-    if constexpr (MaterialTimeConstantLaw<Law>) A = *with_calibrated_time_constant<Law>(s).damping.viscous_time_constant_s;
-  });
-  return A;
+  const LawRuns& runs = law_runs(base.damping);
+  return runs.calibrated_time_constant ? *runs.calibrated_time_constant(s).damping.viscous_time_constant_s : 0.0;
 }
 
 // The starting values (restitution_fit.hpp, "Parameters").
