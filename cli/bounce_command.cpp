@@ -133,7 +133,7 @@ Command add_bounce_command(CLI::App& app) {
                                 "hertzdash bounce: the sequence's time series (t_s and displacement_m since the first "
                                 "contact onset; x_m < 0 in flight, the gap; force compressive positive; accel, velocity "
                                 "and displacement of the rod downward positive)",
-                                inputs);
+                                inputs, trace_height_m(r->setup));
             }
             report_diagnostics(run_diagnostics(*r));
             if (opt->json) std::cout << to_json(*r).dump(2) << "\n";

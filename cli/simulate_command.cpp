@@ -58,7 +58,7 @@ void write_trace(const SimulateRun& r, const std::string& path) {
   write_model_trace(path, r.trace, "hertzdash simulate --trace: the contact phase at every integrator step",
                     "hertzdash simulate: contact-phase time series (t_s and displacement_m since contact onset; force "
                     "compressive positive; accel, velocity and displacement of the rod downward positive)",
-                    inputs);
+                    inputs, trace_height_m(r.setup));
 }
 
 }  // namespace

@@ -13,8 +13,9 @@ namespace hertzdash::cli {
 
 /// Write `samples` atomically to `path`, time and rod displacement counted from the first sample
 /// (contact onset): `source` says what made them (the file adds "SYNTHETIC"), `contents` what the
-/// columns hold, `inputs` the run's description (it names the rod and the height).
+/// columns hold, `inputs` the run's description (it names the rod), `height_m` the header's drop
+/// height (trace_height_m: for a run given its impact velocity, v0^2 / (2 g)).
 void write_model_trace(const std::string& path, const std::vector<TraceSample>& samples, const std::string& source,
-                       const std::string& contents, const Parameters& inputs);
+                       const std::string& contents, const Parameters& inputs, double height_m);
 
 }  // namespace hertzdash::cli

@@ -12,12 +12,14 @@ namespace hertzdash {
 
 namespace {
 // A text cell as every reader splits it the same way: numpy.genfromtxt does not read quoted
-// fields, so a cell holds no comma, double quote or line break (';', '\'' and ' ' stand for them).
+// fields and pandas and numpy cut a line at '#', so a cell holds no comma, double quote, '#' or line
+// break (';', '\'', '*' and ' ' stand for them).
 std::string plain_text_cell(const std::string& v) {
   std::string out = v;
   for (char& c : out) {
     if (c == ',') c = ';';
     else if (c == '"') c = '\'';
+    else if (c == '#') c = '*';
     else if (c == '\n' || c == '\r') c = ' ';
   }
   return out;

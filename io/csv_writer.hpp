@@ -25,8 +25,9 @@ class CsvWriter {
 
   /// One row; must have one cell per column. Doubles are written as the shortest text that reads
   /// back to the same double (fmt's "{}", Dragonbox: exact and several times faster than "{:.17g}").
-  /// Text is written unquoted, a comma in it as ';', a double quote as '\'' and a line break as a
-  /// blank: numpy.genfromtxt, one of the two readers every CSV must suit, does not read quotes.
+  /// Text is written unquoted, a comma in it as ';', a double quote as '\'', a '#' as '*' and a line
+  /// break as a blank: numpy.genfromtxt, one of the two readers every CSV must suit, does not read
+  /// quotes, and it and pandas take '#' for the start of a comment.
   void add_row(const std::vector<Cell>& cells);
 
   std::string str() const;

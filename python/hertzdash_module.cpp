@@ -14,6 +14,7 @@
 #include "hertzdash/simulation/reports/run_reports.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/run/result_fields.hpp"
+#include "hertzdash/simulation/run/distinct_time_samples.hpp"
 #include "hertzdash/simulation/run/uniform_trace.hpp"
 #include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 
@@ -170,7 +171,7 @@ py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
                                fmt::format("a step giving at most {:g} samples of the {:.6g} s contact", max_samples,
                                            run.trace.back().t_s - run.trace.front().t_s));
     }
-    samples = grid_step ? uniform_trace(run.trace, *grid_step) : run.trace;
+    samples = grid_step ? uniform_trace(run.trace, *grid_step) : distinct_time_samples(run.trace);
   }
   warn_about(run_diagnostics(run));
   py::dict out;

@@ -1,5 +1,5 @@
 // `hertzdash simulate`: the JSON summary carries every promised field and the
-// inputs actually used; the trace is the contact phase under a provenance header;
+// inputs actually used; the trace is the contact phase in the measured-trace format, provenance below the column names;
 // the README's example prints what the README says it prints.
 #include "cli_runner.hpp"
 #include "hertzdash/io/csv_table.hpp"
@@ -206,7 +206,15 @@ TEST_CASE("CLI simulate: a pair changed on top of a preset keeps the preset's e 
   CHECK_THAT(custom.err, Catch::Contains("hertzdash: note: the input e = 0.795 is the steel rod's, measured for that "
                                          "rod on the hemisphere (Table 2); the run changed the pair"));
   CHECK_THAT(custom.err, Catch::Contains("give --restitution for it"));
-  // With its own e, or with a law that reads none, or with the preset as it is: no note.
+  // With its own e, found by a calibration for this pair, with a law that reads none, or with the
+  // preset as it is: no note.
+  for (const char* args : {"restitution --mass 1.0 --target-restitution 0.7", "bounce --mass 1.0 --bounces 3 "
+                                                                               "--target-interval-restitution 0.7"}) {
+    INFO(args);
+    const auto r = run_cli(std::string(args) + " --json");
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, !Catch::Contains("preset_restitution"));
+  }
   for (const char* args : {"--mass 1.0 --restitution 0.8", "--mass 1.0 --damping none", "--rod duralumin-a"}) {
     INFO(args);
     const auto r = run_cli(std::string("simulate --json ") + args);

@@ -7,6 +7,7 @@
 #include "python_csv_readers.hpp"
 #include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/io/measured_trace.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -64,5 +65,9 @@ TEST_CASE("fit reads the trace simulate --trace writes, and recovers the input e
   CHECK(j["trace"]["synthetic"] == true);
   CHECK(j["trace"]["model_columns"] == nlohmann::json::array({"x_m", "xdot_mps", "contact_force_N", "rod_accel_mps2"}));
   CHECK(j["fits"][0]["parameters"][0]["estimate"].get<double>() == Approx(0.7).margin(2e-4));
+  // A run given its impact velocity has no drop height: its trace says the height a free fall
+  // from rest reaches that speed from, v0^2 / (2 g), as a virtual measurement does, so fit reads it.
+  REQUIRE(run_cli("simulate --impact-velocity 0.8 --trace " + trace).exit_code == 0);
+  CHECK(hertzdash::read_measured_trace(trace).height_m == Approx(0.8 * 0.8 / (2 * 9.80665)).epsilon(1e-15));
   CHECK_THAT(r.err, Catch::Contains("model columns (x_m, xdot_mps, contact_force_N, rod_accel_mps2) are not fitted"));
 }

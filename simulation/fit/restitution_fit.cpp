@@ -184,6 +184,8 @@ RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOpt
   const std::size_t n = problem.n(), p = problem.p();
   if (n <= p)
     throw DataError(fmt::format("{}: {} rows cannot determine {} parameters", table.path.string(), n, p));
+  // A set-up the options refuse says why, naming the option (`restitution` beside a time constant).
+  (void)restitution_contact(model.options_at(initial), paper, table.impact_speed_mps.front());
   if (!model.e_at(initial, table.impact_speed_mps))
     throw InvalidParameter("fit", "the starting values", "values inside the model's domain");
 

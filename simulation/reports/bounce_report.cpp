@@ -58,6 +58,7 @@ BounceRun run_bounce(const RunOptions& options, const PaperParameters& paper, co
   if (interval_target) {
     r.calibration = calibrate_interval_restitution(r.setup, r.law, r.solver, *interval_target);
     r.setup.restitution = r.calibration->e_input;
+    r.setup.restitution_of_other_pair = false;  // e is now this pair's own, found for the target
   }
   r.inputs = describe_run(r.setup, r.law, r.solver);
   r.inputs.emplace_back("bounces", std::to_string(bounce.impacts));

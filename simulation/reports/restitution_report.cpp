@@ -51,6 +51,7 @@ RestitutionRun run_restitution(const RunOptions& options, const PaperParameters&
     r.iterations = c.iterations;
     DropTestSetup found = r.setup;
     found.restitution = c.e_input;
+    found.restitution_of_other_pair = false;  // e is now this pair's own, found for the target
     r.summary = simulator.run(found, r.law);  // the run at the input found, for its diagnostics
   } else {
     r.e_input = r.setup.restitution;

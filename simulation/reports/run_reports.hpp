@@ -45,6 +45,10 @@ std::vector<RunDiagnostic> run_diagnostics(const SimulateRun& run, const std::st
 /// trace_note)), "inputs", "schema_version", "git_revision".
 nlohmann::ordered_json to_json(const SimulateRun& run, const std::string& trace_note = {});
 
+/// The `height_m` line of a trace's header: the drop height, or for a set-up given its impact
+/// velocity the height a free fall from rest reaches that speed from, v0^2 / (2 g) (0 without gravity).
+double trace_height_m(const DropTestSetup& setup);
+
 /// The run's contact recorded as a virtual experiment (simulation/fit/virtual_measurement.hpp), with
 /// its provenance: `source` says it is synthetic and what made it; `rod` is the rod asked for;
 /// `height_m` the drop height that gives the run's approach speed. Needs a run with a trace.

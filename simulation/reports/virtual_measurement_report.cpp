@@ -11,12 +11,17 @@ namespace hertzdash {
 
 MeasuredTrace virtual_measurement(const SimulateRun& run, const std::string& rod, const MeasurementChain& chain) {
   MeasuredTrace m = record_virtual_measurement(ImpactHistory(run.trace, run.setup.gravity_mps2), chain);
-  const double v = run.summary.impact_velocity_mps, g = run.setup.gravity_mps2;
   m.source = "SYNTHETIC: a virtual experiment made by hertzdash simulate --trace-format measured (the model through "
              "a simulated measurement chain; not a measurement)";
   m.rod = rod;
-  m.height_m = run.setup.impact_velocity_mps && g > 0 ? v * v / (2 * g) : run.setup.height_m;
+  m.height_m = trace_height_m(run.setup);
   return m;
+}
+
+double trace_height_m(const DropTestSetup& setup) {
+  const double g = setup.gravity_mps2;
+  if (!setup.impact_velocity_mps) return setup.height_m;
+  return g > 0 ? *setup.impact_velocity_mps * *setup.impact_velocity_mps / (2 * g) : 0.0;
 }
 
 std::string virtual_measurement_note(const SimulateRun& run, const MeasurementChain& chain) {

@@ -21,6 +21,7 @@ std::vector<TraceSample> bounce_trace(const BounceSequence& sequence, const Drop
     impact.impact_velocity_mps = b.approach_speed_mps;
     contact.clear();
     simulator.run(impact, law, &contact);
+    if (contact.empty()) continue;  // every run records its onset; nothing to place otherwise
     // The run's clock starts at its own onset; the sequence's at the release.
     const double shift_s = b.onset_time_s - contact.front().t_s;
     for (TraceSample s : contact) {

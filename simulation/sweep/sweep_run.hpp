@@ -41,8 +41,8 @@ SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs,
                        const SweepOptions& options);
 
 /// The rows: "run", the varied options (parameter_columns), the outputs, "warnings" (the codes
-/// of the run's notes and warnings, space-separated: diagnostic_names), "error"; under a
-/// provenance header with the case file's path, SHA-256 and text, and then `timing_line` (the
+/// of the run's notes and warnings, space-separated: diagnostic_names), "error"; below the column
+/// names the provenance with the case file's path, SHA-256 and text, and then `timing_line` (the
 /// one line that may differ between two makings of the same sweep). `results` hold all runs in
 /// order.
 std::string sweep_table(const SweepCase& c, const SweepResults& results, const std::string& timing_line);
@@ -55,7 +55,7 @@ void write_sweep_table(const SweepCase& c, const SweepResults& results, const st
 /// Per output (and per value of every text or true/false grid option, e.g. per damping law):
 /// runs, failed, mean, sd, min, q05, q25, median, q75, q95, max of the runs that gave a value.
 /// Quantiles interpolate linearly between order statistics (Hyndman & Fan type 7, as NumPy).
-/// A comment line above the columns counts the runs per diagnostic code ("warnings, runs per
+/// A comment line below the column names counts the runs per diagnostic code ("warnings, runs per
 /// code (of N): under_resolved 2, ...").
 std::string sweep_summary_table(const SweepCase& c, const SweepResults& results);
 

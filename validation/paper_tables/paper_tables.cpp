@@ -65,9 +65,11 @@ std::string gpa_text(double E_Pa) {
 // with a thousands separator).
 std::string gpa_scientific(double E_Pa) {
   const double v = E_Pa / 1e9;
-  const int exponent = static_cast<int>(std::floor(std::log10(v)));
+  int exponent = static_cast<int>(std::floor(std::log10(v)));
   if (exponent < 3) return fmt::format("{:.0f}", v);
-  return fmt::format("{:.1f}\\times 10^{{{}}}", v / std::pow(10.0, exponent), exponent);
+  double mantissa = std::round(10 * v / std::pow(10.0, exponent)) / 10;  // as printed, one decimal
+  if (mantissa >= 10) mantissa /= 10, ++exponent;                        // 9.96 prints 1.0, not 10.0
+  return fmt::format("{:.1f}\\times 10^{{{}}}", mantissa, exponent);
 }
 
 // Rods named for prose, grouped by material: "the duralumin rods" when the set holds every
