@@ -8,6 +8,7 @@
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/fit/fit_parameters.hpp"
+#include "hertzdash/simulation/fit/least_squares.hpp"
 #include "hertzdash/simulation/fit/restitution_fit_model.hpp"
 #include "hertzdash/simulation/run/gsl_root.hpp"
 #include "hertzdash/simulation/run/law_runs.hpp"
@@ -105,47 +106,8 @@ struct Problem {
     const auto m = model->e_at(physical(z), speeds);
     for (std::size_t i = 0; i < n(); ++i) r[i] = m ? (e[i] - (*m)[i]) * inv_sd[i] : outside;
   }
-  void jacobian(const double* z, gsl_matrix* J) {
-    std::vector<double> zz(z, z + p()), plus(n()), minus(n());
-    for (std::size_t j = 0; j < p(); ++j) {
-      const double h = 1e-6;
-      zz[j] = z[j] + h;
-      residuals(zz.data(), plus.data());
-      zz[j] = z[j] - h;
-      residuals(zz.data(), minus.data());
-      zz[j] = z[j];
-      for (std::size_t i = 0; i < n(); ++i) gsl_matrix_set(J, i, j, (plus[i] - minus[i]) / (2.0 * h));
-    }
-  }
 };
 
-int residuals_thunk(const gsl_vector* z, void* params, gsl_vector* f) {
-  auto* problem = static_cast<Problem*>(params);
-  try {
-    problem->residuals(z->data, f->data);
-    return GSL_SUCCESS;
-  } catch (...) {
-    problem->error = std::current_exception();
-    return GSL_EBADFUNC;
-  }
-}
-
-int jacobian_thunk(const gsl_vector* z, void* params, gsl_matrix* J) {
-  auto* problem = static_cast<Problem*>(params);
-  try {
-    problem->jacobian(z->data, J);
-    return GSL_SUCCESS;
-  } catch (...) {
-    problem->error = std::current_exception();
-    return GSL_EBADFUNC;
-  }
-}
-
-std::string stop_reason(int status, int info) {
-  if (status == GSL_EMAXITER) return "maximum number of iterations reached";
-  if (status == GSL_ENOPROG) return "no further decrease of the cost within its resolution";
-  return info == 1 ? "small step (xtol)" : "small gradient (gtol)";
-}
 
 }  // namespace
 
@@ -196,8 +158,8 @@ RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOpt
       gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p), &gsl_multifit_nlinear_free);
   if (!w) throw std::bad_alloc();
   gsl_multifit_nlinear_fdf fdf{};
-  fdf.f = residuals_thunk;
-  fdf.df = jacobian_thunk;
+  fdf.f = fit_detail::residuals_thunk<Problem>;
+  fdf.df = fit_detail::jacobian_thunk<Problem>;
   fdf.fvv = nullptr;
   fdf.n = n;
   fdf.p = p;
@@ -226,7 +188,7 @@ RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOpt
   RestitutionFit fit;
   fit.law = base.damping;
   fit.rows = n;
-  fit.stop_reason = stop_reason(status, info);
+  fit.stop_reason = fit_detail::stop_reason(status, info);
   fit.converged = status == GSL_SUCCESS;
   fit.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w.get()));
   const gsl_vector* zv = gsl_multifit_nlinear_position(w.get());

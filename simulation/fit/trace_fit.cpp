@@ -9,6 +9,7 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/fit/fit_parameters.hpp"
 #include "hertzdash/simulation/fit/trace_fit_model.hpp"
+#include "hertzdash/simulation/fit/least_squares.hpp"
 #include "hertzdash/simulation/fit/trace_fit_problem.hpp"
 #include "hertzdash/simulation/fit/trace_preparation.hpp"
 #include "hertzdash/simulation/run/gsl_root.hpp"
@@ -151,8 +152,8 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
       gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p), &gsl_multifit_nlinear_free);
   if (!w) throw std::bad_alloc();
   gsl_multifit_nlinear_fdf fdf{};
-  fdf.f = residuals_thunk;
-  fdf.df = jacobian_thunk;
+  fdf.f = fit_detail::residuals_thunk<FitProblem>;
+  fdf.df = fit_detail::jacobian_thunk<FitProblem>;
   fdf.fvv = nullptr;
   fdf.n = n;
   fdf.p = p;
@@ -185,7 +186,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   if (status != GSL_SUCCESS && status != GSL_EMAXITER && status != GSL_ENOPROG)
     throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_iterate failed: ") + gsl_strerror(status));
   fit.stop_reason = work_limit ? fmt::format("work limit reached ({:.3g} RK4 steps and interpolations)", settings.max_work)
-                               : stop_reason(status, info);
+                               : fit_detail::stop_reason(status, info);
   fit.converged = status == GSL_SUCCESS;
   fit.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w.get()));
 

@@ -1,6 +1,5 @@
 // The least-squares problem of a trace fit (simulation/fit/trace_fit_problem.hpp): residuals
-// weighted by the channels' noise, a central-difference Jacobian, the thunks through which GSL
-// calls them, the scaled condition number of a solution and the solver's stop reason.
+// weighted by the channels' noise and the scaled condition number of a solution.
 #include "hertzdash/simulation/fit/trace_fit_problem.hpp"
 
 #include <gsl/gsl_errno.h>
@@ -41,41 +40,6 @@ void FitProblem::residuals(const double* z, double* r) {
   for (std::size_t i = 0; i < obs_.size(); ++i) r[i] = m.empty() ? outside : (obs_[i].y - m[i]) * obs_[i].inv_sigma;
 }
 
-void FitProblem::jacobian(const double* z, gsl_matrix* J) {
-  std::vector<double> zz(z, z + p()), plus(n()), minus(n());
-  for (std::size_t j = 0; j < p(); ++j) {
-    const double h = 1e-6;
-    zz[j] = z[j] + h;
-    residuals(zz.data(), plus.data());
-    zz[j] = z[j] - h;
-    residuals(zz.data(), minus.data());
-    zz[j] = z[j];
-    for (std::size_t i = 0; i < n(); ++i) gsl_matrix_set(J, i, j, (plus[i] - minus[i]) / (2.0 * h));
-  }
-}
-
-int residuals_thunk(const gsl_vector* z, void* params, gsl_vector* f) {
-  auto* problem = static_cast<FitProblem*>(params);
-  try {
-    problem->residuals(z->data, f->data);
-    return GSL_SUCCESS;
-  } catch (...) {
-    problem->error = std::current_exception();
-    return GSL_EBADFUNC;
-  }
-}
-
-int jacobian_thunk(const gsl_vector* z, void* params, gsl_matrix* J) {
-  auto* problem = static_cast<FitProblem*>(params);
-  try {
-    problem->jacobian(z->data, J);
-    return GSL_SUCCESS;
-  } catch (...) {
-    problem->error = std::current_exception();
-    return GSL_EBADFUNC;
-  }
-}
-
 // Condition number of J with columns scaled to relative changes of the parameters.
 double scaled_condition_number(const gsl_matrix* J, const FitProblem& problem, const double* z) {
   const std::size_t n = J->size1, p = J->size2;
@@ -96,10 +60,5 @@ double scaled_condition_number(const gsl_matrix* J, const FitProblem& problem, c
   return smallest > 0 ? largest / smallest : inf;
 }
 
-std::string stop_reason(int status, int info) {
-  if (status == GSL_EMAXITER) return "maximum number of iterations reached";
-  if (status == GSL_ENOPROG) return "no further decrease of the cost within its resolution";
-  return info == 1 ? "small step (xtol)" : "small gradient (gtol)";
-}
 
 }  // namespace hertzdash::trace_fit_detail

@@ -2,8 +2,8 @@
 // Internal to the trace fit (simulation/fit/trace_fit.cpp; not installed, cmake/install.cmake): the
 // weighted least-squares problem GSL's multifit_nlinear solves, in the unbounded variables
 // z = (transformed parameters, t0 / t_H) (simulation/fit/trace_fit.hpp, "Residuals" and
-// "Uncertainty"): its residuals and Jacobian, the thunks GSL calls them through, and what is
-// said of a solution (the scaled condition number, why the solver stopped).
+// "Uncertainty"): its residuals, which the Jacobian and the thunks of least_squares.hpp
+// differentiate and pass to GSL, and the scaled condition number of a solution.
 #include "hertzdash/simulation/fit/fit_parameters.hpp"
 #include "hertzdash/simulation/fit/trace_fit_model.hpp"
 
@@ -44,9 +44,6 @@ class FitProblem {
   void residuals(const double* z, double* r);
   static constexpr double outside = 1e30;
 
-  /// Central differences, step 1e-6 in every z (relative 1e-6 of p - lower; 1e-6 t_H for the onset).
-  void jacobian(const double* z, gsl_matrix* J);
-
   /// The work so far: the model's RK4 steps plus the observations interpolated (trace_fit.hpp, "Work").
   double work() const { return model_->steps() + evaluations_ * static_cast<double>(n()); }
 
@@ -62,15 +59,7 @@ class FitProblem {
   double evaluations_ = 0;  // model_values at a point inside the domain
 };
 
-/// gsl_multifit_nlinear_fdf's f and df, `params` a FitProblem: an exception is stored in its
-/// `error` and GSL told GSL_EBADFUNC.
-int residuals_thunk(const gsl_vector* z, void* params, gsl_vector* f);
-int jacobian_thunk(const gsl_vector* z, void* params, gsl_matrix* J);
-
 /// Condition number of J with columns scaled to relative changes of the parameters.
 double scaled_condition_number(const gsl_matrix* J, const FitProblem& problem, const double* z);
-
-/// Why GSL's driver stopped, from its status and `info`.
-std::string stop_reason(int status, int info);
 
 }  // namespace hertzdash::trace_fit_detail
