@@ -16,7 +16,9 @@
 
 namespace hertzdash {
 
+using report_detail::correlation_json;
 using report_detail::json_value;
+using report_detail::number_or_null;
 
 FitRun run_fit(const std::string& trace_path, const RunOptions& base, const PaperParameters& paper,
                const TraceFitSettings& settings, bool compare_all_laws, const std::vector<std::string>& given) {
@@ -37,35 +39,12 @@ FitRun run_fit(const std::string& trace_path, const RunOptions& base, const Pape
   return r;
 }
 
-namespace {
-
-nlohmann::ordered_json number_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
-}  // namespace
-
 nlohmann::ordered_json to_json(const TraceFit& f, const PaperParameters& paper) {
   nlohmann::ordered_json j;
   j["law"] = f.law;
   if (!f.left_out.empty()) j["left_out"] = f.left_out;  // compare_laws: options this law does not read
-  nlohmann::ordered_json parameters = nlohmann::ordered_json::array();
-  for (const FittedParameter& p : f.parameters)
-    parameters.push_back({{"name", p.name},
-                          {"initial", p.initial},
-                          {"estimate", p.estimate},
-                          {"standard_error", number_or_null(p.standard_error)},
-                          {"lower", number_or_null(p.lower)},
-                          {"upper", number_or_null(p.upper)},
-                          {"at_bound", p.at_bound}});
-  j["parameters"] = parameters;
-  nlohmann::ordered_json correlation = nlohmann::ordered_json::array();
-  for (const auto& row : f.correlation) {
-    nlohmann::ordered_json r = nlohmann::ordered_json::array();
-    for (double c : row) r.push_back(number_or_null(c));
-    correlation.push_back(r);
-  }
-  j["correlation"] = correlation;
+  j["parameters"] = report_detail::to_json(f.parameters);
+  j["correlation"] = correlation_json(f.correlation);
   nlohmann::ordered_json channels = nlohmann::ordered_json::array();
   for (const ChannelFit& c : f.channels)
     channels.push_back({{"name", c.name},

@@ -3,6 +3,7 @@
 
 #include "hertzdash/io/decimal_number.hpp"
 
+#include <cmath>
 #include <optional>
 
 namespace hertzdash::report_detail {
@@ -18,6 +19,33 @@ void add_inputs_and_revision(nlohmann::ordered_json& j, const Parameters& inputs
   for (const auto& [name, value] : inputs) in[name] = json_value(value);
   j["inputs"] = in;
   j["git_revision"] = git_revision();
+}
+
+nlohmann::ordered_json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+nlohmann::ordered_json to_json(const std::vector<FittedParameter>& parameters) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const FittedParameter& p : parameters)
+    out.push_back({{"name", p.name},
+                   {"initial", p.initial},
+                   {"estimate", p.estimate},
+                   {"standard_error", number_or_null(p.standard_error)},
+                   {"lower", number_or_null(p.lower)},
+                   {"upper", number_or_null(p.upper)},
+                   {"at_bound", p.at_bound}});
+  return out;
+}
+
+nlohmann::ordered_json correlation_json(const std::vector<std::vector<double>>& correlation) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const auto& row : correlation) {
+    nlohmann::ordered_json r = nlohmann::ordered_json::array();
+    for (double c : row) r.push_back(number_or_null(c));
+    out.push_back(r);
+  }
+  return out;
 }
 
 }  // namespace hertzdash::report_detail

@@ -2,6 +2,7 @@
 // restitution table, fit one law or every law (and cross-validate), the fit's warnings, its JSON.
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/simulation/fit/restitution_fit.hpp"
+#include "hertzdash/simulation/reports/report_json.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
 #include <fmt/format.h>
@@ -9,6 +10,9 @@
 #include <cmath>
 
 namespace hertzdash {
+
+using report_detail::correlation_json;
+using report_detail::number_or_null;
 
 RestitutionFitRun run_restitution_fit(const std::string& table_path, const RunOptions& base,
                                       const PaperParameters& paper, const RestitutionFitSettings& settings,
@@ -89,35 +93,12 @@ std::vector<RunDiagnostic> restitution_fit_diagnostics(const RestitutionFitRun& 
   return all;
 }
 
-namespace {
-
-nlohmann::ordered_json number_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
-}  // namespace
-
 nlohmann::ordered_json to_json(const RestitutionFitRun& run, const RestitutionFit& f) {
   nlohmann::ordered_json j;
   j["law"] = f.law;
   if (!f.left_out.empty()) j["left_out"] = f.left_out;
-  nlohmann::ordered_json parameters = nlohmann::ordered_json::array();
-  for (const FittedParameter& p : f.parameters)
-    parameters.push_back({{"name", p.name},
-                          {"initial", p.initial},
-                          {"estimate", p.estimate},
-                          {"standard_error", number_or_null(p.standard_error)},
-                          {"lower", number_or_null(p.lower)},
-                          {"upper", number_or_null(p.upper)},
-                          {"at_bound", p.at_bound}});
-  j["parameters"] = parameters;
-  nlohmann::ordered_json correlation = nlohmann::ordered_json::array();
-  for (const auto& row : f.correlation) {
-    nlohmann::ordered_json r = nlohmann::ordered_json::array();
-    for (double c : row) r.push_back(number_or_null(c));
-    correlation.push_back(r);
-  }
-  j["correlation"] = correlation;
+  j["parameters"] = report_detail::to_json(f.parameters);
+  j["correlation"] = correlation_json(f.correlation);
   j["rows"] = f.rows;
   j["sigma_estimated"] = f.sigma_estimated;
   j["sigma"] = f.sigma_estimated ? number_or_null(f.sigma) : nlohmann::ordered_json(nullptr);
