@@ -300,7 +300,9 @@ int main(int argc, char** argv) try {
   macros.add("measuredBestELow", best.e_min, "{:.3f}");
   macros.add("measuredDropOverBestSigma", (*e_hi - *e_lo) / best.sigma, "{:.0f}");
   macros.add("measuredBestResidualSignChanges", sign_changes, "{:.0f}");
-  macros.add_text("measuredBestResidualSignChangesWords", number_in_words(sign_changes));
+  macros.add_text("measuredBestResidualSignChangesPhrase", sign_changes == 1   ? "once"
+                                                           : sign_changes == 2 ? "twice"
+                                                                               : number_in_words(sign_changes) + " times");
   macros.add("measuredRandomSignChanges", 0.5 * static_cast<double>(table.rows() - 1), "{:.1f}");
   if (best.law == viscoelastic) {
     const FittedParameter& A = best.parameter("viscous-time-constant");
