@@ -1,8 +1,11 @@
 #pragma once
 // The inputs of the paper's drop test (Fig. 4): the falling body, the sphere it strikes, the
 // flat, gravity and the impact, each declared once (model/parameter.hpp). The paper's two
-// bodies are the sphere (s) and the wall (w): here the falling body is the rod, whose flat end
-// face is the wall, and the sphere is the nylon hemisphere ("ball"). The defaults are the
+// bodies are the sphere (s) and the wall (w): in its drop test the falling body is the rod, whose
+// flat end face is the wall, and the sphere is the nylon hemisphere ("ball"). A ball dropped on
+// a flat is stated with the same inputs: its mass is `mass`, its material and radius the
+// sphere's (`ball-*`), the plate's material the flat's (`rod-E`, `rod-nu`); with one body fixed,
+// the contact depends only on the mass that moves, R and the pair's E* (docs/balls.md). The defaults are the
 // paper's Tables 1-3 and the assumptions of data/assumptions.csv, read by
 // simulation/paper/paper_parameters.hpp.
 #include "hertzdash/model/parameter.hpp"
@@ -22,7 +25,8 @@ inline constexpr ParameterDecl impact_velocity{
     .help = "Approach speed at contact onset [m/s], instead of `height`", .fittable = true};
 inline constexpr ParameterDecl mass{
     .key = "mass", .unit = "kg", .column_unit = "kg", .range = R::positive(), .default_value = "Table 1",
-    .default_source = "the paper's Table 1 (the rod's mass)", .help = "Mass of the falling body (the rod) [kg]",
+    .default_source = "the paper's Table 1 (the rod's mass)",
+    .help = "Mass of the falling body [kg]: the paper's rod, or a dropped ball",
     .fittable = true};
 inline constexpr ParameterDecl restitution{
     .key = "restitution", .range = R::open_closed(0, 1), .default_value = "Table 2",
@@ -31,10 +35,12 @@ inline constexpr ParameterDecl restitution{
 inline constexpr ParameterDecl ball_E{
     .key = "ball-E", .unit = "Pa", .column_unit = "Pa", .range = R::positive(), .default_value = "2.0e9",
     .default_source = "assumed, middle of Table 3's catalogue range (data/assumptions.csv)",
-    .help = "Young's modulus of the sphere (the nylon hemisphere) [Pa]", .fittable = true};
+    .help = "Young's modulus of the sphere [Pa]: the paper's nylon hemisphere, or a dropped ball",
+    .fittable = true};
 inline constexpr ParameterDecl ball_nu{
     .key = "ball-nu", .range = R::open(-1, 0.5), .default_value = "0.40",
-    .default_source = "assumed (data/assumptions.csv)", .help = "Poisson ratio of the sphere", .fittable = true};
+    .default_source = "assumed (data/assumptions.csv)",
+    .help = "Poisson ratio of the sphere (the hemisphere, or a dropped ball)", .fittable = true};
 inline constexpr ParameterDecl ball_radius{
     .key = "ball-radius", .unit = "m", .column_unit = "m", .range = R::positive(), .default_value = "0.0127",
     .default_source = "half the 1-inch ball of Table 1 (data/assumptions.csv)", .help = "Radius R of the sphere [m]",
@@ -47,10 +53,12 @@ inline constexpr ParameterDecl ball_yield_stress{
 inline constexpr ParameterDecl rod_E{
     .key = "rod-E", .unit = "Pa", .column_unit = "Pa", .range = R::positive_or_infinite(),
     .default_value = "Table 3", .default_source = "the paper's Table 3",
-    .help = "Young's modulus of the flat (the rod's end face) [Pa]; inf for a rigid flat", .fittable = true};
+    .help = "Young's modulus of the flat [Pa]: the paper's rod end face, or the plate a ball falls on; inf for a "
+            "rigid flat", .fittable = true};
 inline constexpr ParameterDecl rod_nu{
     .key = "rod-nu", .range = R::open(-1, 0.5), .default_value = "0.30 steel, 0.33 duralumin",
-    .default_source = "assumed (data/assumptions.csv)", .help = "Poisson ratio of the flat (the rod)",
+    .default_source = "assumed (data/assumptions.csv)",
+    .help = "Poisson ratio of the flat (the rod end face, or the plate)",
     .fittable = true};
 inline constexpr ParameterDecl gravity{
     .key = "gravity", .unit = "m/s^2", .column_unit = "mps2", .range = R::non_negative(), .default_value = "9.80665",

@@ -24,6 +24,7 @@ void validate(const DropTestSetup& s) {
   require_in_range(p::restitution, s.restitution);
   require_in_range(p::height, s.height_m);
   require_in_range(p::gravity, s.gravity_mps2);
+  validate(s.air_drag);
   if (s.impact_velocity_mps) {
     require_in_range(p::impact_velocity, *s.impact_velocity_mps);
   } else if (!(s.gravity_mps2 > 0)) {  // named first: the height may be a default the user never typed
@@ -99,7 +100,9 @@ void validate(const ElasticRodSetup& s) {
 double hertz_stiffness(const DropTestSetup& s) { return hertz_stiffness(s.ball_radius_m, s.ball, s.rod); }
 
 double approach_speed(const DropTestSetup& s) {
-  return s.impact_velocity_mps ? *s.impact_velocity_mps : std::sqrt(2.0 * s.gravity_mps2 * s.height_m);
+  if (s.impact_velocity_mps) return *s.impact_velocity_mps;
+  const double v_t = terminal_speed_mps(s.air_drag, s.mass_kg, s.ball_radius_m, s.gravity_mps2);
+  return fall_from_rest(s.height_m, s.gravity_mps2, v_t).speed_mps;  // sqrt(2 g h) without air
 }
 
 }  // namespace hertzdash

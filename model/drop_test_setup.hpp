@@ -1,5 +1,6 @@
 #pragma once
 // The physical set-up of one drop test (Fig. 4 of the paper), validated.
+#include "hertzdash/model/air_drag.hpp"
 #include "hertzdash/model/damping/damping_law.hpp"
 #include "hertzdash/model/elastic_rod_setup.hpp"
 #include "hertzdash/model/hertz.hpp"
@@ -25,6 +26,10 @@ struct DropTestSetup {
   std::optional<double> impact_velocity_mps;  ///< if set (> 0), start at contact onset with this speed
   double gravity_mps2;       ///< g [m/s^2] >= 0, acting throughout, eq. (1)
   bool no_tension = false;   ///< clamp the contact force at >= 0; contact then ends where it reaches zero
+  /// Air drag on the falling body in flight (model/air_drag.hpp); inactive by default. Only the
+  /// rigid model's bounce sequence flies (simulation/run/bounce_sequence.hpp); a single impact
+  /// integrates its fall without drag and refuses an active one.
+  AirDrag air_drag;
   DampingSettings damping;
   /// Unset: the paper's model, a rigid rod on a fixed hemisphere. Set: the elastic rod on the
   /// hemisphere's load cell (model/elastic_drop_test.hpp); rod.E_Pa is then also the bar's
@@ -86,7 +91,8 @@ void validate_hertz_scale(const DropTestSetup& s);
 /// Hertz stiffness of the set-up, eq. (3) [N/m^{3/2}].
 double hertz_stiffness(const DropTestSetup& s);
 
-/// Approach speed at contact onset [m/s]: the given impact velocity, else sqrt(2 g h).
+/// Approach speed at contact onset [m/s]: the given impact velocity, else the fall from h,
+/// sqrt(2 g h) without air and v_t sqrt(1 - exp(-2 g h / v_t^2)) with its drag (model/air_drag.hpp).
 double approach_speed(const DropTestSetup& s);
 
 }  // namespace hertzdash

@@ -2,6 +2,7 @@
 #include "hertzdash/simulation/options/declared_choice.hpp"
 #include "hertzdash/simulation/options/hertz_scale_refusal.hpp"
 
+#include "hertzdash/model/air_drag.hpp"
 #include "hertzdash/model/drop_test_parameters.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
@@ -175,6 +176,15 @@ std::vector<RunOption> make_run_options() {
       option(p::gravity, &R::gravity_mps2, G::setup, {}, [](Setup s) -> V { return s.gravity_mps2; }),
       described(p::no_tension, &R::no_tension, G::setup, {},
                 [](Setup s, Solver) -> Text { return flag_text(s.no_tension); }),
+      // Air drag: described only where it acts (a run without air says nothing of it).
+      described(air_drag_parameters::air_density, &R::air_density_kg_per_m3, G::setup, {},
+                [](Setup s, Solver) -> Text {
+                  return s.air_drag.active() ? Text(number_text(s.air_drag.air_density_kg_per_m3)) : Text();
+                }),
+      described(air_drag_parameters::drag_coefficient, &R::drag_coefficient, G::setup, {},
+                [](Setup s, Solver) -> Text {
+                  return s.air_drag.active() ? Text(number_text(s.air_drag.drag_coefficient)) : Text();
+                }),
   };
   add_law_options(o);
   o.push_back(option({.key = "damping", .type = ParameterType::text, .choices = law_choices(),
@@ -444,6 +454,8 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   if (o.rod_nu) s.rod.nu = *o.rod_nu;
   if (o.gravity_mps2) s.gravity_mps2 = *o.gravity_mps2;
   s.no_tension = o.no_tension;
+  if (o.air_density_kg_per_m3) s.air_drag.air_density_kg_per_m3 = *o.air_density_kg_per_m3;
+  if (o.drag_coefficient) s.air_drag.drag_coefficient = *o.drag_coefficient;
   if (const std::string zeta = o.zeta.value_or("paper"); zeta == "paper") s.damping.zeta_form = ZetaForm::paper;
   else if (zeta == "exact") s.damping.zeta_form = ZetaForm::exact;
   else throw InvalidParameter("zeta", zeta, "one of: paper, exact");
@@ -471,6 +483,9 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
     throw InvalidParameter("height", format_value(*o.height_m),
                            "omitted when `impact-velocity` is given (the run then starts at contact onset with that "
                            "speed; the height only sets it)");
+  if (o.drag_coefficient && !s.air_drag.active())
+    throw InvalidParameter("drag-coefficient", format_value(*o.drag_coefficient),
+                           "given only with `air-density` > 0 (without air there is no drag)");
   if (o.viscous_time_constant_s && o.reference_velocity_mps)
     throw InvalidParameter("reference-velocity", format_value(*o.reference_velocity_mps),
                            "omitted when `viscous-time-constant` is given (the reference speed only calibrates A)");

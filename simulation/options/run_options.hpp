@@ -43,6 +43,8 @@ struct RunOptions {
   std::optional<double> rod_E_Pa, rod_nu;        ///< rod modulus [Pa] (inf: rigid), Poisson ratio
   std::optional<double> gravity_mps2;            ///< g [m/s^2]
   bool no_tension = false;                       ///< clamp the contact force at >= 0
+  std::optional<double> air_density_kg_per_m3;   ///< air density [kg/m^3] of the flights' drag (unset: none)
+  std::optional<double> drag_coefficient;        ///< the drag coefficient C_d (unset: a smooth sphere's)
   std::optional<std::string> zeta;               ///< the paper's law's zeta form: paper (eq. 6, unset) or exact
   std::optional<std::string> omega_n;            ///< the paper's law's omega_n variant (unset: paper)
   std::string damping{default_damping_law};      ///< a registered law

@@ -19,10 +19,12 @@ void run_rigid_bounces(const DropTestSetup& setup, std::string_view law, const S
                        const BounceOptions& options, BounceSequence& out) {
   ImpactSimulator simulator(solver);
   const double g = setup.gravity_mps2;
-  double v0 = approach_speed(setup);
-  double t_onset = setup.impact_velocity_mps ? 0.0 : v0 / g;
+  const double v_t = terminal_speed_mps(setup.air_drag, setup.mass_kg, setup.ball_radius_m, g);
+  const Fall drop = setup.impact_velocity_mps ? Fall{0.0, *setup.impact_velocity_mps} : fall_from_rest(setup.height_m, g, v_t);
+  double v0 = drop.speed_mps, t_onset = drop.time_s;
+  DropTestSetup impact = setup;
+  impact.air_drag = {};  // contacts without drag (model/air_drag.hpp)
   for (int n = 0; n < options.impacts; ++n) {
-    DropTestSetup impact = setup;
     impact.impact_velocity_mps = v0;
     const ImpactSummary r = simulator.run(impact, law);
     if (n == 0) out.integrator_used = r.integrator_used;
@@ -38,19 +40,19 @@ void run_rigid_bounces(const DropTestSetup& setup, std::string_view law, const S
     out.impacts.push_back(b);
     if (options.on_impact) options.on_impact(out.impacts.size());
     if (!b.separated || b.rebound_speed_mps < options.min_rebound_velocity_mps) return;
-    // Ballistic from the separation at depth x_s (> 0 where the tension clamp ended contact):
-    // the face rises x_s before it clears the ball, and meets it again on the way down at
-    // v = sqrt(v_r^2 - 2 g x_s), a flight of (v_r + v) / g (2 v_r / g for x_s = 0).
+    // The flight from the separation at depth x_s (> 0 where the tension clamp ended contact):
+    // up to the apex H above it, down H - x_s to the next onset (in vacuum v = sqrt(v_r^2 - 2 g x_s),
+    // a flight of (v_r + v) / g, 2 v_r / g for x_s = 0; with drag model/air_drag.hpp's closed forms).
     const double v_r = b.rebound_speed_mps, x_s = r.separation_deformation_m;
-    const double v_squared = v_r * v_r - 2.0 * g * x_s;
-    if (!(v_squared > 0)) {
+    const std::optional<ReturnFlight> flight = return_flight(v_r, x_s, g, v_t);
+    if (!flight) {
       out.end_reason = fmt::format("the rebound ({:.3g} m/s) did not lift the rod clear of the {:.3g} m deformation at "
                                    "which the tension clamp ended contact",
                                    v_r, x_s);
       return;
     }
-    t_onset = b.separation_time_s + (v_r + std::sqrt(v_squared)) / g;
-    v0 = std::sqrt(v_squared);
+    t_onset = b.separation_time_s + flight->time_s;
+    v0 = flight->landing_speed_mps;
   }
 }
 
@@ -126,6 +128,10 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
     if (is_iterated(s.damping.omega_n))
       throw InvalidParameter("omega-n", to_string(s.damping.omega_n),
                              "a variant that is not iterated, for a bounce sequence of the elastic rod");
+    if (s.air_drag.active())
+      throw InvalidParameter("air-density", format_value(s.air_drag.air_density_kg_per_m3),
+                             "0 for the elastic rod, whose flights are integrated without drag (drag acts in the "
+                             "rigid model's flights)");
     runs.run_elastic_bounces(s, solver, options, out);
     for (BounceImpact& b : out.impacts)
       b.diagnostics = impact_diagnostics(bounce_impact_summary(b, out, s), s, solver);

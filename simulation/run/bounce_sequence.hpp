@@ -12,6 +12,8 @@
 //   t_on[n+1] = t_sep[n] + 2 v_r[n] / g,   v0[n+1] = v_r[n]
 // (with the tension clamp, contact may end at a depth x_s > 0, which the face must climb out of:
 // v0[n+1] = sqrt(v_r^2 - 2 g x_s), t_on[n+1] = t_sep[n] + (v_r + v0[n+1]) / g),
+// and with air drag (`air-density`, model/air_drag.hpp) the drag's closed forms instead: the rise
+// to the apex H and the fall through H - x_s, the first fall from `height` likewise,
 // so no flight is integrated and event-location errors cannot accumulate: the onset time of
 // impact n carries only the contact-time and rebound-speed errors of the impacts before it
 // (tests/test_bounce_sequence.cpp bounds them; validation/bounce states them).

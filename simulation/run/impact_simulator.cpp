@@ -26,6 +26,10 @@ ImpactSimulator::ImpactSimulator(const SolverSettings& settings) : settings_(set
 // Only a plain std::runtime_error is extended; a typed one (DataError, ...) passes unchanged.
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::string_view law,
                                    std::vector<TraceSample>* trace) try {
+  if (setup.air_drag.active())  // the fall is integrated without drag: refused, not ignored
+    throw InvalidParameter("air-density", format_value(setup.air_drag.air_density_kg_per_m3),
+                           "0 for a single impact, whose fall is integrated in vacuum; drag acts in the flights of "
+                           "`hertzdash bounce` and `fit --bounce-times` (the rigid rod)");
   if (is_iterated(setup.damping.omega_n)) {
     if (law != HongoPaper::info.name)
       throw InvalidParameter("omega-n", to_string(setup.damping.omega_n),
