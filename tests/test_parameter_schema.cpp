@@ -40,7 +40,8 @@ using test::set_sample;
 
 // Whether o's readers read it in this run.
 bool read_in(const RunOption& o, const RunOptions& run) {
-  return o.readers.read_by(run.damping, run.rod_model == "elastic", integrator_traits(parse_integrator(run.integrator)));
+  return o.readers.read_by(run.damping, run.rod_model == "elastic", integrator_traits(parse_integrator(run.integrator)),
+                           run.follows_flights);
 }
 
 Parameters description(const RunOptions& o) {

@@ -19,7 +19,7 @@ TEST_CASE("a case file takes every option under its key", "[parameters][sweep]")
     const std::string toml = o.decl.type == ParameterType::text ? "\"" + value + "\"" : value;
     INFO(o.name << " = " << toml);
     const std::string text = "[base]\n" + o.name + " = " + toml + "\n";
-    if (o.readers.trace_only) {  // a sweep records no trace: refused by its key
+    if (o.readers.trace_only || o.readers.flights_only) {  // a sweep records no trace, follows no flight: refused
       CHECK_THROWS_WITH(parse_sweep_case(text, "case.toml"), Catch::StartsWith("invalid base." + o.name + " "));
       continue;
     }

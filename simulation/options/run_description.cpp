@@ -24,7 +24,9 @@ Parameters describe_run(const DropTestSetup& setup, std::string_view law, const 
       p.emplace_back("damping", std::string(law));
       continue;
     }
-    if (!option.value_in_run || !option.readers.read_by(reading_law, setup.elastic_rod.has_value(), integrator))
+    // A set-up holds flight-only inputs (air drag) only where its run follows flights.
+    if (!option.value_in_run ||
+        !option.readers.read_by(reading_law, setup.elastic_rod.has_value(), integrator, setup.air_drag.active()))
       continue;
     if (const auto value = option.value_in_run(setup, solver)) p.emplace_back(column_name(option), *value);
   }

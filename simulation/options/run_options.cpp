@@ -177,11 +177,11 @@ std::vector<RunOption> make_run_options() {
       described(p::no_tension, &R::no_tension, G::setup, {},
                 [](Setup s, Solver) -> Text { return flag_text(s.no_tension); }),
       // Air drag: described only where it acts (a run without air says nothing of it).
-      described(air_drag_parameters::air_density, &R::air_density_kg_per_m3, G::setup, {},
+      described(air_drag_parameters::air_density, &R::air_density_kg_per_m3, G::setup, {.flights_only = true},
                 [](Setup s, Solver) -> Text {
                   return s.air_drag.active() ? Text(number_text(s.air_drag.air_density_kg_per_m3)) : Text();
                 }),
-      described(air_drag_parameters::drag_coefficient, &R::drag_coefficient, G::setup, {},
+      described(air_drag_parameters::drag_coefficient, &R::drag_coefficient, G::setup, {.flights_only = true},
                 [](Setup s, Solver) -> Text {
                   return s.air_drag.active() ? Text(number_text(s.air_drag.drag_coefficient)) : Text();
                 }),
@@ -277,15 +277,19 @@ std::string join(const std::vector<std::string>& items) {
 
 }  // namespace
 
-bool OptionReaders::read_by(std::string_view law, bool elastic_rod_run, const IntegratorTraits& integrator) const {
+bool OptionReaders::read_by(std::string_view law, bool elastic_rod_run, const IntegratorTraits& integrator,
+                            bool follows_flights) const {
   if (!law.empty() && !laws.empty() && std::find(laws.begin(), laws.end(), law) == laws.end()) return false;
   if (elastic_rod && !elastic_rod_run) return false;
+  if (flights_only && (!follows_flights || elastic_rod_run)) return false;
   return !integrators || integrators(integrator);
 }
 
 std::string OptionReaders::describe() const {
   if (!laws.empty()) return key_reference("damping") + " " + join(laws);
   if (elastic_rod) return key_reference("rod-model") + " elastic";
+  if (flights_only)
+    return "the flights of the rigid rod's bounce sequence (hertzdash bounce, hertzdash fit --bounce-times)";
   if (integrators) return key_reference("integrator") + " " + integrator_names(integrators);
   return {};
 }
@@ -434,6 +438,10 @@ void require_read(const RunOptions& o, const RunOption& option, const std::strin
     run = key_reference("damping") + " is " + o.damping;
   else if (r.elastic_rod && o.rod_model != "elastic")
     run = key_reference("rod-model") + " is " + o.rod_model;
+  else if (r.flights_only && !o.follows_flights)
+    run = "this run follows no flight: a single impact integrates its fall in vacuum";
+  else if (r.flights_only && o.rod_model != "rigid")
+    run = key_reference("rod-model") + " is " + o.rod_model + ", whose flights are integrated without drag";
   else if (r.integrators && !r.integrators(integrator))
     run = key_reference("integrator") + " is " + std::string(integrator.name);
   if (!run.empty())

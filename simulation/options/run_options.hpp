@@ -70,6 +70,9 @@ struct RunOptions {
   /// The numbers given for inputs a law declares and reads through DampingSettings::number()
   /// (a law's own inputs, model/damping/damping_law.hpp), by key.
   std::map<std::string, double, std::less<>> law_numbers;
+  /// Not an option: whether the front end follows the body's flights (`hertzdash bounce`, `fit
+  /// --bounce-times`), where the options read only in flight (air drag) are read; others refuse them.
+  bool follows_flights = false;
 };
 
 /// Who reads an option, besides every command that takes it: all runs, or only some laws, only
@@ -79,12 +82,14 @@ struct OptionReaders {
   bool elastic_rod = false;                               ///< only --rod-model elastic
   bool (*integrators)(const IntegratorTraits&) = nullptr; ///< non-null: only the integrators it accepts
   bool trace_only = false;  ///< read only where a trace is recorded (refuse_trace_only_options)
+  /// Read only in the flights of the rigid rod's bounce sequence (RunOptions::follows_flights).
+  bool flights_only = false;
   /// What reads it, as a refusal says it: "`damping` hongo", "`rod-model` elastic",
   /// "`integrator` euler, rk4"; empty for an option every run reads.
   std::string describe() const;
   /// Whether a run of the law `law` (empty: any law), on the elastic rod or not, with
-  /// `integrator` reads it.
-  bool read_by(std::string_view law, bool elastic_rod, const IntegratorTraits& integrator) const;
+  /// `integrator`, following flights or not, reads it.
+  bool read_by(std::string_view law, bool elastic_rod, const IntegratorTraits& integrator, bool follows_flights) const;
 };
 
 /// A law's own number, kept in RunOptions::law_numbers under its key.

@@ -48,10 +48,12 @@ BounceRun run_bounce(const RunOptions& options, const PaperParameters& paper, co
   if (interval_target && options.restitution)
     throw InvalidParameter("restitution", format_value(*options.restitution),
                            "omitted with `target-interval-restitution` (the calibration finds the input e)");
-  r.setup = resolve_setup(options, paper);
+  RunOptions flying = options;
+  flying.follows_flights = true;  // the sequence's flights read the air drag
+  r.setup = resolve_setup(flying, paper);
   refuse_trace_only_options(options, "hertzdash bounce");
   r.law = options.damping;
-  r.solver = resolve_solver(options);
+  r.solver = resolve_solver(flying);
   r.options = bounce;
   validate(r.options);
   r.interval_target = interval_target;

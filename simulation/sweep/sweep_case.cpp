@@ -307,6 +307,8 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
     if (std::find(given.begin(), given.end(), &o) != given.end())
       r.fail(key, node, "a second value", "given once in the whole case ([base], [grid] and [sample] each set an option once)");
     if (o.readers.trace_only) r.fail(key, node, r.describe(node), trace_only_range("a sweep"));
+    if (o.readers.flights_only)
+      r.fail(key, node, r.describe(node), "given only with " + o.readers.describe() + "; a sweep runs single impacts");
     given.push_back(&o);
   };
 
