@@ -137,3 +137,84 @@ TEST_CASE("bounce recording: every law compared and cross-validated, the true on
   CHECK(k.cross_validation->rms_prediction_error < h.cross_validation->rms_prediction_error);
   CHECK(k.cross_validation->ratio < 2);
 }
+
+TEST_CASE("fit --bounce-times: JSON keys, flagged glitches on stderr, refusals with exit 2", "[bounce_fit][cli]") {
+  ScratchDir dir;
+  BounceRecording r = synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, 21);
+  insert_time(r, 1, 4, r.drops[1].impact_time_s[3] + 0.004);  // doubled: drop b, row 4
+  remove_time(r, 0, 5);                                       // missed: drop a, row 5
+  r.drops[2].drop_height_m = 0.8 * 0.8 / (2 * 9.81);          // drop c's height: its v0's starting value
+  const auto file = dir.path / "rec.csv";
+  write_bounce_recording(file, r, "tests/test_bounce_recording_fit.cpp", {});
+
+  const auto c = run_cli("fit --bounce-times " + file.string() + " --compare-laws --json");
+  REQUIRE(c.exit_code == 0);
+  CHECK(c.err.find("drop 'b' index 4: doubled") != std::string::npos);
+  CHECK(c.err.find("drop 'a' index 5: missed") != std::string::npos);
+  CHECK(c.err.find("synthetic") != std::string::npos);
+  const auto j = nlohmann::json::parse(c.out);
+  CHECK(j["recording"]["path"] == file.string());
+  CHECK(j["recording"]["synthetic"] == true);
+  CHECK(j["recording"]["drops"] == 3);
+  CHECK(j["recording"]["impacts"] == 24);
+  CHECK(j["recording"]["used"] == 23);
+  REQUIRE(j["flagged"].size() == 2);
+  for (const char* key : {"drop", "index", "kind", "reason"}) CHECK(j["flagged"][0].contains(key));
+  CHECK(j["flagged"][0]["drop"] == "a");
+  CHECK(j["flagged"][0]["index"] == 5);
+  CHECK(j["flagged"][0]["kind"] == "missed");
+  CHECK(j["flagged"][1]["drop"] == "b");
+  CHECK(j["flagged"][1]["kind"] == "doubled");
+  REQUIRE(j["fits"].size() + j["failures"].size() == registered_laws().size());
+  REQUIRE(j["fits"].size() > 1);
+  for (std::size_t i = 1; i < j["fits"].size(); ++i)  // ranked by AIC (none failed here)
+    CHECK(j["fits"][i - 1]["aic"].get<double>() <= j["fits"][i]["aic"].get<double>());
+  const auto& f = j["fits"][0];
+  for (const char* key : {"law", "parameters", "drops", "reduced_chi_square", "aic", "bic", "warnings",
+                          "e_effective_range", "points", "sigma_s"})
+    CHECK(f.contains(key));
+  for (const char* key : {"name", "estimate", "standard_error"}) CHECK(f["parameters"][0].contains(key));
+  CHECK(f["e_effective_range"].size() == 2);
+  REQUIRE(f["drops"].size() == 3);
+  for (const char* key : {"drop", "first_impact_speed_mps", "clock_offset_s"}) CHECK(f["drops"][0].contains(key));
+  CHECK(f["drops"][0]["first_impact_speed_mps"].contains("standard_error"));
+  CHECK(f["drops"][2]["drop_height_m"].get<double>() == Approx(0.8 * 0.8 / (2 * 9.81)));
+  REQUIRE(f["points"].size() == 23);
+  for (const char* key : {"drop", "index", "impact_number", "measured", "model", "residual"})
+    CHECK(f["points"][0].contains(key));
+  CHECK(f["points"][5]["impact_number"] == 6);  // drop a's row 5 follows the missed impact 5
+
+  // Cross-validation, one law.
+  const auto cv = run_cli("fit --bounce-times " + file.string() + " --cross-validate --json");
+  REQUIRE(cv.exit_code == 0);
+  const auto k = nlohmann::json::parse(cv.out);
+  REQUIRE(k["fits"].size() == 1);
+  CHECK(k["fits"][0]["cross_validation"]["folds"] == 3);
+  CHECK(k["fits"][0]["cross_validation"].contains("rms_prediction_error_s"));
+  CHECK(k["fits"][0]["cross_validation"].contains("ratio_to_scatter"));
+
+  // Nothing usable: exit 2, the file named, nothing on stdout.
+  const auto useless = dir.write("useless.csv", "drop,impact_time_s\n# source: SYNTHETIC\n1,0.5\n1,0.9\n2,3\n");
+  const auto u = run_cli("fit --bounce-times " + useless.string());
+  CHECK(u.exit_code == 2);
+  CHECK(u.err.find(useless.string()) != std::string::npos);
+  CHECK(u.err.find("nothing usable") != std::string::npos);
+  CHECK(u.out.empty());
+  // A bad file: exit 2 and its line.
+  const auto bad = dir.write("bad.csv", "drop,impact_time_s\n# source: x\n1,0.5\n1,inf\n");
+  const auto b = run_cli("fit --bounce-times " + bad.string());
+  CHECK(b.exit_code == 2);
+  CHECK(b.err.find(bad.string() + ":4:") != std::string::npos);
+  CHECK(b.out.empty());
+  // Meaningless combinations: refused naming both options.
+  for (const std::string& extra : {std::string("--channels force_N"), std::string("--impact-velocity 0.5"),
+                                   std::string("--height 0.02"), std::string("--restitution-table ") + file.string(),
+                                   std::string("--trace ") + file.string()}) {
+    const auto x = run_cli("fit --bounce-times " + file.string() + " " + extra);
+    CAPTURE(extra, x.err);
+    CHECK(x.exit_code == 2);
+    CHECK(x.err.find("--bounce-times") != std::string::npos);
+    CHECK(x.err.find(extra.substr(0, extra.find(' '))) != std::string::npos);
+    CHECK(x.out.empty());
+  }
+}
