@@ -332,6 +332,7 @@ void check_bounce_fit_options(const RunOptions& o) {
     throw InvalidParameter("rod-model", o.rod_model,
                            "rigid with `bounce-times` (its flights are closed forms; the elastic rod's are integrated, "
                            "too slow to fit)");
+  refuse_trace_only_options(o, "hertzdash fit --bounce-times");
   if (o.omega_n && is_iterated(parse_omega_n_variant(*o.omega_n)))
     throw InvalidParameter("omega-n", *o.omega_n,
                            "a closed-form variant with `bounce-times`: paper, impact-energy, rebound-energy or "

@@ -61,7 +61,7 @@ struct BounceFitSettings {
 
 /// Refuses (InvalidParameter) the options a bounce-recording fit cannot use: `impact-velocity`
 /// or `height` (each drop's first impact speed is fitted), an elastic rod (flights integrated:
-/// too slow to fit), an iterated omega_n.
+/// too slow to fit), an iterated omega_n, an option read only into a trace.
 void check_bounce_fit_options(const RunOptions& o);
 
 /// One usable impact time and the fitted model there.
