@@ -19,8 +19,8 @@
 //    local ratios (robust while glitches touch fewer than half of them). A clean drop has d of
 //    order the timing jitter over the interval plus the slow change of e (about 0.01-0.05); a
 //    missed impact gives an interval r (1 + r) times its predecessor instead of r, d = ln(1 +
-//    r) (0.41 for r = 0.5, 0.59 for r = 0.8); a doubled detection splitting an interval into a
-//    and b gives d >= ln 2 at the short one's ends when a = b and more the shorter a is. The
+//    r) (0.41 for r = 0.5, 0.59 for r = 0.8); a doubled detection splitting an interval in two
+//    halves gives d = ln 2 at the times before and after the split, more the shorter a part. The
 //    threshold sits halfway in the logarithm between clean and missed, d > ln(1 + r) / 2 (a
 //    factor 1.22 for r = 0.5, 1.34 for r = 0.8). While some d exceeds it, the single repair
 //    that most lowers the largest d (then the sum of d^2) is made: leave out one time (the
@@ -65,7 +65,7 @@ struct CheckedDrop {
   std::vector<int> impact_number;     ///< each time's impact number from the drop's first (gaps: missed impacts)
   std::vector<std::size_t> index;     ///< each time's index in the drop's rows (file order)
   double drop_height_m = 0;           ///< as recorded (0: not given)
-  double interval_ratio = 0;          ///< r, the median local ratio (0 for a drop of fewer than three times)
+  double interval_ratio = 0;          ///< r, the median local ratio of its usable times
 };
 
 struct CheckedRecording {
