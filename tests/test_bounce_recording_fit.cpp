@@ -143,7 +143,7 @@ TEST_CASE("fit --bounce-times: JSON keys, flagged glitches on stderr, refusals w
   BounceRecording r = synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, 21);
   insert_time(r, 1, 4, r.drops[1].impact_time_s[3] + 0.004);  // doubled: drop b, row 4
   remove_time(r, 0, 5);                                       // missed: drop a, row 5
-  r.drops[2].drop_height_m = 0.8 * 0.8 / (2 * 9.81);          // drop c's height: its v0's starting value
+  r.drops[2].drop_height_m = 0.8 * 0.8 / (2 * 9.80665);      // drop c's height: its v0's starting value
   const auto file = dir.path / "rec.csv";
   write_bounce_recording(file, r, "tests/test_bounce_recording_fit.cpp", {});
 
@@ -178,7 +178,9 @@ TEST_CASE("fit --bounce-times: JSON keys, flagged glitches on stderr, refusals w
   REQUIRE(f["drops"].size() == 3);
   for (const char* key : {"drop", "first_impact_speed_mps", "clock_offset_s"}) CHECK(f["drops"][0].contains(key));
   CHECK(f["drops"][0]["first_impact_speed_mps"].contains("standard_error"));
-  CHECK(f["drops"][2]["drop_height_m"].get<double>() == Approx(0.8 * 0.8 / (2 * 9.81)));
+  CHECK(f["drops"][2]["drop_height_m"].get<double>() == Approx(0.8 * 0.8 / (2 * 9.80665)));
+  // Its height gives v0's starting value, sqrt(2 g h) = 0.8 m/s (g = 9.80665, data/assumptions.csv).
+  CHECK(f["drops"][2]["first_impact_speed_mps"]["initial"].get<double>() == Approx(0.8).epsilon(1e-12));
   REQUIRE(f["points"].size() == 23);
   for (const char* key : {"drop", "index", "impact_number", "measured", "model", "residual"})
     CHECK(f["points"][0].contains(key));
