@@ -1,8 +1,8 @@
 // libFuzzer harness: the bounce-recording reader (io/bounce_recording.hpp). Any input must be
 // read or refused with a DataError; a recording that was read must hold what the format promises
-// (a source, at least one drop, each with a non-empty label not beginning with '#', at least one
-// time, every time finite, a "FILE:LINE" per time, a height 0 (not given) or finite > 0, no two
-// drops with one label), and write back to a text that reads again to the same values.
+// (a source, at least one drop, each with a plain label (no comma, quote, '#' or control
+// character) of its own, at least one time, every time finite, a "FILE:LINE" per time, a height
+// 0 (not given) or finite > 0), and write back to a text that reads again to the same values.
 #include "fuzz/input_file.hpp"
 #include "hertzdash/io/bounce_recording.hpp"
 #include "hertzdash/io/csv_table.hpp"
@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (r.drops.empty() || r.source.empty()) __builtin_trap();
   std::set<std::string> labels;
   for (const RecordedDrop& d : r.drops) {
-    if (d.label.empty() || d.label.front() == '#' || !labels.insert(d.label).second) __builtin_trap();
+    if (!plain_label(d.label) || !labels.insert(d.label).second) __builtin_trap();
     if (d.impact_time_s.empty() || d.where.size() != d.impact_time_s.size()) __builtin_trap();
     for (double t : d.impact_time_s)
       if (!std::isfinite(t)) __builtin_trap();

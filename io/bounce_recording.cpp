@@ -39,6 +39,13 @@ std::string trimmed(const std::string& s) {
 
 }  // namespace
 
+bool plain_label(const std::string& label) {
+  return !label.empty() && std::none_of(label.begin(), label.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return c == ',' || c == '"' || c == '#' || u < 0x20 || u == 0x7f;
+  });
+}
+
 std::size_t BounceRecording::impacts() const {
   std::size_t n = 0;
   for (const RecordedDrop& d : drops) n += d.impact_time_s.size();
@@ -78,8 +85,10 @@ BounceRecording read_bounce_recording(const std::filesystem::path& path) {
   for (std::size_t r = 0; r < t.rows(); ++r) {
     const std::string label = trimmed(t.text(r, drop_column));
     if (label.empty()) throw DataError(t.field_location(r, drop_column) + ": empty drop label");
-    if (label.front() == '#')
-      throw DataError(t.field_location(r, drop_column) + ": a drop label may not begin with '#' (a comment line)");
+    if (!plain_label(label))
+      throw DataError(t.field_location(r, drop_column) +
+                      ": a drop label is text without commas, double quotes, '#' or control characters (so that "
+                      "every CSV reader, pandas and numpy among them, reads it as written)");
     auto it = index.find(label);
     if (it == index.end()) {
       it = index.emplace(label, out.drops.size()).first;

@@ -18,7 +18,7 @@ namespace hertzdash {
 
 /// One drop of a recording: its detected impacts in the file's order.
 struct RecordedDrop {
-  std::string label;                  ///< the `drop` field (any non-empty text)
+  std::string label;                  ///< the `drop` field, trimmed (plain_label)
   std::vector<double> impact_time_s;  ///< the detected impact times [s], in the file's order
   std::vector<std::string> where;     ///< "FILE:LINE" of each time's row, for messages
   double drop_height_m = 0;           ///< the drop height [m] where given, else 0 (unknown)
@@ -34,12 +34,16 @@ struct BounceRecording {
   std::size_t impacts() const;  ///< rows, over every drop
 };
 
+/// Whether `label` may label a drop: non-empty, without commas, double quotes, '#' or control
+/// characters (written as it is, every CSV reader reads it back the same).
+bool plain_label(const std::string& label);
+
 /// The columns of the format: the two required, then the optional one.
 const std::vector<std::string>& bounce_recording_columns();
 
 /// Read and check one file; throws DataError naming the file (and FILE:LINE:COL of a bad field):
-/// a missing `source`, a `synthetic` other than true or false, an unknown or missing column, an
-/// empty `drop` label, an impact time that is not a finite decimal number, a drop_height_m that
+/// a missing `source`, a `synthetic` other than true or false, an unknown or missing column, a
+/// `drop` label that is empty or not plain_label (after trimming blanks), an impact time that is not a finite decimal number, a drop_height_m that
 /// is not a finite number > 0 or differs between two rows of one drop (an empty field is
 /// allowed: not given), no rows.
 BounceRecording read_bounce_recording(const std::filesystem::path& path);

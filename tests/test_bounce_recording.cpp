@@ -77,6 +77,10 @@ TEST_CASE("malformed bounce recordings are refused naming the file, the line and
   rejects(header + cols, "no impacts");
   // A bad field: FILE:LINE:COL and the column (the header is lines 1-3).
   rejects(header + cols + "1,0.1\n,0.5\n", "bad.csv:5:1: column 'drop': empty drop label");
+  rejects(header + cols + "1,0.1\n\"a,b\",0.5\n", "bad.csv:5:1: column 'drop': a drop label is text without commas");
+  rejects(header + cols + "1,0.1\n\"a\"\"b\",0.5\n", "a drop label is text without commas, double quotes");
+  rejects(header + cols + "1,0.1\n\"#2\",0.5\n", "a drop label is text without commas, double quotes, '#'");
+  rejects(header + cols + "1,0.1\na\x01,0.5\n", "or control characters");
   rejects(header + cols + "1,0.1\n 1,nan\n", "bad.csv:5:4: column 'impact_time_s': 'nan' is not a decimal number");
   rejects(header + cols + "1,0.1\n1,1e400\n", "out of range of double");
   rejects(header + cols + "1,0.1\n1,\n", "column 'impact_time_s'");
