@@ -103,8 +103,8 @@ sanitize: deps
 fuzz: deps
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DHERTZDASH_FUZZ=ON \
 	  -DHERTZDASH_WITH_MPI=OFF $(CMAKE_ARGS)
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target csv_table_fuzzer measured_trace_fuzzer restitution_table_fuzzer bounce_recording_fuzzer \
-	  sweep_case_fuzzer
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target csv_table_fuzzer measured_trace_fuzzer restitution_table_fuzzer \
+	  bounce_recording_fuzzer sweep_case_fuzzer
 	fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 clean:
