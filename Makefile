@@ -98,13 +98,13 @@ sanitize: deps
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan-suppressions.txt \
 	  ctest --output-on-failure -j $(JOBS)
 
-# libFuzzer (clang) on the CSV table, measured-trace, restitution-table and case-file readers, FUZZ_SECONDS each
-# (fuzz/run.sh: seed corpora from data/, fuzz/seeds/ and the docs' case files).
+# libFuzzer (clang) on the CSV table, measured-trace, restitution-table, bounce-recording and case-file
+# readers, FUZZ_SECONDS each (fuzz/run.sh: seed corpora from data/, fuzz/seeds/ and the docs' case files).
 fuzz: deps
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DHERTZDASH_FUZZ=ON \
 	  -DHERTZDASH_WITH_MPI=OFF $(CMAKE_ARGS)
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target csv_table_fuzzer measured_trace_fuzzer restitution_table_fuzzer \
-	  sweep_case_fuzzer
+	  bounce_recording_fuzzer sweep_case_fuzzer
 	fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 clean:

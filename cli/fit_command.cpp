@@ -5,12 +5,14 @@
 // AIC; --curves writes the trace, the fitted model and the residuals for a figure
 // (validation/identification/identification_fit.gp draws two). --restitution-table fits a
 // law's own parameters to e against the impact speed instead (simulation/fit/restitution_fit.hpp),
-// optionally cross-validated (--cross-validate).
+// optionally cross-validated (--cross-validate); --bounce-times to the impact times of a bounce
+// recording, its dirty data flagged first (simulation/fit/bounce_fit.hpp).
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
 #include "hertzdash/simulation/fit/virtual_measurement.hpp"
+#include "hertzdash/simulation/reports/bounce_fit_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
 #include <fmt/format.h>
@@ -24,7 +26,7 @@ namespace {
 
 struct FitCommandOptions {
   RunOptions run;
-  std::string trace_path, table_path, fit = "ball-E,restitution", channels, curves_path;
+  std::string trace_path, table_path, bounce_path, fit = "ball-E,restitution", channels, curves_path;
   double resample_Hz = 0;
   bool compare_laws = false, cross_validate = false, json = false, mkdir = false;
 };
@@ -200,6 +202,105 @@ int run_restitution_table_fit(const FitCommandOptions& opt, const CLI::App& sub)
   return r.fits.front().failed ? exit_fit_failed : 0;
 }
 
+void print_bounce_fit(const BounceFit& f) {
+  std::cout << fmt::format("  {:<24} {:>14} {:>14} {:>14} {:>9}\n", "parameter", "initial", "estimate", "std_error",
+                           "rel_%");
+  for (const FittedParameter& p : f.parameters)
+    std::cout << fmt::format("  {:<24} {:>14.6g} {:>14.8g} {:>14.3g} {:>9.3g}\n", p.name, p.initial, p.estimate,
+                             p.standard_error, 100 * p.standard_error / std::abs(p.estimate));
+  std::cout << fmt::format("  {:<16} {:>7} {:>12} {:>11} {:>14} {:>11}\n", "drop", "impacts", "v0_mps", "v0_se",
+                           "clock_offset_s", "offset_se");
+  for (const BounceDropFit& d : f.drops)
+    std::cout << fmt::format("  {:<16} {:>7} {:>12.6g} {:>11.3g} {:>14.9g} {:>11.3g}\n", d.label, d.impacts,
+                             d.first_impact_speed.estimate, d.first_impact_speed.standard_error,
+                             d.clock_offset.estimate, d.clock_offset.standard_error);
+  std::cout << fmt::format("  model e over the data's impacts: {:.6f} to {:.6f}\n", f.e_min, f.e_max);
+  std::cout << fmt::format("  timing sigma {:.4g} s (estimated), {} times, {} parameters, AIC {:.6g}, BIC {:.6g}, {}\n",
+                           f.sigma, f.times, f.fitted, f.aic, f.bic,
+                           f.failed ? "fit failed" : f.identifiable ? "identifiable" : "NOT identifiable");
+  if (f.cross_validation) {
+    const BounceCrossValidation& cv = *f.cross_validation;
+    if (cv.failure.empty())
+      std::cout << fmt::format("  cross-validation ({} drops left out in turn): RMS prediction error {:.4g} s, {:.3g} "
+                               "times the timing sigma {:.4g} s\n",
+                               cv.folds, cv.rms_prediction_error, cv.ratio, cv.scatter);
+    else std::cout << fmt::format("  cross-validation failed: {}\n", cv.failure);
+  }
+  std::cout << fmt::format("  {} iterations, {} model runs ({}), stopped: {}\n", f.iterations, f.model_runs,
+                           f.integrator_used, f.stop_reason);
+  if (f.failed) std::cout << fmt::format("  FIT FAILED: {}\n", f.failure);
+}
+
+void print_bounce_text(const BounceFitRun& r) {
+  std::cout << fmt::format("hertzdash fit: {} ({} drops, {} impacts, {} used, {} flagged{})\n",
+                           r.recording.path.string(), r.recording.drops.size(), r.recording.impacts(),
+                           r.checked.times(), r.checked.flagged.size(), r.recording.synthetic ? ", SYNTHETIC" : "");
+  if (r.fits.size() == 1 && r.failures.empty()) {
+    std::cout << fmt::format("  damping law '{}'\n", r.fits[0].law);
+    print_bounce_fit(r.fits[0]);
+    return;
+  }
+  const bool cv = r.settings.cross_validate;
+  std::cout << fmt::format("  {:>3} {:<22} {:>12} {:>10} {:>12} {:>21}{}\n", "", "law (best first)", "AIC", "dAIC", "BIC",
+                           "model e range", cv ? fmt::format(" {:>12} {:>8}", "cv_rms_s", "cv_rank") : "");
+  std::vector<std::size_t> cv_rank(r.fits.size(), 0);
+  if (cv) {
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < r.fits.size(); ++i)
+      if (r.fits[i].cross_validation && r.fits[i].cross_validation->failure.empty()) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return r.fits[a].cross_validation->rms_prediction_error < r.fits[b].cross_validation->rms_prediction_error;
+    });
+    for (std::size_t k = 0; k < order.size(); ++k) cv_rank[order[k]] = k + 1;
+  }
+  std::string ties;
+  for (std::size_t i = 0; i < r.fits.size(); ++i) {
+    const BounceFit& f = r.fits[i];
+    const double gap = f.aic - r.fits.front().aic;
+    if (i > 0 && gap < aic_tie) ties += (ties.empty() ? "" : ", ") + f.law;
+    std::string cv_columns;
+    if (cv)
+      cv_columns = cv_rank[i] ? fmt::format(" {:>12.4g} {:>8}", f.cross_validation->rms_prediction_error, cv_rank[i])
+                              : fmt::format(" {:>12} {:>8}", "-", "-");
+    std::cout << fmt::format("  {:>3} {:<22} {:>12.6g} {:>10.4g} {:>12.6g} {:>10.6f}-{:<10.6f}{}\n", i + 1, f.law, f.aic,
+                             gap, f.bic, f.e_min, f.e_max, cv_columns);
+  }
+  for (const auto& [law, why] : r.failures)
+    std::cout << fmt::format("  {}: not fitted: {}\n", law, spell_key_references(why, KeySpelling::command_line));
+  for (const BounceFit& f : r.fits)
+    if (f.failed) std::cout << fmt::format("  {}: fit failed: {}\n", f.law, f.failure);
+  if (r.fits.empty()) {
+    std::cout << "  best: none, no law could be fitted\n";
+    return;
+  }
+  if (r.fits.front().failed) std::cout << "  best: none, every fit failed\n";
+  else std::cout << fmt::format("  best: '{}'{}\n", r.fits.front().law,
+                           ties.empty() ? "" : fmt::format(" (tied within dAIC < {:g}: {})", aic_tie, ties));
+  std::cout << fmt::format("  damping law '{}'\n", r.fits.front().law);
+  print_bounce_fit(r.fits.front());
+}
+
+int run_bounce_times_fit(const FitCommandOptions& opt, const CLI::App& sub) {
+  const std::string bounce = "bounce-times";
+  refuse_with(sub, "channels", opt.channels, bounce, "a bounce recording has no channels");
+  refuse_with(sub, "resample", fmt::format("{}", opt.resample_Hz), bounce, "a bounce recording has no samples in time");
+  refuse_with(sub, "curves", opt.curves_path, bounce, "the points of each fit are in --json");
+  refuse_with(sub, "trace", opt.trace_path, bounce, "one input per fit");
+  refuse_with(sub, "restitution-table", opt.table_path, bounce, "one input per fit");
+  refuse_with(sub, "mkdir", "true", bounce, "it writes no file");
+  BounceFitSettings settings;
+  if (const CLI::Option* o = sub.get_option_no_throw("--fit"); o && o->count() > 0)
+    settings.parameters = parse_fit_parameters(opt.fit);
+  settings.cross_validate = opt.cross_validate;
+  const PaperParameters paper = load_paper_parameters();
+  const BounceFitRun r = run_bounce_fit(opt.bounce_path, opt.run, paper, settings, opt.compare_laws);
+  report_diagnostics(bounce_fit_diagnostics(r));
+  if (opt.json) std::cout << to_json(r).dump(2) << "\n";
+  else print_bounce_text(r);
+  if (r.fits.empty()) return exit_fit_failed;
+  return r.fits.front().failed ? exit_fit_failed : 0;
+}
+
 }  // namespace
 
 Command add_fit_command(CLI::App& app) {
@@ -210,30 +311,38 @@ Command add_fit_command(CLI::App& app) {
   sub->add_option("--restitution-table", opt->table_path,
                   "Restitution table, CSV: e against the impact speed (data/measurements/README.md); fits the law's own "
                   "parameters (docs/fit.md); or --trace");
+  sub->add_option("--bounce-times", opt->bounce_path,
+                  "Bounce recording, CSV: the detected impact times of one or more drops (data/measurements/README.md); "
+                  "flags doubled, missed and out-of-order detections, fits the law's own parameters and each drop's "
+                  "first impact speed and clock offset (docs/fit.md); or --trace");
   add_run_options(*sub, opt->run, RunOption::Group::setup);
   sub->add_option("--fit", opt->fit,
                   "Parameters to fit besides the onset time: NAME or NAME:LOWER:UPPER, comma-separated; NAME one of: " +
                       fittable_option_names() + "; the starting values are the run options (or the paper's); with "
-                      "--restitution-table the default is the law's own (restitution, or viscous-time-constant)")
+                      "--restitution-table and --bounce-times the default is the law's own (restitution, or viscous-time-constant)")
       ->capture_default_str();
   sub->add_option("--channels", opt->channels, "Channels of the trace to fit (default: all it has)");
   add_number_option(*sub, "--resample", opt->resample_Hz, "Average the trace into bins of 1/RATE first [Hz]; 0 = as sampled");
   sub->add_flag("--compare-laws", opt->compare_laws, "Fit every registered damping law and rank them by AIC");
   sub->add_flag("--cross-validate", opt->cross_validate,
-                "With --restitution-table: leave out each distinct speed in turn, fit the rest, predict it; rank by "
-                "the prediction error too");
+                "With --restitution-table: leave out each distinct speed in turn, fit the rest, predict it; with "
+                "--bounce-times: each drop; rank by the prediction error too");
   add_output_file_option(*sub, "--curves", opt->curves_path, "Write the trace, the fitted model and the residuals to this CSV file");
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
   add_mkdir_flag(*sub, opt->mkdir);
 
   return {sub, [opt, sub]() {
+            if (!opt->bounce_path.empty()) return run_bounce_times_fit(*opt, *sub);
             if (!opt->table_path.empty()) return run_restitution_table_fit(*opt, *sub);
             if (opt->trace_path.empty())
-              throw CLI::RequiredError("--trace is required (or --restitution-table, a restitution table)",
-                                       CLI::ExitCodes::RequiredError);
+              throw CLI::RequiredError(
+                  "--trace is required (or --restitution-table, a restitution table, or --bounce-times, a bounce "
+                  "recording)",
+                  CLI::ExitCodes::RequiredError);
             if (opt->cross_validate)
               throw InvalidParameter("cross-validate", "true",
-                                     "given only with `restitution-table` (a trace's fit is not cross-validated)");
+                                     "given only with `restitution-table` or `bounce-times` (a trace's fit is not "
+                                     "cross-validated)");
             prepare_output_file("--curves", opt->curves_path, opt->mkdir);
             refuse_shared_files({{"--trace", opt->trace_path}}, {{"--curves", opt->curves_path}});
             TraceFitSettings settings;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Run each libFuzzer harness for a bounded time (make fuzz; docs/reliability.md):
 #   fuzz/run.sh FUZZ_BUILD_DIR [SECONDS]     (SECONDS: each harness, default $FUZZ_SECONDS or 60)
-# Seed corpora: the CSV tables of data/ (CSV reader), the seeds of fuzz/seeds/ (all four), the
+# Seed corpora: the CSV tables of data/ (CSV reader), the seeds of fuzz/seeds/ (all five), the
 # TOML blocks of README.md and docs/sweep.md (case files). Each harness keeps its corpus in
 # FUZZ_BUILD_DIR/corpus/NAME (it grows from run to run) and writes any finding to
 # FUZZ_BUILD_DIR/findings/NAME/; the script fails on the first finding, which must then become a
@@ -18,7 +18,7 @@ seed() {  # NAME: fill the corpus folder with the seeds (content-named, so repea
   cp "$root"/fuzz/seeds/"$name"/* "$dir"/
   case "$name" in
     csv_table) cp "$root"/data/*.csv "$root"/data/external/*/*.csv "$dir"/ ;;
-    measured_trace | restitution_table) ;;
+    measured_trace | restitution_table | bounce_recording) ;;
     sweep_case)
       for doc in README.md docs/sweep.md; do
         awk -v out="$dir/$(basename "$doc" .md)_" '/^```toml$/ {n++; inside = 1; next} /^```$/ {inside = 0}
@@ -28,7 +28,7 @@ seed() {  # NAME: fill the corpus folder with the seeds (content-named, so repea
 }
 
 status=0
-for name in csv_table measured_trace restitution_table sweep_case; do
+for name in csv_table measured_trace restitution_table bounce_recording sweep_case; do
   seed "$name"
   mkdir -p "$build/findings/$name"
   echo "== fuzz $name: ${seconds} s, corpus $(ls "$build/corpus/$name" | wc -l) files"

@@ -1,0 +1,54 @@
+#pragma once
+// Internal to the bounce-recording fit (simulation/fit/bounce_fit.cpp; not installed): the model
+// of each drop's impact times (bounce_fit.hpp, "Model"): the bounce sequence run_bounce_sequence
+// follows from a first approach speed v0, for given values of the fitted options, cached; and
+// the starting values (bounce_fit.hpp, "Parameters").
+#include "hertzdash/simulation/fit/bounce_recording_check.hpp"
+#include "hertzdash/simulation/fit/trace_fit.hpp"
+#include "hertzdash/simulation/options/run_options.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hertzdash::bounce_fit_detail {
+
+/// One impact of a drop's model sequence.
+struct ModelImpact {
+  double onset_s, approach_mps, rebound_mps;  ///< onset from the first impact's [s]; speeds [m/s]
+};
+
+/// The model of every drop: the bounce sequence for (the law's values, v0), its impacts by gbs8 in
+/// the regularising variables at rtol = atol = 1e-12 (restitution_model_solver), cached (the
+/// Jacobian's columns of one drop's speed and of t0 reuse the centre's runs).
+class BounceModel {
+ public:
+  BounceModel(RunOptions base, const PaperParameters& paper, std::vector<std::string> names);
+
+  /// The run options with the fitted options (`names`) at `law`.
+  RunOptions options_at(const std::vector<double>& law) const;
+
+  /// The first `count` impacts at (law, v0), or nullptr where the values leave the model's domain
+  /// (the set-up refuses them, a run fails, the body comes to rest before impact count - 1).
+  const std::vector<ModelImpact>* impacts(const std::vector<double>& law, double v0, int count);
+
+  int runs() const { return runs_; }
+  const std::string& integrator_used() const { return integrator_used_; }
+
+ private:
+  RunOptions base_;
+  const PaperParameters* paper_;
+  std::vector<std::string> names_;
+  std::map<std::vector<double>, std::optional<std::vector<ModelImpact>>> cache_;
+  int runs_ = 0;
+  std::string integrator_used_;
+};
+
+/// The starting values: the law's `parameters`, then v0 and t0 of each drop (bounce_fit.hpp,
+/// "Parameters"). Throws InvalidParameter("fit", ...) for bounds that do not hold the start.
+std::vector<double> starting_values(const CheckedRecording& data, const RunOptions& base, const PaperParameters& paper,
+                                    const std::vector<FitParameter>& parameters);
+
+}  // namespace hertzdash::bounce_fit_detail
