@@ -92,6 +92,7 @@ Command add_shaker_command(CLI::App& app) {
   sub->add_option_function<std::string>("--impact-model", [opt](const std::string& v) { opt->shaker.impact_model = v; },
                                         help(p::impact_model))
       ->group(group);
+  add_number_option(*sub, "--start-phase", opt->shaker.start_phase, help(p::start_phase))->group(group);
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
   add_output_file_option(*sub, "--csv", opt->csv_path, "Write the kept impacts to this CSV file, one row each");
   add_mkdir_flag(*sub, opt->mkdir);

@@ -33,7 +33,14 @@ inline constexpr ParameterDecl impact_model{
     .help = "soft: the contact law integrated with the wall's motion; instantaneous: Newton's law with e = "
             "`restitution`, the textbook bouncing-ball map"};
 
+inline constexpr ParameterDecl start_phase{
+    .key = "start-phase", .range = R::closed_open(0, 1), .default_value = "the period-1 orbit's apex",
+    .default_source = "computed: theta*/(2 pi) + 1/2 where the instantaneous map's period-1 orbit exists, else 0 "
+                      "(simulation/shaker/shaker.hpp)",
+    .help = "Table phase in [0, 1) at which the body is released from rest at `height` above the wall's mean "
+            "position (`height` 0: at rest on the wall)"};
+
 /// The shaker's own inputs, in the order of the options.
-inline constexpr ParameterDecl all[] = {frequency, amplitude, gamma, impacts, transient, impact_model};
+inline constexpr ParameterDecl all[] = {frequency, amplitude, gamma, impacts, transient, impact_model, start_phase};
 
 }  // namespace hertzdash::shaker_parameters

@@ -45,6 +45,8 @@ ShakerCommandRun run_shaker_command(const RunOptions& options, const PaperParame
   o.impacts = static_cast<int>(given_or_default(in.impacts, p::impacts));
   o.transient = static_cast<int>(given_or_default(in.transient, p::transient));
   o.start_height_m = options.height_m;
+  if (in.start_phase) require_in_range(p::start_phase, *in.start_phase);
+  o.start_phase = in.start_phase;
   o.impact_model = parse_shaker_impact_model(in.impact_model.value_or(std::string(p::impact_model.default_value)));
   r.inputs = describe_run(r.setup, r.law, r.solver);
   r.inputs.emplace_back("frequency_Hz", fmt::format("{}", o.wall.frequency_Hz));
@@ -52,9 +54,9 @@ ShakerCommandRun run_shaker_command(const RunOptions& options, const PaperParame
   r.inputs.emplace_back("impacts", std::to_string(o.impacts));
   r.inputs.emplace_back("transient", std::to_string(o.transient));
   r.inputs.emplace_back("impact_model", to_string(o.impact_model));
-  const double T = 1.0 / o.wall.frequency_Hz;
-  r.inputs.emplace_back("start_height_m",
-                        fmt::format("{}", o.start_height_m.value_or(r.setup.gravity_mps2 * T * T / 8.0 + o.wall.amplitude_m)));
+  const ShakerStart start = shaker_start(o, r.setup.restitution, r.setup.gravity_mps2);
+  r.inputs.emplace_back("start_height_m", fmt::format("{}", start.height_m));
+  r.inputs.emplace_back("start_phase", fmt::format("{}", start.phase));
   r.run = run_shaker(r.setup, r.law, r.solver, o);
   return r;
 }

@@ -16,7 +16,7 @@ namespace hertzdash {
 
 /// The shaker's own options as given (unset: the declaration's default).
 struct ShakerInputs {
-  std::optional<double> frequency_Hz, amplitude_m, gamma, impacts, transient;
+  std::optional<double> frequency_Hz, amplitude_m, gamma, impacts, transient, start_phase;
   std::optional<std::string> impact_model;
 };
 
