@@ -6,6 +6,7 @@
 #include "allocation_count.hpp"
 
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/shaker/next_impact.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
 
@@ -273,4 +274,34 @@ TEST_CASE("shaker: the soft contact runs allocation-free and fast enough for dia
   run_shaker(s, "hongo", gbs8(1e-8), soft(1.3, 20.0, g, 11000, 10));
   const long long_run = test::allocation_count() - before_long;
   CHECK(long_run == short_run);
+}
+
+TEST_CASE("shaker: every integrator in regularising variables gives the same soft orbit", "[shaker]") {
+  // The paper's rod on nylon, e = 0.5, gamma = 1.3: the soft period-1 orbit (a fixed point of the
+  // map, attracting, so integration errors do not accumulate along the run: each impact's state is
+  // the fixed point's, shifted by the map's local error divided by 1 - |eigenvalue|) with each
+  // row at rtol = atol = 1e-10. The rows' local errors are O(1e-10) of the contact's scales, so
+  // the orbits agree to ~1e-9 relative; 1e-7 leaves two decades for the contraction factor.
+  const double g = paper_steel().gravity_mps2;
+  DropTestSetup s = paper_steel();
+  s.restitution = 0.5;
+  auto orbit = [&](IntegratorKind kind) {
+    SolverSettings solver = gbs8(1e-10);
+    solver.integrator = kind;
+    const ShakerRun r = run_shaker(s, "hongo", solver, soft(1.3, 20.0, g, 400, 2));
+    CHECK(r.integrator_used == kind);
+    REQUIRE(r.pattern.period == 1);
+    return r.impacts.back();
+  };
+  const ShakerImpact reference = orbit(IntegratorKind::gbs8_regularized);
+  for (const IntegratorKind kind : {IntegratorKind::dopri5_regularized, IntegratorKind::cvode_regularized,
+                                    IntegratorKind::taylor_regularized}) {
+    INFO(to_string(kind));
+    const ShakerImpact i = orbit(kind);
+    CHECK(i.phase == Approx(reference.phase).epsilon(1e-7));
+    CHECK(i.impact_speed_mps == Approx(reference.impact_speed_mps).epsilon(1e-7));
+    CHECK(i.rebound_speed_mps == Approx(reference.rebound_speed_mps).epsilon(1e-7));
+    CHECK(i.contact_time_s == Approx(reference.contact_time_s).epsilon(1e-7));
+    CHECK(i.peak_force_N == Approx(reference.peak_force_N).epsilon(1e-7));
+  }
 }
