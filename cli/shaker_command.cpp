@@ -79,10 +79,16 @@ Command add_shaker_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "shaker", "A body bouncing on a vibrating wall: soft contacts or instantaneous impacts, exact flights");
   add_run_options(*sub, opt->run);
-  auto help = [](const ParameterDecl& d) {
-    return fmt::format("{} ({}; default {})", d.help, d.type == ParameterType::text ? std::string(d.choices) : d.range.text(d.unit),
-                       d.default_value);
-  };
+  // Two of simulate's options mean something else here (simulation/shaker/shaker.hpp).
+  sub->get_option("--integrator")
+      ->description("Integrator of the soft contacts, one in regularising variables (docs/shaker.md): "
+                    "dopri5-regularized, cvode-regularized, gbs8-regularized, taylor-regularized (default: "
+                    "gbs8-regularized)");
+  sub->get_option("--height")
+      ->description("Height [m] above the wall's mean position from which the body is released at rest at "
+                    "--start-phase; 0: at rest on the wall (default: the apex of the instantaneous map's "
+                    "period-1 orbit, docs/shaker.md)");
+  auto help = [](const ParameterDecl& d) { return help_text(d, KeySpelling::command_line); };
   const std::string group = "Shaker";
   add_number_option(*sub, "--frequency", opt->shaker.frequency_Hz, help(p::frequency))->group(group);
   add_number_option(*sub, "--amplitude", opt->shaker.amplitude_m, help(p::amplitude))->group(group);

@@ -11,7 +11,7 @@ using T = ParameterType;
 
 inline constexpr ParameterDecl frequency{
     .key = "frequency", .unit = "Hz", .column_unit = "Hz", .range = R::positive(), .default_value = "20",
-    .default_number = 20.0, .default_source = "chosen: a period 40 contact times of the paper's steel rod",
+    .default_number = 20.0, .default_source = "chosen: a period long against the paper's contact time",
     .help = "Frequency f of the wall's motion s(t) = A sin(2 pi f t) [Hz]"};
 inline constexpr ParameterDecl amplitude{
     .key = "amplitude", .unit = "m", .column_unit = "m", .range = R::non_negative(),
