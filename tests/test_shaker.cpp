@@ -129,11 +129,10 @@ TEST_CASE("shaker: the instantaneous map's period-1 orbit has its closed-form ph
 }
 
 TEST_CASE("shaker: the instantaneous map doubles its period at the exact map's threshold", "[shaker]") {
-  // Gamma_2 (above) for e = 0.5: 1.52683. 1 % below it the period-1 orbit's eigenvalues are real,
-  // -0.935 and -0.267 (trace -1.2026, det 0.25), so 20000 transient impacts shrink a deviation
-  // by 0.935^20000 < 1e-500; 1 % above
-  // it the period-2 orbit splits the phases by O(sqrt(0.01)) of a cycle, far beyond the detection
-  // tolerance (1e-6).
+  // Gamma_2 (above) for e = 0.5: 1.526824. 1 % below it the period-1 orbit's eigenvalues are
+  // real, -0.935 and -0.267 (trace -1.2026, det 0.25), so 20000 transient impacts shrink a
+  // deviation by 0.935^20000 < 1e-500; 1 % above it the period-2 orbit splits the phases by
+  // O(sqrt(0.01)) of a cycle, far beyond the detection tolerance (1e-6).
   DropTestSetup s = paper_steel();
   s.restitution = 0.5;
   const double g = s.gravity_mps2, G2 = gamma_2(0.5);
