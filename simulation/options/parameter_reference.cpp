@@ -1,9 +1,13 @@
 #include "hertzdash/simulation/options/parameter_reference.hpp"
 
 #include "hertzdash/model/shaker_parameters.hpp"
+#include "hertzdash/model/shaker_sweep_parameters.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 
 #include <fmt/format.h>
+
+#include <iterator>
+#include <vector>
 
 namespace hertzdash {
 
@@ -51,11 +55,13 @@ std::string parameter_reference_markdown() {
   }
   md +=
       "\n## `hertzdash shaker`\n\n"
-      "The shaker's own options (model/shaker_parameters.hpp, [shaker.md](shaker.md)), beside the body, contact, "
+      "The shaker's own options (model/shaker_parameters.hpp, model/shaker_sweep_parameters.hpp, [shaker.md](shaker.md)), beside the body, contact, "
       "law and solver options above; `height` is the start's height above the wall's mean position there.\n\n"
       "| key | unit | valid values | default (source) | meaning |\n"
       "|---|---|---|---|---|\n";
-  for (const ParameterDecl& d : shaker_parameters::all)
+  std::vector<ParameterDecl> shaker(std::begin(shaker_parameters::all), std::end(shaker_parameters::all));
+  shaker.insert(shaker.end(), std::begin(shaker_sweep_parameters::all), std::end(shaker_sweep_parameters::all));
+  for (const ParameterDecl& d : shaker)
     md += fmt::format("| `{}` | {} | {} | {}{} | {} |\n", d.key, d.unit.empty() ? "-" : cell(d.unit),
                       cell(valid_values(d)), cell(d.default_value),
                       d.default_source.empty() ? "" : " (" + cell(d.default_source) + ")", cell(d.help));
