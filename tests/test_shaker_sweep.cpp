@@ -126,3 +126,34 @@ TEST_CASE("CLI shaker sweep: bad input exits 2 naming the option and writes noth
   CHECK(r.exit_code == 2);
   CHECK(r.err.find("--csv") != std::string::npos);
 }
+
+TEST_CASE("CLI shaker sweep: an amplitude or frequency axis writes the value and gamma = A (2 pi f)^2 / g", "[shaker]") {
+  // Gamma = A w^2 / g, w = 2 pi f, g = 9.80665 m/s^2 (the paper's gravity): sweeping A at f = 20 Hz
+  // gives gamma proportional to A (1.13 to 1.61: every value bounces, Gamma > 1); sweeping f at the default gamma 1.3 keeps gamma fixed (the
+  // amplitude follows, A = gamma g / w^2). Both to the CSV's shortest round-trip printing.
+  const hertzdash::test::ScratchDir dir;
+  const std::string a = (dir.path / "a.csv").string(), f = (dir.path / "f.csv").string();
+  const std::string base = "shaker --impact-model instantaneous --restitution 0.5 --transient 200 --impacts 4 ";
+  REQUIRE(run_cli(base + "--sweep amplitude:7e-4:1e-3:3 --csv " + a).exit_code == 0);
+  REQUIRE(run_cli(base + "--sweep frequency:10:30:3 --csv " + f).exit_code == 0);
+  const hertzdash::CsvTable ta = hertzdash::CsvTable::read(a), tf = hertzdash::CsvTable::read(f);
+  REQUIRE(ta.rows() == 3 * 4);
+  REQUIRE(tf.rows() == 3 * 4);
+  CHECK(ta.columns().at(1) == "amplitude_m");
+  CHECK(tf.columns().at(1) == "frequency_Hz");
+  const double w = 2 * std::numbers::pi * 20, g = 9.80665;
+  for (std::size_t row = 0; row < ta.rows(); ++row) {
+    const double A = ta.number(row, "amplitude_m");
+    CHECK(A == Approx(7e-4 + 1.5e-4 * ta.number(row, "run")).epsilon(1e-12));
+    CHECK(ta.number(row, "gamma") == Approx(A * w * w / g).epsilon(1e-12));
+  }
+  for (std::size_t row = 0; row < tf.rows(); ++row) {
+    CHECK(tf.number(row, "frequency_Hz") == Approx(10 + 10 * tf.number(row, "run")).epsilon(1e-12));
+    CHECK(tf.number(row, "gamma") == Approx(1.3).epsilon(1e-12));
+  }
+  // The amplitude varies along both sweeps: it is in the rows, not the shared header.
+  CHECK_FALSE(ta.comment_field("amplitude_m").has_value());
+  CHECK_FALSE(tf.comment_field("amplitude_m").has_value());
+  CHECK_FALSE(tf.comment_field("frequency_Hz").has_value());
+  CHECK(ta.comment_field("frequency_Hz") == "20");
+}
