@@ -8,17 +8,15 @@
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
+#include "cli/shaker_sweep.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/shaker_parameters.hpp"
 #include "hertzdash/model/shaker_sweep_parameters.hpp"
 #include "hertzdash/simulation/reports/shaker_report.hpp"
-#include "hertzdash/simulation/reports/shaker_sweep_report.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <chrono>
 #include <iostream>
 #include <memory>
 
@@ -75,37 +73,6 @@ void write_csv(const ShakerCommandRun& r, const std::string& path) {
   csv.save(path);
 }
 
-// --sweep: the runs of every value, their impacts to --csv (simulation/reports/shaker_sweep_report.hpp).
-int run_sweep(const ShakerCommandOptions& opt) {
-  if (opt.sweep.empty()) throw InvalidParameter("threads", format_value(*opt.threads), "given with `sweep` only");
-  if (opt.json) throw InvalidParameter("json", "true", "not given with `sweep` (the diagram goes to `csv`)");
-  if (opt.csv_path.empty()) throw InvalidParameter("csv", "none", "a file name with `sweep`");
-  const ShakerSweepAxis axis = parse_shaker_sweep(opt.sweep);
-  SweepOptions threads{.label = "shaker sweep"};
-  if (opt.threads) {
-    require_in_range(shaker_sweep_parameters::threads, *opt.threads);
-    threads.threads = static_cast<unsigned>(*opt.threads);
-  }
-  unsigned used = 0;
-  threads.threads_used = &used;
-  const auto start = std::chrono::steady_clock::now();
-  const ShakerSweep sweep = run_shaker_sweep(opt.run, load_paper_parameters(), opt.shaker, axis, threads);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const CsvWriter csv = shaker_sweep_csv(sweep);
-  create_output_directories(opt.csv_path, opt.mkdir);
-  csv.save(opt.csv_path);
-  std::size_t rows = 0, warned = 0;
-  for (const ShakerCommandRun& r : sweep.runs) {
-    rows += r.run.impacts.size();
-    warned += r.run.warnings.empty() ? 0 : 1;
-  }
-  std::cout << fmt::format("hertzdash shaker: {} values of {} from {} to {}, {} rows to {} in {:.3g} s on {} threads",
-                           axis.count, axis.key, axis.from, axis.to, rows, opt.csv_path, seconds, std::max(used, 1u));
-  if (warned) std::cout << fmt::format("; {} runs warned (the file's # warning lines)", warned);
-  std::cout << "\n";
-  return 0;
-}
-
 }  // namespace
 
 Command add_shaker_command(CLI::App& app) {
@@ -144,7 +111,9 @@ Command add_shaker_command(CLI::App& app) {
 
   return {sub, [opt]() {
             prepare_output_file("--csv", opt->csv_path, opt->mkdir);
-            if (!opt->sweep.empty() || opt->threads) return run_sweep(*opt);
+            if (!opt->sweep.empty() || opt->threads)
+              return run_shaker_sweep_command(
+                  {opt->run, opt->shaker, opt->sweep, opt->csv_path, opt->threads, opt->json, opt->mkdir});
             const ShakerCommandRun r = run_shaker_command(opt->run, load_paper_parameters(), opt->shaker);
             if (!opt->csv_path.empty()) {
               create_output_directories(opt->csv_path, opt->mkdir);

@@ -13,7 +13,7 @@ inline constexpr ParameterDecl sweep{
     .key = "sweep", .type = T::text, .choices = "KEY:FROM:TO:COUNT, KEY one of gamma, amplitude, frequency",
     .default_value = "none", .default_source = "one run",
     .help = "Sweep KEY linearly from FROM to TO in COUNT values (2 to 100000; the ends exact), one independent run "
-            "per value on all cores, one `csv` row per kept impact: a bifurcation diagram"};
+            "per value on all cores (or MPI processes), one `csv` row per kept impact: a bifurcation diagram"};
 inline constexpr ParameterDecl threads{
     .key = "threads", .range = R::integer(0, 4096), .default_value = "0", .default_number = 0,
     .default_source = "0: $HERTZDASH_THREADS if set, else the machine's cores",

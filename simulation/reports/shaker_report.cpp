@@ -21,7 +21,7 @@ double given_or_default(const std::optional<double>& v, const ParameterDecl& p) 
 
 }  // namespace
 
-ShakerCommandRun run_shaker_command(const RunOptions& options, const PaperParameters& paper, const ShakerInputs& in) {
+ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperParameters& paper, const ShakerInputs& in) {
   namespace p = shaker_parameters;
   if (options.impact_velocity_mps)
     throw InvalidParameter("impact-velocity", format_value(*options.impact_velocity_mps),
@@ -57,7 +57,12 @@ ShakerCommandRun run_shaker_command(const RunOptions& options, const PaperParame
   const ShakerStart start = shaker_start(o, r.setup.restitution, r.setup.gravity_mps2);
   r.inputs.emplace_back("start_height_m", fmt::format("{}", start.height_m));
   r.inputs.emplace_back("start_phase", fmt::format("{}", start.phase));
-  r.run = run_shaker(r.setup, r.law, r.solver, o);
+  return r;
+}
+
+ShakerCommandRun run_shaker_command(const RunOptions& options, const PaperParameters& paper, const ShakerInputs& in) {
+  ShakerCommandRun r = resolve_shaker_command(options, paper, in);
+  r.run = run_shaker(r.setup, r.law, r.solver, r.options);
   return r;
 }
 

@@ -29,6 +29,10 @@ struct ShakerCommandRun {
   ShakerRun run;
 };
 
+/// Resolve and validate, without running (`run` left empty).
+ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperParameters& paper,
+                                        const ShakerInputs& inputs);
+
 /// Resolve, validate and run. InvalidParameter for bad options: `amplitude` with `gamma`,
 /// `height` or `impact-velocity` (the body starts at rest on the wall), a non-integer count.
 ShakerCommandRun run_shaker_command(const RunOptions& options, const PaperParameters& paper, const ShakerInputs& inputs);

@@ -64,8 +64,8 @@ ShakerSweepAxis parse_shaker_sweep(std::string_view text) {
   return axis;
 }
 
-ShakerSweep run_shaker_sweep(const RunOptions& options, const PaperParameters& paper, const ShakerInputs& inputs,
-                             const ShakerSweepAxis& axis, const SweepOptions& sweep_options) {
+ShakerSweep resolve_shaker_sweep(const RunOptions& options, const PaperParameters& paper, const ShakerInputs& inputs,
+                                 const ShakerSweepAxis& axis) {
   const std::string sweep_text = fmt::format("{}:{}:{}:{}", axis.key, axis.from, axis.to, axis.count);
   auto refuse = [&](const std::string& key, double v) {
     throw InvalidParameter(key, format_value(v), "not given with `sweep` = " + sweep_text + " (the sweep sets it)");
@@ -75,22 +75,82 @@ ShakerSweep run_shaker_sweep(const RunOptions& options, const PaperParameters& p
     if (inputs.gamma) refuse("gamma", *inputs.gamma);
     if (inputs.amplitude_m) refuse("amplitude", *inputs.amplitude_m);
   }
-  ShakerSweep sweep{.axis = axis, .runs = std::vector<ShakerCommandRun>(static_cast<std::size_t>(axis.count))};
-  auto inputs_at = [&](std::size_t i) {
+  ShakerSweep sweep{.axis = axis, .runs = {}};
+  sweep.runs.reserve(static_cast<std::size_t>(axis.count));
+  for (int i = 0; i < axis.count; ++i) {
     ShakerInputs in = inputs;
-    const double v = axis.value(static_cast<int>(i));
+    const double v = axis.value(i);
     if (axis.key == "gamma") in.gamma = v;
     else if (axis.key == "amplitude") in.amplitude_m = v;
     else in.frequency_Hz = v;
-    return in;
-  };
-  // The first value in this thread: a bad option fails here, once, before any thread starts.
-  sweep.runs[0] = run_shaker_command(options, paper, inputs_at(0));
-  parallel_for_chunks(
-      sweep.runs.size() - 1, [] { return 0; },
-      [&](int, std::size_t i) { sweep.runs[i + 1] = run_shaker_command(options, paper, inputs_at(i + 1)); },
-      sweep_options);
+    sweep.runs.push_back(resolve_shaker_command(options, paper, in));
+  }
   return sweep;
+}
+
+void run_shaker_sweep(ShakerSweep& sweep, const std::vector<std::size_t>& values, const SweepOptions& sweep_options) {
+  parallel_for_chunks(
+      values.size(), [] { return 0; },
+      [&](int, std::size_t k) {
+        ShakerCommandRun& r = sweep.runs.at(values[k]);
+        r.run = run_shaker(r.setup, r.law, r.solver, r.options);
+      },
+      sweep_options);
+}
+
+// Per value: gamma, period, impacts per period, e_effective, impacts run, sticking episodes, the
+// number of kept impacts, then 6 numbers per kept impact (ShakerImpact's fields in order).
+std::vector<double> pack_shaker_runs(const ShakerSweep& sweep, const std::vector<std::size_t>& values) {
+  std::vector<double> out;
+  for (const std::size_t v : values) {
+    const ShakerRun& s = sweep.runs.at(v).run;
+    for (double x : {s.gamma, static_cast<double>(s.pattern.period), static_cast<double>(s.pattern.impacts_per_period),
+                     s.e_effective, static_cast<double>(s.impacts_run), static_cast<double>(s.sticking_episodes),
+                     static_cast<double>(s.impacts.size())})
+      out.push_back(x);
+    for (const ShakerImpact& i : s.impacts)
+      for (double x : {i.time_s, i.phase, i.impact_speed_mps, i.rebound_speed_mps, i.contact_time_s, i.peak_force_N})
+        out.push_back(x);
+  }
+  return out;
+}
+
+// Per value its warnings, each ended by '\n' (a warning holds no line break), the value ended by '\0'.
+std::string pack_shaker_warnings(const ShakerSweep& sweep, const std::vector<std::size_t>& values) {
+  std::string out;
+  for (const std::size_t v : values) {
+    for (const std::string& w : sweep.runs.at(v).run.warnings) out += w + '\n';
+    out += '\0';
+  }
+  return out;
+}
+
+void unpack_shaker_runs(ShakerSweep& sweep, const std::vector<std::size_t>& values, const std::vector<double>& numbers,
+                        const std::string& warnings) {
+  std::size_t at = 0, text = 0;
+  auto next = [&] { return numbers.at(at++); };
+  for (const std::size_t v : values) {
+    ShakerRun& s = sweep.runs.at(v).run;
+    s.impact_model = sweep.runs.at(v).options.impact_model;
+    s.gamma = next();
+    s.pattern.period = static_cast<int>(next());
+    s.pattern.impacts_per_period = static_cast<int>(next());
+    s.e_effective = next();
+    s.impacts_run = static_cast<long>(next());
+    s.sticking_episodes = static_cast<long>(next());
+    s.impacts.resize(static_cast<std::size_t>(next()));
+    for (ShakerImpact& i : s.impacts)
+      for (double* x : {&i.time_s, &i.phase, &i.impact_speed_mps, &i.rebound_speed_mps, &i.contact_time_s, &i.peak_force_N})
+        *x = next();
+    const std::size_t end = warnings.find('\0', text);
+    s.warnings.clear();
+    for (std::size_t b = text; b < end;) {
+      const std::size_t e = warnings.find('\n', b);
+      s.warnings.push_back(warnings.substr(b, e - b));
+      b = e + 1;
+    }
+    text = end + 1;
+  }
 }
 
 CsvWriter shaker_sweep_csv(const ShakerSweep& sweep) {
