@@ -31,6 +31,9 @@ Command add_bounce_command(CLI::App& app);
 /// `hertzdash fit`: parameters from a measured trace by weighted least squares.
 Command add_fit_command(CLI::App& app);
 
+/// `hertzdash shaker`: a body bouncing on a vibrating wall (soft or instantaneous impacts).
+Command add_shaker_command(CLI::App& app);
+
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);
 

@@ -6,7 +6,7 @@
 #   rank 0  ode/  io/
 #   rank 1  model/  integrators/
 #   rank 2  simulation/run/  simulation/uncertainty/
-#   rank 3  simulation/paper/
+#   rank 3  simulation/paper/  simulation/shaker/
 #   rank 4  simulation/options/
 #   rank 5  simulation/fit/  simulation/sweep/
 #   rank 6  simulation/reports/
@@ -21,7 +21,7 @@ rank() {
     ode|io) echo 0 ;;
     model|integrators) echo 1 ;;
     simulation/run|simulation/uncertainty) echo 2 ;;
-    simulation/paper) echo 3 ;;
+    simulation/paper|simulation/shaker) echo 3 ;;
     simulation/options) echo 4 ;;
     simulation/fit|simulation/sweep) echo 5 ;;
     simulation/reports) echo 6 ;;

@@ -7,7 +7,7 @@
 namespace hertzdash {
 
 /// docs/parameters.md: one table row per option (key and its three spellings, unit, valid
-/// values, default and its source, what reads it, fittable, help).
+/// values, default and its source, what reads it, fittable, help), then the shaker's own options.
 std::string parameter_reference_markdown();
 
 }  // namespace hertzdash

@@ -1,0 +1,89 @@
+// `hertzdash shaker` (cli/shaker_command.cpp): the issue's acceptance run of the instantaneous
+// map across its period-doubling threshold through the command line and its JSON, the CSV with
+// its provenance, and bad input (exit 2, the option named, no output written).
+#include "cli_runner.hpp"
+#include "scratch_dir.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+using hertzdash::test::run_cli;
+
+namespace {
+
+// The exact bouncing-ball map's period-doubling threshold for e = 0.5 (derived in
+// tests/test_shaker.cpp): Gamma_2 = sqrt((pi (1-e)/(1+e))^2 + (2 (1+e^2)/(1+e)^2)^2)
+// = sqrt((pi/3)^2 + (10/9)^2) = 1.526824.
+const double gamma_2 = std::hypot(std::numbers::pi / 3, 10.0 / 9.0);
+
+nlohmann::json shaker_json(double gamma) {
+  const auto r = run_cli("shaker --impact-model instantaneous --restitution 0.5 --transient 20000 --impacts 32 "
+                         "--gamma " + std::to_string(gamma) + " --json");
+  REQUIRE(r.exit_code == 0);
+  return nlohmann::json::parse(r.out);
+}
+
+}  // namespace
+
+TEST_CASE("CLI shaker: period 1 just below the period-doubling threshold and period 2 just above", "[shaker]") {
+  // 1 % either side of Gamma_2 (see tests/test_shaker.cpp for why 1 % and 20000 transient impacts suffice).
+  const nlohmann::json below = shaker_json(0.99 * gamma_2), above = shaker_json(1.01 * gamma_2);
+  CHECK(below["period"] == 1);
+  CHECK(below["impacts_per_period"] == 1);
+  CHECK(above["period"] == 2);
+  CHECK(above["impacts_per_period"] == 2);
+  for (const char* key : {"gamma", "impact_phase", "impact_speed_mps", "rebound_speed_mps", "contact_time_s",
+                          "e_effective", "period", "impacts_per_period", "warnings"})
+    CHECK(below.contains(key));
+  CHECK(below["gamma"].get<double>() == Approx(0.99 * gamma_2).epsilon(1e-6));  // --gamma printed to 6 decimals
+  CHECK(below["impact_phase"].size() == 32);
+  CHECK(below["e_effective"].get<double>() == Approx(0.5).epsilon(1e-12));
+}
+
+TEST_CASE("CLI shaker: --csv writes one row per kept impact below its provenance", "[shaker]") {
+  const hertzdash::test::ScratchDir dir;
+  const std::string csv = (dir.path / "impacts.csv").string();
+  const auto r = run_cli("shaker --impact-model instantaneous --restitution 0.5 --gamma 1.3 --impacts 5 --transient 50 "
+                         "--csv " + csv);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "n,impact_time_s,impact_phase,impact_speed_mps,rebound_speed_mps,contact_time_s,peak_force_N");
+  int rows = 0, comments = 0;
+  bool git = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("#", 0) == 0) {
+      ++comments;
+      git = git || line.rfind("# git_revision:", 0) == 0;
+    } else {
+      ++rows;
+    }
+  }
+  CHECK(rows == 5);
+  CHECK(git);
+  CHECK(comments > 5);
+}
+
+TEST_CASE("CLI shaker: bad input exits 2 naming the option and writes nothing", "[shaker]") {
+  const hertzdash::test::ScratchDir dir;
+  const std::string csv = (dir.path / "never.csv").string();
+  struct Case {
+    std::string args, option;
+  };
+  for (const Case& c : {Case{"--gamma 1.3 --amplitude 0.001", "--gamma"}, Case{"--impacts 2.5", "--impacts"},
+                        Case{"--frequency 0", "--frequency"}, Case{"--impact-model hard", "--impact-model"},
+                        Case{"--integrator cvode", "--integrator"}, Case{"--impact-velocity 1", "--impact-velocity"},
+                        Case{"--start-phase 1", "--start-phase"}}) {
+    const auto r = run_cli("shaker --transient 10 --impacts 5 " + c.args + " --csv " + csv);
+    INFO(c.args << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.option) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(csv));
+  }
+}
