@@ -27,6 +27,7 @@ struct FitCommandOptions {
   std::string trace_path, table_path, fit = "ball-E,restitution", channels, curves_path;
   double resample_Hz = 0;
   bool compare_laws = false, cross_validate = false, json = false, mkdir = false;
+  bool profile_intervals = false;  // --profile-intervals (restitution tables)
 };
 
 // Exit status of a fit that ran and determined nothing (TraceFit::failed; docs/fit.md).
@@ -102,7 +103,12 @@ void print_restitution_fit(const RestitutionFit& f) {
   for (const FittedParameter& p : f.parameters)
     std::cout << fmt::format("  {:<24} {:>14.6g} {:>14.8g} {:>14.3g} {:>9.3g}\n", p.name, p.initial, p.estimate,
                              p.standard_error, 100 * p.standard_error / std::abs(p.estimate));
-  std::cout << fmt::format("  {:>12} {:>10} {:>10} {:>11}\n", "speed_mps", "e", "model", "residual");
+  for (const FittedParameter& p : f.parameters)
+    if (p.profile)
+      std::cout << fmt::format("  {:<24} profile interval (1 sigma) [{:.8g}{}, {:.8g}{}]{}\n", p.name, p.profile->lower,
+                               p.profile->lower_open ? " (open: the bound)" : "", p.profile->upper,
+                               p.profile->upper_open ? " (open: the bound)" : "",
+                               p.profile->failure.empty() ? "" : "; " + p.profile->failure);
   for (const RestitutionPoint& p : f.points)
     std::cout << fmt::format("  {:>12.6g} {:>10.6f} {:>10.6f} {:>11.3e}\n", p.impact_speed_mps, p.measured, p.model,
                              p.residual);
@@ -191,6 +197,7 @@ int run_restitution_table_fit(const FitCommandOptions& opt, const CLI::App& sub)
   if (const CLI::Option* o = sub.get_option_no_throw("--fit"); o && o->count() > 0)
     settings.parameters = parse_fit_parameters(opt.fit);
   settings.cross_validate = opt.cross_validate;
+  settings.profile_intervals = opt.profile_intervals;
   const PaperParameters paper = load_paper_parameters();
   const RestitutionFitRun r = run_restitution_fit(opt.table_path, opt.run, paper, settings, opt.compare_laws);
   report_diagnostics(restitution_fit_diagnostics(r));
@@ -222,6 +229,9 @@ Command add_fit_command(CLI::App& app) {
   sub->add_flag("--cross-validate", opt->cross_validate,
                 "With --restitution-table: leave out each distinct speed in turn, fit the rest, predict it; rank by "
                 "the prediction error too");
+  sub->add_flag("--profile-intervals", opt->profile_intervals,
+                "With --restitution-table: each parameter's profile-likelihood 1-sigma interval too (a re-fit per "
+                "point; docs/fit.md)");
   add_output_file_option(*sub, "--curves", opt->curves_path, "Write the trace, the fitted model and the residuals to this CSV file");
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
   add_mkdir_flag(*sub, opt->mkdir);
@@ -234,6 +244,9 @@ Command add_fit_command(CLI::App& app) {
             if (opt->cross_validate)
               throw InvalidParameter("cross-validate", "true",
                                      "given only with `restitution-table` (a trace's fit is not cross-validated)");
+            if (opt->profile_intervals)
+              throw InvalidParameter("profile-intervals", "true",
+                                     "given only with `restitution-table` (a trace's fit has standard errors only)");
             prepare_output_file("--curves", opt->curves_path, opt->mkdir);
             refuse_shared_files({{"--trace", opt->trace_path}}, {{"--curves", opt->curves_path}});
             TraceFitSettings settings;

@@ -54,11 +54,13 @@
 // Information criteria with the noise known (sigma_c): AIC = chi^2 + 2k, BIC = chi^2 + k ln n,
 // k the number of fitted parameters including t0.
 #include "hertzdash/io/measured_trace.hpp"
+#include "hertzdash/simulation/fit/profile_interval.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_summary.hpp"
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -96,6 +98,7 @@ struct FittedParameter {
   double initial = 0, estimate = 0, standard_error = 0;
   double lower = 0, upper = 0;
   bool at_bound = false;  ///< at a bound (within 1e-3 of the range): the standard error does not hold
+  std::optional<ProfileInterval> profile = std::nullopt;  ///< the profile-likelihood interval, where asked for (profile_interval.hpp)
 };
 
 /// One channel: its weight and how well the model explains it.
