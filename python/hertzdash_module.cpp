@@ -273,6 +273,31 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
   return to_python(to_json(run, paper()));
 }
 
+// fit_restitution_table: `hertzdash fit --restitution-table --json`; the set-up's options are keywords.
+py::dict py_fit_restitution_table(const std::string& path, const std::string& fit, bool compare_laws,
+                                  bool cross_validate, bool profile_intervals, const py::kwargs& kwargs) {
+  RunOptions options;
+  for (const auto& [key, value] : kwargs) {
+    const RunOption& o = option_named(key.cast<std::string>(), "fit_restitution_table");
+    if (o.group != RunOption::Group::setup)
+      throw py::type_error(fmt::format("fit_restitution_table() got the solver option '{}': the fit integrates its "
+                                       "model itself (simulation/fit/restitution_fit.hpp)",
+                                       python_keyword(o.name)));
+    set_option(options, o, value);
+  }
+  RestitutionFitSettings settings;
+  if (!fit.empty()) settings.parameters = parse_fit_parameters(fit);
+  settings.cross_validate = cross_validate;
+  settings.profile_intervals = profile_intervals;
+  RestitutionFitRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_restitution_fit(path, options, paper(), settings, compare_laws);
+  }
+  warn_about(restitution_fit_diagnostics(run));
+  return to_python(to_json(run));
+}
+
 py::dict py_paper_parameters() {
   const PaperParameters& p = paper();
   py::list rods;
@@ -632,6 +657,19 @@ PYBIND11_MODULE(hertzdash, m) {
          "starting values are the options below (set-up options only). curves: a CSV file for the trace, the "
          "fit and the residuals. Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
          "are UserWarnings.\n\n" +
+         options)
+            .c_str());
+  m.def("fit_restitution_table", &py_fit_restitution_table, py::arg("path"), py::arg("fit") = "",
+        py::arg("compare_laws") = false, py::arg("cross_validate") = false, py::arg("profile_intervals") = false,
+        ("fit_restitution_table(path, fit='', compare_laws=False, cross_validate=False, profile_intervals=False, "
+         "**options) -> dict\n\nFit a damping law's own parameters to a restitution table (e against the impact "
+         "speed, data/measurements/README.md), exactly `hertzdash fit --restitution-table PATH --json` "
+         "(docs/fit.md): table, fits (parameters with estimate, standard_error and, with profile_intervals, "
+         "profile_interval; correlation; sigma; reduced_chi_square; aic, bic; e_effective_range; points; "
+         "cross_validation with cross_validate), failures. fit: NAME or NAME:LOWER:UPPER, comma-separated "
+         "(empty: the law's own, restitution or viscous-time-constant); compare_laws fits every registered law "
+         "(damping then omitted); cross_validate leaves out each speed in turn. Warnings (a synthetic table, "
+         "sigma estimated, a failed fit) are UserWarnings.\n\n" +
          options)
             .c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },
