@@ -245,7 +245,7 @@ py::dict py_virtual_measurement(const std::string& path, double sample_rate, dou
 
 // fit: `hertzdash fit --json`; only the set-up's options are keywords (the fit chooses its solver).
 py::dict py_fit(const std::string& trace, const std::string& fit, const std::string& channels, double resample,
-                bool compare_laws, const std::string& curves, const py::kwargs& kwargs) {
+                bool compare_laws, const std::string& curves, bool profile_intervals, const py::kwargs& kwargs) {
   RunOptions options;
   std::vector<std::string> given;  // even at a default value (rod="steel"): the trace may not contradict it
   for (const auto& [key, value] : kwargs) {
@@ -263,6 +263,7 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
   settings.parameters = parse_fit_parameters(fit);
   if (!channels.empty()) settings.channels = parse_channels(channels, "channels");
   settings.resample_Hz = resample;
+  settings.profile_intervals = profile_intervals;
   FitRun run;
   {
     py::gil_scoped_release release;
@@ -649,13 +650,16 @@ PYBIND11_MODULE(hertzdash, m) {
             .c_str());
   m.def("fit", &py_fit, py::arg("trace"), py::arg("fit") = "ball-E,restitution", py::arg("channels") = "",
         py::arg("resample") = 0.0, py::arg("compare_laws") = false, py::arg("curves") = "",
-        ("fit(trace, fit='ball-E,restitution', channels='', resample=0, compare_laws=False, curves='', **options) "
+        py::arg("profile_intervals") = false,
+        ("fit(trace, fit='ball-E,restitution', channels='', resample=0, compare_laws=False, curves='', "
+         "profile_intervals=False, **options) "
          "-> dict\n\nIdentify parameters from a measured trace by weighted least squares, exactly `hertzdash fit "
          "--trace TRACE --json` (docs/fit.md): trace, fits (parameters with estimate, standard_error, bounds; "
          "correlation; channels with noise_sigma and residual_rms; reduced_chi_square, condition_number, "
          "identifiable, aic, bic, fitted_inputs), failures. fit: NAME or NAME:LOWER:UPPER, comma-separated; the "
          "starting values are the options below (set-up options only). curves: a CSV file for the trace, the "
-         "fit and the residuals. Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
+         "fit and the residuals. profile_intervals: each parameter's profile-likelihood interval too "
+         "(profile_interval). Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
          "are UserWarnings.\n\n" +
          options)
             .c_str());

@@ -51,6 +51,11 @@
 // rod), a non-finite standard error or correlation, or a stop at the iteration or work limit.
 // A failed fit is never identifiable.
 //
+// Profile intervals (TraceFitSettings::profile_intervals, `--profile-intervals`): for each fitted
+// parameter (not the onset), the values where chi^2, the other parameters and the onset re-fitted
+// (a fit_trace per point, from the estimate), rises by s^2 = chi^2 / (n - p) above its minimum
+// (profile_interval.hpp). Not for a failed fit.
+//
 // Information criteria with the noise known (sigma_c): AIC = chi^2 + 2k, BIC = chi^2 + k ln n,
 // k the number of fitted parameters including t0.
 #include "hertzdash/io/measured_trace.hpp"
@@ -90,6 +95,8 @@ struct TraceFitSettings {
   /// Most work of one fit: RK4 steps plus observations interpolated, summed over model runs
   /// (a good fit of a 1 MHz trace of the paper's contact takes about 7e5; "Work" above).
   double max_work = 3e7;
+  /// Each fitted parameter's profile-likelihood interval too ("Profile intervals" above).
+  bool profile_intervals = false;
 };
 
 /// One fitted parameter. The onset time is the last, named "onset-time" [s].

@@ -466,6 +466,11 @@ def test_virtual_measurement_and_fit_are_the_programs(tmp_path):
     with pytest.warns(UserWarning, match="synthetic: true"):
         r = hertzdash.fit(str(py_file))
     assert r == cli_json("fit", "--trace", str(py_file))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        profiled = hertzdash.fit(str(py_file), fit="restitution", profile_intervals=True)
+    assert profiled == cli_json("fit", "--trace", str(py_file), "--fit", "restitution", "--profile-intervals")
+    assert "profile_interval" in profiled["fits"][0]["parameters"][0]
     E, e = r["fits"][0]["parameters"][:2]
     assert abs(E["estimate"] - 1.7e9) < 2 * E["standard_error"]
     assert abs(e["estimate"] - 0.8) < 2 * e["standard_error"]
