@@ -22,8 +22,8 @@
 // Search. From the estimate z0, trial points z0 +- se_z 2^k, k = 0, 1, ... (se_z the standard
 // error in z) until the profile exceeds the threshold; the crossing is then located by Brent's
 // method between the last two trials to 1e-3 se_z. A side the profile does not cross within
-// max_doublings (2^12 standard errors: in the logit or log variable, the parameter's bound to
-// within e^-4096) is open: the data do not bound the parameter there, and its end is the
+// profile_max_doublings (2^12 standard errors in z; in a logit or log variable far enough, for
+// any standard error not tiny, to reach the parameter's bound to rounding) is open: the data do not bound the parameter there, and its end is the
 // parameter's bound. A side where the profile cannot be evaluated (the model fails, a re-fit
 // fails) has no end (NaN) and a reason.
 #include <functional>
