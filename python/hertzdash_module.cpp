@@ -245,7 +245,7 @@ py::dict py_virtual_measurement(const std::string& path, double sample_rate, dou
 
 // fit: `hertzdash fit --json`; only the set-up's options are keywords (the fit chooses its solver).
 py::dict py_fit(const std::string& trace, const std::string& fit, const std::string& channels, double resample,
-                bool compare_laws, const std::string& curves, const py::kwargs& kwargs) {
+                bool compare_laws, const std::string& curves, bool profile_intervals, const py::kwargs& kwargs) {
   RunOptions options;
   std::vector<std::string> given;  // even at a default value (rod="steel"): the trace may not contradict it
   for (const auto& [key, value] : kwargs) {
@@ -263,6 +263,7 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
   settings.parameters = parse_fit_parameters(fit);
   if (!channels.empty()) settings.channels = parse_channels(channels, "channels");
   settings.resample_Hz = resample;
+  settings.profile_intervals = profile_intervals;
   FitRun run;
   {
     py::gil_scoped_release release;
@@ -271,6 +272,31 @@ py::dict py_fit(const std::string& trace, const std::string& fit, const std::str
   }
   warn_about(fit_diagnostics(run, paper()));
   return to_python(to_json(run, paper()));
+}
+
+// fit_restitution_table: `hertzdash fit --restitution-table --json`; the set-up's options are keywords.
+py::dict py_fit_restitution_table(const std::string& path, const std::string& fit, bool compare_laws,
+                                  bool cross_validate, bool profile_intervals, const py::kwargs& kwargs) {
+  RunOptions options;
+  for (const auto& [key, value] : kwargs) {
+    const RunOption& o = option_named(key.cast<std::string>(), "fit_restitution_table");
+    if (o.group != RunOption::Group::setup)
+      throw py::type_error(fmt::format("fit_restitution_table() got the solver option '{}': the fit integrates its "
+                                       "model itself (simulation/fit/restitution_fit.hpp)",
+                                       python_keyword(o.name)));
+    set_option(options, o, value);
+  }
+  RestitutionFitSettings settings;
+  if (!fit.empty()) settings.parameters = parse_fit_parameters(fit);
+  settings.cross_validate = cross_validate;
+  settings.profile_intervals = profile_intervals;
+  RestitutionFitRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_restitution_fit(path, options, paper(), settings, compare_laws);
+  }
+  warn_about(restitution_fit_diagnostics(run));
+  return to_python(to_json(run));
 }
 
 py::dict py_paper_parameters() {
@@ -624,14 +650,30 @@ PYBIND11_MODULE(hertzdash, m) {
             .c_str());
   m.def("fit", &py_fit, py::arg("trace"), py::arg("fit") = "ball-E,restitution", py::arg("channels") = "",
         py::arg("resample") = 0.0, py::arg("compare_laws") = false, py::arg("curves") = "",
-        ("fit(trace, fit='ball-E,restitution', channels='', resample=0, compare_laws=False, curves='', **options) "
+        py::arg("profile_intervals") = false,
+        ("fit(trace, fit='ball-E,restitution', channels='', resample=0, compare_laws=False, curves='', "
+         "profile_intervals=False, **options) "
          "-> dict\n\nIdentify parameters from a measured trace by weighted least squares, exactly `hertzdash fit "
          "--trace TRACE --json` (docs/fit.md): trace, fits (parameters with estimate, standard_error, bounds; "
          "correlation; channels with noise_sigma and residual_rms; reduced_chi_square, condition_number, "
          "identifiable, aic, bic, fitted_inputs), failures. fit: NAME or NAME:LOWER:UPPER, comma-separated; the "
          "starting values are the options below (set-up options only). curves: a CSV file for the trace, the "
-         "fit and the residuals. Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
+         "fit and the residuals. profile_intervals: each parameter's profile-likelihood interval too "
+         "(profile_interval). Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
          "are UserWarnings.\n\n" +
+         options)
+            .c_str());
+  m.def("fit_restitution_table", &py_fit_restitution_table, py::arg("path"), py::arg("fit") = "",
+        py::arg("compare_laws") = false, py::arg("cross_validate") = false, py::arg("profile_intervals") = false,
+        ("fit_restitution_table(path, fit='', compare_laws=False, cross_validate=False, profile_intervals=False, "
+         "**options) -> dict\n\nFit a damping law's own parameters to a restitution table (e against the impact "
+         "speed, data/measurements/README.md), exactly `hertzdash fit --restitution-table PATH --json` "
+         "(docs/fit.md): table, fits (parameters with estimate, standard_error and, with profile_intervals, "
+         "profile_interval; correlation; sigma; reduced_chi_square; aic, bic; e_effective_range; points; "
+         "cross_validation with cross_validate), failures. fit: NAME or NAME:LOWER:UPPER, comma-separated "
+         "(empty: the law's own, restitution or viscous-time-constant); compare_laws fits every registered law "
+         "(damping then omitted); cross_validate leaves out each speed in turn. Warnings (a synthetic table, "
+         "sigma estimated, a failed fit) are UserWarnings.\n\n" +
          options)
             .c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },

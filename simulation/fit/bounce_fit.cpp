@@ -211,6 +211,7 @@ BounceFit fit_bounce_recording(const CheckedRecording& data, const std::string& 
   check_bounce_fit_options(base);
   {
     RunOptions probe = base;
+    probe.follows_flights = true;  // the model's flights read the air drag
     probe.impact_velocity_mps = 1.0;
     resolve_setup(probe, paper);  // the options' own refusals first
   }
@@ -389,6 +390,7 @@ BounceLawComparison compare_laws_on_bounces(const CheckedRecording& data, const 
   check_bounce_fit_options(base);
   for (const LawInfo& law : registered_laws()) {
     RunOptions o = base;
+    o.follows_flights = true;  // the model's flights read the air drag: not "left out"
     o.damping = std::string(law.name);
     std::vector<std::string> left_out;
     for (const RunOption& option : run_options())

@@ -57,6 +57,8 @@ double calibrated_time_constant(const RunOptions& base, const PaperParameters& p
   RunOptions o = base;
   o.restitution = e;
   o.viscous_time_constant_s.reset();
+  o.air_density_kg_per_m3.reset();  // one contact: no flight, no drag
+  o.drag_coefficient.reset();
   const DropTestSetup s = restitution_fit_detail::restitution_contact(o, paper, speed);
   const LawRuns& runs = law_runs(base.damping);
   return runs.calibrated_time_constant ? *runs.calibrated_time_constant(s).damping.viscous_time_constant_s : 0.0;
@@ -65,7 +67,9 @@ double calibrated_time_constant(const RunOptions& base, const PaperParameters& p
 }  // namespace
 
 BounceModel::BounceModel(RunOptions base, const PaperParameters& paper, std::vector<std::string> names)
-    : base_(std::move(base)), paper_(&paper), names_(std::move(names)) {}
+    : base_(std::move(base)), paper_(&paper), names_(std::move(names)) {
+  base_.follows_flights = true;  // run_bounce_sequence's flights read the air drag
+}
 
 RunOptions BounceModel::options_at(const std::vector<double>& law) const {
   RunOptions o = base_;
@@ -107,6 +111,7 @@ std::vector<double> starting_values(const CheckedRecording& data, const RunOptio
   const double r = std::clamp(ratios.empty() ? 0.8 : median(ratios), 0.01, 0.99);
   const double g = resolve_setup([&] {
                      RunOptions o = base;
+                     o.follows_flights = true;
                      o.impact_velocity_mps = 1.0;
                      return o;
                    }(), paper).gravity_mps2;

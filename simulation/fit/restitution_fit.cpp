@@ -9,6 +9,7 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/fit/fit_parameters.hpp"
 #include "hertzdash/simulation/fit/least_squares.hpp"
+#include "hertzdash/simulation/fit/profile_interval.hpp"
 #include "hertzdash/simulation/fit/restitution_fit_model.hpp"
 #include "hertzdash/simulation/run/gsl_root.hpp"
 #include "hertzdash/simulation/run/law_runs.hpp"
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -108,6 +110,49 @@ struct Problem {
   }
 };
 
+// The profile-likelihood interval of each fitted parameter (restitution_fit.hpp, "Profile
+// intervals"), the fit's estimate at z in the unbounded variables.
+void add_profile_intervals(RestitutionFit& fit, const RestitutionTable& table, const PaperParameters& paper, const RestitutionFitSettings& settings,
+                           const std::vector<FitParameter>& parameters, Problem& problem, const std::vector<double>& z) {
+  const std::size_t p = parameters.size();
+  const double threshold = fit.chi_square / static_cast<double>(fit.rows - p);
+  const std::vector<double> estimate = problem.physical(z.data());
+  for (std::size_t j = 0; j < p; ++j) {
+    const Transform& t = problem.transforms[j];
+    FittedParameter& fp = fit.parameters[j];
+    std::function<std::optional<double>(double)> rise;
+    if (p == 1) {  // the profile is chi^2 itself
+      rise = [&](double zj) -> std::optional<double> {
+        std::vector<double> r(problem.n());
+        problem.residuals(&zj, r.data());
+        double chi2 = 0;
+        for (double v : r) chi2 += v * v;
+        if (!(chi2 < Problem::outside)) return std::nullopt;
+        return chi2 - fit.chi_square;
+      };
+    } else {  // the others re-fitted from their estimates, parameter j held at p(z)
+      RestitutionFitSettings others = settings;
+      others.parameters.clear();
+      std::vector<double> start;
+      for (std::size_t i = 0; i < p; ++i)
+        if (i != j) others.parameters.push_back(parameters[i]), start.push_back(estimate[i]);
+      others.cross_validate = others.profile_intervals = false;
+      rise = [&, others, start](double zj) -> std::optional<double> {
+        std::vector<double> at = estimate;
+        at[j] = t.p(zj);
+        try {
+          const RestitutionFit f = fit_restitution_table(table, problem.model->options_at(at), paper, others, start);
+          if (!(f.chi_square < Problem::outside)) return std::nullopt;
+          return f.chi_square - fit.chi_square;
+        } catch (const std::exception&) {
+          return std::nullopt;
+        }
+      };
+    }
+    const double se_z = fp.standard_error / std::abs(t.dp_dz(z[j]));
+    fp.profile = profile_interval(rise, threshold, z[j], se_z, [&t](double zj) { return t.p(zj); });
+  }
+}
 
 }  // namespace
 
@@ -267,6 +312,7 @@ RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOpt
   fit.model_runs = model.runs();
   fit.integrator_used = model.integrator_used();
   fit.fitted_options = model.options_at(estimate);
+  if (settings.profile_intervals && !fit.failed) add_profile_intervals(fit, table, paper, settings, parameters, problem, z);
   return fit;
 }
 
@@ -286,6 +332,7 @@ RestitutionCrossValidation cross_validate_restitution(const RestitutionTable& ta
   for (const FittedParameter& p : fit.parameters) start.push_back(p.estimate);
   RestitutionFitSettings fold_settings = settings;
   fold_settings.parameters = parameters;
+  fold_settings.profile_intervals = false;  // the folds' predictions need their estimates only
   double sum_sq = 0;
   for (double left_out : speeds) {
     RestitutionTable rest = table, held;

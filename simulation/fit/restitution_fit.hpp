@@ -35,6 +35,12 @@
 // a noise-free synthetic table otherwise gives ln 0); the reduced chi-square is 1 by
 // construction and not reported.
 //
+// Profile intervals (RestitutionFitSettings::profile_intervals, `--profile-intervals`): for each
+// fitted parameter, the values where the profile of chi^2 (the other parameters re-fitted, from
+// the estimate) rises by s^2 = chi^2 / (n - p) above its minimum (profile_interval.hpp: the rule,
+// Bates and Watts 1988, Venzon and Moolgavkar 1988). With one parameter the profile is chi^2
+// itself, one model evaluation per point; with more, a re-fit per point. Not for a failed fit.
+//
 // Cross-validation. Each distinct speed in turn is left out, the rest fitted (from the full fit's
 // estimate) and the left-out rows predicted; the RMS of the prediction errors over all rows,
 // and its ratio to the data's own scatter: the RMS of e_sd, or the fit's sigma s without it.
@@ -56,6 +62,7 @@ struct RestitutionFitSettings {
   std::vector<FitParameter> parameters;
   int max_iterations = 200;
   bool cross_validate = false;
+  bool profile_intervals = false;  ///< each parameter's profile-likelihood interval too ("Profile intervals")
 };
 
 /// The parameters fitted by default for the run's law: `restitution`, or `viscous-time-constant`

@@ -10,6 +10,7 @@
 #include "hertzdash/simulation/fit/fit_parameters.hpp"
 #include "hertzdash/simulation/fit/trace_fit_model.hpp"
 #include "hertzdash/simulation/fit/least_squares.hpp"
+#include "hertzdash/simulation/fit/profile_interval.hpp"
 #include "hertzdash/simulation/fit/trace_fit_problem.hpp"
 #include "hertzdash/simulation/fit/trace_preparation.hpp"
 #include "hertzdash/simulation/run/gsl_root.hpp"
@@ -72,6 +73,33 @@ double onset_guess_s(const MeasuredTrace& trace, const std::vector<ChannelFit>& 
       },
       steps, [&](std::size_t i) { return static_cast<double>(i) * dt_s; });
   return in_trace && in_model ? *in_trace - *in_model : 0.0;
+}
+
+// The profile-likelihood interval of each fitted parameter but the onset (trace_fit.hpp,
+// "Profile intervals"): each point a fit of the others and the onset, parameter j held there.
+void add_profile_intervals(TraceFit& fit, const MeasuredTrace& trace, const PaperParameters& paper,
+                           const TraceFitSettings& settings, const std::vector<Transform>& transforms,
+                           const std::vector<double>& z) {
+  for (std::size_t j = 0; j < transforms.size(); ++j) {
+    const Transform& t = transforms[j];
+    TraceFitSettings others = settings;
+    others.parameters.erase(others.parameters.begin() + static_cast<std::ptrdiff_t>(j));
+    others.profile_intervals = false;
+    auto rise = [&](double zj) -> std::optional<double> {
+      RunOptions at = fit.fitted_options;
+      set_number(at, *find_run_option(settings.parameters[j].option), t.p(zj));
+      try {
+        const TraceFit f = fit_trace(trace, at, paper, others);
+        if (!std::isfinite(f.chi_square)) return std::nullopt;
+        return f.chi_square - fit.chi_square;
+      } catch (const std::exception&) {
+        return std::nullopt;
+      }
+    };
+    FittedParameter& fp = fit.parameters[j];
+    const double se_z = fp.standard_error / std::abs(t.dp_dz(z[j]));
+    fp.profile = profile_interval(rise, fit.reduced_chi_square, z[j], se_z, [&t](double zj) { return t.p(zj); });
+  }
 }
 
 }  // namespace
@@ -281,6 +309,7 @@ TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const 
   fit.work = problem.work();
   fit.fitted_options = model.options_at(estimate);
   fit.model_solver = model.solver();
+  if (settings.profile_intervals && !fit.failed) add_profile_intervals(fit, trace_in, paper, settings, transforms, z);
   return fit;
 }
 

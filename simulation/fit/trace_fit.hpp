@@ -51,14 +51,21 @@
 // rod), a non-finite standard error or correlation, or a stop at the iteration or work limit.
 // A failed fit is never identifiable.
 //
+// Profile intervals (TraceFitSettings::profile_intervals, `--profile-intervals`): for each fitted
+// parameter (not the onset), the values where chi^2, the other parameters and the onset re-fitted
+// (a fit_trace per point, from the estimate), rises by s^2 = chi^2 / (n - p) above its minimum
+// (profile_interval.hpp). Not for a failed fit.
+//
 // Information criteria with the noise known (sigma_c): AIC = chi^2 + 2k, BIC = chi^2 + k ln n,
 // k the number of fitted parameters including t0.
 #include "hertzdash/io/measured_trace.hpp"
+#include "hertzdash/simulation/fit/profile_interval.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_summary.hpp"
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +95,8 @@ struct TraceFitSettings {
   /// Most work of one fit: RK4 steps plus observations interpolated, summed over model runs
   /// (a good fit of a 1 MHz trace of the paper's contact takes about 7e5; "Work" above).
   double max_work = 3e7;
+  /// Each fitted parameter's profile-likelihood interval too ("Profile intervals" above).
+  bool profile_intervals = false;
 };
 
 /// One fitted parameter. The onset time is the last, named "onset-time" [s].
@@ -96,6 +105,7 @@ struct FittedParameter {
   double initial = 0, estimate = 0, standard_error = 0;
   double lower = 0, upper = 0;
   bool at_bound = false;  ///< at a bound (within 1e-3 of the range): the standard error does not hold
+  std::optional<ProfileInterval> profile = std::nullopt;  ///< the profile-likelihood interval, where asked for (profile_interval.hpp)
 };
 
 /// One channel: its weight and how well the model explains it.

@@ -24,6 +24,7 @@ BounceFitRun run_bounce_fit(const std::string& recording_path, const RunOptions&
   check_bounce_fit_options(base);
   {  // bad options are reported before the file is read
     RunOptions probe = base;
+    probe.follows_flights = true;  // the model's flights read the air drag
     if (compare_all_laws) probe.damping = RunOptions{}.damping;
     probe.impact_velocity_mps = 1.0;
     resolve_setup(probe, paper);

@@ -27,14 +27,21 @@ nlohmann::ordered_json number_or_null(double v) {
 
 nlohmann::ordered_json to_json(const std::vector<FittedParameter>& parameters) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const FittedParameter& p : parameters)
-    out.push_back({{"name", p.name},
-                   {"initial", p.initial},
-                   {"estimate", p.estimate},
-                   {"standard_error", number_or_null(p.standard_error)},
-                   {"lower", number_or_null(p.lower)},
-                   {"upper", number_or_null(p.upper)},
-                   {"at_bound", p.at_bound}});
+  for (const FittedParameter& p : parameters) {
+    nlohmann::ordered_json j{{"name", p.name},
+                             {"initial", p.initial},
+                             {"estimate", p.estimate},
+                             {"standard_error", number_or_null(p.standard_error)}};
+    if (p.profile) {
+      j["profile_interval"] = {number_or_null(p.profile->lower), number_or_null(p.profile->upper)};
+      j["profile_interval_open"] = {p.profile->lower_open, p.profile->upper_open};
+      j["profile_failure"] = p.profile->failure;
+    }
+    j["lower"] = number_or_null(p.lower);
+    j["upper"] = number_or_null(p.upper);
+    j["at_bound"] = p.at_bound;
+    out.push_back(j);
+  }
   return out;
 }
 

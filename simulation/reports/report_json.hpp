@@ -22,7 +22,10 @@ void add_inputs_and_revision(nlohmann::ordered_json& j, const Parameters& inputs
 /// A finite number, or null (an infinite bound or standard error, a NaN).
 nlohmann::ordered_json number_or_null(double v);
 
-/// A fit's "parameters": name, initial, estimate, standard_error, lower, upper, at_bound each.
+/// A fit's "parameters": name, initial, estimate, standard_error, lower, upper, at_bound each;
+/// where computed, "profile_interval" [lower, upper] (null: not found), "profile_interval_open"
+/// [bool, bool] (the data do not bound that side: the end is the parameter's bound) and
+/// "profile_failure" after standard_error.
 nlohmann::ordered_json to_json(const std::vector<FittedParameter>& parameters);
 
 /// A fit's "correlation" matrix, null where not finite.

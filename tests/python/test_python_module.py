@@ -466,6 +466,11 @@ def test_virtual_measurement_and_fit_are_the_programs(tmp_path):
     with pytest.warns(UserWarning, match="synthetic: true"):
         r = hertzdash.fit(str(py_file))
     assert r == cli_json("fit", "--trace", str(py_file))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        profiled = hertzdash.fit(str(py_file), fit="restitution", profile_intervals=True)
+    assert profiled == cli_json("fit", "--trace", str(py_file), "--fit", "restitution", "--profile-intervals")
+    assert "profile_interval" in profiled["fits"][0]["parameters"][0]
     E, e = r["fits"][0]["parameters"][:2]
     assert abs(E["estimate"] - 1.7e9) < 2 * E["standard_error"]
     assert abs(e["estimate"] - 0.8) < 2 * e["standard_error"]
@@ -488,6 +493,45 @@ def test_fit_refuses_solver_options_and_bad_lists(tmp_path):
         with pytest.raises(ValueError, match=r"invalid curves = .*: must be another file than trace .*the same file"):
             hertzdash.fit(str(trace), curves=str(curves))
     assert trace.read_bytes() == before
+
+
+def synthetic_restitution_table(path):
+    # SYNTHETIC: Kuwabara-Kono's e at A = 7.7e-5 s (`restitution`, CVODE) at six speeds, with a
+    # fixed scatter of +-0.004 added, labelled synthetic: a small table the fit needs ~1 s for.
+    lines = ["impact_speed_m_per_s,e", "# source: SYNTHETIC, tests/python/test_python_module.py",
+             "# synthetic: true"]
+    for i, v in enumerate((0.2, 0.4, 0.6, 0.8, 1.0, 1.2)):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            e = hertzdash.restitution(damping="kuwabara-kono", viscous_time_constant=7.7e-5,
+                                      impact_velocity=v, rtol=1e-12)["e_effective"]
+        lines.append(f"{v},{e + (0.004 if i % 2 else -0.004)!r}")
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_fit_restitution_table_is_the_programs(tmp_path):
+    # fit_restitution_table() returns `fit --restitution-table --json`, key for key, with the
+    # keywords compare_laws, cross_validate and profile_intervals as the program's flags.
+    table = str(synthetic_restitution_table(tmp_path / "kk.csv"))
+    with pytest.warns(UserWarning, match="synthetic: true"):
+        r = hertzdash.fit_restitution_table(table, damping="kuwabara-kono", cross_validate=True,
+                                            profile_intervals=True)
+    assert r == cli_json("fit", "--restitution-table", table, "--damping", "kuwabara-kono", "--cross-validate",
+                         "--profile-intervals")
+    A = r["fits"][0]["parameters"][0]
+    assert A["name"] == "viscous-time-constant"
+    assert A["profile_interval"][0] < A["estimate"] < A["profile_interval"][1]
+    assert abs(A["estimate"] - 7.7e-5) < 3 * A["standard_error"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ranked = hertzdash.fit_restitution_table(table, compare_laws=True)
+    assert ranked == cli_json("fit", "--restitution-table", table, "--compare-laws")
+    assert ranked["fits"][0]["law"] == "kuwabara-kono"
+    with pytest.raises(TypeError, match="solver option 'rtol'"):
+        hertzdash.fit_restitution_table(table, rtol=1e-9)
+    with pytest.raises(ValueError, match="impact_velocity"):
+        hertzdash.fit_restitution_table(table, impact_velocity=0.5)
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,127 @@
+// Coverage of the 1-sigma intervals of `fit --restitution-table` (simulation/fit/restitution_fit.hpp)
+// over many SYNTHETIC tables: a known law and parameter (the paper's law `hongo` at input e =
+// 0.80; `kuwabara-kono` at A = 7.7e-5 s, both on the steel rod's set-up), its e_effective at
+// eight speeds computed once (run_restitution, CVODE at rtol 1e-12: another integrator than the
+// fit's gbs8), plus Gaussian noise of known e_sd drawn with a seeded generator, 500 draws per case.
+// Each table is fitted and we count how often estimate +- standard_error contains the truth.
+//
+// Expected fraction. The fits scale the covariance by s^2 = chi^2 / (n - p) whether or not the
+// table gives e_sd (restitution_fit.hpp, "Residuals and uncertainty"). For a model linear in
+// its parameter with Gaussian noise (the fitted models are very nearly so over a standard error:
+// the standard error is a few percent of the parameter at most here), (estimate - truth) / standard_error
+// then follows Student's t with n - p = 8 - 1 = 7 degrees of freedom, so the interval covers
+// the truth with probability P = P(|T_7| <= 1) = 0.6494 (gsl_cdf_tdist_P), not 0.683: the
+// price of estimating the scale from seven degrees of freedom.
+//
+// Tolerance. The count of covering intervals over N independent draws is binomial(N, P): its
+// fraction has standard deviation sqrt(P (1 - P) / N), 0.021 for N = 500 and 0.011 for the
+// N = 2000 fits of all four cases pooled (each case has its own seeds, so the cases are
+// independent). Each case must lie within 3 of its standard deviations of P, and so must the
+// pool (a correct fit fails one of these five checks with probability about 5 x 0.0027).
+// The with-e_sd cases draw each row's noise with its own e_sd (0.005 to 0.02, so the weights
+// matter); the without-e_sd cases with one common sd = 0.01, the model the fit then assumes.
+//
+// Run time: 2000 fits of 8 speeds, about 6 s of CPU (a fit of one parameter takes a few
+// iterations of 3 x 8 gbs8 impacts).
+#include "hertzdash/io/restitution_table.hpp"
+#include "hertzdash/simulation/reports/run_reports.hpp"
+
+#include <catch2/catch.hpp>
+#include <gsl/gsl_cdf.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace hertzdash;
+
+namespace {
+
+constexpr int draws = 500;
+const std::vector<double> speeds{0.15, 0.30, 0.45, 0.60, 0.75, 0.90, 1.05, 1.20};
+
+struct Truth {
+  RunOptions options;
+  std::string parameter;
+  double value;
+};
+
+Truth hongo_truth() {
+  RunOptions o;
+  o.restitution = 0.80;
+  return {o, "restitution", 0.80};
+}
+
+Truth kuwabara_kono_truth() {
+  RunOptions o;
+  o.damping = "kuwabara-kono";
+  o.viscous_time_constant_s = 7.7e-5;
+  return {o, "viscous-time-constant", 7.7e-5};
+}
+
+// e_effective of one impact at each speed, as `hertzdash restitution --impact-velocity v --rtol 1e-12`.
+std::vector<double> e_effective(RunOptions o) {
+  const PaperParameters paper = load_paper_parameters();
+  o.rtol = 1e-12;
+  std::vector<double> e;
+  for (double v : speeds) {
+    o.impact_velocity_mps = v;
+    e.push_back(run_restitution(o, paper).e_effective);
+  }
+  return e;
+}
+
+// The per-row e_sd of the weighted cases: 0.005 to 0.02.
+double row_sd(std::size_t i) { return 0.005 + 0.015 * static_cast<double>(i) / static_cast<double>(speeds.size() - 1); }
+
+RestitutionTable noisy_table(const std::vector<double>& e_true, bool with_sd, unsigned seed) {
+  RestitutionTable t;
+  t.path = "synthetic.csv";
+  t.source = "SYNTHETIC: tests/test_restitution_fit_coverage.cpp";
+  t.synthetic = true;
+  t.impact_speed_mps = speeds;
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const double sd = with_sd ? row_sd(i) : 0.01;
+    t.e.push_back(e_true[i] + sd * unit(rng));
+    if (with_sd) t.e_sd.push_back(sd);
+  }
+  return t;
+}
+
+// Fraction of the draws whose 1-sigma interval contains the truth.
+int covered(const Truth& truth, bool with_sd, unsigned first_seed) {
+  const PaperParameters paper = load_paper_parameters();
+  const std::vector<double> e_true = e_effective(truth.options);
+  RunOptions base;
+  base.damping = truth.options.damping;
+  int inside = 0;
+  for (int d = 0; d < draws; ++d) {
+    const RestitutionFit f = fit_restitution_table(noisy_table(e_true, with_sd, first_seed + d), base, paper, {});
+    REQUIRE_FALSE(f.failed);
+    CHECK(f.sigma_estimated == !with_sd);
+    const FittedParameter& p = f.parameter(truth.parameter);
+    inside += std::abs(p.estimate - truth.value) <= p.standard_error;
+  }
+  return inside;
+}
+
+}  // namespace
+
+TEST_CASE("restitution table fits: the 1-sigma intervals cover the truth as often as Student's t says",
+          "[restitution_fit][coverage]") {
+  const double P = 2 * gsl_cdf_tdist_P(1.0, static_cast<double>(speeds.size() - 1)) - 1;  // 0.6494
+  REQUIRE(P == Approx(0.6494).margin(1e-4));
+  const double sd60 = std::sqrt(P * (1 - P) / draws), sd240 = std::sqrt(P * (1 - P) / (4 * draws));
+  const int h_sd = covered(hongo_truth(), true, 1000), h_est = covered(hongo_truth(), false, 2000);
+  const int k_sd = covered(kuwabara_kono_truth(), true, 3000), k_est = covered(kuwabara_kono_truth(), false, 4000);
+  for (int c : {h_sd, h_est, k_sd, k_est}) {
+    CAPTURE(h_sd, h_est, k_sd, k_est, draws, P);
+    CHECK(std::abs(static_cast<double>(c) / draws - P) <= 3 * sd60);
+  }
+  const double pooled = static_cast<double>(h_sd + h_est + k_sd + k_est) / (4 * draws);
+  CAPTURE(pooled);
+  CHECK(std::abs(pooled - P) <= 3 * sd240);
+}
