@@ -23,6 +23,7 @@ struct SafeRoot {
   bool grazing = false;  ///< h touches zero tangentially
   double time_s = 0;     ///< the root [s]
   int iterations = 0;    ///< safe steps plus Newton/bisection steps
+  double root_free_to_s = 0;  ///< not found: h has no root before this time [s] (the limit, or where the cap stopped it)
 };
 
 /// The first root of h (derivative dh, |h''| <= M) in (t_from_s, t_limit_s], searched from
@@ -34,12 +35,16 @@ SafeRoot first_safe_root(const H& h, const DH& dh, double M, double t_from_s, do
   M = std::max(M, std::numeric_limits<double>::min());
   SafeRoot out;
   double a = t_from_s;
+  out.root_free_to_s = a;
   while (out.iterations < max_iterations) {
     ++out.iterations;
     const double Ha = std::max(h(a), 0.0), D = dh(a);
     if (D < 0 && D * D >= 2.0 * M * Ha) {
       double lo = a, hi = a + 2.0 * Ha / (-D + std::sqrt(D * D - 2.0 * M * Ha));
-      if (hi > t_limit_s && h(t_limit_s) > 0) return out;
+      if (hi > t_limit_s && h(t_limit_s) > 0) {
+        out.root_free_to_s = t_limit_s;
+        return out;
+      }
       double t = lo;
       while (out.iterations < max_iterations && hi - lo > tol) {
         ++out.iterations;
@@ -71,6 +76,7 @@ SafeRoot first_safe_root(const H& h, const DH& dh, double M, double t_from_s, do
       return out;
     }
     a += step;
+    out.root_free_to_s = std::min(a, t_limit_s);
     if (a > t_limit_s) return out;
   }
   return out;

@@ -53,6 +53,7 @@ void validate(const TwoWallsOptions& o) {
 namespace {
 
 constexpr int samples_per_cycle = 512;
+constexpr double max_flight_cycles = 10000;  // the longest flight searched, in drive cycles
 // 8-point Gauss-Legendre on [-1, 1]: nodes +-x, weights w (Abramowitz and Stegun, Table 25.4).
 constexpr std::array<double, 4> gauss_x{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
                                         0.9602898564975363};
@@ -211,12 +212,21 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
     auto dh_floor = [&](double t) { return flight.velocity_mps(t) - box.velocity_mps(t); };
     auto h_ceiling = [&](double t) { return box.position_m(t) + gap - flight.height_m(t); };
     auto dh_ceiling = [&](double t) { return box.velocity_mps(t) - flight.velocity_mps(t); };
-    const double limit = t_now + search_span_s;
-    const SafeRoot on_floor = first_safe_root(h_floor, dh_floor, M_bound, search_from[0], limit, time_tol);
-    const SafeRoot on_ceiling = first_safe_root(h_ceiling, dh_ceiling, M_bound, search_from[1],
-                                                on_floor.found ? on_floor.time_s : limit, time_tol);
+    // Searched span by span (each point passed certified root-free) up to max_flight_cycles.
+    SafeRoot on_floor, on_ceiling;
+    double limit = t_now;
+    while (!on_floor.found && !on_ceiling.found && limit < t_now + max_flight_cycles * T) {
+      limit += search_span_s;
+      on_floor = first_safe_root(h_floor, dh_floor, M_bound, search_from[0], limit, time_tol);
+      on_ceiling = first_safe_root(h_ceiling, dh_ceiling, M_bound, search_from[1],
+                                   on_floor.found ? on_floor.time_s : limit, time_tol);
+      if (on_floor.root_free_to_s < limit || on_ceiling.root_free_to_s < limit) break;  // the iteration cap
+      search_from = {on_floor.root_free_to_s, on_ceiling.root_free_to_s};
+    }
     if (!on_floor.found && !on_ceiling.found) {
-      out.warnings.push_back(fmt::format("no impact found between t = {:.9g} s and {:.9g} s: the run ends there",
+      out.warnings.push_back(fmt::format("no impact found between t = {:.9g} s and {:.9g} s: the body never "
+                                         "reaches a wall there (the box's motion smaller than the clearance?); "
+                                         "the run ends",
                                          t_now, limit));
       out.end_reason = "a flight without impact (see warnings)";
       break;

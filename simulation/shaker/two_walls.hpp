@@ -15,7 +15,8 @@
 // |X''(t)| <= |Z| wn^2 + |Q| w^2 for every t after the flight's start (model/forced_oscillator.hpp;
 // A w^2 for the driven box): every point each search passes is certified free of a root of its
 // own gap, so the earlier of the two first roots (the ceiling's searched only up to the floor's)
-// is the first impact on either wall, and no grazing impact on either is missed.
+// is the first impact on either wall, and no grazing impact on either is missed. The search runs
+// span by span (100 drive cycles each) and gives up, with a warning, after 10000 cycles of flight.
 // Impacts:
 //   - instantaneous, Newton's law with e at relative speed v_r = V - u (the box's velocity V,
 //     the body's u): box rig, the box's motion prescribed, u+ = V + e (V - u) (the shaker's map);
