@@ -52,7 +52,7 @@ void validate(const TwoWallsOptions& o) {
 
 namespace {
 
-constexpr int samples_per_cycle = 512;
+constexpr int samples_per_cycle = 64;
 constexpr double max_flight_cycles = 10000;  // the longest flight searched, in drive cycles
 // 8-point Gauss-Legendre on [-1, 1]: nodes +-x, weights w (Abramowitz and Stegun, Table 25.4).
 constexpr std::array<double, 4> gauss_x{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
@@ -92,9 +92,27 @@ struct Accounting {
       }
     }
     if (!keeping) return;
+    // X at the grid's points and at its extremes: each root of X' between two points, refined by
+    // Newton's method (X'' its derivative) kept inside the bracket by bisection.
     const double n = samples_per_cycle * frequency_Hz;
-    for (double k = std::floor(ta * n) + 1; k <= tb * n; ++k) sample(box.position_m(k / n));
-    sample(box.position_m(tb));
+    double t0 = ta, v0 = box.velocity_mps(ta);
+    sample(box.position_m(ta));
+    for (double k = std::floor(ta * n) + 1;; ++k) {
+      const double t1 = std::min(k / n, tb), v1 = box.velocity_mps(t1);
+      sample(box.position_m(t1));
+      if ((v0 < 0) != (v1 < 0)) {
+        double lo = t0, hi = t1, t = 0.5 * (t0 + t1);
+        for (int i = 0; i < 60 && hi - lo > 1e-15 * (1.0 + std::abs(t)); ++i) {
+          const double v = box.velocity_mps(t);
+          ((v < 0) == (v0 < 0) ? lo : hi) = t;
+          const double newton = t - v / box.acceleration_mps2(t);
+          t = newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
+        }
+        sample(box.position_m(t));
+      }
+      if (t1 >= tb) break;
+      t0 = t1, v0 = v1;
+    }
   }
 };
 
@@ -182,7 +200,15 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
       auto force_rate = [&](double t) { return sigma * box.derivative(3, t); };
       double t_release = t_now;
       if (force(t_now) >= 0) {
-        const SafeRoot r = first_safe_root(force, force_rate, box.derivative_bound(4), t_now, t_now + search_span_s, time_tol);
+        // A force that only touches zero (Gamma = 1 exactly: the box's deceleration reaches g and
+        // no more) does not release the body: the search goes on past the touch.
+        SafeRoot r;
+        for (double from = t_now;;) {
+          r = first_safe_root(force, force_rate, box.derivative_bound(4), from, t_now + search_span_s, time_tol);
+          if (!r.found || !r.grazing) break;
+          from = r.time_s + 1e-9 * T;
+          if (force(from) < 0) break;
+        }
         if (!r.found) {
           out.warnings.push_back(fmt::format("the body rests on the {} for good from t = {:.9g} s: the box never "
                                              "accelerates away from it faster than gravity",

@@ -108,7 +108,8 @@ struct TwoWallsRun {
   long impacts_run = 0;
   long sticking_episodes = 0;           ///< times the body was carried by a wall
   /// damper: the primary's amplitude, (max X - min X)/2 over the kept window (from the first to
-  /// the last kept impact; X sampled 512 times a cycle and at every impact) [m]; NaN without one.
+  /// the last kept impact; X at its extremes, the roots of X' located between samples 64 times a
+  /// cycle, and at every impact) [m]; NaN without one.
   double primary_amplitude_m = 0;
   double primary_amplitude_bare_m = 0;   ///< damper: |Q| of the primary alone (closed form) [m]
   double primary_amplitude_rigid_m = 0;  ///< damper: |Q| of mass M + m, the body carried (closed form) [m]
