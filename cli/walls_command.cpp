@@ -1,7 +1,7 @@
 // `hertzdash walls`: a body between two walls, a box of clearance --gap either driven
-// harmonically (--rig box: X(t) = A sin(2 pi f t), soft contacts or instantaneous impacts) or
-// mounted on a primary oscillator under a harmonic force (--rig damper: the impact damper,
-// instantaneous impacts), exact flights between impacts (simulation/shaker/two_walls.hpp,
+// harmonically (--rig box: X(t) = A sin(2 pi f t)) or mounted on a primary oscillator under a
+// harmonic force (--rig damper: the impact damper), soft contacts or instantaneous impacts,
+// exact flights between impacts (simulation/shaker/two_walls.hpp,
 // docs/shaker.md). Per kept impact the wall, drive phase, relative speeds, contact time, peak
 // force and the box's displacement; the period, impacts per cycle, and for the damper the
 // primary's amplitude with the body and without it.
@@ -76,7 +76,7 @@ Command add_walls_command(CLI::App& app) {
                "oscillator under a harmonic force); exact flights");
   add_run_options(*sub, opt->run);
   sub->get_option("--integrator")
-      ->description("Integrator of the soft contacts (`--rig box`), one in regularising variables (docs/shaker.md): "
+      ->description("Integrator of the soft contacts, one in regularising variables (docs/shaker.md): "
                     "dopri5-regularized, cvode-regularized, gbs8-regularized, taylor-regularized (default: "
                     "gbs8-regularized)");
   auto help = [](const ParameterDecl& d) { return help_text(d, KeySpelling::command_line); };
@@ -96,8 +96,7 @@ Command add_walls_command(CLI::App& app) {
   add_number_option(*sub, "--impacts", opt->walls.impacts, help(s::impacts))->type_name("INT")->group(group);
   add_number_option(*sub, "--transient", opt->walls.transient, help(s::transient))->type_name("INT")->group(group);
   sub->add_option_function<std::string>("--impact-model", [opt](const std::string& v) { opt->walls.impact_model = v; },
-                                        help(s::impact_model) + " (default here: soft with `--rig box`, instantaneous "
-                                                                "with `--rig damper`)")
+                                        help(s::impact_model))
       ->group(group);
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
 

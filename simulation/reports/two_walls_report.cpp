@@ -93,7 +93,7 @@ TwoWallsCommandRun run_two_walls_command(const RunOptions& options, const PaperP
         shaker_amplitude_m(given_or_default(in.gamma, s::gamma), o.drive.frequency_Hz, r.setup.gravity_mps2);
   o.impacts = static_cast<int>(given_or_default(in.impacts, s::impacts));
   o.transient = static_cast<int>(given_or_default(in.transient, s::transient));
-  o.impact_model = parse_shaker_impact_model(in.impact_model.value_or(box ? "soft" : "instantaneous"));
+  o.impact_model = parse_shaker_impact_model(in.impact_model.value_or(std::string(s::impact_model.default_value)));
   r.inputs = describe_run(r.setup, r.law, r.solver);
   r.inputs.emplace_back("rig", std::string(rig));
   r.inputs.emplace_back("gap_m", fmt::format("{}", o.gap_m));
@@ -139,6 +139,8 @@ nlohmann::ordered_json to_json(const TwoWallsCommandRun& r) {
     j["primary_amplitude_m"] = number_or_null(s.primary_amplitude_m);
     j["primary_amplitude_bare_m"] = s.primary_amplitude_bare_m;
     j["primary_amplitude_rigid_m"] = s.primary_amplitude_rigid_m;
+  }
+  if (!box && s.impact_model == ShakerImpactModel::instantaneous) {
     j["energy_J"] = {{"initial", s.energy.initial_J},
                      {"final", s.energy.final_J},
                      {"drive_work", s.energy.drive_work_J},

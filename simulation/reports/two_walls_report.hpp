@@ -33,16 +33,16 @@ struct TwoWallsCommandRun {
 
 /// Resolve, validate and run. InvalidParameter for bad options: `amplitude` with `gamma`,
 /// `gamma` with gravity 0, the box's options with `rig` damper and the primary's with `rig` box,
-/// `height` or `impact-velocity` (the body starts at rest at mid-gap), a non-integer count. The
-/// impact model defaults to soft for the box, instantaneous for the damper.
+/// `height` or `impact-velocity` (the body starts at rest at mid-gap), a non-integer count.
 TwoWallsCommandRun run_two_walls_command(const RunOptions& options, const PaperParameters& paper,
                                          const TwoWallsInputs& inputs);
 
 /// `walls --json`: "rig", "gap_m", "frequency_Hz", "amplitude_m" and "gamma" (box; gamma null
 /// with g = 0), "impact_model", "damping", "integrator_used" (soft), "period",
 /// "impacts_per_period", "impacts_per_cycle", "floor_impacts", "ceiling_impacts", "e_effective",
-/// damper: "primary_amplitude_m", "primary_amplitude_bare_m", "primary_amplitude_rigid_m",
-/// "energy_J" {initial, final, drive_work, damping_dissipation, impact_loss}; the kept impacts as
+/// damper: "primary_amplitude_m", "primary_amplitude_bare_m", "primary_amplitude_rigid_m", and
+/// with instantaneous impacts "energy_J" {initial, final, drive_work, damping_dissipation,
+/// impact_loss}; the kept impacts as
 /// arrays "impact_time_s", "impact_phase", "wall", "impact_speed_mps", "rebound_speed_mps",
 /// "contact_time_s", "peak_force_N", "box_displacement_m"; "sticking_episodes", "impacts_run",
 /// "end_reason", "warnings", "work" (soft), "inputs", "git_revision", "schema_version".

@@ -3,6 +3,7 @@
 
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/run/law_runs.hpp"
+#include "hertzdash/simulation/shaker/damper_soft_contact.hpp"
 #include "hertzdash/simulation/shaker/safe_root.hpp"
 #include "hertzdash/simulation/shaker/shaker_contact.hpp"
 
@@ -38,10 +39,6 @@ void validate(const TwoWallsOptions& o) {
     if (!(o.primary.damping_ratio >= 0 && o.primary.damping_ratio < 1))
       throw InvalidParameter("primary-damping-ratio", format_value(o.primary.damping_ratio), "in [0, 1)");
     require_non_negative("force-amplitude", o.primary.force_amplitude_N, "N");
-    if (o.impact_model == ShakerImpactModel::soft)
-      throw InvalidParameter("impact-model", "soft",
-                             "instantaneous with `rig` damper (the damper's soft contact, the primary moving under "
-                             "the contact force, is not built)");
   }
   if (!(o.impacts >= 1 && o.impacts <= max_shaker_impacts))
     throw InvalidParameter("impacts", format_value(o.impacts), fmt::format("an integer in [1, {}]", max_shaker_impacts));
@@ -149,19 +146,26 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
     out.primary_amplitude_rigid_m = rigid.steady_amplitude_m();
   }
 
-  // The soft contacts of the driven box: the floor's, and the ceiling's with g and A reversed.
+  // The soft contacts: the driven box's floor, and its ceiling with g and A reversed; the
+  // damper's, the primary moving with the contact (one system for both walls).
   const bool soft = options.impact_model == ShakerImpactModel::soft;
   std::array<std::unique_ptr<ShakerContact>, 2> contact;
+  std::unique_ptr<DamperSoftContact> damper_contact;
   if (soft) {
     DropTestSetup s = setup;
     const LawRuns& runs = law_runs(law);
     if (runs.calibrated_time_constant && !s.damping.viscous_time_constant_s) s = runs.calibrated_time_constant(s);
-    contact[0] = make_shaker_contact(law, s, solver, options.drive);
-    s.gravity_mps2 = -g;
-    HarmonicWallMotion reversed = options.drive;
-    reversed.amplitude_m = -reversed.amplitude_m;
-    contact[1] = make_shaker_contact(law, s, solver, reversed);
-    out.integrator_used = contact[0]->integrator_used();
+    if (damper) {
+      damper_contact = make_damper_soft_contact(law, s, solver, free);
+      out.integrator_used = damper_contact->integrator_used();
+    } else {
+      contact[0] = make_shaker_contact(law, s, solver, options.drive);
+      s.gravity_mps2 = -g;
+      HarmonicWallMotion reversed = options.drive;
+      reversed.amplitude_m = -reversed.amplitude_m;
+      contact[1] = make_shaker_contact(law, s, solver, reversed);
+      out.integrator_used = contact[0]->integrator_used();
+    }
   }
 
   const double stick_speed = 1e-6 * (g + accel_scale) * T;
@@ -174,7 +178,7 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
                      .damping_N_s_per_m = free.damping_N_s_per_m(),
                      .max_piece_s = std::min(T, 2.0 * std::numbers::pi / free.natural_omega_rad_per_s()) / 16.0,
                      .energy = &out.energy};
-  // The body: carried by `wall` since t_now, or in flight with the searches starting at a[wall].
+  // The body: carried by `wall` since t_now, or in flight, each wall's search starting at search_from[wall].
   bool carried = false;
   Wall wall = Wall::floor;
   double t_now = 0;
@@ -264,7 +268,7 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
     const double X = box.position_m(ti), V = box.velocity_mps(ti), u = flight.velocity_mps(ti);
     TwoWallsImpact impact{.time_s = ti, .phase = options.drive.phase(ti), .wall = hit,
                           .impact_speed_mps = std::max(sigma * (V - u), 0.0), .box_displacement_m = X};
-    double t_after = ti, u_after = 0, V_after = V;
+    double t_after = ti, u_after = u, V_after = V;
     if (!soft) {
       impact.rebound_speed_mps = e * impact.impact_speed_mps;
       if (damper) {
@@ -277,6 +281,23 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
       }
     } else if (impact.impact_speed_mps < stick_speed) {
       impact.rebound_speed_mps = impact.impact_speed_mps;  // a touch too slow for a contact: carried below
+    } else if (damper) {
+      const DamperContactOutcome c = damper_contact->run(sigma, ti, impact.impact_speed_mps, X, V, 2.0 * T);
+      out.work.add_work(c.work);
+      impact.contact_time_s = c.contact_time_s;
+      impact.peak_force_N = c.peak_force_N;
+      if (!c.separated) {
+        out.warnings.push_back(fmt::format("the contact beginning at t = {:.9g} s did not end within 2 drive "
+                                           "cycles: the run ends there",
+                                           ti));
+        out.end_reason = "a contact that did not end (see warnings)";
+        break;
+      }
+      impact.rebound_speed_mps = c.rebound_speed_mps;
+      t_after = ti + c.contact_time_s;
+      V_after = c.V_mps;
+      u_after = V_after + sigma * impact.rebound_speed_mps;
+      box = OscillatorMotion(free, t_after, c.X_m, c.V_mps);
     } else {
       const ShakerContactOutcome c = contact[static_cast<int>(hit)]->run(ti, impact.impact_speed_mps, 2.0 * T);
       out.work.add_work(c.work);
@@ -309,6 +330,7 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
     if (account.keeping) {
       out.impacts.push_back(impact);
       account.sample(X);
+      account.sample(box.position_m(t_after));
     }
     ++out.impacts_run;
     t_now = t_after;
@@ -319,7 +341,7 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
         // The body joins the box at the common, momentum-conserving velocity (a loss of order stick_speed^2).
         const double Vc = (m * u_after + M * V_after) / (m + M);
         out.energy.impact_loss_J += 0.5 * m * u_after * u_after + 0.5 * M * V_after * V_after - 0.5 * (m + M) * Vc * Vc;
-        box = OscillatorMotion(carrying, ti, X, Vc);
+        box = OscillatorMotion(carrying, t_after, box.position_m(t_after), Vc);
       }
     } else {
       flight = Flight{.t0_s = t_after, .y0_m = box.position_m(t_after) + (ceiling ? gap : 0.0), .u0_mps = u_after,
@@ -330,6 +352,12 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
   if (out.end_reason.empty()) out.end_reason = fmt::format("{} impacts run ({} transient)", total, options.transient);
   out.end_time_s = t_now;
   if (damper) out.energy.final_J = energy_now();
+  if (soft) {
+    // The contacts' own work (the drive, the primary's damping and the law's dissipation while in
+    // contact) is not integrated: no balance to report.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    out.energy = {nan, nan, nan, nan, nan};
+  }
 
   std::vector<double> t_s, v_mps;
   double e_sum = 0;

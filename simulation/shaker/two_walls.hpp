@@ -23,10 +23,12 @@
 //     damper, momentum conserved, m u + M V = m u+ + M V+, and u+ - V+ = -e (u - V):
 //       u+ = u + M (1 + e)(V - u)/(m + M),   V+ = V - m (1 + e)(V - u)/(m + M),
 //     loss (1 - e^2) m M (V - u)^2 / (2 (m + M)); the same formulas on either wall.
-//   - soft (box rig): the shaker's contact system (model/shaken_contact.hpp) on the floor, and on
+//   - soft, box rig: the shaker's contact system (model/shaken_contact.hpp) on the floor, and on
 //     the ceiling the same system with its signs reversed: the overlap x = y - X - gap obeys
 //     x'' = -g - X''(t) - F/m, the floor's x'' = g + X'' - F/m with g -> -g and A -> -A.
-//     The damper's soft contact (the primary moving under the contact force) is not built.
+//   - soft, damper: the contact force acts on body and primary, whose motion is integrated with
+//     the contact (model/damper_contact.hpp, simulation/shaker/damper_soft_contact.hpp); the
+//     closed form takes over from the primary's state at separation.
 // Carried body: a rebound slower than stick_speed = 1e-6 (g + A w^2) T (box) or
 // 1e-6 (g + |Q| w^2) T (damper; T = 1/f), or more than max_impacts_per_cycle impacts in one
 // drive cycle (chatter, with a warning), leaves the body on that wall, carried while the wall
@@ -38,7 +40,7 @@
 // sign again (before it the gap's h'' > 0 keeps the body clear of it). As the gap shrinks with
 // e -> 0 the body is carried nearly all the time: the damper tends to the oscillator of mass M + m.
 // Start: the primary at rest at X = 0 (damper), the body at rest at mid-gap, at t = 0.
-// Damper energy account (instantaneous impacts): the drive's work W = int F0 sin(w t) X' dt and
+// Damper energy account (instantaneous impacts; NaN with soft ones): the drive's work W = int F0 sin(w t) X' dt and
 // the primary's damping D = int c X'^2 dt over every flight and carry (8-point Gauss-Legendre on
 // pieces of at most 1/16 of the shorter of the drive's and the primary's periods), and the impact
 // losses L, so that W - D - L = E(end) - E(0), E = M X'^2/2 + k X^2/2 + m u^2/2 + m g y.
@@ -78,8 +80,7 @@ struct TwoWallsOptions {
 };
 
 /// Throws InvalidParameter naming `gap`, `frequency`, `amplitude`, `primary-mass`,
-/// `primary-stiffness`, `primary-damping-ratio`, `force-amplitude`, `impacts`, `transient`, or
-/// `impact-model` (soft with the damper).
+/// `primary-stiffness`, `primary-damping-ratio`, `force-amplitude`, `impacts` or `transient`.
 void validate(const TwoWallsOptions& o);
 
 /// One kept impact. Speeds relative to the box, positive.
@@ -109,11 +110,11 @@ struct TwoWallsRun {
   long sticking_episodes = 0;           ///< times the body was carried by a wall
   /// damper: the primary's amplitude, (max X - min X)/2 over the kept window (from the first to
   /// the last kept impact; X at its extremes, the roots of X' located between samples 64 times a
-  /// cycle, and at every impact) [m]; NaN without one.
+  /// cycle, and at every impact's onset and end; not within soft contacts) [m]; NaN without one.
   double primary_amplitude_m = 0;
   double primary_amplitude_bare_m = 0;   ///< damper: |Q| of the primary alone (closed form) [m]
   double primary_amplitude_rigid_m = 0;  ///< damper: |Q| of mass M + m, the body carried (closed form) [m]
-  EnergyAccount energy;                  ///< damper, instantaneous impacts
+  EnergyAccount energy;                  ///< damper, instantaneous impacts (NaN: soft impacts)
   double end_time_s = 0;
   std::vector<std::string> warnings;
   std::string end_reason;
