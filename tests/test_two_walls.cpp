@@ -5,6 +5,7 @@
 // ceiling out of reach; the symmetric orbit between both walls, instantaneous and soft).
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
+#include "hertzdash/simulation/shaker/safe_root.hpp"
 #include "hertzdash/simulation/shaker/two_walls.hpp"
 
 #include <catch2/catch.hpp>
@@ -382,5 +383,53 @@ TEST_CASE("two walls: the damper's stiff soft contact converges to the map of it
     CHECK(std::abs(speed_error) < 10 * i.contact_time_s / T);
     if (last != 0) CHECK(error / last == Approx(std::pow(10.0, -0.4)).margin(0.1));
     last = error;
+  }
+}
+
+TEST_CASE("two walls: the primary's closed form solves its equation from its initial state", "[walls]") {
+  // X(t) = Re(Z e^{lambda (t - t0)}) + Re(Q e^{i w t}) + Fc/k (model/forced_oscillator.hpp) must
+  // satisfy M X'' + c X' + k X = F0 sin(w t) + Fc and X(t0) = X0, X'(t0) = V0, and each derivative
+  // must lie within its bound |Z| wn^n + |Q| w^n after t0. Residuals are roundoff of terms of size
+  // k |X| ~ 1e3 N: 1e-9 N relative to them is loose.
+  const ForcedOscillator o{.mass_kg = 10.778, .stiffness_N_per_m = 157914.0, .damping_ratio = 0.07,
+                           .force_amplitude_N = 100.0, .omega_rad_per_s = 2 * pi * 17.0, .constant_force_N = -7.6};
+  const double t0 = 3.21, X0 = 0.004, V0 = -0.3, c = o.damping_N_s_per_m();
+  const OscillatorMotion x(o, t0, X0, V0);
+  CHECK(x.position_m(t0) == Approx(X0).epsilon(1e-12));
+  CHECK(x.velocity_mps(t0) == Approx(V0).epsilon(1e-12));
+  for (int i = 0; i <= 40; ++i) {
+    const double t = t0 + 0.0123 * i;
+    const double residual = o.mass_kg * x.acceleration_mps2(t) + c * x.velocity_mps(t) +
+                            o.stiffness_N_per_m * x.position_m(t) - o.force_amplitude_N * std::sin(o.omega_rad_per_s * t) -
+                            o.constant_force_N;
+    CHECK(std::abs(residual) < 1e-9 * o.stiffness_N_per_m * 0.01);
+    for (int n = 1; n <= 4; ++n) CHECK(std::abs(x.derivative(n, t)) <= x.derivative_bound(n));
+  }
+  // The steady amplitude |Q| = F0 / sqrt((k - M w^2)^2 + (c w)^2) (Den Hartog).
+  const double w = o.omega_rad_per_s;
+  CHECK(o.steady_amplitude_m() == Approx(100.0 / std::hypot(157914.0 - 10.778 * w * w, c * w)).epsilon(1e-14));
+}
+
+TEST_CASE("two walls: the safe root search finds a straight line's root and a graze", "[walls]") {
+  // h(t) = 1 - t with M = 0 (a body at constant speed in a box at rest, no gravity): the steps in
+  // the forms without cancellation give the root 1 (a naive (|h'| - sqrt(h'^2 - 2 M h)) / M would
+  // divide 0 by 0). A parabola h = d + (t - 1)^2 / 2 (M = 1) touching zero (d = 0) is a graze at
+  // t = 1; lowered by d = -1e-12 it crosses at 1 - sqrt(2e-12) = 1 - 1.4e-6, a root no fixed step
+  // of 0.1 would see; lifted by 1e-12 it has no root before the limit 2.
+  const SafeRoot line = first_safe_root([](double t) { return 1 - t; }, [](double) { return -1.0; }, 0.0, 0.0, 10.0, 1e-15);
+  REQUIRE(line.found);
+  CHECK(line.time_s == Approx(1.0).epsilon(1e-14));
+  for (const double d : {0.0, -1e-12, 1e-12}) {
+    INFO("d = " << d);
+    const SafeRoot r = first_safe_root([d](double t) { return d + 0.5 * (t - 1) * (t - 1); },
+                                       [](double t) { return t - 1; }, 1.0, 0.0, 2.0, 1e-15);
+    if (d > 0) {
+      CHECK_FALSE(r.found);
+      CHECK(r.root_free_to_s == 2.0);
+    } else {
+      REQUIRE(r.found);
+      CHECK(r.time_s == Approx(1 - std::sqrt(-2 * d)).margin(1e-7));
+      CHECK(r.time_s <= 1 - std::sqrt(-2 * d) + 1e-12);  // never past the first root
+    }
   }
 }
