@@ -4,10 +4,12 @@
 // exact flights between impacts (simulation/shaker/two_walls.hpp,
 // docs/shaker.md). Per kept impact the wall, drive phase, relative speeds, contact time, peak
 // force and the box's displacement; the period, impacts per cycle, and for the damper the
-// primary's amplitude with the body and without it.
+// primary's amplitude with the body and without it; --json, or --csv FILE (one row per kept impact).
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
+#include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
+#include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/shaker_parameters.hpp"
 #include "hertzdash/model/two_walls_parameters.hpp"
 #include "hertzdash/simulation/reports/two_walls_report.hpp"
@@ -25,7 +27,8 @@ namespace {
 struct WallsCommandOptions {
   RunOptions run;
   TwoWallsInputs walls;
-  bool json = false;
+  std::string csv_path;
+  bool json = false, mkdir = false;
 };
 
 void print_text(const TwoWallsCommandRun& r) {
@@ -64,6 +67,29 @@ void print_text(const TwoWallsCommandRun& r) {
   std::cout << "\n";
 }
 
+void write_csv(const TwoWallsCommandRun& r, const std::string& path) {
+  CsvWriter csv("hertzdash walls: one row per kept impact (time from the start, the body at rest at mid-gap; phase "
+                "of the drive sin(2 pi f t) in [0,1); wall 0 floor, 1 ceiling; speeds relative to the box)",
+                r.inputs,
+                {"n", "impact_time_s", "impact_phase", "wall", "impact_speed_mps", "rebound_speed_mps", "contact_time_s",
+                 "peak_force_N", "box_displacement_m"});
+  const TwoWallsRun& s = r.run;
+  csv.add_comment(fmt::format("period: {}", s.pattern.period));
+  csv.add_comment(fmt::format("impacts_per_period: {}", s.pattern.impacts_per_period));
+  if (s.rig == TwoWallsRig::damper) {
+    csv.add_comment(fmt::format("primary_amplitude_m: {}", s.primary_amplitude_m));
+    csv.add_comment(fmt::format("primary_amplitude_bare_m: {}", s.primary_amplitude_bare_m));
+    csv.add_comment(fmt::format("primary_amplitude_rigid_m: {}", s.primary_amplitude_rigid_m));
+  }
+  for (const std::string& w : s.warnings) csv.add_comment("warning: " + w);
+  for (std::size_t n = 0; n < s.impacts.size(); ++n) {
+    const TwoWallsImpact& i = s.impacts[n];
+    csv.add_row({static_cast<long>(n), i.time_s, i.phase, static_cast<long>(i.wall), i.impact_speed_mps,
+                 i.rebound_speed_mps, i.contact_time_s, i.peak_force_N, i.box_displacement_m});
+  }
+  csv.save(path);
+}
+
 }  // namespace
 
 Command add_walls_command(CLI::App& app) {
@@ -99,9 +125,16 @@ Command add_walls_command(CLI::App& app) {
                                         help(s::impact_model))
       ->group(group);
   sub->add_flag("--json", opt->json, "Print the result as one JSON object");
+  add_output_file_option(*sub, "--csv", opt->csv_path, "Write the kept impacts to this CSV file, one row each");
+  add_mkdir_flag(*sub, opt->mkdir);
 
   return {sub, [opt]() {
+            prepare_output_file("--csv", opt->csv_path, opt->mkdir);
             const TwoWallsCommandRun r = run_two_walls_command(opt->run, load_paper_parameters(), opt->walls);
+            if (!opt->csv_path.empty()) {
+              create_output_directories(opt->csv_path, opt->mkdir);
+              write_csv(r, opt->csv_path);
+            }
             for (const std::string& w : r.run.warnings) std::cerr << "hertzdash: warning: " << w << "\n";
             if (opt->json) std::cout << to_json(r).dump(2) << "\n";
             else print_text(r);

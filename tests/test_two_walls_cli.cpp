@@ -1,11 +1,15 @@
 // `hertzdash walls` (cli/walls_command.cpp): the impact damper through the command line and its
-// JSON (the keys, the damper's balance and amplitudes), and bad input (exit 2, the option named).
+// JSON (the keys, the damper's balance and amplitudes), the CSV with its provenance, and bad
+// input (exit 2, the option named, nothing written).
 #include "cli_runner.hpp"
+#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 
@@ -40,7 +44,35 @@ TEST_CASE("CLI walls: the impact damper's JSON reports the primary with and with
         Approx(E["final"].get<double>() - E["initial"].get<double>()).margin(1e-9 * E["drive_work"].get<double>()));
 }
 
+TEST_CASE("CLI walls: --csv writes one row per kept impact below its provenance", "[walls]") {
+  const hertzdash::test::ScratchDir dir;
+  const std::string csv = (dir.path / "impacts.csv").string();
+  const auto r = run_cli("walls --rig damper --impact-model instantaneous --gravity 0 --restitution 0.6 "
+                         "--primary-damping-ratio 0.05 --transient 100 --impacts 6 --csv " + csv);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "n,impact_time_s,impact_phase,wall,impact_speed_mps,rebound_speed_mps,contact_time_s,peak_force_N,"
+                "box_displacement_m");
+  int rows = 0;
+  bool git = false, amplitude = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("#", 0) == 0) {
+      git = git || line.rfind("# git_revision:", 0) == 0;
+      amplitude = amplitude || line.rfind("# primary_amplitude_m:", 0) == 0;
+    } else {
+      ++rows;
+    }
+  }
+  CHECK(rows == 6);
+  CHECK(git);
+  CHECK(amplitude);
+}
+
 TEST_CASE("CLI walls: bad input exits 2 naming the option", "[walls]") {
+  const hertzdash::test::ScratchDir dir;
+  const std::string csv = (dir.path / "never.csv").string();
   struct Case {
     std::string args, option;
   };
@@ -53,10 +85,11 @@ TEST_CASE("CLI walls: bad input exits 2 naming the option", "[walls]") {
                         Case{"--gravity 0 --gamma 2", "--gamma"}, Case{"--gamma 2 --amplitude 0.001", "--gamma"},
                         Case{"--height 0.01", "--height"}, Case{"--impact-velocity 1", "--impact-velocity"},
                         Case{"--integrator rk4", "--integrator"}, Case{"--impacts 1.5", "--impacts"}}) {
-    const auto r = run_cli("walls --transient 10 --impacts 5 " + c.args);
+    const auto r = run_cli("walls --transient 10 --impacts 5 " + c.args + " --csv " + csv);
     INFO(c.args << ": " << r.err);
     CHECK(r.exit_code == 2);
     CHECK(r.err.find(c.option) != std::string::npos);
     CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(csv));
   }
 }
