@@ -82,7 +82,8 @@ TEST_CASE("two walls: the damper's drive work equals its damping, impact losses 
     if (e == 0.3) CHECK(r.sticking_episodes > 50);
     const double m = s.mass_kg, M = 10.0;
     double L = 0;
-    for (const TwoWallsImpact& i : r.impacts) L += 0.5 * (1 - e * e) * m * M / (m + M) * i.impact_speed_mps * i.impact_speed_mps;
+    for (const TwoWallsImpact& i : r.impacts)
+      L += 0.5 * (1 - e * e) * m * M / (m + M) * i.impact_speed_mps * i.impact_speed_mps;
     const EnergyAccount& a = r.energy;
     std::printf("g %g: W %.9g J, D %.9g J, L %.9g J (recomputed %.9g), E0 %.6g J, E1 %.6g J, sticks %ld\n", g,
                 a.drive_work_J, a.damping_dissipation_J, a.impact_loss_J, L, a.initial_J, a.final_J,

@@ -80,7 +80,8 @@ TwoWallsCommandRun run_two_walls_command(const RunOptions& options, const PaperP
   }
   if (horizontal) {
     if (!(speed_scale_mps > 0))
-      throw InvalidParameter(box ? "amplitude" : "force-amplitude", format_value(box ? o.drive.amplitude_m : o.primary.force_amplitude_N),
+      throw InvalidParameter(box ? "amplitude" : "force-amplitude",
+                             format_value(box ? o.drive.amplitude_m : o.primary.force_amplitude_N),
                              "> 0 with `gravity` 0 (nothing would move the body)");
     set_up.impact_velocity_mps = speed_scale_mps;
   }

@@ -170,7 +170,8 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
 
   const double stick_speed = 1e-6 * (g + accel_scale) * T;
   const double time_tol = 1e-13 * T;
-  const double search_span_s = 100.0 * T + (damper ? 4.0 * 2.0 * std::numbers::pi / carrying.natural_omega_rad_per_s() : 0.0);
+  const double search_span_s =
+      100.0 * T + (damper ? 4.0 * 2.0 * std::numbers::pi / carrying.natural_omega_rad_per_s() : 0.0);
   const long total = static_cast<long>(options.transient) + options.impacts;
   out.impacts.reserve(static_cast<std::size_t>(options.impacts));
 
