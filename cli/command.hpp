@@ -34,6 +34,9 @@ Command add_fit_command(CLI::App& app);
 /// `hertzdash shaker`: a body bouncing on a vibrating wall (soft or instantaneous impacts).
 Command add_shaker_command(CLI::App& app);
 
+/// `hertzdash walls`: a body between two walls: a driven box, or the impact damper.
+Command add_walls_command(CLI::App& app);
+
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);
 

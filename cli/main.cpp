@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
       hertzdash::cli::add_restitution_command(app),
       hertzdash::cli::add_bounce_command(app),
       hertzdash::cli::add_shaker_command(app),
+      hertzdash::cli::add_walls_command(app),
       hertzdash::cli::add_fit_command(app),
       hertzdash::cli::add_sweep_command(app),
   };

@@ -2,6 +2,7 @@
 
 #include "hertzdash/model/shaker_parameters.hpp"
 #include "hertzdash/model/shaker_sweep_parameters.hpp"
+#include "hertzdash/model/two_walls_parameters.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 
 #include <fmt/format.h>
@@ -62,6 +63,17 @@ std::string parameter_reference_markdown() {
   std::vector<ParameterDecl> shaker(std::begin(shaker_parameters::all), std::end(shaker_parameters::all));
   shaker.insert(shaker.end(), std::begin(shaker_sweep_parameters::all), std::end(shaker_sweep_parameters::all));
   for (const ParameterDecl& d : shaker)
+    md += fmt::format("| `{}` | {} | {} | {}{} | {} |\n", d.key, d.unit.empty() ? "-" : cell(d.unit),
+                      cell(valid_values(d)), cell(d.default_value),
+                      d.default_source.empty() ? "" : " (" + cell(d.default_source) + ")", cell(d.help));
+  md +=
+      "\n## `hertzdash walls`\n\n"
+      "A body between two walls (model/two_walls_parameters.hpp, [shaker.md](shaker.md)): these, beside the "
+      "shaker's `frequency`, `amplitude`, `gamma`, `impacts`, `transient` and `impact-model` and the body, contact, "
+      "law and solver options above (not `height`: the body starts at rest at mid-gap).\n\n"
+      "| key | unit | valid values | default (source) | meaning |\n"
+      "|---|---|---|---|---|\n";
+  for (const ParameterDecl& d : two_walls_parameters::all)
     md += fmt::format("| `{}` | {} | {} | {}{} | {} |\n", d.key, d.unit.empty() ? "-" : cell(d.unit),
                       cell(valid_values(d)), cell(d.default_value),
                       d.default_source.empty() ? "" : " (" + cell(d.default_source) + ")", cell(d.help));

@@ -16,7 +16,8 @@
 // is certified root-free by the lower bound, whatever the step. Near a transversal root the safe
 // step is d = (r - a)(1 - O(r - a)), so the search reaches the bracket in a few steps; a flight
 // that only grazes the wall (h touches zero with h' = 0) makes the safe steps shrink to the time
-// tolerance, and the touch is reported as an impact at zero relative speed (`grazing`).
+// tolerance, and the touch is reported as an impact at zero relative speed (`grazing`). The
+// search itself is simulation/shaker/safe_root.hpp's, which the two-wall rig uses for each wall.
 #include "hertzdash/model/wall_motion.hpp"
 
 namespace hertzdash {
