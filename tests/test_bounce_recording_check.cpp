@@ -137,3 +137,26 @@ TEST_CASE("bounce check: a drop of too few times is left out whole, and nothing 
   CHECK_THROWS_AS(check_bounce_recording(nothing), DataError);
   CHECK_THROWS_WITH(check_bounce_recording(nothing), Catch::Contains("nothing.csv") && Catch::Contains("nothing usable"));
 }
+
+// A mistyped or shifted time the local check cannot place: drop c's interval between its times 3
+// and 4 copied into the next interval (the later times shifted by the difference), as in a
+// transcribed recording. The ratio of these two flights is 1: a bounce that lost no energy
+// (r = 0.83), above 1 - (1 - r) / 10 = 0.983, but a deviation of ln(1 / 0.83) = 0.19 from r,
+// below the doubled/missed threshold of 0.30 (above). The drop is cut before time 5, the end of
+// that flight: times 5 to 9 flagged not_shrinking, the first with the ratio, the drop's first five times kept.
+TEST_CASE("bounce check: a flight that does not shrink cuts the drop there", "[bounce_check]") {
+  BounceRecording r = clean();
+  std::vector<double>& t = r.drops[2].impact_time_s;
+  const double copied = t[4] - t[3], shift = copied - (t[5] - t[4]);
+  for (std::size_t i = 5; i < t.size(); ++i) t[i] += shift;
+  const CheckedRecording c = check_bounce_recording(r);
+  REQUIRE(c.flagged.size() == 5);
+  for (std::size_t k = 0; k < 5; ++k) {
+    CHECK(c.flagged[k].drop == "c");
+    CHECK(c.flagged[k].index == 5 + k);
+    CHECK(c.flagged[k].kind == "not_shrinking");
+  }
+  CHECK_THAT(c.flagged[0].reason, Catch::Contains("ratio 1;"));
+  REQUIRE(c.drops.size() == 3);
+  CHECK(c.drops[2].impact_time_s.size() == 5);
+}

@@ -168,6 +168,32 @@ void repair_glitches(const RecordedDrop& d, std::vector<Time>& s, std::vector<Bo
   }
 }
 
+// A flight that does not shrink (the header's step 3), on the repaired times: the drop is cut
+// before the later end of the first such interval, each time from there on flagged.
+void cut_at_growing_flight(const RecordedDrop& d, std::vector<Time>& s, std::vector<BounceFlag>& flagged) {
+  const double median_ratio = s.size() >= 3 ? interval_ratio(s) : 0.0;
+  const double r = median_ratio > 0 && median_ratio < 1 ? median_ratio : 1.0;  // spans of g flights, S_g(r)
+  auto flight = [&](std::size_t i) { return (s[i + 1].t - s[i].t) / span(s[i + 1].number - s[i].number, r); };
+  const double limit = 1 - (1 - r) / 10;  // "near 1": within a tenth of the drop's own loss (the header)
+  for (std::size_t k = 1; k + 1 < s.size(); ++k) {
+    const double ratio = flight(k) / flight(k - 1);
+    if (ratio < limit) continue;
+    const std::size_t first_row = s[k + 1].row;
+    for (std::size_t i = k + 1; i < s.size(); ++i)
+      flagged.push_back(
+          {d.label, s[i].row, "not_shrinking",
+           i == k + 1 ? fmt::format("{}: the flight ending at time {:.9g} s is not shorter than the one before it "
+                                    "(ratio {:.4g}; the drop's r = {:.4g}, so above 1 - (1 - r) / 10 = {:.4g} is no "
+                                    "shrink): a bounce that lost no energy, so a doubled, shifted or mistyped "
+                                    "detection; the drop is cut here, this time and the {} after it left out",
+                                    d.where[s[i].row], s[i].t, ratio, r, limit, s.size() - k - 2)
+                      : fmt::format("{}: after the flight that did not shrink (row index {}): left out",
+                                    d.where[s[i].row], first_row)});
+    s.resize(k + 1);
+    return;
+  }
+}
+
 }  // namespace
 
 std::size_t CheckedRecording::times() const {
@@ -201,6 +227,7 @@ CheckedRecording check_bounce_recording(const BounceRecording& recording) {
       out.notes.push_back(fmt::format("drop '{}' has {} increasing times, fewer than {}: not checked for doubled or "
                                       "missed detections (too few intervals to tell a glitch from its restitution)",
                                       d.label, s.size(), min_checked_bounce_times));
+    cut_at_growing_flight(d, s, flags);
     if (s.size() < min_bounce_times) {
       flags.push_back({d.label, std::nullopt, "too_few",
                        fmt::format("{}: drop '{}' has {} usable times, fewer than {} (its first impact speed and "

@@ -32,7 +32,20 @@
 //    A drop needs five times for this check (three local ratios, whose median then resists one
 //    glitch); with fewer, its glitches cannot be told from its restitution: it is checked for
 //    monotonic times only, and a note says so.
-// 3. Too few: a drop fits its own first impact speed and clock offset (bounce_fit.hpp), so it
+// 3. A flight that does not shrink: after the repairs, a flight (an interval over its span,
+//    dt / S_g(r)) as long as the one before it, a ratio near 1 or above it, means the body lost
+//    no energy at an impact, which a dissipative bounce cannot: a doubled detection the local check could not
+//    place (an interval ratio near 1 where r is near 1 deviates too little from r), or a shifted
+//    or mistyped time. Which time is wrong cannot be told, and every later time carries the
+//    error: the drop is cut before the later end of the first such flight, each time from there
+//    on flagged `not_shrinking` and left out. "Near 1" is above 1 - (1 - r) / 10: a ratio that
+//    kept nine tenths of the drop's typical shrink, (1 - r), is not. Timing jitter sigma moves a
+//    ratio by sigma sqrt(6) / dt: a clean drop whose flights shrink by (1 - r) dt less than about
+//    twice that (r = 0.9, dt = 0.2 s: sigma above 4 ms) can be cut by noise alone, losing data
+//    but fitting nothing wrong; its flags say so with their ratios. (Public acoustic recordings
+//    of ping-pong, tennis and golf balls, tried locally and not shipped: clean ratios reach at
+//    most 0.6 of the way from r to 1; one transcribed interval repeated reads exactly 1.)
+// 4. Too few: a drop fits its own first impact speed and clock offset (bounce_fit.hpp), so it
 //    tells the law's parameters something only with at least three usable times; a drop with
 //    fewer is flagged `too_few` (index: none) and left out whole.
 // A drop of more than max_bounces rows is refused (DataError): the model follows at most that
@@ -54,7 +67,7 @@ inline constexpr std::size_t min_checked_bounce_times = 5;
 struct BounceFlag {
   std::string drop;                  ///< the drop's label
   std::optional<std::size_t> index;  ///< the time's index in the drop (file order); none for a whole drop
-  std::string kind;                  ///< non_monotonic, doubled, missed, too_few
+  std::string kind;                  ///< non_monotonic, doubled, missed, not_shrinking, too_few
   std::string reason;                ///< why, with the numbers and the row's FILE:LINE
 };
 

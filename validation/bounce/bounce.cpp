@@ -18,6 +18,13 @@
 //     would: the paper's two values for rod A (0.828, 0.834) could be such a drift.
 //  3. How large is the numerical error per bounce? Flights are closed form, so onset times do
 //     not drift; each bounce adds the error of one contact, measured against gbs8 at rtol 1e-12.
+//  4. What does air drag do to the e read from the intervals (model/air_drag.hpp)? Each flight
+//     is shorter than 2 v_r / g and lands slower, so the ratio reads e (1 - (1 + e^2) (v_r /
+//     v_t)^2 / 4) to first order (tests/test_air_drag.cpp): for the paper's 0.778 kg rod
+//     (frontal area taken as the 12.7 mm sphere's, about its 25 mm face's; C_d = 1, a bluff
+//     body's upper bound) from 20 mm, and for a 2.7 g ball of 20 mm radius on a rigid flat from
+//     0.3 m (C_d = 0.47, a sphere; Kelvin-Voigt's law at e = 0.9, whose e does not depend on the
+//     speed), both in air of 1.204 kg/m^3.
 //
 // Writes: OUT/bounce_sequence.csv and OUT/bounce_restitutions.csv (bounce_sequence.gp),
 // GENERATED/bounce_table.tex and GENERATED/bounce.tex (macros \bounce...).
@@ -178,6 +185,29 @@ int main(int argc, char** argv) try {
     macros.add(std::string("bounceErrorPerBounce") + name + "Ns", 1e9 * per_bounce, "{:.2g}");
     std::cout << fmt::format("{}: onset-time error per bounce up to {:.2g} s over 10 impacts\n", name, per_bounce);
   }
+
+  // 4. Air drag: the first interval ratio with and without air.
+  auto drag_shift = [&](DropTestSetup s, const char* law, double drag_coefficient) {
+    const BounceSequence vacuum = run_bounce_sequence(s, law, accurate, three);
+    s.air_drag = {.air_density_kg_per_m3 = 1.204, .drag_coefficient = drag_coefficient};
+    const BounceSequence air = run_bounce_sequence(s, law, accurate, three);
+    const double v_t = terminal_speed_mps(s.air_drag, s.mass_kg, s.ball_radius_m, s.gravity_mps2);
+    return std::pair{vacuum.e_from_intervals.front() - air.e_from_intervals.front(), v_t};
+  };
+  const auto [rod_shift, rod_v_t] = drag_shift(steel, "hongo", 1.0);
+  DropTestSetup ball = paper_setup(paper, "steel", 0.3);
+  ball.mass_kg = 2.7e-3;
+  ball.ball_radius_m = 0.020;
+  ball.rod.E_Pa = INFINITY;
+  ball.restitution = 0.9;
+  const auto [ball_shift, ball_v_t] = drag_shift(ball, "kelvin-voigt", 0.47);
+  macros.add("bounceDragRodShiftPpm", 1e6 * rod_shift, "{:.2g}");
+  macros.add("bounceDragRodTerminalSpeed", rod_v_t, "{:.0f}");
+  macros.add("bounceDragBallShift", ball_shift, "{:.3f}");
+  macros.add("bounceDragBallTerminalSpeed", ball_v_t, "{:.1f}");
+  std::cout << fmt::format("air drag lowers the first interval ratio by {:.2g} (steel rod, v_t {:.0f} m/s) and {:.3g} "
+                           "(2.7 g ball, v_t {:.1f} m/s)\n",
+                           rod_shift, rod_v_t, ball_shift, ball_v_t);
 
   gaps.save(args.out_dir / "bounce_sequence.csv");
   restitutions.save(args.out_dir / "bounce_restitutions.csv");
