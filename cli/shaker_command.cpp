@@ -78,7 +78,7 @@ void write_csv(const ShakerCommandRun& r, const std::string& path) {
 Command add_shaker_command(CLI::App& app) {
   namespace p = shaker_parameters;
   auto opt = std::make_shared<ShakerCommandOptions>();
-  opt->run.integrator = "gbs8-regularized";  // the shaker's contact runs in regularising variables
+  opt->run.integrator = shaker_default_integrator;  // the shaker's contact runs in regularising variables
   CLI::App* sub = app.add_subcommand(
       "shaker", "A body bouncing on a vibrating wall: soft contacts or instantaneous impacts, exact flights");
   add_run_options(*sub, opt->run);

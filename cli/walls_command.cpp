@@ -12,6 +12,7 @@
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/shaker_parameters.hpp"
 #include "hertzdash/model/two_walls_parameters.hpp"
+#include "hertzdash/simulation/reports/shaker_report.hpp"
 #include "hertzdash/simulation/reports/two_walls_report.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
@@ -96,7 +97,7 @@ Command add_walls_command(CLI::App& app) {
   namespace s = shaker_parameters;
   namespace p = two_walls_parameters;
   auto opt = std::make_shared<WallsCommandOptions>();
-  opt->run.integrator = "gbs8-regularized";  // the soft contact runs in regularising variables
+  opt->run.integrator = shaker_default_integrator;  // the soft contact runs in regularising variables
   CLI::App* sub = app.add_subcommand(
       "walls", "A body between two walls: a harmonically driven box, or the impact damper (a box on a primary "
                "oscillator under a harmonic force); exact flights");

@@ -75,6 +75,17 @@ struct Rise {
 };
 Rise rise_to_apex(double speed_mps, double gravity_mps2, double terminal_speed_mps);
 
+/// Where a body is a time `tau` >= 0 after leaving upward at `speed_mps`: its height above the
+/// start [m] and its upward velocity [m/s]. Rising (tau <= t_up), with phi0 = atan(v_r / v_t):
+/// y = (v_t^2 / g) ln(cos(phi0 - g tau / v_t) / cos phi0), u = v_t tan(phi0 - g tau / v_t);
+/// then falling from the apex H for s = tau - t_up: y = H - (v_t^2 / g) ln cosh(g s / v_t),
+/// u = -v_t tanh(g s / v_t). In vacuum y = v_r tau - g tau^2 / 2, u = v_r - g tau.
+struct FlightPoint {
+  double height_m = 0;
+  double upward_velocity_mps = 0;
+};
+FlightPoint flight_point(double speed_mps, double tau_s, double gravity_mps2, double terminal_speed_mps);
+
 /// The flight of a body that leaves the contact at speed `rebound_speed_mps` from a depth
 /// `depth_m` >= 0 below the level where contact begins (x_s > 0 where a tension clamp ended the
 /// contact), rises to its apex and falls back to that level: its duration and landing speed;

@@ -11,6 +11,7 @@
 #include "hertzdash/io/file_identity.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/reports/bounce_fit_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/run/result_fields.hpp"
@@ -296,6 +297,30 @@ py::dict py_fit_restitution_table(const std::string& path, const std::string& fi
     run = run_restitution_fit(path, options, paper(), settings, compare_laws);
   }
   warn_about(restitution_fit_diagnostics(run));
+  return to_python(to_json(run));
+}
+
+// fit_bounce_times: `hertzdash fit --bounce-times --json`; the set-up's options are keywords.
+py::dict py_fit_bounce_times(const std::string& path, const std::string& fit, bool compare_laws, bool cross_validate,
+                             const py::kwargs& kwargs) {
+  RunOptions options;
+  for (const auto& [key, value] : kwargs) {
+    const RunOption& o = option_named(key.cast<std::string>(), "fit_bounce_times");
+    if (o.group != RunOption::Group::setup)
+      throw py::type_error(fmt::format("fit_bounce_times() got the solver option '{}': the fit integrates its model "
+                                       "itself (simulation/fit/bounce_fit.hpp)",
+                                       python_keyword(o.name)));
+    set_option(options, o, value);
+  }
+  BounceFitSettings settings;
+  if (!fit.empty()) settings.parameters = parse_fit_parameters(fit);
+  settings.cross_validate = cross_validate;
+  BounceFitRun run;
+  {
+    py::gil_scoped_release release;
+    run = run_bounce_fit(path, options, paper(), settings, compare_laws);
+  }
+  warn_about(bounce_fit_diagnostics(run));
   return to_python(to_json(run));
 }
 
@@ -674,6 +699,18 @@ PYBIND11_MODULE(hertzdash, m) {
          "(empty: the law's own, restitution or viscous-time-constant); compare_laws fits every registered law "
          "(damping then omitted); cross_validate leaves out each speed in turn. Warnings (a synthetic table, "
          "sigma estimated, a failed fit) are UserWarnings.\n\n" +
+         options)
+            .c_str());
+  m.def("fit_bounce_times", &py_fit_bounce_times, py::arg("path"), py::arg("fit") = "",
+        py::arg("compare_laws") = false, py::arg("cross_validate") = false,
+        ("fit_bounce_times(path, fit='', compare_laws=False, cross_validate=False, **options) -> dict\n\nFit a "
+         "damping law's own parameters, and each drop's first impact speed and clock offset, to a bounce recording "
+         "(the detected impact times of one or more drops, data/measurements/README.md), exactly `hertzdash fit "
+         "--bounce-times PATH --json` (docs/fit.md): recording, flagged (the doubled, missed, out-of-order and "
+         "non-shrinking detections left out, by drop and index), fits (parameters, drops, sigma_s, aic, bic, "
+         "e_effective_range, points, cross_validation with cross_validate), failures. air_density and "
+         "drag_coefficient add air drag to the model's flights. Warnings (each flag, a synthetic recording) are "
+         "UserWarnings.\n\n" +
          options)
             .c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },

@@ -5,13 +5,17 @@
 #include "cli_runner.hpp"
 
 #include "hertzdash/model/air_drag.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/bounce_sequence.hpp"
+#include "hertzdash/simulation/run/bounce_trace.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace hertzdash;
@@ -61,6 +65,11 @@ TEST_CASE("air drag: the closed-form fall and rise match an integration of the d
   const auto [u_rise, v_rise] = integrate_drag(-v_r, rise.time_s, g, v_t);
   CHECK(-u_rise == Approx(rise.height_m).epsilon(1e-9));
   CHECK(std::abs(v_rise) < 1e-9 * v_r);
+  // A long fall reaches the terminal speed: t -> D / v_t + (v_t / g) ln 2 (acosh(e^a) = a + ln 2
+  // + O(e^{-2a})), finite where v has rounded to v_t (D = 2000 m: a = g D / v_t^2 = 265).
+  const Fall long_fall = fall_from_rest(2000.0, g, v_t);
+  CHECK(long_fall.speed_mps == Approx(v_t).epsilon(1e-15));
+  CHECK(long_fall.time_s == Approx(2000.0 / v_t + v_t / g * std::log(2.0)).epsilon(1e-14));
 }
 
 TEST_CASE("air drag: without air the flights are the vacuum parabola's", "[air-drag]") {
@@ -152,7 +161,7 @@ TEST_CASE("air drag: refused where nothing flies, named", "[air-drag][cli]") {
   const auto simulate = test::run_cli("simulate --air-density 1.2");
   CHECK(simulate.exit_code == 2);
   CHECK(simulate.err.find("--air-density") != std::string::npos);
-  CHECK(simulate.err.find("follows no flight") != std::string::npos);
+  CHECK(simulate.err.find("takes no drag") != std::string::npos);
   const auto coefficient = test::run_cli("bounce --drag-coefficient 0.5");
   CHECK(coefficient.exit_code == 2);
   CHECK(coefficient.err.find("--drag-coefficient") != std::string::npos);
@@ -187,4 +196,60 @@ TEST_CASE("air drag: a single impact of the C++ API refuses a set-up with drag",
   } catch (const InvalidParameter& e) {
     CHECK(e.key == "air-density");
   }
+}
+
+TEST_CASE("air drag: the bounce trace's flights follow the drag equation", "[air-drag][bounce]") {
+  // `bounce --trace` samples each flight from model/air_drag.hpp's closed forms; an RK4
+  // integration of u'' = g - sign(u') g u'^2 / v_t^2 from the separation (x_s, -v_r) must reach
+  // the same deformation and rate at each sample (RK4 at 20000 steps: ~1e-12 relative).
+  DropTestSetup s = ping_pong_ball();
+  s.air_drag = {.air_density_kg_per_m3 = 1.204};
+  const double g = s.gravity_mps2, v_t = terminal_speed_mps(s.air_drag, s.mass_kg, s.ball_radius_m, g);
+  const BounceSequence b = run_bounce_sequence(s, "kelvin-voigt", SolverSettings{}, {.impacts = 2});
+  const std::vector<TraceSample> trace = bounce_trace(b, s, "kelvin-voigt", SolverSettings{});
+  const double t_sep = b.impacts[0].separation_time_s, t_next = b.impacts[1].onset_time_s;
+  const double v_r = b.impacts[0].rebound_speed_mps;
+  int checked = 0;
+  double x_s = 0;
+  for (const TraceSample& p : trace) {
+    if (p.t_s <= t_sep) x_s = p.x_m;  // the last contact sample: the separation
+    if (p.t_s <= t_sep || p.t_s >= t_next) continue;
+    const auto [u, v] = integrate_drag(-v_r, p.t_s - t_sep, g, v_t);
+    CHECK(p.x_m == Approx(x_s + u).margin(1e-10));
+    CHECK(p.xdot_mps == Approx(v).margin(1e-10));
+    ++checked;
+  }
+  CHECK(checked == bounce_flight_samples - 1);
+}
+
+TEST_CASE("air drag: read where flights are followed, described, and refused elsewhere", "[air-drag][parameters]") {
+  // The option table's side of the no-option-ignored matrix (tests/test_parameter_schema.cpp runs
+  // without flights, where both are refused): with follows_flights (bounce, fit --bounce-times)
+  // air-density and drag-coefficient are read and named in the run's description; the drag
+  // coefficient alone is refused naming air-density; the elastic rod refuses both.
+  const PaperParameters paper = load_paper_parameters();
+  RunOptions base;
+  base.follows_flights = true;
+  RunOptions air = base;
+  air.air_density_kg_per_m3 = 1.2;
+  air.drag_coefficient = 0.5;
+  const Parameters d = describe_run(resolve_setup(air, paper), air.damping, resolve_solver(air));
+  auto listed = [&](const std::string& name) {
+    return std::find_if(d.begin(), d.end(), [&](const auto& e) { return e.first == name; }) != d.end();
+  };
+  CHECK(listed("air_density_kg_per_m3"));
+  CHECK(listed("drag_coefficient"));
+  CHECK(d != describe_run(resolve_setup(base, paper), base.damping, resolve_solver(base)));
+  RunOptions coefficient_only = base;
+  coefficient_only.drag_coefficient = 0.5;
+  try {
+    resolve_setup(coefficient_only, paper);
+    FAIL("accepted and ignored");
+  } catch (const InvalidParameter& e) {
+    CHECK(e.key == "drag-coefficient");
+    CHECK_THAT(e.valid_range, Catch::Contains("air-density"));
+  }
+  RunOptions elastic = air;
+  elastic.rod_model = "elastic";
+  CHECK_THROWS_AS(resolve_setup(elastic, paper), InvalidParameter);
 }

@@ -160,3 +160,16 @@ TEST_CASE("bounce check: a flight that does not shrink cuts the drop there", "[b
   REQUIRE(c.drops.size() == 3);
   CHECK(c.drops[2].impact_time_s.size() == 5);
 }
+
+// The limit is 1 - (1 - r) / 10 = 0.983 (r = 0.83): a flight that kept nine tenths of the shrink
+// is not cut. Drop c's flight between times 4 and 5 set to 0.97 of the one before (the later times
+// shifted): a local deviation ln(0.97 / 0.83) = 0.16, below the doubled/missed threshold too.
+TEST_CASE("bounce check: a flight that still shrinks a little is not cut", "[bounce_check]") {
+  BounceRecording r = clean();
+  std::vector<double>& t = r.drops[2].impact_time_s;
+  const double shift = 0.97 * (t[4] - t[3]) - (t[5] - t[4]);
+  for (std::size_t i = 5; i < t.size(); ++i) t[i] += shift;
+  const CheckedRecording c = check_bounce_recording(r);
+  for (const BounceFlag& f : c.flagged) CHECK(f.kind != "not_shrinking");
+  CHECK(c.drops[2].impact_time_s.size() == static_cast<std::size_t>(impacts));
+}

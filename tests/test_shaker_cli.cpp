@@ -79,7 +79,14 @@ TEST_CASE("CLI shaker: bad input exits 2 naming the option and writes nothing", 
   for (const Case& c : {Case{"--gamma 1.3 --amplitude 0.001", "--gamma"}, Case{"--impacts 2.5", "--impacts"},
                         Case{"--frequency 0", "--frequency"}, Case{"--impact-model hard", "--impact-model"},
                         Case{"--integrator cvode", "--integrator"}, Case{"--impact-velocity 1", "--impact-velocity"},
-                        Case{"--start-phase 1", "--start-phase"}}) {
+                        Case{"--start-phase 1", "--start-phase"},
+                        // The instantaneous map reads e, g and the start height only: a contact, law or
+                        // solver option would be ignored, so it is refused.
+                        Case{"--impact-model instantaneous --restitution 0.5 --ball-E 9e9", "--ball-E"},
+                        Case{"--impact-model instantaneous --restitution 0.5 --mass 3", "--mass"},
+                        Case{"--impact-model instantaneous --restitution 0.5 --damping kelvin-voigt", "--damping"},
+                        Case{"--impact-model instantaneous --restitution 0.5 --rtol 1e-3", "--rtol"},
+                        Case{"--impact-model instantaneous --integrator cvode-regularized", "--integrator"}}) {
     const auto r = run_cli("shaker --transient 10 --impacts 5 " + c.args + " --csv " + csv);
     INFO(c.args << ": " << r.err);
     CHECK(r.exit_code == 2);

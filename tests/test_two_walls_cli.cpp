@@ -84,7 +84,11 @@ TEST_CASE("CLI walls: bad input exits 2 naming the option", "[walls]") {
                         Case{"--rig damper --impact-model hard", "--impact-model"},
                         Case{"--gravity 0 --gamma 2", "--gamma"}, Case{"--gamma 2 --amplitude 0.001", "--gamma"},
                         Case{"--height 0.01", "--height"}, Case{"--impact-velocity 1", "--impact-velocity"},
-                        Case{"--integrator rk4", "--integrator"}, Case{"--impacts 1.5", "--impacts"}}) {
+                        Case{"--integrator rk4", "--integrator"}, Case{"--impacts 1.5", "--impacts"},
+                        // Instantaneous impacts read e, g and (the damper's momentum) the body's mass only.
+                        Case{"--impact-model instantaneous --ball-E 9e9", "--ball-E"},
+                        Case{"--impact-model instantaneous --mass 0.1", "--mass"},
+                        Case{"--rig damper --impact-model instantaneous --rtol 1e-3", "--rtol"}}) {
     const auto r = run_cli("walls --transient 10 --impacts 5 " + c.args + " --csv " + csv);
     INFO(c.args << ": " << r.err);
     CHECK(r.exit_code == 2);

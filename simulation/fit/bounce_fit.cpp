@@ -204,14 +204,15 @@ const FittedParameter& BounceFit::parameter(const std::string& name) const {
   throw std::out_of_range("bounce fit: no fitted parameter " + name);
 }
 
-BounceFit fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& base,
+BounceFit fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& given,
                                const PaperParameters& paper, const BounceFitSettings& settings,
                                const std::optional<std::vector<double>>& start) {
   use_gsl_return_codes();
-  check_bounce_fit_options(base);
+  check_bounce_fit_options(given);
+  RunOptions base = given;
+  base.follows_flights = true;  // the model's flights read the air drag, from the start values on
   {
     RunOptions probe = base;
-    probe.follows_flights = true;  // the model's flights read the air drag
     probe.impact_velocity_mps = 1.0;
     resolve_setup(probe, paper);  // the options' own refusals first
   }

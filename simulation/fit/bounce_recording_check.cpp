@@ -227,7 +227,7 @@ CheckedRecording check_bounce_recording(const BounceRecording& recording) {
       out.notes.push_back(fmt::format("drop '{}' has {} increasing times, fewer than {}: not checked for doubled or "
                                       "missed detections (too few intervals to tell a glitch from its restitution)",
                                       d.label, s.size(), min_checked_bounce_times));
-    cut_at_growing_flight(d, s, flags);
+    if (s.size() >= min_checked_bounce_times) cut_at_growing_flight(d, s, flags);
     if (s.size() < min_bounce_times) {
       flags.push_back({d.label, std::nullopt, "too_few",
                        fmt::format("{}: drop '{}' has {} usable times, fewer than {} (its first impact speed and "

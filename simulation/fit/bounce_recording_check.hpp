@@ -42,9 +42,8 @@
 //    kept nine tenths of the drop's typical shrink, (1 - r), is not. Timing jitter sigma moves a
 //    ratio by sigma sqrt(6) / dt: a clean drop whose flights shrink by (1 - r) dt less than about
 //    twice that (r = 0.9, dt = 0.2 s: sigma above 4 ms) can be cut by noise alone, losing data
-//    but fitting nothing wrong; its flags say so with their ratios. (Public acoustic recordings
-//    of ping-pong, tennis and golf balls, tried locally and not shipped: clean ratios reach at
-//    most 0.6 of the way from r to 1; one transcribed interval repeated reads exactly 1.)
+//    but fitting nothing wrong; its flags say so with their ratios. A drop of fewer than five
+//    times is not cut: without the repairs, an echo in it could cut the true impact after it.
 // 4. Too few: a drop fits its own first impact speed and clock offset (bounce_fit.hpp), so it
 //    tells the law's parameters something only with at least three usable times; a drop with
 //    fewer is flagged `too_few` (index: none) and left out whole.

@@ -430,6 +430,15 @@ void refuse_trace_only_options(const RunOptions& o, std::string_view what) {
       throw InvalidParameter(option.name, given_text(o, option), trace_only_range(what));
 }
 
+void refuse_options_not_read(const RunOptions& o, const RunOptions& defaults, std::span<const std::string_view> read,
+                             const std::string& only_with) {
+  for (const RunOption& option : run_options()) {
+    if (std::find(read.begin(), read.end(), option.name) != read.end()) continue;
+    const std::string value = given_text(o, option);
+    if (value != given_text(defaults, option)) throw InvalidParameter(option.name, value, "given only with " + only_with);
+  }
+}
+
 void require_read(const RunOptions& o, const RunOption& option, const std::string& value) {
   const IntegratorTraits& integrator = integrator_traits(parse_integrator(o.integrator));
   const OptionReaders& r = option.readers;
@@ -439,7 +448,7 @@ void require_read(const RunOptions& o, const RunOption& option, const std::strin
   else if (r.elastic_rod && o.rod_model != "elastic")
     run = key_reference("rod-model") + " is " + o.rod_model;
   else if (r.flights_only && !o.follows_flights)
-    run = "this run follows no flight: a single impact integrates its fall in vacuum";
+    run = "this command takes no drag in its falls and flights (a single impact integrates its fall in vacuum)";
   else if (r.flights_only && o.rod_model != "rigid")
     run = key_reference("rod-model") + " is " + o.rod_model + ", whose flights are integrated without drag";
   else if (r.integrators && !r.integrators(integrator))

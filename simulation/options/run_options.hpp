@@ -16,6 +16,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -167,6 +168,12 @@ void check_given_options(const RunOptions& o);
 void refuse_trace_only_options(const RunOptions& o, std::string_view what);
 /// The range of that refusal.
 std::string trace_only_range(std::string_view what);
+
+/// Refuses (InvalidParameter{key, value, "given only with " + only_with}) every option of `o` that
+/// differs from the command's own `defaults` and is not among `read`: what a run that reads only
+/// those (the instantaneous impact map of `shaker` and `walls`) says of the rest.
+void refuse_options_not_read(const RunOptions& o, const RunOptions& defaults, std::span<const std::string_view> read,
+                             const std::string& only_with);
 
 /// Refuses option `option` (shown with `value`) where nothing in run `o` reads it (its law, rig or
 /// integrator), as check_given_options does; `fit --fit` asks it of each parameter it fits.

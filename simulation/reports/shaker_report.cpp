@@ -48,6 +48,13 @@ ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperPa
   if (in.start_phase) require_in_range(p::start_phase, *in.start_phase);
   o.start_phase = in.start_phase;
   o.impact_model = parse_shaker_impact_model(in.impact_model.value_or(std::string(p::impact_model.default_value)));
+  if (o.impact_model == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g
+    RunOptions defaults;
+    defaults.integrator = shaker_default_integrator;
+    static constexpr std::string_view read[] = {"rod", "restitution", "gravity", "height"};
+    refuse_options_not_read(options, defaults, read,
+                            "`impact-model` soft (the instantaneous map reads `restitution`, `gravity` and `height`)");
+  }
   r.inputs = describe_run(r.setup, r.law, r.solver);
   r.inputs.emplace_back("frequency_Hz", fmt::format("{}", o.wall.frequency_Hz));
   r.inputs.emplace_back("amplitude_m", fmt::format("{}", o.wall.amplitude_m));

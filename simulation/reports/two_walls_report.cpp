@@ -5,6 +5,7 @@
 #include "hertzdash/model/two_walls_parameters.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/reports/report_json.hpp"
+#include "hertzdash/simulation/reports/shaker_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
@@ -95,6 +96,16 @@ TwoWallsCommandRun run_two_walls_command(const RunOptions& options, const PaperP
   o.impacts = static_cast<int>(given_or_default(in.impacts, s::impacts));
   o.transient = static_cast<int>(given_or_default(in.transient, s::transient));
   o.impact_model = parse_shaker_impact_model(in.impact_model.value_or(std::string(s::impact_model.default_value)));
+  if (o.impact_model == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g, momentum m
+    RunOptions defaults;
+    defaults.integrator = shaker_default_integrator;
+    static constexpr std::string_view box_reads[] = {"rod", "restitution", "gravity"};
+    static constexpr std::string_view damper_reads[] = {"rod", "restitution", "gravity", "mass"};
+    refuse_options_not_read(options, defaults, box ? std::span<const std::string_view>(box_reads) : damper_reads,
+                            box ? "`impact-model` soft (the instantaneous box reads `restitution` and `gravity`)"
+                                : "`impact-model` soft (the instantaneous damper reads `restitution`, `gravity` and "
+                                  "`mass`)");
+  }
   r.inputs = describe_run(r.setup, r.law, r.solver);
   r.inputs.emplace_back("rig", std::string(rig));
   r.inputs.emplace_back("gap_m", fmt::format("{}", o.gap_m));

@@ -311,6 +311,11 @@ const char* to_string(IntegratorKind k);
 /// The CLI spellings of every integrator (or of those whose row satisfies `which`),
 /// comma-separated ("euler, rk4, ...").
 std::string integrator_names(bool (*which)(const IntegratorTraits&) = nullptr);
+/// The rows in regularising variables: those that take a time-dependent contact (the shaker's
+/// and the two walls' moving wall is a forcing of the regularised contact only).
+inline std::string regularising_integrator_names() {
+  return integrator_names([](const IntegratorTraits& t) { return t.variables == Variables::regularized; });
+}
 /// The integrator spelled `name`; throws InvalidParameter(option, name, "one of: ...").
 IntegratorKind parse_integrator(std::string_view name, const std::string& option = "integrator");
 

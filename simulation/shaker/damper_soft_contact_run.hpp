@@ -82,8 +82,8 @@ std::unique_ptr<DamperSoftContact> make_damper_soft_contact_of(const DropTestSet
   });
   if (!out)
     throw InvalidParameter("integrator", to_string(solver.integrator),
-                           "an integrator in regularising variables for `walls` (dopri5-regularized, "
-                           "cvode-regularized, gbs8-regularized, taylor-regularized)");
+                           "an integrator in regularising variables for `walls` (" + regularising_integrator_names() +
+                               ")");
   return out;
 }
 

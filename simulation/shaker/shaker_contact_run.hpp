@@ -81,9 +81,9 @@ std::unique_ptr<ShakerContact> make_shaker_contact_of(const DropTestSetup& setup
   });
   if (!out)
     throw InvalidParameter("integrator", to_string(solver.integrator),
-                           "an integrator in regularising variables for `shaker` (dopri5-regularized, "
-                           "cvode-regularized, gbs8-regularized, taylor-regularized): the wall's motion is a forcing "
-                           "of the regularised contact only (simulation/shaker/shaker_contact.hpp)");
+                           "an integrator in regularising variables for `shaker` (" + regularising_integrator_names() +
+                               "): the wall's motion is a forcing of the regularised contact only "
+                               "(simulation/shaker/shaker_contact.hpp)");
   return out;
 }
 

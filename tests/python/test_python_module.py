@@ -534,6 +534,44 @@ def test_fit_restitution_table_is_the_programs(tmp_path):
         hertzdash.fit_restitution_table(table, impact_velocity=0.5)
 
 
+LIGHT_BALL = dict(mass=2.7e-3, ball_radius=0.02, ball_E=2.4e9, ball_nu=0.35, ball_yield_stress=math.inf,
+                  rod_E=200e9, rod_nu=0.3, damping="kelvin-voigt")
+
+
+def synthetic_bounce_recording(path):
+    # SYNTHETIC: the onset times of bounce() for a 2.7 g ball in air (kelvin-voigt, e = 0.9), two
+    # drops on clocks of their own, a fixed jitter of +-1e-4 s, and one echo 3 ms after drop b's
+    # third impact (row index 3), labelled synthetic.
+    lines = ["drop,impact_time_s", "# source: SYNTHETIC, tests/python/test_python_module.py", "# synthetic: true"]
+    for label, v0, clock in (("a", 2.0, 5.0), ("b", 2.5, -1.0)):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            t = hertzdash.bounce(bounces=7, impact_velocity=v0, restitution=0.9, air_density=1.204, rtol=1e-12,
+                                 **LIGHT_BALL)["onset_times_s"]
+        times = [clock + x + (1e-4 if i % 2 else -1e-4) for i, x in enumerate(t)]
+        if label == "b":
+            times.insert(3, times[2] + 0.003)
+        lines += [f"{label},{x!r}" for x in times]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_fit_bounce_times_is_the_programs(tmp_path):
+    # fit_bounce_times() returns `fit --bounce-times --json`, key for key; the echo is flagged by
+    # drop and index and left out, and the fit with the air it was made in recovers e = 0.9.
+    recording = str(synthetic_bounce_recording(tmp_path / "light.csv"))
+    with pytest.warns(UserWarning, match="doubled"):
+        r = hertzdash.fit_bounce_times(recording, air_density=1.204, **LIGHT_BALL)
+    args = [f"--{k.replace('_', '-')}={v}" for k, v in LIGHT_BALL.items()]
+    assert r == cli_json("fit", "--bounce-times", recording, "--air-density=1.204", *args)
+    assert [(f["drop"], f["index"], f["kind"]) for f in r["flagged"]] == [("b", 3, "doubled")]
+    e = r["fits"][0]["parameters"][0]
+    assert e["name"] == "restitution"
+    assert abs(e["estimate"] - 0.9) < 3 * e["standard_error"]
+    with pytest.raises(TypeError, match="solver option 'rtol'"):
+        hertzdash.fit_bounce_times(recording, rtol=1e-9)
+
+
 @pytest.fixture(scope="module")
 def measured_trace(tmp_path_factory):
     path = tmp_path_factory.mktemp("measured") / "trace.csv"
