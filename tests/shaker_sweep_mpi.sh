@@ -13,6 +13,11 @@ cd "$dir"
 args=(shaker --restitution 0.5 --sweep gamma:0.9:1.8:10 --impacts 8 --transient 300)
 "$bin" "${args[@]}" --csv threads.csv --threads 2 > threads.out 2> threads.err || { cat threads.err; exit 1; }
 # Open MPI refuses root without these; --oversubscribe allows 2 ranks on any machine.
+# Under `make sanitize`, Open MPI's plugins are dlopen'd and unloaded before LeakSanitizer reports,
+# so their leaks show as "<unknown module>", which no suppression (tests/lsan-suppressions.txt)
+# can name: leak checking is off for the MPI run only. Our code's leaks are checked by the
+# threaded run of the same sweep above, which runs every line the ranks run but the gather.
+ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 \
   "$mpiexec" -n 2 "$bin" "${args[@]}" --csv mpi.csv > mpi.out 2> mpi.err || { cat mpi.err; exit 1; }
 grep -q 'on 2 processes x ' mpi.out || { echo "MPI did not start 2 processes"; cat mpi.out mpi.err; exit 1; }
