@@ -140,17 +140,14 @@ void print_restitution_fit(const RestitutionFit& f) {
   if (f.failed) std::cout << fmt::format("  FIT FAILED: {}\n", f.failure);
 }
 
-void print_restitution_text(const RestitutionFitRun& r) {
-  std::cout << fmt::format("hertzdash fit: {} ({} rows{}{})\n", r.table.path.string(), r.table.rows(),
-                           r.table.has_sd() ? ", weighted by e_sd" : "", r.table.synthetic ? ", SYNTHETIC" : "");
-  if (r.fits.size() == 1 && r.failures.empty()) {
-    std::cout << fmt::format("  damping law '{}'\n", r.fits[0].law);
-    print_restitution_fit(r.fits[0]);
-    return;
-  }
+// The ranked table of a law comparison (a restitution table's or a bounce recording's fits: each
+// has law, aic, bic, e_min, e_max, failed, failure and an optional cross_validation), then the
+// best fit in full by `print_best`; `cv_header` names the cross-validation error's column.
+template <class Run, class PrintBest>
+void print_law_ranking(const Run& r, const char* cv_header, PrintBest print_best) {
   const bool cv = r.settings.cross_validate;
   std::cout << fmt::format("  {:>3} {:<22} {:>12} {:>10} {:>12} {:>21}{}\n", "", "law (best first)", "AIC", "dAIC", "BIC",
-                           "model e range", cv ? fmt::format(" {:>12} {:>8}", "cv_rms", "cv_rank") : "");
+                           "model e range", cv ? fmt::format(" {:>12} {:>8}", cv_header, "cv_rank") : "");
   std::vector<std::size_t> cv_rank(r.fits.size(), 0);
   if (cv) {
     std::vector<std::size_t> order;
@@ -163,7 +160,7 @@ void print_restitution_text(const RestitutionFitRun& r) {
   }
   std::string ties;
   for (std::size_t i = 0; i < r.fits.size(); ++i) {
-    const RestitutionFit& f = r.fits[i];
+    const auto& f = r.fits[i];
     const double gap = f.aic - r.fits.front().aic;
     if (i > 0 && gap < aic_tie) ties += (ties.empty() ? "" : ", ") + f.law;
     std::string cv_columns;
@@ -175,7 +172,7 @@ void print_restitution_text(const RestitutionFitRun& r) {
   }
   for (const auto& [law, why] : r.failures)
     std::cout << fmt::format("  {}: not fitted: {}\n", law, spell_key_references(why, KeySpelling::command_line));
-  for (const RestitutionFit& f : r.fits)
+  for (const auto& f : r.fits)
     if (f.failed) std::cout << fmt::format("  {}: fit failed: {}\n", f.law, f.failure);
   if (r.fits.empty()) {
     std::cout << "  best: none, no law could be fitted\n";
@@ -185,7 +182,18 @@ void print_restitution_text(const RestitutionFitRun& r) {
   else std::cout << fmt::format("  best: '{}'{}\n", r.fits.front().law,
                            ties.empty() ? "" : fmt::format(" (tied within dAIC < {:g}: {})", aic_tie, ties));
   std::cout << fmt::format("  damping law '{}'\n", r.fits.front().law);
-  print_restitution_fit(r.fits.front());
+  print_best(r.fits.front());
+}
+
+void print_restitution_text(const RestitutionFitRun& r) {
+  std::cout << fmt::format("hertzdash fit: {} ({} rows{}{})\n", r.table.path.string(), r.table.rows(),
+                           r.table.has_sd() ? ", weighted by e_sd" : "", r.table.synthetic ? ", SYNTHETIC" : "");
+  if (r.fits.size() == 1 && r.failures.empty()) {
+    std::cout << fmt::format("  damping law '{}'\n", r.fits[0].law);
+    print_restitution_fit(r.fits[0]);
+    return;
+  }
+  print_law_ranking(r, "cv_rms", print_restitution_fit);
 }
 
 // Options that mean nothing for the input given: refused naming both.
@@ -254,44 +262,7 @@ void print_bounce_text(const BounceFitRun& r) {
     print_bounce_fit(r.fits[0]);
     return;
   }
-  const bool cv = r.settings.cross_validate;
-  std::cout << fmt::format("  {:>3} {:<22} {:>12} {:>10} {:>12} {:>21}{}\n", "", "law (best first)", "AIC", "dAIC", "BIC",
-                           "model e range", cv ? fmt::format(" {:>12} {:>8}", "cv_rms_s", "cv_rank") : "");
-  std::vector<std::size_t> cv_rank(r.fits.size(), 0);
-  if (cv) {
-    std::vector<std::size_t> order;
-    for (std::size_t i = 0; i < r.fits.size(); ++i)
-      if (r.fits[i].cross_validation && r.fits[i].cross_validation->failure.empty()) order.push_back(i);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return r.fits[a].cross_validation->rms_prediction_error < r.fits[b].cross_validation->rms_prediction_error;
-    });
-    for (std::size_t k = 0; k < order.size(); ++k) cv_rank[order[k]] = k + 1;
-  }
-  std::string ties;
-  for (std::size_t i = 0; i < r.fits.size(); ++i) {
-    const BounceFit& f = r.fits[i];
-    const double gap = f.aic - r.fits.front().aic;
-    if (i > 0 && gap < aic_tie) ties += (ties.empty() ? "" : ", ") + f.law;
-    std::string cv_columns;
-    if (cv)
-      cv_columns = cv_rank[i] ? fmt::format(" {:>12.4g} {:>8}", f.cross_validation->rms_prediction_error, cv_rank[i])
-                              : fmt::format(" {:>12} {:>8}", "-", "-");
-    std::cout << fmt::format("  {:>3} {:<22} {:>12.6g} {:>10.4g} {:>12.6g} {:>10.6f}-{:<10.6f}{}\n", i + 1, f.law, f.aic,
-                             gap, f.bic, f.e_min, f.e_max, cv_columns);
-  }
-  for (const auto& [law, why] : r.failures)
-    std::cout << fmt::format("  {}: not fitted: {}\n", law, spell_key_references(why, KeySpelling::command_line));
-  for (const BounceFit& f : r.fits)
-    if (f.failed) std::cout << fmt::format("  {}: fit failed: {}\n", f.law, f.failure);
-  if (r.fits.empty()) {
-    std::cout << "  best: none, no law could be fitted\n";
-    return;
-  }
-  if (r.fits.front().failed) std::cout << "  best: none, every fit failed\n";
-  else std::cout << fmt::format("  best: '{}'{}\n", r.fits.front().law,
-                           ties.empty() ? "" : fmt::format(" (tied within dAIC < {:g}: {})", aic_tie, ties));
-  std::cout << fmt::format("  damping law '{}'\n", r.fits.front().law);
-  print_bounce_fit(r.fits.front());
+  print_law_ranking(r, "cv_rms_s", print_bounce_fit);
 }
 
 int run_bounce_times_fit(const FitCommandOptions& opt, const CLI::App& sub) {
