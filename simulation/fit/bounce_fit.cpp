@@ -36,15 +36,6 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double least_variance = 1e-10 * 1e-10;
 constexpr double outside = 1e30;  // a residual where the model cannot be evaluated
 
-bool reads(const RunOptions& o, const std::string& option) {
-  try {
-    require_read(o, *find_run_option(option), "");
-    return true;
-  } catch (const InvalidParameter&) {
-    return false;
-  }
-}
-
 // The least-squares problem: z = [the law's free variables (transformed)], then per drop
 // [ln v0, t0]. With no free law variable the law's values are `fixed_law` (a left-out drop's
 // prediction).
@@ -389,34 +380,20 @@ BounceLawComparison compare_laws_on_bounces(const CheckedRecording& data, const 
                                             const BounceFitSettings& settings) {
   BounceLawComparison out;
   check_bounce_fit_options(base);
+  RunOptions flying = base;
+  flying.follows_flights = true;  // the model's flights read the air drag: not "left out"
   for (const LawInfo& law : registered_laws()) {
-    RunOptions o = base;
-    o.follows_flights = true;  // the model's flights read the air drag: not "left out"
-    o.damping = std::string(law.name);
-    std::vector<std::string> left_out;
-    for (const RunOption& option : run_options())
-      if (is_given(o, option) && !reads(o, option.name)) {
-        clear_option(o, option);
-        left_out.push_back(option.name);
-      }
+    const LawTrial trial = law_trial(flying, law.name, settings.parameters);
+    const RunOptions& o = trial.options;
+    if (!trial.refusal.empty()) {
+      out.failures.emplace_back(o.damping, trial.refusal);
+      continue;
+    }
     BounceFitSettings own = settings;
-    std::erase_if(own.parameters, [&](const FitParameter& p) {
-      const bool unread = !reads(o, p.option);
-      if (unread && std::find(left_out.begin(), left_out.end(), p.option) == left_out.end()) left_out.push_back(p.option);
-      return unread;
-    });
-    if (!settings.parameters.empty() && own.parameters.empty()) {
-      out.failures.emplace_back(o.damping, "it reads none of the parameters given to fit");
-      continue;
-    }
-    if (settings.parameters.empty() && default_restitution_fit_parameters(o).empty()) {
-      out.failures.emplace_back(o.damping, "nothing to fit: it reads neither the input e nor a time constant (its e "
-                                           "does not depend on a parameter of its own)");
-      continue;
-    }
+    own.parameters = trial.parameters;
     try {
       BounceFit f = fit_bounce_recording(data, path, o, paper, own);
-      f.left_out = left_out;
+      f.left_out = trial.left_out;
       if (settings.cross_validate) f.cross_validation = cross_validate_bounces(data, path, o, paper, own, f);
       out.fits.push_back(std::move(f));
     } catch (const DataError&) {

@@ -168,6 +168,28 @@ std::vector<FitParameter> default_restitution_fit_parameters(const RunOptions& b
   return {};
 }
 
+LawTrial law_trial(const RunOptions& base, std::string_view law, const std::vector<FitParameter>& parameters) {
+  LawTrial t{base, parameters, {}, {}};
+  RunOptions& o = t.options;
+  o.damping = std::string(law);
+  for (const RunOption& option : run_options())
+    if (is_given(o, option) && !reads(o, option.name)) {
+      clear_option(o, option);
+      t.left_out.push_back(option.name);
+    }
+  std::erase_if(t.parameters, [&](const FitParameter& p) {
+    const bool unread = !reads(o, p.option);
+    if (unread && std::find(t.left_out.begin(), t.left_out.end(), p.option) == t.left_out.end())
+      t.left_out.push_back(p.option);
+    return unread;
+  });
+  if (!parameters.empty() && t.parameters.empty()) t.refusal = "it reads none of the parameters given to fit";
+  else if (parameters.empty() && default_restitution_fit_parameters(o).empty())
+    t.refusal = "nothing to fit: it reads neither the input e nor a time constant (its e does not depend on a "
+                "parameter of its own)";
+  return t;
+}
+
 RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOptions& base, const PaperParameters& paper,
                                      const RestitutionFitSettings& settings,
                                      const std::optional<std::vector<double>>& start) {
@@ -380,32 +402,17 @@ RestitutionLawComparison compare_laws_on_restitution(const RestitutionTable& tab
   RestitutionLawComparison out;
   check_restitution_fit_options(base);
   for (const LawInfo& law : registered_laws()) {
-    RunOptions o = base;
-    o.damping = std::string(law.name);
-    std::vector<std::string> left_out;
-    for (const RunOption& option : run_options())
-      if (is_given(o, option) && !reads(o, option.name)) {
-        clear_option(o, option);
-        left_out.push_back(option.name);
-      }
+    const LawTrial trial = law_trial(base, law.name, settings.parameters);
+    const RunOptions& o = trial.options;
+    if (!trial.refusal.empty()) {
+      out.failures.emplace_back(o.damping, trial.refusal);
+      continue;
+    }
     RestitutionFitSettings own = settings;
-    std::erase_if(own.parameters, [&](const FitParameter& p) {
-      const bool unread = !reads(o, p.option);
-      if (unread && std::find(left_out.begin(), left_out.end(), p.option) == left_out.end()) left_out.push_back(p.option);
-      return unread;
-    });
-    if (!settings.parameters.empty() && own.parameters.empty()) {
-      out.failures.emplace_back(o.damping, "it reads none of the parameters given to fit");
-      continue;
-    }
-    if (settings.parameters.empty() && default_restitution_fit_parameters(o).empty()) {
-      out.failures.emplace_back(o.damping, "nothing to fit: it reads neither the input e nor a time constant (its e "
-                                           "does not depend on a parameter of its own)");
-      continue;
-    }
+    own.parameters = trial.parameters;
     try {
       RestitutionFit f = fit_restitution_table(table, o, paper, own);
-      f.left_out = left_out;
+      f.left_out = trial.left_out;
       if (settings.cross_validate) f.cross_validation = cross_validate_restitution(table, o, paper, own, f);
       out.fits.push_back(std::move(f));
     } catch (const DataError&) {

@@ -51,6 +51,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -68,6 +69,17 @@ struct RestitutionFitSettings {
 /// The parameters fitted by default for the run's law: `restitution`, or `viscous-time-constant`
 /// for a law with a material time constant; empty for a law that reads neither.
 std::vector<FitParameter> default_restitution_fit_parameters(const RunOptions& base);
+
+/// One law of a law comparison (`--compare-laws` of a table or a recording): the options with
+/// `damping` set to it and every given option it does not read cleared, the fit's parameters it
+/// reads, both kinds named in `left_out`; `refusal` says why it cannot be fitted (empty if it can).
+struct LawTrial {
+  RunOptions options;
+  std::vector<FitParameter> parameters;  ///< empty: the law's own
+  std::vector<std::string> left_out;
+  std::string refusal;
+};
+LawTrial law_trial(const RunOptions& base, std::string_view law, const std::vector<FitParameter>& parameters);
 
 /// Refuses (InvalidParameter) the options a restitution-table fit cannot use: an elastic rod,
 /// `impact-velocity` or `height` (the table gives the speeds), `gravity`, `rod-nu` without
