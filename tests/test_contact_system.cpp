@@ -10,6 +10,7 @@
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"  // to_string(IntegratorKind)
 #include "hertzdash/simulation/run/soft_contact.hpp"
 
 #include <catch2/catch.hpp>
@@ -31,27 +32,32 @@ TEST_CASE("contact system: the oscillator's stop without spring, damper or drive
           "[contact]") {
   // k = c = F0 = 0 (and no gravity): x'' = -K x^{3/2}/m, the undamped Hertz impact whatever the
   // stop's position d, with the closed forms of model/hertz.hpp: contact time (4/5) B(2/5, 1/2)
-  // X/v0, peak force K X^{3/2}, rebound speed v0 (energy conserved). dopri5 in regularising
-  // variables at rtol 1e-11: the system is smooth, so its global error follows the tolerance;
-  // 1e-8 leaves a factor 1000 for its accumulation over the contact's few hundred steps.
+  // X/v0, peak force K X^{3/2}, rebound speed v0 (energy conserved). Every row in regularising
+  // variables (the Taylor row evaluates the environment on power series) at rtol 1e-11: the
+  // system is smooth, so the global error follows the tolerance; 1e-8 leaves a factor 1000 for
+  // its accumulation over the contact's steps.
   const DropTestSetup s = steel();
   const double v0 = 0.6, K = hertz_stiffness(s);
   const UndampedHertzImpact h = undamped_hertz_impact(K, s.mass_kg, v0);
-  SolverSettings solver;
-  solver.integrator = IntegratorKind::dopri5_regularized;
-  solver.rtol = 1e-11;
-  const auto contact = make_soft_contact<OscillatorStop>("none", s, solver, "oscillator");
-  CHECK(contact->integrator_used() == IntegratorKind::dopri5_regularized);
-  const auto c = contact->run(OscillatorStop{.omega_rad_per_s = 100.0, .stop_m = 0.01, .t_onset_s = 0.3}, v0,
-                              10.0 * h.contact_time_s);
-  REQUIRE(c.separated);
-  CHECK(c.contact_time_s == Approx(h.contact_time_s).epsilon(1e-8));
-  CHECK(c.peak_force_N == Approx(h.peak_force_N).epsilon(1e-8));
-  CHECK(c.rebound_speed_mps == Approx(v0).epsilon(1e-8));
-  // The drive's phase (S, C) = (sin w t, cos w t) carried to the end of the contact, t = 0.3 s + tc.
-  const double w_t = 100.0 * (0.3 + c.contact_time_s);
-  CHECK(c.environment[0] == Approx(std::sin(w_t)).margin(1e-8));
-  CHECK(c.environment[1] == Approx(std::cos(w_t)).margin(1e-8));
+  for (const IntegratorKind row : {IntegratorKind::dopri5_regularized, IntegratorKind::gbs8_regularized,
+                                   IntegratorKind::taylor_regularized, IntegratorKind::cvode_regularized}) {
+    INFO(to_string(row));
+    SolverSettings solver;
+    solver.integrator = row;
+    solver.rtol = 1e-11;
+    const auto contact = make_soft_contact<OscillatorStop>("none", s, solver, "oscillator");
+    CHECK(contact->integrator_used() == row);
+    const auto c = contact->run(OscillatorStop{.omega_rad_per_s = 100.0, .stop_m = 0.01, .t_onset_s = 0.3}, v0,
+                                10.0 * h.contact_time_s);
+    REQUIRE(c.separated);
+    CHECK(c.contact_time_s == Approx(h.contact_time_s).epsilon(1e-8));
+    CHECK(c.peak_force_N == Approx(h.peak_force_N).epsilon(1e-8));
+    CHECK(c.rebound_speed_mps == Approx(v0).epsilon(1e-8));
+    // The drive's phase (S, C) = (sin w t, cos w t) carried to the contact's end, t = 0.3 s + tc.
+    const double w_t = 100.0 * (0.3 + c.contact_time_s);
+    CHECK(c.environment[0] == Approx(std::sin(w_t)).margin(1e-8));
+    CHECK(c.environment[1] == Approx(std::cos(w_t)).margin(1e-8));
+  }
 }
 
 TEST_CASE("contact system: the oscillator's energy changes by the drive's and the damper's work only", "[contact]") {
