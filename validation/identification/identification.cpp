@@ -223,7 +223,7 @@ int main(int argc, char** argv) try {
     biases_e_sigma.push_back(std::abs(bias_e / sigma_e));
     chi2_rigid.push_back(noisy_rigid.reduced_chi_square);
     chi2_elastic.push_back(noisy_elastic.reduced_chi_square);
-    residual_count = noisy_elastic.samples;
+    residual_count = noisy_elastic.n;
     elastic_biases_E.push_back(std::abs(100 * elastic_bias_E));
     const std::string tag = rod_macro_tag(rod.name);
     macros.add("ident" + tag + "RigidBiasEPct", 100 * bias_E, "{:+.2f}");
