@@ -8,6 +8,7 @@
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/process_group.hpp"
+#include "cli/setup_options.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/output_directories.hpp"
 #include "hertzdash/io/output_lock.hpp"
@@ -214,15 +215,12 @@ Command add_sweep_command(CLI::App& app) {
   auto opt = std::make_shared<SweepCommandOptions>();
   CLI::App* sub = app.add_subcommand(
       "sweep", "Run a case file's grid or sample of simulate runs (docs/sweep.md); under mpirun on every process");
-  sub->add_option("case", opt->case_path, "The case file (TOML)")->required();
-  add_output_file_option(*sub, "--out", opt->out,
-                  "The CSV of one row per run (default: the case's [output] file, else the case file's name with .csv)");
-  add_output_file_option(*sub, "--summary", opt->summary,
-                  "Also write the summary of every output here (default with [output] summary = true: "
-                  "the CSV's name with .summary.csv)");
-  add_integer_option(*sub, "--threads", opt->threads,
-                     "Threads per process; 0 (the default): the machine's cores shared among the job's processes on it");
-  sub->add_flag("--quiet", opt->quiet, "No progress line");
+  auto o = [](std::string_view key) { return declared_option("sweep", key); };
+  sub->add_option("case", opt->case_path, o("case").help)->required();
+  add_output_file_option(*sub, o("out").flag, opt->out, o("out").help);
+  add_output_file_option(*sub, o("summary").flag, opt->summary, o("summary").help);
+  add_integer_option(*sub, o("threads").flag, opt->threads, o("threads").help);
+  sub->add_flag(o("quiet").flag, opt->quiet, o("quiet").help);
   add_mkdir_flag(*sub, opt->mkdir);
   return {sub, [opt]() { return run_sweep_command(*opt); }};
 }
