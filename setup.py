@@ -13,6 +13,11 @@ Environment:
   CMAKE_BUILD_PARALLEL_LEVEL  the build's jobs (CMake's own variable); else every core.
   HERTZDASH_PYTHON_BUILD_DIR  where setuptools and CMake build (default: build-python/ in the
                               source tree, git-ignored; build/ is the CMake build of `make`).
+  HERTZDASH_CMAKE_BUILD_DIR   a configured CMake build tree of this source with the Python module
+                              (`make`'s build/): the module is then linked there from the objects
+                              it already compiled (target hertzdash_python_wheel,
+                              python/CMakeLists.txt), the same one-file module with no run path,
+                              instead of compiling everything again (tests/python_package.sh).
 """
 import os
 import re
@@ -39,10 +44,26 @@ def project_version():
 
 
 class CMakeBuild(build_ext):
-    """Configures and builds the module's target only; the parts the module does not use are off."""
+    """Builds the module with CMake: its target only, or linked in a given build tree."""
 
     def build_extension(self, ext):
-        cmake_build = Path(self.build_temp).resolve() / "cmake"
+        prebuilt = os.environ.get("HERTZDASH_CMAKE_BUILD_DIR")
+        if prebuilt:
+            cmake_build = Path(prebuilt).resolve()
+            built = cmake_build / "python" / "wheel" / Path(self.get_ext_filename(ext.name)).name
+            self.run_cmake([], ["cmake", "--build", str(cmake_build), "--target", "hertzdash_python_wheel"], built,
+                           f"is {cmake_build} a build tree with the Python module for {sys.executable}?")
+        else:
+            cmake_build = Path(self.build_temp).resolve() / "cmake"
+            self.build_standalone(cmake_build)
+            built = cmake_build / "python" / Path(self.get_ext_filename(ext.name)).name
+        module = Path(self.get_ext_fullpath(ext.name))
+        module.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(built, module)
+        shutil.copytree(SOURCE / "data", module.parent / DATA_BELOW_MODULE, dirs_exist_ok=True)
+
+    def build_standalone(self, cmake_build):
+        """Configures a build of the module's target only, the parts the module does not use off."""
         # No run path: the module holds the hertzdash libraries, the others are the system's (without
         # CMAKE_SKIP_RPATH the build tree's module has an empty one, padded for cmake --install, and
         # ld.so reads an empty entry as the current directory).
@@ -53,15 +74,17 @@ class CMakeBuild(build_ext):
         build = ["cmake", "--build", str(cmake_build), "--target", "hertzdash_python"]
         if "CMAKE_BUILD_PARALLEL_LEVEL" not in os.environ:
             build += ["--parallel", str(self.parallel or os.cpu_count() or 1)]
-        subprocess.run(configure, check=True)
-        built = cmake_build / "python" / Path(self.get_ext_filename(ext.name)).name
+        self.run_cmake(configure, build, cmake_build / "python" / Path(self.get_ext_filename("hertzdash")).name,
+                       "the configure step's 'hertzdash:' lines say what is missing (python3-dev and "
+                       f"pybind11-dev for this interpreter, {sys.executable})")
+
+    @staticmethod
+    def run_cmake(configure, build, built, hint):
+        """Runs CMake's configure (if any) and build steps; exits, with `hint`, unless `built` is then a file."""
+        if configure:
+            subprocess.run(configure, check=True)
         if subprocess.run(build).returncode != 0 or not built.is_file():
-            sys.exit(f"setup.py: {built} was not built; the configure step's 'hertzdash:' lines say what is "
-                     "missing (python3-dev and pybind11-dev for this interpreter, " + sys.executable + ")")
-        module = Path(self.get_ext_fullpath(ext.name))
-        module.parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(built, module)
-        shutil.copytree(SOURCE / "data", module.parent / DATA_BELOW_MODULE, dirs_exist_ok=True)
+            sys.exit(f"setup.py: {built} was not built; {hint}")
 
 
 BUILD.mkdir(parents=True, exist_ok=True)

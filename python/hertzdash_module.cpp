@@ -11,7 +11,7 @@
 #include "hertzdash/io/file_identity.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/reports/bounce_fit_report.hpp"
+#include "hertzdash/simulation/reports/fit_request.hpp"
 #include "hertzdash/simulation/reports/rig_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
@@ -246,84 +246,63 @@ py::dict py_virtual_measurement(const std::string& path, double sample_rate, dou
   return to_python(to_json(run, note));
 }
 
-// fit: `hertzdash fit --json`; only the set-up's options are keywords (the fit chooses its solver).
-py::dict py_fit(const std::string& trace, const std::string& fit, const std::string& channels, double resample,
-                bool compare_laws, const std::string& curves, bool profile_intervals, const py::kwargs& kwargs) {
+// The fit functions: `hertzdash fit --json` of their kind, the fit's own keywords as the
+// program's options (fit_request), the set-up's options as keywords (the fit integrates its
+// model itself: a solver option is refused).
+py::dict py_fit_kind(const char* function, std::map<std::string, std::string> values, const std::string& curves,
+                     const py::kwargs& kwargs) {
   RunOptions options;
-  std::vector<std::string> given;  // even at a default value (rod="steel"): the trace may not contradict it
+  std::vector<std::string> given;  // even at a default value (rod="steel"): a trace may not contradict it
   for (const auto& [key, value] : kwargs) {
-    const RunOption& o = option_named(key.cast<std::string>(), "fit");
+    const RunOption& o = option_named(key.cast<std::string>(), function);
     given.push_back(o.name);
     if (o.group != RunOption::Group::setup)
-      throw py::type_error(fmt::format("fit() got the solver option '{}': the fit integrates its model itself "
-                                       "(simulation/fit/trace_fit.hpp)",
-                                       python_keyword(o.name)));
+      throw py::type_error(fmt::format("{}() got the solver option '{}': the fit integrates its model itself "
+                                       "(simulation/fit/fit_engine.hpp)",
+                                       function, python_keyword(o.name)));
     set_option(options, o, value);
   }
-  if (find_shared_file({trace}, {curves}))  // curves= would replace the trace it fits (issue 31)
-    throw InvalidParameter("curves", curves, "another file than trace (" + trace + "), which is read: they are the same file");
-  TraceFitSettings settings;
-  settings.parameters = parse_fit_parameters(fit);
-  if (!channels.empty()) settings.channels = parse_channels(channels, "channels");
-  settings.resample_Hz = resample;
-  settings.profile_intervals = profile_intervals;
+  std::erase_if(values, [](const auto& kv) { return kv.second.empty() || kv.second == "false"; });
+  FitRequest request = fit_request(values, options);
+  request.given = given;
+  if (find_shared_file({request.path}, {curves}))  // curves= would replace the trace it fits (issue 31)
+    throw InvalidParameter("curves", curves, "another file than trace (" + request.path + "), which is read: they are the same file");
   FitRun run;
   {
     py::gil_scoped_release release;
-    run = run_fit(trace, options, paper(), settings, compare_laws, given);
+    run = run_fit(request, paper());
     if (!curves.empty() && !run.fits.empty()) write_fit_curves(run.fits.front(), run.trace, curves);
   }
   warn_about(fit_diagnostics(run, paper()));
   return to_python(to_json(run, paper()));
 }
 
-// fit_restitution_table: `hertzdash fit --restitution-table --json`; the set-up's options are keywords.
-py::dict py_fit_restitution_table(const std::string& path, const std::string& fit, bool compare_laws,
-                                  bool cross_validate, bool profile_intervals, const py::kwargs& kwargs) {
-  RunOptions options;
-  for (const auto& [key, value] : kwargs) {
-    const RunOption& o = option_named(key.cast<std::string>(), "fit_restitution_table");
-    if (o.group != RunOption::Group::setup)
-      throw py::type_error(fmt::format("fit_restitution_table() got the solver option '{}': the fit integrates its "
-                                       "model itself (simulation/fit/restitution_fit.hpp)",
-                                       python_keyword(o.name)));
-    set_option(options, o, value);
-  }
-  RestitutionFitSettings settings;
-  if (!fit.empty()) settings.parameters = parse_fit_parameters(fit);
-  settings.cross_validate = cross_validate;
-  settings.profile_intervals = profile_intervals;
-  RestitutionFitRun run;
-  {
-    py::gil_scoped_release release;
-    run = run_restitution_fit(path, options, paper(), settings, compare_laws);
-  }
-  warn_about(restitution_fit_diagnostics(run));
-  return to_python(to_json(run));
+std::string flag(bool on) { return on ? "true" : "false"; }
+
+py::dict py_fit(const std::string& trace, const std::string& fit, const std::string& channels, double resample,
+                bool compare_laws, const std::string& curves, bool profile_intervals, bool cross_validate,
+                const py::kwargs& kwargs) {
+  return py_fit_kind("fit",
+                     {{"trace", trace}, {"fit", fit}, {"channels", channels},
+                      {"resample", resample != 0 ? fmt::format("{}", resample) : ""}, {"compare-laws", flag(compare_laws)},
+                      {"profile-intervals", flag(profile_intervals)}, {"cross-validate", flag(cross_validate)}},
+                     curves, kwargs);
 }
 
-// fit_bounce_times: `hertzdash fit --bounce-times --json`; the set-up's options are keywords.
+py::dict py_fit_restitution_table(const std::string& path, const std::string& fit, bool compare_laws,
+                                  bool cross_validate, bool profile_intervals, const py::kwargs& kwargs) {
+  return py_fit_kind("fit_restitution_table",
+                     {{"restitution-table", path}, {"fit", fit}, {"compare-laws", flag(compare_laws)},
+                      {"cross-validate", flag(cross_validate)}, {"profile-intervals", flag(profile_intervals)}},
+                     "", kwargs);
+}
+
 py::dict py_fit_bounce_times(const std::string& path, const std::string& fit, bool compare_laws, bool cross_validate,
-                             const py::kwargs& kwargs) {
-  RunOptions options;
-  for (const auto& [key, value] : kwargs) {
-    const RunOption& o = option_named(key.cast<std::string>(), "fit_bounce_times");
-    if (o.group != RunOption::Group::setup)
-      throw py::type_error(fmt::format("fit_bounce_times() got the solver option '{}': the fit integrates its model "
-                                       "itself (simulation/fit/bounce_fit.hpp)",
-                                       python_keyword(o.name)));
-    set_option(options, o, value);
-  }
-  BounceFitSettings settings;
-  if (!fit.empty()) settings.parameters = parse_fit_parameters(fit);
-  settings.cross_validate = cross_validate;
-  BounceFitRun run;
-  {
-    py::gil_scoped_release release;
-    run = run_bounce_fit(path, options, paper(), settings, compare_laws);
-  }
-  warn_about(bounce_fit_diagnostics(run));
-  return to_python(to_json(run));
+                             bool profile_intervals, const py::kwargs& kwargs) {
+  return py_fit_kind("fit_bounce_times",
+                     {{"bounce-times", path}, {"fit", fit}, {"compare-laws", flag(compare_laws)},
+                      {"cross-validate", flag(cross_validate)}, {"profile-intervals", flag(profile_intervals)}},
+                     "", kwargs);
 }
 
 py::dict py_paper_parameters() {
@@ -711,16 +690,17 @@ PYBIND11_MODULE(hertzdash, m) {
             .c_str());
   m.def("fit", &py_fit, py::arg("trace"), py::arg("fit") = "ball-E,restitution", py::arg("channels") = "",
         py::arg("resample") = 0.0, py::arg("compare_laws") = false, py::arg("curves") = "",
-        py::arg("profile_intervals") = false,
+        py::arg("profile_intervals") = false, py::arg("cross_validate") = false,
         ("fit(trace, fit='ball-E,restitution', channels='', resample=0, compare_laws=False, curves='', "
-         "profile_intervals=False, **options) "
+         "profile_intervals=False, cross_validate=False, **options) "
          "-> dict\n\nIdentify parameters from a measured trace by weighted least squares, exactly `hertzdash fit "
          "--trace TRACE --json` (docs/fit.md): trace, fits (parameters with estimate, standard_error, bounds; "
          "correlation; channels with noise_sigma and residual_rms; reduced_chi_square, condition_number, "
          "identifiable, aic, bic, fitted_inputs), failures. fit: NAME or NAME:LOWER:UPPER, comma-separated; the "
          "starting values are the options below (set-up options only). curves: a CSV file for the trace, the "
          "fit and the residuals. profile_intervals: each parameter's profile-likelihood interval too "
-         "(profile_interval). Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
+         "(profile_interval). cross_validate: five interleaved folds of samples, each predicted from the rest "
+         "(cross_validation). Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
          "are UserWarnings.\n\n" +
          options)
             .c_str());
@@ -738,13 +718,13 @@ PYBIND11_MODULE(hertzdash, m) {
          options)
             .c_str());
   m.def("fit_bounce_times", &py_fit_bounce_times, py::arg("path"), py::arg("fit") = "",
-        py::arg("compare_laws") = false, py::arg("cross_validate") = false,
-        ("fit_bounce_times(path, fit='', compare_laws=False, cross_validate=False, **options) -> dict\n\nFit a "
+        py::arg("compare_laws") = false, py::arg("cross_validate") = false, py::arg("profile_intervals") = false,
+        ("fit_bounce_times(path, fit='', compare_laws=False, cross_validate=False, profile_intervals=False, **options) -> dict\n\nFit a "
          "damping law's own parameters, and each drop's first impact speed and clock offset, to a bounce recording "
          "(the detected impact times of one or more drops, data/measurements/README.md), exactly `hertzdash fit "
          "--bounce-times PATH --json` (docs/fit.md): recording, flagged (the doubled, missed, out-of-order and "
          "non-shrinking detections left out, by drop and index), fits (parameters, drops, sigma_s, aic, bic, "
-         "e_effective_range, points, cross_validation with cross_validate), failures. air_density and "
+         "e_effective_range, points, cross_validation with cross_validate, profile_interval with profile_intervals), failures. air_density and "
          "drag_coefficient add air drag to the model's flights. Warnings (each flag, a synthetic recording) are "
          "UserWarnings.\n\n" +
          options)

@@ -2,9 +2,10 @@
 # The Python module the Python way (issue 32): a venv of PYTHON with its system site packages
 # (Debian's NumPy), `pip install --no-build-isolation` of the source tree into it, offline, and the
 # installed module checked from outside both trees (tests/python_package_check.py).
-# Everything it builds is under BUILD_DIR/python-package-test (HERTZDASH_PYTHON_BUILD_DIR, setup.py);
-# the source tree is left as it was. The paths stay the same from run to run, so with ccache
-# (used when installed) a rerun compiles nothing.
+# setup.py links the module in BUILD_DIR from the objects the build compiled (HERTZDASH_CMAKE_BUILD_DIR,
+# target hertzdash_python_wheel): the same one-file module with no run path that a pip install
+# without a build tree compiles from scratch, in seconds instead of minutes. What setuptools writes
+# is under BUILD_DIR/python-package-test (HERTZDASH_PYTHON_BUILD_DIR); the source tree is left as it was.
 # Usage: python_package.sh BUILD_DIR SOURCE_DIR PYTHON HERTZDASH
 #   (the interpreter CMake found, Python_EXECUTABLE; the build tree's program, for the reference run)
 set -euo pipefail
@@ -26,13 +27,9 @@ tree_state() {
 tree_state > "$work/tree-before"
 
 "$python" -m venv --system-site-packages "$work/venv"
-launcher=()
-if command -v ccache > /dev/null; then
-  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-fi
 start=$(date +%s)
-if ! (cd "$work" && HERTZDASH_PYTHON_BUILD_DIR="$work/pip-build" CMAKE_ARGS="${launcher[*]}" \
-      CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}" PIP_DISABLE_PIP_VERSION_CHECK=1 \
+if ! (cd "$work" && HERTZDASH_PYTHON_BUILD_DIR="$work/pip-build" HERTZDASH_CMAKE_BUILD_DIR="$build" \
+      PIP_DISABLE_PIP_VERSION_CHECK=1 \
       "$work/venv/bin/python" -m pip install --no-build-isolation --no-index --no-cache-dir "$src") \
     > "$work/pip.log" 2>&1; then
   tail -n 40 "$work/pip.log" >&2

@@ -4,6 +4,7 @@
 // recording ships.
 #include "bounce_recording_synthetic.hpp"
 #include "cli_runner.hpp"
+#include "profile_interval_checks.hpp"
 #include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/simulation/fit/bounce_fit.hpp"
@@ -44,13 +45,13 @@ TEST_CASE("bounce recording: the law that made a noise-free recording gives back
   CHECK(f.converged);
   REQUIRE(f.parameters.size() == 1);
   CHECK(f.parameter("restitution").estimate == Approx(0.80).margin(1e-8));
-  REQUIRE(f.drops.size() == 3);
+  REQUIRE(f.groups.size() == 3);
   for (std::size_t d = 0; d < 3; ++d) {
-    CHECK(f.drops[d].first_impact_speed.estimate == Approx(three_drops()[d].v0_mps).epsilon(1e-8));
-    CHECK(f.drops[d].clock_offset.estimate == Approx(three_drops()[d].clock_offset_s).margin(1e-8));
+    CHECK(f.groups[d].nuisances[0].estimate == Approx(three_drops()[d].v0_mps).epsilon(1e-8));
+    CHECK(f.groups[d].nuisances[1].estimate == Approx(three_drops()[d].clock_offset_s).margin(1e-8));
   }
-  CHECK(f.fitted == 1 + 2 * 3);
-  CHECK(f.times == 24);
+  CHECK(f.p == 1 + 2 * 3);
+  CHECK(f.n == 24);
   CHECK(f.points.size() == 24);
   // The paper's law: e_eff about 0.83 at input e = 0.80 (docs/bounce.md); with gravity on during
   // contact the velocity ratio falls a little as the impacts slow (`hertzdash bounce`: 0.829 at
@@ -112,7 +113,7 @@ TEST_CASE("bounce recording: glitches are flagged and the fit still recovers e",
   CHECK((c.flagged[3].drop == "d" && !c.flagged[3].index && c.flagged[3].kind == "too_few"));
   const BounceFit f = fit(r);
   CHECK_FALSE(f.failed);
-  CHECK(f.times == 10 + 9 + 10 - 0);  // a lost one impact; b's and c's extra times are out
+  CHECK(f.n == 10 + 9 + 10 - 0);  // a lost one impact; b's and c's extra times are out
   const FittedParameter& e = f.parameter("restitution");
   CHECK(std::abs(e.estimate - 0.80) < 3 * e.standard_error);
   CHECK(f.sigma < 1.5e-4);  // the glitches are not in the residuals
@@ -219,4 +220,36 @@ TEST_CASE("fit --bounce-times: JSON keys, flagged glitches on stderr, refusals w
     CHECK(x.err.find(extra.substr(0, extra.find(' '))) != std::string::npos);
     CHECK(x.out.empty());
   }
+}
+
+// Profile intervals (`--profile-intervals`, the fit engine's: simulation/fit/fit_engine.hpp). At
+// jitter 1e-4 s the standard error of e is about 1e-3 (the test above), over which the onsets
+// are linear in e to a relative 1e-3: the profile of chi^2 is then S_min + (e - e^)^2 / C_ee
+// (tests/test_profile_interval.cpp's closed form, the drops' v0 and t0 re-fitted at each point
+// like the straight line's slope), so the interval is estimate +- standard error. The quadratic
+// term's share (~1e-3) and Brent's tolerance (1e-3 standard errors) are far inside the 5 %
+// allowed; 1 % would hold as well, 5 % allows the Jacobian's central differences.
+TEST_CASE("fit --bounce-times --profile-intervals: a nearly linear problem's interval is estimate +- standard error",
+          "[bounce_fit][profile_interval]") {
+  BounceFitSettings s;
+  s.profile_intervals = true;
+  RunOptions o;
+  o.damping = "hongo";
+  const BounceRecording r = synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, 1);
+  const BounceFit f = fit_bounce_recording(check_bounce_recording(r), r.path.string(), o, load_paper_parameters(), s);
+  REQUIRE_FALSE(f.failed);
+  const FittedParameter& e = f.parameter("restitution");
+  check_nearly_wald_interval(e, 0.05);
+
+  // The program: the same key as a table's or a trace's, for the law's parameter only.
+  ScratchDir dir;
+  const auto file = dir.path / "jitter.csv";
+  write_bounce_recording(file, r, "tests/test_bounce_recording_fit.cpp", {});
+  const auto cli = run_cli("fit --bounce-times " + file.string() + " --damping hongo --profile-intervals --json");
+  REQUIRE(cli.exit_code == 0);
+  const auto j = nlohmann::json::parse(cli.out);
+  const auto& p = j["fits"][0]["parameters"][0];
+  CHECK(p["profile_interval"][0].get<double>() == Approx(e.profile->lower).epsilon(1e-6));
+  CHECK(p["profile_interval"][1].get<double>() == Approx(e.profile->upper).epsilon(1e-6));
+  CHECK_FALSE(j["fits"][0]["drops"][0]["first_impact_speed_mps"].contains("profile_interval"));
 }

@@ -216,9 +216,6 @@ TEST_CASE("fit --restitution-table: JSON keys, the synthetic label, refusals wit
     CHECK(x.err.find(extra.substr(0, extra.find(' '))) != std::string::npos);
     CHECK(x.out.empty());
   }
-  const auto cv = run_cli("fit --trace " + file.string() + " --cross-validate");
-  CHECK(cv.exit_code == 2);
-  CHECK(cv.err.find("--cross-validate") != std::string::npos);
   const auto none = run_cli("fit");
   CHECK(none.exit_code == 2);
   CHECK(none.err.find("--restitution-table") != std::string::npos);

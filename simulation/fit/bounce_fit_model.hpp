@@ -1,10 +1,7 @@
 #pragma once
 // Internal to the bounce-recording fit (simulation/fit/bounce_fit.cpp; not installed): the model
 // of each drop's impact times (bounce_fit.hpp, "Model"): the bounce sequence run_bounce_sequence
-// follows from a first approach speed v0, for given values of the fitted options, cached; and
-// the starting values (bounce_fit.hpp, "Parameters").
-#include "hertzdash/simulation/fit/bounce_recording_check.hpp"
-#include "hertzdash/simulation/fit/trace_fit.hpp"
+// follows from a first approach speed v0, for given values of the fitted options, cached.
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 
@@ -45,10 +42,5 @@ class BounceModel {
   int runs_ = 0;
   std::string integrator_used_;
 };
-
-/// The starting values: the law's `parameters`, then v0 and t0 of each drop (bounce_fit.hpp,
-/// "Parameters"). Throws InvalidParameter("fit", ...) for bounds that do not hold the start.
-std::vector<double> starting_values(const CheckedRecording& data, const RunOptions& base, const PaperParameters& paper,
-                                    const std::vector<FitParameter>& parameters);
 
 }  // namespace hertzdash::bounce_fit_detail

@@ -1,14 +1,19 @@
-// The parameters a trace fit may fit: those declared fittable (simulation/options/run_options.hpp),
+// The parameters a fit may fit: those declared fittable (simulation/options/run_options.hpp),
 // within their declared ranges, starting from their values in the resolved set-up. Parses a
-// --fit list (parse_fit_parameters, fittable_option_names: simulation/fit/trace_fit.hpp) and finds
-// the starting values (initial_values: simulation/fit/fit_parameters.hpp).
+// --fit list (parse_fit_parameters, fittable_option_names: simulation/fit/fit_engine.hpp) and finds
+// the starting values (simulation/fit/fit_parameters.hpp).
 #include "hertzdash/simulation/fit/fit_parameters.hpp"
+
+#include "hertzdash/simulation/fit/restitution_fit_model.hpp"
+#include "hertzdash/simulation/run/law_runs.hpp"
 
 #include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <numeric>
 #include <optional>
 
 namespace hertzdash {
@@ -20,9 +25,55 @@ const RunOption* find_fittable(const std::string& name) {
   return o && o->decl.fittable ? o : nullptr;
 }
 
+void check_bounds(const FitParameter& p, double x) {
+  if (!(x > p.lower && x < p.upper))
+    throw InvalidParameter("fit", fmt::format("{}:{}:{}", p.option, format_value(p.lower), format_value(p.upper)),
+                           fmt::format("bounds around the starting value {} {} (set it inside them)",
+                                       key_reference(p.option), format_value(x)));
+}
+
+// The A of a material-time-constant law whose e at `speed` is `e` (the simulator's calibration).
+double calibrated_time_constant(const RunOptions& base, const PaperParameters& paper, double speed, double e) {
+  RunOptions o = base;
+  o.restitution = e;
+  o.viscous_time_constant_s.reset();
+  o.air_density_kg_per_m3.reset();  // one contact: no flight, no drag
+  o.drag_coefficient.reset();
+  const DropTestSetup s = restitution_fit_detail::restitution_contact(o, paper, speed);
+  const LawRuns& runs = law_runs(base.damping);
+  return runs.calibrated_time_constant ? *runs.calibrated_time_constant(s).damping.viscous_time_constant_s : 0.0;
+}
+
 }  // namespace
 
-std::vector<double> trace_fit_detail::initial_values(const RunOptions& base, const PaperParameters& paper,
+double fit_detail::mean(const std::vector<double>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+double fit_detail::median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::vector<double> fit_detail::law_starting_values(const RunOptions& base, const PaperParameters& paper,
+                                                    const std::vector<FitParameter>& parameters, double e,
+                                                    double speed_mps) {
+  std::vector<double> v;
+  for (const FitParameter& p : parameters) {
+    require_read(base, *find_run_option(p.option), "(fitted)");
+    double x;
+    if (p.option == "restitution" && !base.restitution) x = e;
+    else if (p.option == "viscous-time-constant" && !base.viscous_time_constant_s)
+      x = calibrated_time_constant(base, paper, speed_mps, e);
+    else x = initial_values(base, paper, {p}).front();
+    check_bounds(p, x);
+    v.push_back(x);
+  }
+  return v;
+}
+
+std::vector<double> fit_detail::initial_values(const RunOptions& base, const PaperParameters& paper,
                                                      const std::vector<FitParameter>& parameters) {
   const DropTestSetup s = resolve_setup(base, paper);
   for (const FitParameter& p : parameters) require_read(base, *find_run_option(p.option), "(fitted)");
@@ -33,10 +84,7 @@ std::vector<double> trace_fit_detail::initial_values(const RunOptions& base, con
       throw InvalidParameter("fit", p.option,
                              fmt::format("given a starting value: {} is unset and has no default for this run",
                                          key_reference(p.option)));
-    if (!(*x > p.lower && *x < p.upper))
-      throw InvalidParameter("fit", fmt::format("{}:{}:{}", p.option, format_value(p.lower), format_value(p.upper)),
-                             fmt::format("bounds around the starting value {} {} (set it inside them)",
-                                         key_reference(p.option), format_value(*x)));
+    check_bounds(p, *x);
     v.push_back(*x);
   }
   return v;

@@ -1,34 +1,26 @@
 #pragma once
-// Internal to the trace fit (simulation/fit/trace_fit.cpp; not installed, cmake/install.cmake): the
-// fitted parameters' bounds and starting values, and the transforms between a bounded parameter
-// and the unbounded variable the least-squares solver moves (simulation/fit/trace_fit.hpp,
-// "Uncertainty"). Parsing a --fit list (parse_fit_parameters) is public, in trace_fit.hpp.
-#include "hertzdash/simulation/fit/trace_fit.hpp"
+// Internal to the fits (not installed, cmake/install.cmake): the starting values of the fitted
+// parameters. Parsing a --fit list (parse_fit_parameters) is public, in fit_engine.hpp.
+#include "hertzdash/simulation/fit/fit_engine.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 
-#include <cmath>
 #include <vector>
 
-namespace hertzdash::trace_fit_detail {
-
-/// A parameter in [lo, hi] as an unbounded variable z: the logit of (p - lo) / (hi - lo) between
-/// two finite bounds, log(p - lo) with hi infinite.
-struct Transform {
-  double lo, hi;
-  bool two_sided() const { return std::isfinite(hi); }
-  double p(double z) const { return two_sided() ? lo + (hi - lo) / (1.0 + std::exp(-z)) : lo + std::exp(z); }
-  double z(double p) const { return two_sided() ? std::log((p - lo) / (hi - p)) : std::log(p - lo); }
-  double dp_dz(double z) const {
-    if (!two_sided()) return std::exp(z);
-    const double s = 1.0 / (1.0 + std::exp(-z));
-    return (hi - lo) * s * (1.0 - s);
-  }
-};
+namespace hertzdash::fit_detail {
 
 /// The starting value of each parameter: its value in the set-up `base` resolves to. Throws
 /// InvalidParameter("fit", ...) for a parameter unset with no default, or outside its bounds.
 std::vector<double> initial_values(const RunOptions& base, const PaperParameters& paper,
                                    const std::vector<FitParameter>& parameters);
 
-}  // namespace hertzdash::trace_fit_detail
+/// The starting values of a law's parameters fitted to impacts (a table, a recording): the
+/// option given, else `restitution` at `e`, `viscous-time-constant` the law's calibration to `e`
+/// at `speed_mps` (one contact: no gravity, no drag), else initial_values. Throws like it.
+std::vector<double> law_starting_values(const RunOptions& base, const PaperParameters& paper,
+                                        const std::vector<FitParameter>& parameters, double e, double speed_mps);
+
+double mean(const std::vector<double>& v);
+double median(std::vector<double> v);
+
+}  // namespace hertzdash::fit_detail

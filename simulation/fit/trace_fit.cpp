@@ -1,29 +1,20 @@
-// Fitting a measured trace (simulation/fit/trace_fit.hpp): fit_trace drives GSL's multifit_nlinear
-// over the least-squares problem (trace_fit_problem.hpp) of the model (trace_fit_model.hpp) and
-// the prepared trace (trace_preparation.hpp), from the starting values and an onset guess, and
-// turns its solution into estimates, standard errors, correlations and criteria; compare_laws
-// fits every registered law. The --fit list is parsed in fit_parameters.cpp.
+// A measured trace as a kind of data for the fit engine (simulation/fit/trace_fit.hpp): the
+// prepared trace (trace_preparation.hpp), its observations weighted by their channel's noise,
+// the onset time as a nuisance (with its starting guess), the residuals of the model
+// (trace_fit_model.hpp), the work bound, and interleaved folds; the fit, its intervals,
+// cross-validation and every law compared are the engine's.
 #include "hertzdash/simulation/fit/trace_fit.hpp"
 
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/fit/fit_parameters.hpp"
 #include "hertzdash/simulation/fit/trace_fit_model.hpp"
-#include "hertzdash/simulation/fit/least_squares.hpp"
-#include "hertzdash/simulation/fit/profile_interval.hpp"
-#include "hertzdash/simulation/fit/trace_fit_problem.hpp"
 #include "hertzdash/simulation/fit/trace_preparation.hpp"
-#include "hertzdash/simulation/run/gsl_root.hpp"
 #include "hertzdash/simulation/run/impact_history.hpp"
 
 #include <fmt/format.h>
-#include <gsl/gsl_blas.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_multifit_nlinear.h>
 
-#include <algorithm>
 #include <cmath>
-#include <exception>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -53,11 +44,11 @@ std::optional<double> first_departure(const std::vector<std::string>& names, con
 
 // The onset on the trace's clock that makes the model's departure coincide with the trace's
 // (0 when either has none).
-double onset_guess_s(const MeasuredTrace& trace, const std::vector<ChannelFit>& channels, const ImpactHistory& model,
+double onset_guess_s(const MeasuredTrace& trace, const std::vector<PreparedChannel>& channels, const ImpactHistory& model,
                      double g, double dt_s) {
   std::vector<std::string> names;
   std::vector<double> sigma;
-  for (const ChannelFit& c : channels) names.push_back(c.name), sigma.push_back(c.noise_sigma);
+  for (const PreparedChannel& c : channels) names.push_back(c.name), sigma.push_back(c.noise_sigma);
   const auto in_trace = first_departure(
       names, sigma, g,
       [&](std::size_t c, std::size_t i) {
@@ -75,287 +66,163 @@ double onset_guess_s(const MeasuredTrace& trace, const std::vector<ChannelFit>& 
   return in_trace && in_model ? *in_trace - *in_model : 0.0;
 }
 
-// The profile-likelihood interval of each fitted parameter but the onset (trace_fit.hpp,
-// "Profile intervals"): each point a fit of the others and the onset, parameter j held there.
-void add_profile_intervals(TraceFit& fit, const MeasuredTrace& trace, const PaperParameters& paper,
-                           const TraceFitSettings& settings, const std::vector<Transform>& transforms,
-                           const std::vector<double>& z) {
-  for (std::size_t j = 0; j < transforms.size(); ++j) {
-    const Transform& t = transforms[j];
-    TraceFitSettings others = settings;
-    others.parameters.erase(others.parameters.begin() + static_cast<std::ptrdiff_t>(j));
-    others.profile_intervals = false;
-    auto rise = [&](double zj) -> std::optional<double> {
-      RunOptions at = fit.fitted_options;
-      set_number(at, *find_run_option(settings.parameters[j].option), t.p(zj));
-      try {
-        const TraceFit f = fit_trace(trace, at, paper, others);
-        if (!std::isfinite(f.chi_square)) return std::nullopt;
-        return f.chi_square - fit.chi_square;
-      } catch (const std::exception&) {
-        return std::nullopt;
-      }
-    };
-    FittedParameter& fp = fit.parameters[j];
-    const double se_z = fp.standard_error / std::abs(t.dp_dz(z[j]));
-    fp.profile = profile_interval(rise, fit.reduced_chi_square, z[j], se_z, [&t](double zj) { return t.p(zj); });
+// One sample of one channel, with its channel's noise sigma_c and weight 1 / sigma_c.
+struct Observation {
+  std::size_t channel, sample;  // the sample's row in the (prepared) trace
+  double t_s, y, sigma, inv_sigma;
+};
+
+// What a trace's data and its folds share.
+struct TraceSetup {
+  RunOptions base;
+  const PaperParameters* paper;
+  std::vector<std::string> names;
+  int steps_per_contact;
+  std::string path;
+  std::vector<PreparedChannel> channels;
+  std::vector<double> initial;  // the law's starting values
+};
+
+class TraceData final : public FitData {
+ public:
+  TraceData(std::shared_ptr<const TraceSetup> setup, std::vector<Observation> obs, double onset_s)
+      : setup_(std::move(setup)), obs_(std::move(obs)), onset_s_(onset_s),
+        model_(setup_->base, *setup_->paper, setup_->names, setup_->steps_per_contact) {}
+
+  // The trace prepared for the law and parameters of `base` and `settings`, the onset guessed,
+  // the work bound checked (trace_fit.hpp).
+  static std::unique_ptr<TraceData> prepare(const MeasuredTrace& trace_in, const RunOptions& base,
+                                            const PaperParameters& paper, const TraceFitSettings& settings) {
+    if (!(settings.steps_per_contact >= 100))
+      throw InvalidParameter("steps per contact", std::to_string(settings.steps_per_contact), ">= 100");
+    auto setup = std::make_shared<TraceSetup>();
+    setup->base = base;
+    setup->paper = &paper;
+    for (const FitParameter& p : settings.parameters) setup->names.push_back(p.option);
+    setup->steps_per_contact = settings.steps_per_contact;
+    setup->initial = fit_detail::initial_values(base, paper, settings.parameters);
+    TraceModel model(base, paper, setup->names, settings.steps_per_contact);
+    const ImpactHistory* at_start = model.history(setup->initial);
+    if (!at_start) throw InvalidParameter("fit", "the starting values", "values inside the model's domain");
+    const double g = resolve_setup(base, paper).gravity_mps2;
+    PreparedTrace prepared = prepare_trace(trace_in, settings, model.contact_time_s(), g);
+    const MeasuredTrace& trace = prepared.trace;
+    setup->path = trace.path.string();
+    setup->channels = prepared.channels;
+    std::vector<Observation> obs;
+    for (std::size_t c = 0; c < setup->channels.size(); ++c) {
+      const std::vector<double>& y = *quantity(trace, setup->channels[c].name);
+      const double sigma = setup->channels[c].noise_sigma;
+      for (std::size_t i = 0; i < y.size(); ++i)
+        if (std::isfinite(y[i])) obs.push_back({c, i, trace.t_s[i], y[i], sigma, 1.0 / sigma});
+    }
+    // The onset that fits best at the starting values: first where the trace's contact departs
+    // from free fall minus where the model's does (onset_guess_s), then a scan over +-0.3 t_H
+    // (in the onset's variable t0 / t_H).
+    const double t_H = model.time_scale_s();
+    const double guess = onset_guess_s(trace, setup->channels, *at_start, g, model.solver().dt_s) / t_H;
+    auto data = std::make_unique<TraceData>(setup, std::move(obs), guess * t_H);
+    const std::size_t n = data->rows(), p = settings.parameters.size() + 1;
+    if (n <= p) return data;  // the engine says so
+    std::vector<double> r(n);
+    double best = inf;
+    for (int k = -30; k <= 30; ++k) {
+      const double z = guess + 0.01 * k;
+      if (!data->residuals(setup->initial, {z * t_H}, r.data())) continue;
+      double chi2 = 0;
+      for (double v : r) chi2 += v * v;
+      if (chi2 < best) best = chi2, data->onset_z_ = z;
+    }
+    // The work bound (trace_fit.hpp, "Work"): refused before iterating if the first iterations
+    // alone would exceed it, each model run costing what the one at the starting values did.
+    const double run_cost = static_cast<double>(model.summary().work.steps) + static_cast<double>(n);
+    if (const double predicted = min_predicted_iterations * static_cast<double>(2 * p + 2) * run_cost;
+        predicted > settings.max_work)
+      throw DataError(fmt::format("{}: the fit would exceed its work limit: a model run costs {:.3g} ({} RK4 steps and "
+                                  "{} observations), {:g} iterations of {} runs {:.3g}, above {:.3g}; average the "
+                                  "trace (--resample) or fit fewer channels (--channels)",
+                                  setup->path, run_cost, model.summary().work.steps, n, min_predicted_iterations,
+                                  2 * p + 2, predicted, settings.max_work));
+    return data;
   }
-}
+
+  std::size_t rows() const override { return obs_.size(); }
+  FitPoint row(std::size_t i) const override {
+    const Observation& o = obs_[i];
+    return {o.channel, o.sample, 0, o.t_s, o.y, 0, 0, o.sigma};
+  }
+  std::vector<std::string> groups() const override {
+    std::vector<std::string> names;
+    for (const PreparedChannel& c : setup_->channels) names.push_back(c.name);
+    return names;
+  }
+  std::vector<Nuisance> nuisances() const override {
+    return {{"onset-time", onset_s_, false, model_.time_scale_s(), std::nullopt, onset_z_}};
+  }
+  std::vector<double> start(const std::vector<FitParameter>&) override { return setup_->initial; }
+  bool residuals(const std::vector<double>& law, const std::vector<double>& nuisances, double* r) override {
+    const ImpactHistory* h = model_.history(law);
+    if (!h) return false;
+    ++evaluations_;
+    for (std::size_t i = 0; i < obs_.size(); ++i) {
+      const Observation& o = obs_[i];
+      r[i] = (o.y - instrument_channel(h->instruments_at(o.t_s - nuisances[0]), setup_->channels[o.channel].name)) *
+             o.inv_sigma;
+    }
+    return true;
+  }
+  bool sd_known() const override { return true; }
+  double work() const override { return model_.steps() + evaluations_ * static_cast<double>(rows()); }
+  std::string too_few(std::size_t n, std::size_t p) const override {
+    return fmt::format("{}: {} values cannot determine {} parameters", setup_->path, n, p);
+  }
+  std::size_t folds() const override { return trace_folds; }
+  std::string fold_name(std::size_t k) const override {
+    return fmt::format("the samples i with i mod {} = {}", trace_folds, k);
+  }
+  std::unique_ptr<FitData> part(std::size_t k, bool held, const std::vector<double>& nuisances) const override {
+    std::vector<Observation> obs;
+    for (const Observation& o : obs_)
+      if ((o.sample % trace_folds == k) == held) obs.push_back(o);
+    return std::make_unique<TraceData>(setup_, std::move(obs), nuisances[0]);
+  }
+  void finish(FitResult& fit, const std::vector<double>& law, const std::vector<double>& nuisances) override {
+    std::vector<double> r(rows());
+    residuals(law, nuisances, r.data());  // the model at the estimate (its impact's diagnostics)
+    fit.model_impact = model_.summary();
+    fit.model_runs = model_.runs();
+    fit.model_solver = model_.solver();
+    fit.integrator_used = to_string(model_.solver().integrator);
+    fit.fitted_options = model_.options_at(law);
+  }
+
+ private:
+  std::shared_ptr<const TraceSetup> setup_;
+  std::vector<Observation> obs_;
+  double onset_s_;                    // reported as the onset's initial value
+  std::optional<double> onset_z_;     // the scanned start in t0 / t_H (a part's: onset_s_ / t_H)
+  TraceModel model_;
+  double evaluations_ = 0;  // residuals at a point inside the domain
+};
 
 }  // namespace
 
-const FittedParameter& TraceFit::parameter(const std::string& name) const {
-  for (const FittedParameter& p : parameters)
-    if (p.name == name) return p;
-  throw std::out_of_range("fit: no fitted parameter " + name);
-}
-
-TraceFit fit_trace(const MeasuredTrace& trace_in, const RunOptions& base, const PaperParameters& paper,
+TraceFit fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                    const TraceFitSettings& settings) {
-  use_gsl_return_codes();
-  if (!(settings.steps_per_contact >= 100)) throw InvalidParameter("steps per contact", std::to_string(settings.steps_per_contact), ">= 100");
-  std::vector<std::string> names;
-  std::vector<Transform> transforms;
-  for (const FitParameter& p : settings.parameters) {
-    names.push_back(p.option);
-    transforms.push_back({p.lower, p.upper});
-  }
-  const std::vector<double> initial = initial_values(base, paper, settings.parameters);
-  TraceModel model(base, paper, names, settings.steps_per_contact);
-  const ImpactHistory* at_start = model.history(initial);
-  if (!at_start) throw InvalidParameter("fit", "the starting values", "values inside the model's domain");
-  const double g = resolve_setup(base, paper).gravity_mps2;
-  PreparedTrace prepared = prepare_trace(trace_in, settings, model.contact_time_s(), g);
-  const MeasuredTrace& trace = prepared.trace;
-
-  TraceFit fit;
-  fit.law = base.damping;
-  fit.channels = std::move(prepared.channels);
-  std::vector<std::string> channels;
-  std::vector<Observation> obs;
-  for (std::size_t c = 0; c < fit.channels.size(); ++c) {
-    ChannelFit& ch = fit.channels[c];
-    channels.push_back(ch.name);
-    const std::vector<double>& y = *quantity(trace, ch.name);
-    for (std::size_t i = 0; i < y.size(); ++i)
-      if (std::isfinite(y[i])) obs.push_back({c, trace.t_s[i], y[i], 1.0 / ch.noise_sigma}), ++ch.samples;
-  }
-  FitProblem problem(std::move(obs), model, transforms, channels);
-  const std::size_t n = problem.n(), p = problem.p();
-  if (n <= p) throw DataError(fmt::format("{}: {} values cannot determine {} parameters", trace.path.string(), n, p));
-
-  // Start: the initial values, and the onset time that fits best at them: first where the
-  // trace's contact departs from free fall minus where the model's does (onset_guess_s), then
-  // a scan over +-0.3 t_H around it (the onset needs no model run).
-  std::vector<double> z0;
-  for (std::size_t j = 0; j < transforms.size(); ++j) z0.push_back(transforms[j].z(initial[j]));
-  const double guess = onset_guess_s(trace, fit.channels, *at_start, g, model.solver().dt_s) / model.time_scale_s();
-  z0.push_back(guess);
-  {
-    std::vector<double> r(n);
-    double best = inf, best_z = guess;
-    for (int k = -30; k <= 30; ++k) {
-      z0.back() = guess + 0.01 * k;
-      problem.residuals(z0.data(), r.data());
-      double chi2 = 0;
-      for (double v : r) chi2 += v * v;
-      if (chi2 < best) best = chi2, best_z = z0.back();
-    }
-    z0.back() = best_z;
-  }
-
-  // The work bound (trace_fit.hpp, "Work"): refused before iterating if the first iterations
-  // alone would exceed it, each model run costing what the one at the starting values did.
-  const double run_cost = static_cast<double>(model.summary().work.steps) + static_cast<double>(n);
-  if (const double predicted = min_predicted_iterations * static_cast<double>(2 * p + 2) * run_cost;
-      predicted > settings.max_work)
-    throw DataError(fmt::format("{}: the fit would exceed its work limit: a model run costs {:.3g} ({} RK4 steps and {} "
-                                "observations), {:g} iterations of {} runs {:.3g}, above {:.3g}; average the trace "
-                                "(--resample) or fit fewer channels (--channels)",
-                                trace.path.string(), run_cost, model.summary().work.steps, n,
-                                min_predicted_iterations, 2 * p + 2, predicted, settings.max_work));
-
-  gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
-  const std::unique_ptr<gsl_multifit_nlinear_workspace, decltype(&gsl_multifit_nlinear_free)> w(
-      gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p), &gsl_multifit_nlinear_free);
-  if (!w) throw std::bad_alloc();
-  gsl_multifit_nlinear_fdf fdf{};
-  fdf.f = fit_detail::residuals_thunk<FitProblem>;
-  fdf.df = fit_detail::jacobian_thunk<FitProblem>;
-  fdf.fvv = nullptr;
-  fdf.n = n;
-  fdf.p = p;
-  fdf.params = &problem;
-  gsl_vector_view start = gsl_vector_view_array(z0.data(), p);
-  int status = gsl_multifit_nlinear_init(&start.vector, &fdf, w.get());
-  if (problem.error) std::rethrow_exception(problem.error);
-  if (status != GSL_SUCCESS) throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_init failed: ") + gsl_strerror(status));
-  // gsl_multifit_nlinear_driver's loop, with the work bound checked after each iteration (one
-  // iteration is at most 16 trial runs and a Jacobian of 2p runs).
-  int info = 0;
-  bool work_limit = false;
-  for (int iteration = 0;; ++iteration) {
-    status = gsl_multifit_nlinear_iterate(w.get());
-    if (problem.error) std::rethrow_exception(problem.error);
-    if (status == GSL_ENOPROG && iteration == 0) break;  // no step from the start lowers the cost
-    status = gsl_multifit_nlinear_test(1e-10, 1e-10, 0.0, &info, w.get());
-    if (status != GSL_CONTINUE) break;
-    if (iteration + 1 >= settings.max_iterations) {
-      status = GSL_EMAXITER;
-      break;
-    }
-    if (problem.work() > settings.max_work) {
-      work_limit = true;
-      status = GSL_EMAXITER;
-      break;
-    }
-  }
-  if (status == GSL_ETOLF || status == GSL_ETOLX || status == GSL_ETOLG) info = status, status = GSL_SUCCESS;
-  if (status != GSL_SUCCESS && status != GSL_EMAXITER && status != GSL_ENOPROG)
-    throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_iterate failed: ") + gsl_strerror(status));
-  fit.stop_reason = work_limit ? fmt::format("work limit reached ({:.3g} RK4 steps and interpolations)", settings.max_work)
-                               : fit_detail::stop_reason(status, info);
-  fit.converged = status == GSL_SUCCESS;
-  fit.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w.get()));
-
-  const gsl_vector* zv = gsl_multifit_nlinear_position(w.get());
-  const std::vector<double> z(zv->data, zv->data + p);
-  const gsl_matrix* J = gsl_multifit_nlinear_jac(w.get());
-  const gsl_vector* f = gsl_multifit_nlinear_residual(w.get());
-  gsl_blas_ddot(f, f, &fit.chi_square);
-  fit.samples = n;
-  fit.reduced_chi_square = fit.chi_square / static_cast<double>(n - p);
-
-  const std::unique_ptr<gsl_matrix, decltype(&gsl_matrix_free)> covar(gsl_matrix_alloc(p, p), &gsl_matrix_free);
-  if (const int s = gsl_multifit_nlinear_covar(J, 0.0, covar.get()); s != GSL_SUCCESS)
-    throw std::runtime_error(std::string("fit: GSL gsl_multifit_nlinear_covar failed: ") + gsl_strerror(s));
-  gsl_matrix_scale(covar.get(), fit.reduced_chi_square);
-  fit.condition_number = scaled_condition_number(J, problem, z.data());
-
-  // A parameter the trace does not see has a zero column in J; GSL's pivoted covariance then
-  // sets its variance to zero, which would read as perfectly determined: it is infinite.
-  for (std::size_t j = 0; j < p; ++j) {
-    gsl_vector_const_view column = gsl_matrix_const_column(J, j);
-    if (gsl_blas_dnrm2(&column.vector) == 0 || !(gsl_matrix_get(covar.get(), j, j) > 0))
-      for (std::size_t i = 0; i < p; ++i) {
-        gsl_matrix_set(covar.get(), i, j, i == j ? inf : NAN);
-        gsl_matrix_set(covar.get(), j, i, i == j ? inf : NAN);
-      }
-  }
-  const std::vector<double> estimate = problem.physical(z.data());
-  bool finite_errors = true;
-  for (std::size_t j = 0; j < p; ++j) {
-    FittedParameter fp;
-    const double sz = std::sqrt(gsl_matrix_get(covar.get(), j, j));
-    if (j < transforms.size()) {
-      const Transform& t = transforms[j];
-      fp = {names[j], initial[j], estimate[j], std::abs(t.dp_dz(z[j])) * sz, t.lo, t.hi};
-      // At a bound the transform flattens (dp/dz -> 0) and the standard error shrinks with it:
-      // within 1e-3 of the range (two bounds) or of the starting distance from the bound.
-      fp.at_bound = t.two_sided() ? std::abs(z[j]) > std::log(1e3)
-                                  : (estimate[j] - t.lo) < 1e-3 * std::abs(initial[j] - t.lo);
-    } else {
-      fp = {"onset-time", guess * model.time_scale_s(), problem.onset_s(z.data()), model.time_scale_s() * sz, -inf, inf};
-    }
-    finite_errors = finite_errors && std::isfinite(fp.standard_error);
-    fit.parameters.push_back(fp);
-  }
-  for (std::size_t i = 0; i < p; ++i) {
-    fit.correlation.emplace_back();
-    for (std::size_t j = 0; j < p; ++j)
-      fit.correlation.back().push_back(gsl_matrix_get(covar.get(), i, j) /
-                                       std::sqrt(gsl_matrix_get(covar.get(), i, i) * gsl_matrix_get(covar.get(), j, j)));
-  }
-  double largest_correlation = 0;
-  for (std::size_t i = 0; i < p; ++i)
-    for (std::size_t j = 0; j < i; ++j) largest_correlation = std::max(largest_correlation, std::abs(fit.correlation[i][j]));
-  // A fit that determined nothing has failed (trace_fit.hpp, "Failure").
-  std::vector<std::string> why;
-  if (work_limit)
-    why.push_back(fmt::format("it reached its work limit ({:.3g} RK4 steps and interpolations) after {} model runs",
-                              settings.max_work, model.runs()));
-  else if (status == GSL_EMAXITER && info != GSL_ENOPROG)
-    why.push_back(fmt::format("it reached its iteration limit ({})", settings.max_iterations));
-  for (const FittedParameter& fp : fit.parameters)
-    if (fp.at_bound) why.push_back(fmt::format("{} ended at its bound ({:.6g})", fp.name, fp.estimate));
-  if (fit.parameters.size() > 1 && std::none_of(fit.parameters.begin(), fit.parameters.end() - 1,
-                   [](const FittedParameter& fp) { return std::isfinite(fp.standard_error); }))
-    why.push_back("no fitted parameter has a finite standard error");
-  if (!std::isfinite(fit.chi_square)) why.push_back("the chi-square is not finite");
-  fit.failed = !why.empty();
-  for (const std::string& reason : why) fit.failure += (fit.failure.empty() ? "" : "; ") + reason;
-  fit.identifiable = !fit.failed && finite_errors && fit.condition_number < identifiable_condition_limit &&
-                     largest_correlation < identifiable_correlation_limit;
-  const double k = static_cast<double>(p);
-  fit.aic = fit.chi_square + 2.0 * k;
-  fit.bic = fit.chi_square + k * std::log(static_cast<double>(n));
-
-  // The model at the estimate, channel by channel.
-  const std::vector<double> m = problem.model_values(z.data());
-  fit.contact_time_s = model.contact_time_s();
-  fit.model_summary = model.summary();
-  std::vector<double> sum_sq(channels.size(), 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Observation& o = problem.observations()[i];
-    ChannelFit& ch = fit.channels[o.channel];
-    ch.t_s.push_back(o.t_s);
-    ch.measured.push_back(o.y);
-    ch.model.push_back(m[i]);
-    sum_sq[o.channel] += (o.y - m[i]) * (o.y - m[i]);
-  }
-  for (std::size_t c = 0; c < channels.size(); ++c)
-    fit.channels[c].residual_rms = std::sqrt(sum_sq[c] / static_cast<double>(fit.channels[c].samples));
-  fit.model_runs = model.runs();
-  fit.work = problem.work();
-  fit.fitted_options = model.options_at(estimate);
-  fit.model_solver = model.solver();
-  if (settings.profile_intervals && !fit.failed) add_profile_intervals(fit, trace_in, paper, settings, transforms, z);
-  return fit;
+  const std::unique_ptr<TraceData> data = TraceData::prepare(trace, base, paper, settings);
+  return fit(*data, base.damping, settings);
 }
 
 LawComparison compare_laws(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                            const TraceFitSettings& settings) {
-  LawComparison out;
-  initial_values(base, paper, settings.parameters);  // a bad --fit is the user's, not a law's
-  for (const LawInfo& law : registered_laws()) {
-    RunOptions o = base;
-    o.damping = std::string(law.name);
-    // Each law is fitted with what it reads: an option given, or a parameter fitted, that this
-    // law does not read is left out of its fit, and said so (TraceFit::left_out).
-    TraceFitSettings own = settings;
-    std::vector<std::string> left_out;
-    auto reads = [&](const RunOption& option) {
-      try {
-        require_read(o, option, "");
-        return true;
-      } catch (const InvalidParameter&) {
-        return false;
-      }
-    };
-    for (const RunOption& option : run_options())
-      if (is_given(o, option) && !reads(option)) {
-        clear_option(o, option);
-        left_out.push_back(option.name);
-      }
-    std::erase_if(own.parameters, [&](const FitParameter& p) {
-      const bool unread = !reads(*find_run_option(p.option));
-      if (unread && std::find(left_out.begin(), left_out.end(), p.option) == left_out.end()) left_out.push_back(p.option);
-      return unread;
-    });
-    try {
-      out.fits.push_back(fit_trace(trace, o, paper, own));
-      out.fits.back().left_out = left_out;
-    } catch (const DataError&) {
-      throw;  // the trace's fault, the same for every law
-    } catch (const std::exception& e) {
-      out.failures.emplace_back(o.damping, e.what());
-    }
-  }
-  // Failed fits last: the best is a fit that determined its parameters, if any did.
-  std::stable_sort(out.fits.begin(), out.fits.end(), [](const TraceFit& a, const TraceFit& b) {
-    return a.failed != b.failed ? b.failed : a.aic < b.aic;
-  });
-  return out;
+  fit_detail::initial_values(base, paper, settings.parameters);  // a bad --fit is the user's, not a law's
+  return compare_laws(
+      [&](const RunOptions& o, const std::vector<FitParameter>& parameters) -> std::unique_ptr<FitData> {
+        TraceFitSettings own = settings;
+        own.parameters = parameters;
+        return TraceData::prepare(trace, o, paper, own);
+      },
+      base, settings);
 }
 
 }  // namespace hertzdash

@@ -1,6 +1,6 @@
 #pragma once
 // Identifying parameters of the drop test from a measured trace (data/measurements/README.md):
-// weighted nonlinear least squares, GSL's multifit_nlinear (trust region, Levenberg-Marquardt).
+// weighted nonlinear least squares by the fit engine (fit_engine.hpp).
 //
 // Model. The run options (simulation/options/run_options.hpp) with the fitted ones replaced; the drop
 // starts at contact onset with the approach speed sqrt(2 g h) (or --impact-velocity), and is
@@ -20,20 +20,13 @@
 // weights), so the weights do not depend on the model and every law of --compare-laws is fitted
 // with the same ones.
 //
-// Uncertainty. Parameters are fitted in unbounded variables (log(p - lower), or the logit of
-// (p - lower)/(upper - lower) between two finite bounds; t0 / t_H for the onset). The
-// covariance is s^2 (J^T J)^{-1} with s^2 = chi^2 / (n - p) (gsl_multifit_nlinear_covar), mapped
-// to the physical parameters by the transforms' derivatives. The Jacobian is by central
-// differences with step 1e-6 in the unbounded variables: on its fixed grid the model is smooth
-// in the parameters, except at samples near the contact's ends, where the paper's dashpot force
-// rises as sqrt(tau) and the differences err; a larger step lets more samples spoil the
-// Jacobian (at step 1e-4 the exactly degenerate pair ball-E, ball-radius, which enter only
-// through K, shows a condition number of 3e4, at 1e-6 about 1.5e6: its columns agree to ~1e-6).
-// The condition number is that of J with columns scaled to relative changes (d r / d ln p;
-// d r / d(t0 / t_H)). The fit is identifiable when that is below 1e6, no two estimates correlate
-// beyond 0.999 (a degenerate pair among other parameters can hide under the condition limit, the
-// Jacobian being only that accurate) and every standard error is finite: a parameter the trace
-// does not see at all (a zero column of J) has an infinite one.
+// Uncertainty. The engine's (fit_engine.hpp): the onset is a nuisance in the variable t0 / t_H,
+// reported as the last parameter, `onset-time`; the covariance s^2 (J^T J)^{-1}. The Jacobian's
+// central differences (step 1e-6) are accurate on the model's fixed grid, except at samples near
+// the contact's ends, where the paper's dashpot force rises as sqrt(tau) and the differences err;
+// a larger step lets more samples spoil the Jacobian (at step 1e-4 the exactly degenerate pair
+// ball-E, ball-radius, which enter only through K, shows a condition number of 3e4, at 1e-6 about
+// 1.5e6: its columns agree to ~1e-6), so the condition limit 1e6 finds it.
 //
 // Outside the model's domain (values the set-up rejects, or a contact over 50 times longer
 // than at the start) a step is rejected. The onset starts where the trace's contact first
@@ -51,107 +44,45 @@
 // rod), a non-finite standard error or correlation, or a stop at the iteration or work limit.
 // A failed fit is never identifiable.
 //
-// Profile intervals (TraceFitSettings::profile_intervals, `--profile-intervals`): for each fitted
-// parameter (not the onset), the values where chi^2, the other parameters and the onset re-fitted
-// (a fit_trace per point, from the estimate), rises by s^2 = chi^2 / (n - p) above its minimum
-// (profile_interval.hpp). Not for a failed fit.
+// Profile intervals (`--profile-intervals`): the engine's, for each fitted parameter but the
+// onset, every other variable and the onset re-fitted from the estimate.
+//
+// Cross-validation (`--cross-validate`): the engine's, over trace_folds interleaved folds, sample
+// i (all its channels) in fold i mod trace_folds; each left out in turn, the rest fitted, the
+// left-out samples predicted with their own onset fitted. The prediction error is in the
+// channels' units (with one channel, about its noise sigma for a model that explains the trace),
+// the data's scatter the RMS of sigma_c over the residuals.
+//
+// Channels are the result's groups (FitResult::groups: name, samples, sigma_c as `unit`, the
+// residual RMS), a point's x its time on the trace's clock [s].
 //
 // Information criteria with the noise known (sigma_c): AIC = chi^2 + 2k, BIC = chi^2 + k ln n,
 // k the number of fitted parameters including t0.
 #include "hertzdash/io/measured_trace.hpp"
-#include "hertzdash/simulation/fit/profile_interval.hpp"
+#include "hertzdash/simulation/fit/fit_engine.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
-#include "hertzdash/simulation/run/impact_summary.hpp"
 
-#include <limits>
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace hertzdash {
 
-/// A parameter to fit: a numeric set-up option by name (--fit NAME[:LOWER:UPPER]) and its bounds [SI].
-struct FitParameter {
-  std::string option;  ///< the option's name, e.g. "ball-E"
-  double lower = 0, upper = std::numeric_limits<double>::infinity();
-};
-
-/// The parameters of a --fit list, "ball-E,restitution" or "ball-E:1e9:3e9,restitution"; each
-/// without bounds gets the bounds of the option's declared range (docs/parameters.md). Throws
-/// InvalidParameter("fit", ...).
-std::vector<FitParameter> parse_fit_parameters(const std::string& list);
-
-/// The options that may be fitted, comma-separated (for help and messages).
-std::string fittable_option_names();
-
-/// How to fit.
-struct TraceFitSettings {
-  std::vector<FitParameter> parameters = parse_fit_parameters("ball-E,restitution");
+/// How to fit a trace: the engine's settings (fitted by default: ball-E and restitution; at
+/// most 3e7 of work, a good fit of a 1 MHz trace of the paper's contact taking about 7e5, "Work"
+/// above) and the trace's own.
+struct TraceFitSettings : FitSettings {
   std::vector<std::string> channels;   ///< of the trace's; empty: all the trace has
   double resample_Hz = 0;              ///< > 0: average the trace into bins of 1/resample_Hz first
   int steps_per_contact = 2000;        ///< the model's RK4 steps per undamped Hertz contact time
-  int max_iterations = 200;
-  /// Most work of one fit: RK4 steps plus observations interpolated, summed over model runs
-  /// (a good fit of a 1 MHz trace of the paper's contact takes about 7e5; "Work" above).
-  double max_work = 3e7;
-  /// Each fitted parameter's profile-likelihood interval too ("Profile intervals" above).
-  bool profile_intervals = false;
+  TraceFitSettings() : FitSettings{parse_fit_parameters("ball-E,restitution"), 200, 3e7, false, false} {}
 };
 
-/// One fitted parameter. The onset time is the last, named "onset-time" [s].
-struct FittedParameter {
-  std::string name;
-  double initial = 0, estimate = 0, standard_error = 0;
-  double lower = 0, upper = 0;
-  bool at_bound = false;  ///< at a bound (within 1e-3 of the range): the standard error does not hold
-  std::optional<ProfileInterval> profile = std::nullopt;  ///< the profile-likelihood interval, where asked for (profile_interval.hpp)
-};
+/// The result of one fit: FitResult, a group per channel, the onset last among the parameters.
+using TraceFit = FitResult;
 
-/// One channel: its weight and how well the model explains it.
-struct ChannelFit {
-  std::string name;            ///< e.g. force_N
-  std::size_t samples = 0;     ///< with a value
-  double noise_sigma = 0;      ///< sigma_c, estimated from the data [the channel's unit]
-  double residual_rms = 0;     ///< RMS of y - model [the channel's unit]
-  std::vector<double> t_s, measured, model;  ///< at the samples used (for curves and figures)
-};
-
-/// The result of one fit.
-struct TraceFit {
-  std::string law;
-  std::vector<FittedParameter> parameters;           ///< the fitted ones, then onset-time
-  std::vector<std::vector<double>> correlation;      ///< of the estimates, same order
-  std::vector<ChannelFit> channels;
-  std::size_t samples = 0;                           ///< residuals n
-  double chi_square = 0;                             ///< sum r^2
-  double reduced_chi_square = 0;                     ///< chi^2 / (n - p): about 1 if the model explains the trace to its noise
-  double condition_number = 0;
-  bool identifiable = false;                         ///< condition number, correlations and standard errors within limits
-  double aic = 0, bic = 0;
-  int iterations = 0, model_runs = 0;
-  std::string stop_reason;                           ///< GSL's: small step, small gradient, or why not converged
-  bool converged = false;                            ///< GSL's test met (not the iteration limit, not stalled)
-  bool failed = false;                               ///< the fit determined nothing ("Failure" above)
-  std::string failure;                               ///< why it failed, empty if not
-  double work = 0;                                   ///< RK4 steps plus observations interpolated, all runs
-  double contact_time_s = 0;                         ///< of the fitted model
-  ImpactSummary model_summary;                       ///< the fitted model's impact (its diagnostics)
-  RunOptions fitted_options;                         ///< the run options at the estimate
-  /// compare_laws only: the options given for the comparison that this law does not read (the
-  /// input e for the undamped law, another law's own input), left out of its fit.
-  std::vector<std::string> left_out;
-
-  /// The fitted parameter called `name` (an option's name or "onset-time"); std::out_of_range if none.
-  const FittedParameter& parameter(const std::string& name) const;
-  SolverSettings model_solver;                       ///< how the model was integrated (RK4, t_H / steps_per_contact)
-};
-
-/// Largest condition number of an identifiable fit.
-inline constexpr double identifiable_condition_limit = 1e6;
-/// Largest correlation between two estimates of an identifiable fit.
-inline constexpr double identifiable_correlation_limit = 0.999;
-
+/// Folds of a trace's cross-validation (interleaved samples).
+inline constexpr std::size_t trace_folds = 5;
 /// Fewest samples per contact the fit accepts (the sampling check).
 inline constexpr double min_samples_per_contact = 10;
 /// Most samples per contact the fit accepts: the model is integrated at t_H / 2000 and
@@ -177,13 +108,8 @@ inline constexpr double outlier_ratio = 10;
 TraceFit fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                    const TraceFitSettings& settings);
 
-/// fit_trace for every registered law (base.damping replaced), ranked by AIC; a law that
-/// cannot be fitted (its options reject the set-up, its model or the fit fails) is left out and
-/// named in `failures`. A trace unfit for fitting throws DataError as fit_trace does.
-struct LawComparison {
-  std::vector<TraceFit> fits;                                 ///< best (lowest AIC) first
-  std::vector<std::pair<std::string, std::string>> failures;  ///< law, why
-};
+/// fit_trace for every registered law (fit_engine.hpp's compare_laws). A trace unfit for
+/// fitting throws DataError as fit_trace does.
 LawComparison compare_laws(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                            const TraceFitSettings& settings);
 

@@ -173,10 +173,7 @@ PreparedTrace prepare_trace(const MeasuredTrace& trace, const TraceFitSettings& 
   for (const std::string& name : channels_to_fit(t, settings)) {
     const std::vector<double>& y = *quantity(t, name);
     const double sigma = noise_sigma(y, file, name);
-    ChannelFit channel;
-    channel.name = name;
-    channel.noise_sigma = sigma;
-    prepared.channels.push_back(channel);
+    prepared.channels.push_back({name, sigma});
     double signature = 0, last = NAN, peak = -inf;
     for (double v : y) {
       if (!std::isfinite(v)) continue;

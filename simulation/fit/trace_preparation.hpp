@@ -7,14 +7,21 @@
 #include "hertzdash/io/measured_trace.hpp"
 #include "hertzdash/simulation/fit/trace_fit.hpp"
 
+#include <string>
 #include <vector>
 
 namespace hertzdash::trace_fit_detail {
 
-/// The trace as fitted, and its channels with their noise (ChannelFit's name and noise_sigma).
+/// A channel to fit and its noise sigma_c [the channel's unit].
+struct PreparedChannel {
+  std::string name;
+  double noise_sigma = 0;
+};
+
+/// The trace as fitted, and its channels with their noise.
 struct PreparedTrace {
   MeasuredTrace trace;
-  std::vector<ChannelFit> channels;
+  std::vector<PreparedChannel> channels;
 };
 
 /// Resample if asked, and check the trace: a channel to fit, no outlier (outlier_ratio, in the

@@ -76,10 +76,7 @@ constexpr CommandOptions table[] = {
 
 std::span<const CommandOptions> command_options() { return table; }
 
-ParameterDecls fit_command_options() { return {}; }
-
 ParameterDecls options_of_command(std::string_view command) {
-  if (command == "fit") return fit_command_options();  // the fit's own table
   for (const CommandOptions& c : table)
     if (c.command == command) return c.options;
   return {};

@@ -18,12 +18,9 @@ struct CommandOptions {
   ParameterDecls options;
 };
 
-/// Every command, in the order of the commands, with its own options (`fit`'s empty here: ask
-/// options_of_command("fit"), which is fit_command_options()).
+/// Every command, in the order of the commands, with its own options (`fit`'s empty here: they
+/// are declared with the fit's request, simulation/reports/fit_request.hpp).
 std::span<const CommandOptions> command_options();
-
-/// `hertzdash fit`'s own options, declared with the fit's table (empty until it is).
-ParameterDecls fit_command_options();
 
 /// The declared options of `command` (empty: none).
 ParameterDecls options_of_command(std::string_view command);

@@ -1,6 +1,7 @@
 #include "hertzdash/simulation/reports/parameter_reference.hpp"
 
 #include "hertzdash/simulation/options/command_options.hpp"
+#include "hertzdash/simulation/reports/fit_request.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/rigs/rig.hpp"
 
@@ -68,7 +69,9 @@ std::string parameter_reference_markdown() {
   for (const CommandOptions& c : command_options()) {
     if (find_rig(c.command)) continue;  // with its rig's, below
     if (c.command != "RIG") {
-      const ParameterDecls own = options_of_command(c.command);
+      std::vector<ParameterDecl> own(options_of_command(c.command).begin(), options_of_command(c.command).end());
+      if (c.command == "fit")
+        for (const FitOption& o : fit_command_options()) own.push_back(o.decl);
       if (!own.empty()) md += fmt::format("\n## `hertzdash {}`\n\nIts own options{}.\n\n", c.command,
                                   c.command == "models" || c.command == "sweep" ? "" : ", beside the options of a run above") + option_table(own);
       continue;

@@ -4,11 +4,10 @@
 // carry the same keys and the same numbers. The JSON schema is documented in
 // docs/json-output.md; json_schema_version changes whenever a key is renamed or removed.
 #include "hertzdash/io/provenance.hpp"
-#include "hertzdash/simulation/fit/restitution_fit.hpp"
-#include "hertzdash/simulation/fit/trace_fit.hpp"
 #include "hertzdash/simulation/fit/virtual_measurement.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/reports/diagnostic_messages.hpp"
+#include "hertzdash/simulation/reports/fit_report.hpp"
 #include "hertzdash/simulation/run/bounce_sequence.hpp"
 #include "hertzdash/simulation/run/impact_summary.hpp"
 
@@ -61,72 +60,6 @@ std::string virtual_measurement_note(const SimulateRun& run, const MeasurementCh
 /// The header parameters of a virtual measurement file: the run's inputs, the integrator that
 /// ran, and the measurement chain.
 Parameters virtual_measurement_parameters(const SimulateRun& run, const MeasurementChain& chain);
-
-/// A fit of a measured trace (simulation/fit/trace_fit.hpp): one law, or every registered law ranked.
-struct FitRun {
-  MeasuredTrace trace;                                        ///< as read
-  TraceFitSettings settings;
-  std::vector<TraceFit> fits;                                 ///< one; or, comparing laws, best first
-  std::vector<std::pair<std::string, std::string>> failures;  ///< comparing laws: law, why it could not be fitted
-};
-
-/// Read the trace, fit (validating like `simulate`: InvalidParameter; a bad trace: DataError).
-/// The trace's header sets the rod and height the options leave unset (trace_setup_options;
-/// `given`: options a front end was given even at their default value, e.g. "rod").
-FitRun run_fit(const std::string& trace_path, const RunOptions& base, const PaperParameters& paper,
-               const TraceFitSettings& settings, bool compare_all_laws, const std::vector<std::string>& given = {});
-
-/// One fit: "law", "parameters" (name, initial, estimate, standard_error, lower, upper, at_bound),
-/// "correlation", "channels", the goodness of fit and the criteria, "fitted_inputs".
-nlohmann::ordered_json to_json(const TraceFit& fit, const PaperParameters& paper);
-
-/// `fit --json`: "trace" (path, source, rod, height_m, synthetic, samples), "fits" (one law, or
-/// every law ranked by AIC, best first), "failures" (laws that could not be fitted), "warnings"
-/// (fit_diagnostics), "schema_version", "git_revision".
-nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
-
-/// `fit --curves`: the trace, the fitted model and the residual of every channel of `fit`, one
-/// row per sample time (t_s, then <channel>_measured, _model, _residual), written atomically
-/// under a header naming the trace and the estimates.
-void write_fit_curves(const TraceFit& fit, const MeasuredTrace& trace, const std::filesystem::path& path);
-
-/// The warnings every front end shows for a fit: a synthetic trace (synthetic_trace), and per
-/// fit one that did not converge (not_converged), failed (fit_failed: TraceFit::failure) or else
-/// is not identifiable (not_identifiable), has a
-/// parameter at its bound (at_bound), does not explain the trace to its noise (poor_fit), and
-/// the diagnostics of the fitted model's impact (simulation/run/diagnostic_codes.hpp).
-std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParameters& paper);
-
-/// A fit of a restitution table (simulation/fit/restitution_fit.hpp): one law, or every law ranked.
-struct RestitutionFitRun {
-  RestitutionTable table;                                     ///< as read
-  RestitutionFitSettings settings;
-  std::vector<RestitutionFit> fits;                           ///< one; or, comparing laws, best first
-  std::vector<std::pair<std::string, std::string>> failures;  ///< comparing laws: law, why it could not be fitted
-};
-
-/// Read the table and fit it (`fit --restitution-table`): validating the options first
-/// (InvalidParameter), then the table (DataError); with settings.cross_validate each fit is
-/// cross-validated (a fold that cannot be fitted is said in its cross_validation.failure).
-RestitutionFitRun run_restitution_fit(const std::string& table_path, const RunOptions& base,
-                                      const PaperParameters& paper, const RestitutionFitSettings& settings,
-                                      bool compare_all_laws);
-
-/// The warnings of one fit (`law`: named in the messages when comparing): the table's
-/// synthetic_table, the note sigma_estimated, not_converged, fit_failed, not_identifiable,
-/// at_bound, poor_fit (reduced chi-square above 2, with e_sd).
-std::vector<RunDiagnostic> restitution_fit_diagnostics(const RestitutionFitRun& run, const RestitutionFit& fit);
-
-/// Every fit's warnings, the table's once (what stderr shows).
-std::vector<RunDiagnostic> restitution_fit_diagnostics(const RestitutionFitRun& run);
-
-/// One fit: "law", "parameters", "correlation", "points", "e_effective_range", the criteria,
-/// "cross_validation" if run, "warnings".
-nlohmann::ordered_json to_json(const RestitutionFitRun& run, const RestitutionFit& fit);
-
-/// `fit --restitution-table --json`: "table" (path, source, synthetic, rows, e_sd), "fits",
-/// "failures", "warnings", "schema_version", "git_revision".
-nlohmann::ordered_json to_json(const RestitutionFitRun& run);
 
 /// A law's effective restitution in the rigid-wall contact phase (no gravity), or, given a
 /// target, the input e that makes it the target (simulation/run/calibrate_restitution.hpp).

@@ -1,9 +1,8 @@
 #include "hertzdash/simulation/shaker/shaker.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/run/law_runs.hpp"
+#include "hertzdash/simulation/run/soft_contact.hpp"
 #include "hertzdash/simulation/shaker/next_impact.hpp"
-#include "hertzdash/simulation/shaker/shaker_contact.hpp"
 
 #include <fmt/format.h>
 
@@ -88,12 +87,9 @@ ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const Sol
   out.impact_model = options.impact_model;
 
   const bool soft = options.impact_model == ShakerImpactModel::soft;
-  std::unique_ptr<ShakerContact> contact;
+  std::unique_ptr<SoftContact<HarmonicWall>> contact;
   if (soft) {
-    DropTestSetup s = setup;
-    const LawRuns& runs = law_runs(law);
-    if (runs.calibrated_time_constant && !s.damping.viscous_time_constant_s) s = runs.calibrated_time_constant(s);
-    contact = make_shaker_contact(law, s, solver, wall);
+    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "shaker");
     out.integrator_used = contact->integrator_used();
   }
   const double e = setup.restitution;
@@ -151,7 +147,7 @@ ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const Sol
       carried = wall_pushes;  // a touch too slow for a contact: rests, or leaves with the wall pulling away
       impact.rebound_speed_mps = impact.impact_speed_mps;
     } else {
-      const ShakerContactOutcome c = contact->run(ti, impact.impact_speed_mps, contact_limit_s);
+      const auto c = contact->run(HarmonicWall{wall, g, 1.0, ti}, impact.impact_speed_mps, contact_limit_s);
       out.work.add_work(c.work);
       impact.contact_time_s = c.contact_time_s;
       impact.peak_force_N = c.peak_force_N;

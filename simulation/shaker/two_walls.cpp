@@ -2,10 +2,8 @@
 #include "hertzdash/simulation/shaker/two_walls.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/run/law_runs.hpp"
-#include "hertzdash/simulation/shaker/damper_soft_contact.hpp"
+#include "hertzdash/simulation/run/soft_contact.hpp"
 #include "hertzdash/simulation/shaker/safe_root.hpp"
-#include "hertzdash/simulation/shaker/shaker_contact.hpp"
 
 #include <fmt/format.h>
 
@@ -146,26 +144,17 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
     out.primary_amplitude_rigid_m = rigid.steady_amplitude_m();
   }
 
-  // The soft contacts: the driven box's floor, and its ceiling with g and A reversed; the
-  // damper's, the primary moving with the contact (one system for both walls).
+  // The soft contacts (simulation/run/soft_contact.hpp): the driven box's floor and ceiling, a wall
+  // in harmonic motion; the damper's, the primary moving with the contact.
   const bool soft = options.impact_model == ShakerImpactModel::soft;
-  std::array<std::unique_ptr<ShakerContact>, 2> contact;
-  std::unique_ptr<DamperSoftContact> damper_contact;
-  if (soft) {
-    DropTestSetup s = setup;
-    const LawRuns& runs = law_runs(law);
-    if (runs.calibrated_time_constant && !s.damping.viscous_time_constant_s) s = runs.calibrated_time_constant(s);
-    if (damper) {
-      damper_contact = make_damper_soft_contact(law, s, solver, free);
-      out.integrator_used = damper_contact->integrator_used();
-    } else {
-      contact[0] = make_shaker_contact(law, s, solver, options.drive);
-      s.gravity_mps2 = -g;
-      HarmonicWallMotion reversed = options.drive;
-      reversed.amplitude_m = -reversed.amplitude_m;
-      contact[1] = make_shaker_contact(law, s, solver, reversed);
-      out.integrator_used = contact[0]->integrator_used();
-    }
+  std::unique_ptr<SoftContact<HarmonicWall>> contact;
+  std::unique_ptr<SoftContact<SprungPrimary>> damper_contact;
+  if (soft && damper) {
+    damper_contact = make_soft_contact<SprungPrimary>(law, setup, solver, "walls");
+    out.integrator_used = damper_contact->integrator_used();
+  } else if (soft) {
+    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "walls");
+    out.integrator_used = contact->integrator_used();
   }
 
   const double stick_speed = 1e-6 * (g + accel_scale) * T;
@@ -283,7 +272,7 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
     } else if (impact.impact_speed_mps < stick_speed) {
       impact.rebound_speed_mps = impact.impact_speed_mps;  // a touch too slow for a contact: carried below
     } else if (damper) {
-      const DamperContactOutcome c = damper_contact->run(sigma, ti, impact.impact_speed_mps, X, V, 2.0 * T);
+      const auto c = damper_contact->run(SprungPrimary{free, g, sigma, ti, X, V}, impact.impact_speed_mps, 2.0 * T);
       out.work.add_work(c.work);
       impact.contact_time_s = c.contact_time_s;
       impact.peak_force_N = c.peak_force_N;
@@ -296,11 +285,11 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
       }
       impact.rebound_speed_mps = c.rebound_speed_mps;
       t_after = ti + c.contact_time_s;
-      V_after = c.V_mps;
+      V_after = c.environment[1];
       u_after = V_after + sigma * impact.rebound_speed_mps;
-      box = OscillatorMotion(free, t_after, c.X_m, c.V_mps);
+      box = OscillatorMotion(free, t_after, c.environment[0], V_after);
     } else {
-      const ShakerContactOutcome c = contact[static_cast<int>(hit)]->run(ti, impact.impact_speed_mps, 2.0 * T);
+      const auto c = contact->run(HarmonicWall{options.drive, g, sigma, ti}, impact.impact_speed_mps, 2.0 * T);
       out.work.add_work(c.work);
       impact.contact_time_s = c.contact_time_s;
       impact.peak_force_N = c.peak_force_N;

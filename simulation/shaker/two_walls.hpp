@@ -23,11 +23,11 @@
 //     damper, momentum conserved, m u + M V = m u+ + M V+, and u+ - V+ = -e (u - V):
 //       u+ = u + M (1 + e)(V - u)/(m + M),   V+ = V - m (1 + e)(V - u)/(m + M),
 //     loss (1 - e^2) m M (V - u)^2 / (2 (m + M)); the same formulas on either wall.
-//   - soft, box rig: the shaker's contact system (model/shaken_contact.hpp) on the floor, and on
-//     the ceiling the same system with its signs reversed: the overlap x = y - X - gap obeys
+//   - soft, box rig: the harmonic wall (model/contact_environments.hpp) on the floor, and on
+//     the ceiling the same wall with its signs reversed (sigma = -1): the overlap x = y - X - gap obeys
 //     x'' = -g - X''(t) - F/m, the floor's x'' = g + X'' - F/m with g -> -g and A -> -A.
 //   - soft, damper: the contact force acts on body and primary, whose motion is integrated with
-//     the contact (model/damper_contact.hpp, simulation/shaker/damper_soft_contact.hpp); the
+//     the contact (the sprung primary, model/contact_environments.hpp); the
 //     closed form takes over from the primary's state at separation.
 // Carried body: a rebound slower than stick_speed = 1e-6 (g + A w^2) T (box) or
 // 1e-6 (g + |Q| w^2) T (damper; T = 1/f), or more than max_impacts_per_cycle impacts in one

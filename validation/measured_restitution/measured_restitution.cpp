@@ -93,9 +93,9 @@ DropTestSetup contact_at(const RunOptions& fitted, const PaperParameters& paper,
 }
 
 /// A fit's points in order of increasing speed (the table's order for equal speeds).
-std::vector<RestitutionPoint> in_order_of_speed(std::vector<RestitutionPoint> points) {
-  std::stable_sort(points.begin(), points.end(), [](const RestitutionPoint& a, const RestitutionPoint& b) {
-    return a.impact_speed_mps < b.impact_speed_mps;
+std::vector<FitPoint> in_order_of_speed(std::vector<FitPoint> points) {
+  std::stable_sort(points.begin(), points.end(), [](const FitPoint& a, const FitPoint& b) {
+    return a.x < b.x;
   });
   return points;
 }
@@ -190,7 +190,7 @@ int main(int argc, char** argv) try {
                     "Law & fitted parameter & $e$ over the speeds & $\\Delta$AIC & $\\sigma$ & CV RMS error \\\\\n"
                     "\\midrule\n";
   for (const RestitutionFit& f : comparison.fits) {
-    const RestitutionCrossValidation& cv = *f.cross_validation;
+    const CrossValidation& cv = *f.cross_validation;
     for (const FittedParameter& p : f.parameters)
       laws_csv.add_row({f.law, f.aic, f.aic - best.aic, f.bic, f.sigma, p.name, p.estimate, p.standard_error, f.e_min,
                         f.e_max, cv.rms_prediction_error, cv.ratio, static_cast<long>(f.converged),
@@ -227,10 +227,10 @@ int main(int argc, char** argv) try {
       const ImpactSummary r = simulator.run(contact_at(f.fitted_options, paper, v), f.law);
       curves.add_row({f.law, v, r.separated ? r.e_effective : NAN});
     }
-    for (const RestitutionPoint& p : in_order_of_speed(f.points))
-      points.add_row({f.law, p.impact_speed_mps, p.measured, p.model, p.residual});
+    for (const FitPoint& p : in_order_of_speed(f.points))
+      points.add_row({f.law, p.x, p.measured, p.model, p.residual});
   }
-  const std::vector<RestitutionPoint> by_speed = in_order_of_speed(kk_fit->points);
+  const std::vector<FitPoint> by_speed = in_order_of_speed(kk_fit->points);
   int sign_changes = 0;
   for (std::size_t i = 1; i < by_speed.size(); ++i)
     sign_changes += (by_speed[i].residual > 0) != (by_speed[i - 1].residual > 0);
