@@ -16,20 +16,8 @@
 
 namespace hertzdash::cli {
 
-namespace {
-
-struct RigCommandOptions {
-  RunOptions run;
-  RigInputs inputs;
-  std::string csv_path, sweep;
-  std::optional<double> threads;
-  bool json = false, mkdir = false;
-};
-
-}  // namespace
-
 Command add_rig_command(CLI::App& app, const Rig& rig) {
-  auto opt = std::make_shared<RigCommandOptions>();
+  auto opt = std::make_shared<ShakerSweepRequest>();
   if (!rig.default_integrator.empty()) opt->run.integrator = rig.default_integrator;
   CLI::App* sub = app.add_subcommand(std::string(rig.name), std::string(rig.summary));
   add_run_options(*sub, opt->run);
@@ -59,8 +47,7 @@ Command add_rig_command(CLI::App& app, const Rig& rig) {
   return {sub, [opt, &rig, sweeps]() {
             prepare_output_file("--csv", opt->csv_path, opt->mkdir);
             if (sweeps && (!opt->sweep.empty() || opt->threads))
-              return run_shaker_sweep_command(
-                  {opt->run, opt->inputs, opt->sweep, opt->csv_path, opt->threads, opt->json, opt->mkdir});
+              return run_shaker_sweep_command(*opt);
             const RigResult r = run_rig(rig, opt->run, load_paper_parameters(), opt->inputs);
             if (!opt->csv_path.empty()) {
               create_output_directories(opt->csv_path, opt->mkdir);

@@ -10,9 +10,10 @@
 
 namespace hertzdash::cli {
 
+/// What a rig's command was given (cli/rig_command.cpp); `sweep` and `threads` only for the shaker.
 struct ShakerSweepRequest {
   RunOptions run;
-  RigInputs shaker;
+  RigInputs inputs;
   std::string sweep, csv_path;
   std::optional<double> threads;
   bool json = false, mkdir = false;
