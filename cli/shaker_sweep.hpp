@@ -3,16 +3,17 @@
 // per value on every core, or under an MPI launcher on every process of the job (value i on rank
 // i mod size; rank 0 gathers the runs and writes the same file byte for byte), one CSV row per
 // kept impact (simulation/reports/shaker_sweep_report.hpp, docs/shaker.md).
-#include "hertzdash/simulation/reports/shaker_report.hpp"
+#include "hertzdash/simulation/rigs/shaker_rig.hpp"
 
 #include <optional>
 #include <string>
 
 namespace hertzdash::cli {
 
+/// What a rig's command was given (cli/rig_command.cpp); `sweep` and `threads` only for the shaker.
 struct ShakerSweepRequest {
   RunOptions run;
-  ShakerInputs shaker;
+  RigInputs inputs;
   std::string sweep, csv_path;
   std::optional<double> threads;
   bool json = false, mkdir = false;
