@@ -28,7 +28,6 @@
 //
 // Writes: OUT/bounce_sequence.csv and OUT/bounce_restitutions.csv (bounce_sequence.gp),
 // GENERATED/bounce_table.tex and GENERATED/bounce.tex (macros \bounce...).
-#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
@@ -209,11 +208,8 @@ int main(int argc, char** argv) try {
                            "(2.7 g ball, v_t {:.1f} m/s)\n",
                            rod_shift, rod_v_t, ball_shift, ball_v_t);
 
-  gaps.save(args.out_dir / "bounce_sequence.csv");
-  restitutions.save(args.out_dir / "bounce_restitutions.csv");
-  write_file_atomically(args.generated_dir / "bounce_table.tex", table);
-  macros.save(args.generated_dir / "bounce.tex");
-  return 0;
+  return save_study_outputs(args, "bounce", {{"bounce_sequence.csv", gaps}, {"bounce_restitutions.csv", restitutions}},
+                            table, macros);
 } catch (const std::exception& e) {
   return study_failed(argv[0], e);
 }

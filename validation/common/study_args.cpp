@@ -1,5 +1,7 @@
 #include "validation/common/study_args.hpp"
 
+#include "hertzdash/io/atomic_file.hpp"
+
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -39,6 +41,14 @@ StudyArgs parse_study_args(int argc, char** argv) {
 int study_failed(const char* program, const std::exception& e) {
   std::cerr << std::filesystem::path(program).filename().string() << ": error: " << e.what() << "\n";
   return 1;
+}
+
+int save_study_outputs(const StudyArgs& args, std::string_view name, const std::vector<StudyCsv>& csvs,
+                       const std::string& latex_table, const LatexMacros& macros) {
+  for (const StudyCsv& csv : csvs) csv.table.save(args.out_dir / csv.file);
+  write_file_atomically(args.generated_dir / (std::string(name) + "_table.tex"), latex_table);
+  macros.save(args.generated_dir / (std::string(name) + ".tex"));
+  return 0;
 }
 
 }  // namespace hertzdash

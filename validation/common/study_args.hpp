@@ -6,8 +6,14 @@
 // --reduced: a small, fast version of the study for the pipeline test;
 // --full: the full sample size of a study whose `make figures` size is cut to stay within a
 //   minute (validation/uncertainty: `make uncertainty`); studies without one run as usual.
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/latex_macros.hpp"
+
 #include <exception>
 #include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace hertzdash {
 
@@ -27,5 +33,17 @@ StudyArgs parse_study_args(int argc, char** argv);
 /// "<study>: error: <what>" on stderr and returns exit status 1, where an uncaught exception
 /// would abort with a core dump.
 int study_failed(const char* program, const std::exception& e);
+
+/// A CSV table of a study and its file name in --out.
+struct StudyCsv {
+  const char* file;
+  const CsvWriter& table;
+};
+
+/// What a study's main returns at its end (exit status 0) after writing its outputs, each file
+/// atomically, in this order: every CSV table into --out, then into --generated its LaTeX table
+/// as `<name>_table.tex` and its macros as `<name>.tex`.
+int save_study_outputs(const StudyArgs& args, std::string_view name, const std::vector<StudyCsv>& csvs,
+                       const std::string& latex_table, const LatexMacros& macros);
 
 }  // namespace hertzdash

@@ -30,7 +30,6 @@
 // Writes: OUT/elastic_rod_traces.csv (elastic_rod_instruments.gp), OUT/elastic_rod_spectra.csv
 // (elastic_rod_spectrum.gp), OUT/elastic_rod_heights.csv (elastic_rod_heights.gp),
 // GENERATED/elastic_rod_table.tex and GENERATED/elastic_rod.tex (macros \elastic...).
-#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/elastic_drop_test.hpp"
@@ -223,12 +222,10 @@ int main(int argc, char** argv) try {
   macros.add("elasticRuns", runs, "{:.0f}");
   macros.add("elasticEHigherRuns", e_higher, "{:.0f}");
 
-  traces.save(args.out_dir / "elastic_rod_traces.csv");
-  spectra.save(args.out_dir / "elastic_rod_spectra.csv");
-  sweep.save(args.out_dir / "elastic_rod_heights.csv");
-  write_file_atomically(args.generated_dir / "elastic_rod_table.tex", table);
-  macros.save(args.generated_dir / "elastic_rod.tex");
-  return 0;
+  return save_study_outputs(args, "elastic_rod",
+                            {{"elastic_rod_traces.csv", traces}, {"elastic_rod_spectra.csv", spectra},
+                             {"elastic_rod_heights.csv", sweep}},
+                            table, macros);
 } catch (const std::exception& e) {
   return study_failed(argv[0], e);
 }

@@ -45,7 +45,6 @@
 // GENERATED/measured_restitution_table.tex.
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/io/restitution_table.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
@@ -332,12 +331,10 @@ int main(int argc, char** argv) try {
                            joint_correlation)
             << contact_text;
 
-  curves.save(args.out_dir / "measured_restitution_curves.csv");
-  points.save(args.out_dir / "measured_restitution_points.csv");
-  laws_csv.save(args.out_dir / "measured_restitution_laws.csv");
-  write_file_atomically(args.generated_dir / "measured_restitution_table.tex", tex);
-  macros.save(args.generated_dir / "measured_restitution.tex");
-  return 0;
+  return save_study_outputs(args, "measured_restitution",
+                            {{"measured_restitution_curves.csv", curves}, {"measured_restitution_points.csv", points},
+                             {"measured_restitution_laws.csv", laws_csv}},
+                            tex, macros);
 } catch (const std::exception& e) {
   return study_failed(argv[0], e);
 }

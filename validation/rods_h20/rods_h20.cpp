@@ -20,7 +20,6 @@
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
-#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
@@ -100,10 +99,7 @@ int main(int argc, char** argv) try {
                              1e3 * s.contact_time_s, setup.restitution, s.e_effective);
   }
   table += "\\bottomrule\n\\end{tabular}\n";
-  csv.save(args.out_dir / "rods_h20.csv");
-  write_file_atomically(args.generated_dir / "rods_h20_table.tex", table);
-  macros.save(args.generated_dir / "rods_h20.tex");
-  return 0;
+  return save_study_outputs(args, "rods_h20", {{"rods_h20.csv", csv}}, table, macros);
 } catch (const std::exception& e) {
   return study_failed(argv[0], e);
 }

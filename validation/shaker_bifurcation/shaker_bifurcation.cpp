@@ -29,7 +29,6 @@
 // Writes: OUT/shaker_bifurcation_steel.csv, OUT/shaker_bifurcation_nylon.csv (model, law, gamma and the
 // kept impacts; shaker_bifurcation.gp), GENERATED/shaker_bifurcation_table.tex (the thresholds)
 // and GENERATED/shaker_bifurcation.tex (macros \shaker...).
-#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/wall_motion.hpp"
@@ -302,9 +301,7 @@ int main(int argc, char** argv) try {
   macros.add("shakerStiffeningRatio", std::pow(10.0, -0.4), "{:.2f}");
   const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   std::cout << fmt::format("shaker_bifurcation: {:.1f} s of CPU\n", cpu_s);
-  write_file_atomically(args.generated_dir / "shaker_bifurcation_table.tex", table);
-  macros.save(args.generated_dir / "shaker_bifurcation.tex");
-  return 0;
+  return save_study_outputs(args, "shaker_bifurcation", {}, table, macros);
 } catch (const std::exception& e) {
   return study_failed(argv[0], e);
 }

@@ -28,7 +28,6 @@
 // Writes: OUT/velocity_dependence.csv (velocity_dependence.gp), OUT/contact_pressure.csv
 // (contact_pressure.gp), GENERATED/velocity_dependence_table.tex and
 // GENERATED/velocity_dependence.tex (macros \velocity...).
-#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
@@ -227,11 +226,8 @@ int main(int argc, char** argv) try {
     macros.add_text("velocityLargestYieldClause", clause);
   }
 
-  sweep.save(args.out_dir / "velocity_dependence.csv");
-  pressure.save(args.out_dir / "contact_pressure.csv");
-  write_file_atomically(args.generated_dir / "velocity_dependence_table.tex", table);
-  macros.save(args.generated_dir / "velocity_dependence.tex");
-  return 0;
+  return save_study_outputs(args, "velocity_dependence",
+                            {{"velocity_dependence.csv", sweep}, {"contact_pressure.csv", pressure}}, table, macros);
 } catch (const std::exception& e) {
   return study_failed(argv[0], e);
 }
