@@ -27,7 +27,6 @@ BounceFit fit(const BounceRecording& r, const std::string& law = "hongo", bool c
   const PaperParameters paper = load_paper_parameters();
   const CheckedRecording c = check_bounce_recording(r);
   BounceFit f = fit_bounce_recording(c, r.path.string(), o, paper, s);
-  if (cross_validate) f.cross_validation = cross_validate_bounces(c, r.path.string(), o, paper, s, f);
   return f;
 }
 

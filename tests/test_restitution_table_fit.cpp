@@ -83,7 +83,6 @@ RestitutionFit fit(const RestitutionTable& t, const std::string& law, bool cross
   s.cross_validate = cross_validate;
   const PaperParameters paper = load_paper_parameters();
   RestitutionFit f = fit_restitution_table(t, o, paper, s);
-  if (cross_validate) f.cross_validation = cross_validate_restitution(t, o, paper, s, f);
   return f;
 }
 

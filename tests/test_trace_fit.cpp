@@ -587,8 +587,8 @@ TEST_CASE("CLI fit: a failed fit exits 3 and prints no identifiable, refusals ex
 // (the channel's noise_sigma, the cross-validation's scatter): their ratio is 1 within the spread
 // of an RMS over the n samples (1 / sqrt(2 n), n about 1300 at 1 MHz: 2 %) and of the weight's
 // robust estimate (a median absolute deviation: about 3 %); [0.85, 1.15] is about 4 of those.
-// The undamped law cannot make the rebound (e = 1 against 0.80): its prediction error is many
-// times the noise.
+// The undamped law cannot make the rebound (e = 1 against 0.80): with only E and the onset to
+// move, its best force pulse misses the measured one by several noise levels (asserted: 3).
 TEST_CASE("fit --trace --cross-validate: the law that made a trace predicts left-out samples to its noise",
           "[fit][cli]") {
   MeasurementChain chain;

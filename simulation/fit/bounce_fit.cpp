@@ -176,18 +176,10 @@ std::pair<RunOptions, BounceFitSettings> prepared(const RunOptions& given, const
 }  // namespace
 
 BounceFit fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& given,
-                               const PaperParameters& paper, const BounceFitSettings& settings,
-                               const std::optional<std::vector<double>>& start) {
+                               const PaperParameters& paper, const BounceFitSettings& settings) {
   const auto [base, own] = prepared(given, paper, settings);
   RecordingData d(data, path, base, paper, names_of(own.parameters));
-  return fit(d, base.damping, own, start);
-}
-
-CrossValidation cross_validate_bounces(const CheckedRecording& data, const std::string& path, const RunOptions& given,
-                                       const PaperParameters& paper, const BounceFitSettings& settings,
-                                       const BounceFit& f) {
-  const auto [base, own] = prepared(given, paper, settings);
-  return cross_validate(RecordingData(data, path, base, paper, names_of(own.parameters)), own, f);
+  return fit(d, base.damping, own);
 }
 
 BounceLawComparison compare_laws_on_bounces(const CheckedRecording& data, const std::string& path,

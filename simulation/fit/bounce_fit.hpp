@@ -43,7 +43,6 @@
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,16 +61,8 @@ void check_bounce_fit_options(const RunOptions& o);
 
 /// Fit the checked recording (`path`: for messages). Validates the options
 /// (check_bounce_fit_options, resolve_setup); throws DataError for fewer times than parameters.
-/// `start`, if given, replaces the law's starting values.
 BounceFit fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& base,
-                               const PaperParameters& paper, const BounceFitSettings& settings,
-                               const std::optional<std::vector<double>>& start = std::nullopt);
-
-/// Leave-one-drop-out cross-validation of `fit` (fit_bounce_recording's result for the same data,
-/// options and settings). Throws DataError for fewer than two drops.
-CrossValidation cross_validate_bounces(const CheckedRecording& data, const std::string& path, const RunOptions& base,
-                                       const PaperParameters& paper, const BounceFitSettings& settings,
-                                       const BounceFit& fit);
+                               const PaperParameters& paper, const BounceFitSettings& settings);
 
 /// Every registered law fitted (fit_engine.hpp's compare_laws).
 BounceLawComparison compare_laws_on_bounces(const CheckedRecording& data, const std::string& path,

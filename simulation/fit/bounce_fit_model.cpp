@@ -34,14 +34,8 @@ void check_bounce_fit_options(const RunOptions& o) {
 namespace hertzdash::bounce_fit_detail {
 
 BounceModel::BounceModel(RunOptions base, const PaperParameters& paper, std::vector<std::string> names)
-    : base_(std::move(base)), paper_(&paper), names_(std::move(names)) {
+    : FitModel(std::move(base), paper, std::move(names)) {
   base_.follows_flights = true;  // run_bounce_sequence's flights read the air drag
-}
-
-RunOptions BounceModel::options_at(const std::vector<double>& law) const {
-  RunOptions o = base_;
-  for (std::size_t j = 0; j < names_.size(); ++j) set_number(o, *find_run_option(names_[j]), law[j]);
-  return o;
 }
 
 const std::vector<ModelImpact>* BounceModel::impacts(const std::vector<double>& law, double v0, int count) {

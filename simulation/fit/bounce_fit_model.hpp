@@ -2,6 +2,7 @@
 // Internal to the bounce-recording fit (simulation/fit/bounce_fit.cpp; not installed): the model
 // of each drop's impact times (bounce_fit.hpp, "Model"): the bounce sequence run_bounce_sequence
 // follows from a first approach speed v0, for given values of the fitted options, cached.
+#include "hertzdash/simulation/fit/fit_parameters.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 
@@ -20,27 +21,17 @@ struct ModelImpact {
 /// The model of every drop: the bounce sequence for (the law's values, v0), its impacts by gbs8 in
 /// the regularising variables at rtol = atol = 1e-12 (restitution_model_solver), cached (the
 /// Jacobian's columns of one drop's speed and of t0 reuse the centre's runs).
-class BounceModel {
+class BounceModel : public fit_detail::FitModel {
  public:
   BounceModel(RunOptions base, const PaperParameters& paper, std::vector<std::string> names);
-
-  /// The run options with the fitted options (`names`) at `law`.
-  RunOptions options_at(const std::vector<double>& law) const;
 
   /// The first `count` impacts at (law, v0), or nullptr where the values leave the model's domain
   /// (the set-up refuses them, a run fails, the body comes to rest before impact count - 1).
   const std::vector<ModelImpact>* impacts(const std::vector<double>& law, double v0, int count);
 
-  int runs() const { return runs_; }
-  const std::string& integrator_used() const { return integrator_used_; }
 
  private:
-  RunOptions base_;
-  const PaperParameters* paper_;
-  std::vector<std::string> names_;
   std::map<std::vector<double>, std::optional<std::vector<ModelImpact>>> cache_;
-  int runs_ = 0;
-  std::string integrator_used_;
 };
 
 }  // namespace hertzdash::bounce_fit_detail

@@ -236,6 +236,60 @@ std::optional<double> profile_chi_square(Problem problem, std::size_t j, double 
   }
 }
 
+// Cross-validation of `fit`, the result of fit(data, ..., settings) (fit_engine.hpp, "Cross-validation").
+CrossValidation cross_validate(const FitData& data, const FitSettings& settings, const FitResult& fit) {
+  CrossValidation cv;
+  cv.folds = data.folds();
+  const std::size_t pl = settings.parameters.size();
+  std::vector<double> law, nuisances;
+  for (std::size_t j = 0; j < pl; ++j) law.push_back(fit.parameters[j].estimate);
+  {  // this data's nuisance values, in its order: the reported ones after the law's, each group's in turn
+    std::size_t reported = pl;
+    std::vector<std::size_t> in_group(fit.groups.size(), 0);
+    for (const Nuisance& u : data.nuisances())
+      nuisances.push_back(u.group ? fit.groups[*u.group].nuisances[in_group[*u.group]++].estimate
+                                  : fit.parameters[reported++].estimate);
+  }
+  FitSettings fold = settings;
+  fold.profile_intervals = fold.cross_validate = false;
+  double sum_sq = 0, dof = 0;
+  for (std::size_t k = 0; k < cv.folds; ++k) {
+    try {
+      const std::unique_ptr<FitData> rest = data.part(k, false, nuisances), held = data.part(k, true, nuisances);
+      const FitResult f = hertzdash::fit(*rest, fit.law, fold, law);
+      if (f.failed) throw std::runtime_error(f.failure);
+      // The left-out part: the law fixed at the rest's estimate, its own nuisances fitted.
+      Problem problem = problem_of(*held, settings.parameters);
+      for (std::size_t j = 0; j < pl; ++j) problem.z.push_back(problem.law[j].z(f.parameters[j].estimate));
+      std::vector<double> z0;
+      for (const Nuisance& u : problem.nuisances) {
+        problem.free.push_back(problem.z.size());
+        problem.z.push_back(u.variable(u.start));
+        z0.push_back(problem.z.back());
+      }
+      const Solution s = solve(problem, z0, fold);
+      if (!(s.rss < outside_residual)) throw std::runtime_error("the model cannot be evaluated on the left-out data");
+      for (std::size_t i = 0; i < held->rows(); ++i) sum_sq += std::pow(s.f[i] * held->row(i).unit, 2);
+      dof += static_cast<double>(held->rows()) - static_cast<double>(problem.nuisances.size());
+    } catch (const DataError&) {
+      throw;
+    } catch (const std::exception& e) {
+      cv.failure = fmt::format("the fit without {}: {}", data.fold_name(k), e.what());
+      return cv;
+    }
+  }
+  cv.rms_prediction_error = std::sqrt(sum_sq / dof);
+  if (data.sd_known()) {
+    double s = 0;
+    for (const FitPoint& pt : fit.points) s += pt.unit * pt.unit;
+    cv.scatter = std::sqrt(s / static_cast<double>(fit.points.size()));
+  } else {
+    cv.scatter = fit.sigma;
+  }
+  cv.ratio = cv.scatter > 0 ? cv.rms_prediction_error / cv.scatter : inf;
+  return cv;
+}
+
 }  // namespace
 
 const FittedParameter& FitResult::parameter(const std::string& name) const {
@@ -375,58 +429,6 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& settings
   return fit;
 }
 
-CrossValidation cross_validate(const FitData& data, const FitSettings& settings, const FitResult& fit) {
-  CrossValidation cv;
-  cv.folds = data.folds();
-  const std::size_t pl = settings.parameters.size();
-  std::vector<double> law, nuisances;
-  for (std::size_t j = 0; j < pl; ++j) law.push_back(fit.parameters[j].estimate);
-  {  // this data's nuisance values, in its order: the reported ones after the law's, each group's in turn
-    std::size_t reported = pl;
-    std::vector<std::size_t> in_group(fit.groups.size(), 0);
-    for (const Nuisance& u : data.nuisances())
-      nuisances.push_back(u.group ? fit.groups[*u.group].nuisances[in_group[*u.group]++].estimate
-                                  : fit.parameters[reported++].estimate);
-  }
-  FitSettings fold = settings;
-  fold.profile_intervals = fold.cross_validate = false;
-  double sum_sq = 0, dof = 0;
-  for (std::size_t k = 0; k < cv.folds; ++k) {
-    try {
-      const std::unique_ptr<FitData> rest = data.part(k, false, nuisances), held = data.part(k, true, nuisances);
-      const FitResult f = hertzdash::fit(*rest, fit.law, fold, law);
-      if (f.failed) throw std::runtime_error(f.failure);
-      // The left-out part: the law fixed at the rest's estimate, its own nuisances fitted.
-      Problem problem = problem_of(*held, settings.parameters);
-      for (std::size_t j = 0; j < pl; ++j) problem.z.push_back(problem.law[j].z(f.parameters[j].estimate));
-      std::vector<double> z0;
-      for (const Nuisance& u : problem.nuisances) {
-        problem.free.push_back(problem.z.size());
-        problem.z.push_back(u.variable(u.start));
-        z0.push_back(problem.z.back());
-      }
-      const Solution s = solve(problem, z0, fold);
-      if (!(s.rss < outside_residual)) throw std::runtime_error("the model cannot be evaluated on the left-out data");
-      for (std::size_t i = 0; i < held->rows(); ++i) sum_sq += std::pow(s.f[i] * held->row(i).unit, 2);
-      dof += static_cast<double>(held->rows()) - static_cast<double>(problem.nuisances.size());
-    } catch (const DataError&) {
-      throw;
-    } catch (const std::exception& e) {
-      cv.failure = fmt::format("the fit without {}: {}", data.fold_name(k), e.what());
-      return cv;
-    }
-  }
-  cv.rms_prediction_error = std::sqrt(sum_sq / dof);
-  if (data.sd_known()) {
-    double s = 0;
-    for (const FitPoint& pt : fit.points) s += pt.unit * pt.unit;
-    cv.scatter = std::sqrt(s / static_cast<double>(fit.points.size()));
-  } else {
-    cv.scatter = fit.sigma;
-  }
-  cv.ratio = cv.scatter > 0 ? cv.rms_prediction_error / cv.scatter : inf;
-  return cv;
-}
 
 std::vector<FitParameter> law_fit_parameters(const RunOptions& base) {
   if (registered_law(base.damping).material_time_constant) return parse_fit_parameters("viscous-time-constant");

@@ -234,9 +234,6 @@ class FitData {
 FitResult fit(FitData& data, const std::string& law, const FitSettings& settings,
               const std::optional<std::vector<double>>& start = std::nullopt);
 
-/// Cross-validation of `fit` (the result of fit(data, ..., settings)).
-CrossValidation cross_validate(const FitData& data, const FitSettings& settings, const FitResult& fit);
-
 /// One law of a law comparison: the options with `damping` set to it and every given option it
 /// does not read cleared, the fit's parameters it reads (empty: the law's own), both kinds named
 /// in `left_out`; `refusal` says why it cannot be fitted (empty if it can).

@@ -46,6 +46,12 @@ double calibrated_time_constant(const RunOptions& base, const PaperParameters& p
 
 }  // namespace
 
+RunOptions fit_detail::FitModel::options_at(const std::vector<double>& values) const {
+  RunOptions o = base_;
+  for (std::size_t j = 0; j < names_.size(); ++j) set_number(o, *find_run_option(names_[j]), values[j]);
+  return o;
+}
+
 double fit_detail::mean(const std::vector<double>& v) {
   return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
 }

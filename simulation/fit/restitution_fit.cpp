@@ -107,25 +107,13 @@ RestitutionFitSettings with_parameters(const RunOptions& base, RestitutionFitSet
 
 }  // namespace
 
-std::unique_ptr<FitData> restitution_table_data(const RestitutionTable& table, const RunOptions& base,
-                                                const PaperParameters& paper, const std::vector<std::string>& names) {
-  return std::make_unique<TableData>(table, base, paper, names);
-}
-
 RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOptions& base, const PaperParameters& paper,
-                                     const RestitutionFitSettings& given, const std::optional<std::vector<double>>& start) {
+                                     const RestitutionFitSettings& given) {
   check_restitution_fit_options(base);
   resolve_setup(base, paper);  // the options' own refusals first
   const RestitutionFitSettings settings = with_parameters(base, given);
   TableData data(table, base, paper, names_of(settings.parameters));
-  return fit(data, base.damping, settings, start);
-}
-
-CrossValidation cross_validate_restitution(const RestitutionTable& table, const RunOptions& base,
-                                           const PaperParameters& paper, const RestitutionFitSettings& given,
-                                           const RestitutionFit& f) {
-  const RestitutionFitSettings settings = with_parameters(base, given);
-  return cross_validate(TableData(table, base, paper, names_of(settings.parameters)), settings, f);
+  return fit(data, base.damping, settings);
 }
 
 RestitutionLawComparison compare_laws_on_restitution(const RestitutionTable& table, const RunOptions& base,
@@ -134,7 +122,7 @@ RestitutionLawComparison compare_laws_on_restitution(const RestitutionTable& tab
   check_restitution_fit_options(base);
   return compare_laws(
       [&](const RunOptions& o, const std::vector<FitParameter>& parameters) {
-        return restitution_table_data(table, o, paper, names_of(parameters));
+        return std::make_unique<TableData>(table, o, paper, names_of(parameters));
       },
       base, settings);
 }

@@ -42,7 +42,6 @@
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 
-#include <optional>
 #include <vector>
 
 namespace hertzdash {
@@ -58,23 +57,11 @@ using RestitutionLawComparison = LawComparison;
 /// `rod-E`, an iterated omega_n.
 void check_restitution_fit_options(const RunOptions& o);
 
-/// The table as a kind of data for the fit engine, for the law and fitted options `names` of `base`.
-std::unique_ptr<FitData> restitution_table_data(const RestitutionTable& table, const RunOptions& base,
-                                                const PaperParameters& paper, const std::vector<std::string>& names);
-
 /// Fit the table. Validates the options like `restitution` (InvalidParameter: the rod model
 /// rigid, no `impact-velocity` or `height` (the table gives the speeds), no `gravity`, a
 /// closed-form omega_n variant); throws DataError for a table with no more rows than parameters.
-/// `start`, if given, replaces the starting values.
 RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOptions& base, const PaperParameters& paper,
-                                     const RestitutionFitSettings& settings,
-                                     const std::optional<std::vector<double>>& start = std::nullopt);
-
-/// Leave-one-speed-out cross-validation of `fit` (fit_restitution_table's result for the same
-/// table, options and settings). Throws DataError for a table of fewer than two distinct speeds.
-CrossValidation cross_validate_restitution(const RestitutionTable& table, const RunOptions& base,
-                                           const PaperParameters& paper, const RestitutionFitSettings& settings,
-                                           const RestitutionFit& fit);
+                                     const RestitutionFitSettings& settings);
 
 /// Every registered law fitted (fit_engine.hpp's compare_laws), each cross-validated with
 /// settings.cross_validate.

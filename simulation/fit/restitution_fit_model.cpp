@@ -61,13 +61,7 @@ DropTestSetup restitution_contact(const RunOptions& o, const PaperParameters& pa
 }
 
 RestitutionModel::RestitutionModel(RunOptions base, const PaperParameters& paper, std::vector<std::string> names)
-    : base_(std::move(base)), paper_(&paper), names_(std::move(names)), simulator_(restitution_model_solver()) {}
-
-RunOptions RestitutionModel::options_at(const std::vector<double>& values) const {
-  RunOptions o = base_;
-  for (std::size_t j = 0; j < names_.size(); ++j) set_number(o, *find_run_option(names_[j]), values[j]);
-  return o;
-}
+    : FitModel(std::move(base), paper, std::move(names)), simulator_(restitution_model_solver()) {}
 
 std::optional<std::vector<double>> RestitutionModel::e_at(const std::vector<double>& values,
                                                          const std::vector<double>& speeds) {

@@ -2,6 +2,7 @@
 // Internal to the restitution-table fit (simulation/fit/restitution_fit.cpp; not installed): the
 // model (restitution_fit.hpp, "Model"): a law's effective restitution of one impact at each
 // speed, in the contact phase of `hertzdash restitution`, for given values of the fitted options.
+#include "hertzdash/simulation/fit/fit_parameters.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
@@ -21,26 +22,17 @@ SolverSettings restitution_model_solver();
 /// is given). Throws InvalidParameter for options the set-up refuses.
 DropTestSetup restitution_contact(const RunOptions& o, const PaperParameters& paper, double speed_mps);
 
-class RestitutionModel {
+class RestitutionModel : public fit_detail::FitModel {
  public:
   RestitutionModel(RunOptions base, const PaperParameters& paper, std::vector<std::string> names);
-
-  RunOptions options_at(const std::vector<double>& values) const;
 
   /// e_effective at each of `speeds` (0 where the rod does not separate), or nothing where the
   /// values leave the model's domain (the set-up refuses them, a run fails).
   std::optional<std::vector<double>> e_at(const std::vector<double>& values, const std::vector<double>& speeds);
 
-  int runs() const { return runs_; }
-  const std::string& integrator_used() const { return integrator_used_; }
 
  private:
-  RunOptions base_;
-  const PaperParameters* paper_;
-  std::vector<std::string> names_;
   ImpactSimulator simulator_;
-  int runs_ = 0;
-  std::string integrator_used_;
 };
 
 }  // namespace hertzdash::restitution_fit_detail

@@ -6,26 +6,14 @@
 
 namespace hertzdash::trace_fit_detail {
 
-namespace {
-
-void set_option(RunOptions& o, const std::string& name, double value) { set_number(o, *find_run_option(name), value); }
-
-}  // namespace
-
 TraceModel::TraceModel(RunOptions base, const PaperParameters& paper, std::vector<std::string> names,
                        int steps_per_contact)
-    : base_(std::move(base)), paper_(&paper), names_(std::move(names)) {
+    : FitModel(std::move(base), paper, std::move(names)) {
   const DropTestSetup s = onset_setup(base_);
   time_scale_s_ = undamped_hertz_impact(hertz_stiffness(s), s.mass_kg, approach_speed(s)).contact_time_s;
   solver_.integrator = IntegratorKind::rk4;
   solver_.dt_s = time_scale_s_ / steps_per_contact;
   simulator_.emplace(solver_);
-}
-
-RunOptions TraceModel::options_at(const std::vector<double>& values) const {
-  RunOptions o = base_;
-  for (std::size_t j = 0; j < names_.size(); ++j) set_option(o, names_[j], values[j]);
-  return o;
 }
 
 const ImpactHistory* TraceModel::history(const std::vector<double>& values) {
