@@ -1,5 +1,5 @@
 // Peer: GSL odeiv2 rk8pd on hertzdash's regularised contact, as a knowledgeable user
-// would hand it the same polynomial right-hand side (RegularizedContact<HongoPaper>::rhs).
+// would hand it the same polynomial right-hand side (ContactSystem<HongoPaper, FixedWall>::rhs).
 //
 // gsl_odeiv2_evolve_apply with a y_new(atol, rtol) control advances one adaptive step
 // in tau at a time from onset (u, v, t) = (0, v0, 0); the step, control and evolve
@@ -19,7 +19,7 @@ namespace hertzdash::bench {
 
 namespace {
 
-using Contact = RegularizedContact<HongoPaper>;
+using Contact = ContactSystem<HongoPaper, FixedWall>;
 
 struct GslContext {
   const Contact* sys;

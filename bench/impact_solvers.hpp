@@ -10,7 +10,7 @@
 //   - regularised variables: Boost.Odeint bulirsch_stoer (controlled, and
 //     bulirsch_stoer_dense_out), runge_kutta_dopri5 (controlled, dense output) and GSL
 //     rk8pd, handed exactly hertzdash's regularised contact
-//     (RegularizedContact<HongoPaper>::rhs: the polynomial right-hand side in
+//     (ContactSystem<HongoPaper, FixedWall>::rhs: the polynomial right-hand side in
 //     u = x^{1/2}, v = x', t against tau), the fall in closed form as hertzdash does,
 //     and the same separation event (u falls through 0).
 //
@@ -19,7 +19,8 @@
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/drop_test.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
-#include "hertzdash/model/regularized_contact.hpp"
+#include "hertzdash/model/contact_environments.hpp"
+#include "hertzdash/model/contact_system.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <algorithm>
@@ -84,7 +85,7 @@ struct RegularizedPeerImpact {
   explicit RegularizedPeerImpact(const DropTestSetup& setup)
       : v0_mps(approach_speed(setup)),
         sys(ImpactConditions{hertz_stiffness(setup), setup.mass_kg, v0_mps, setup.restitution}, setup.damping,
-            setup.gravity_mps2),
+            FixedWall{setup.gravity_mps2}),
         y0(sys.initial_state()) {
     const double X = hertz_impact_scale_m(hertz_stiffness(setup), setup.mass_kg, v0_mps);
     tau_scale = (X / v0_mps) / (2 * std::sqrt(X));
@@ -93,8 +94,8 @@ struct RegularizedPeerImpact {
   RegularizedPeerImpact& operator=(const RegularizedPeerImpact&) = delete;
 
   double v0_mps;
-  RegularizedContact<HongoPaper> sys;
-  RegularizedContact<HongoPaper>::State y0;
+  ContactSystem<HongoPaper, FixedWall> sys;
+  ContactSystem<HongoPaper, FixedWall>::State y0;
   double tau_scale = 0;
 };
 

@@ -1,5 +1,5 @@
 // Peers: Boost.Odeint on hertzdash's regularised contact, as a knowledgeable user would
-// hand it the same polynomial right-hand side (RegularizedContact<HongoPaper>::rhs).
+// hand it the same polynomial right-hand side (ContactSystem<HongoPaper, FixedWall>::rhs).
 //
 // From onset (u, v, t) = (0, v0, 0) the stepper advances in tau until u falls through
 // 0 (separation); the rebound speed is -v there, e_eff = -v / v0.
@@ -25,7 +25,7 @@ namespace {
 
 namespace odeint = boost::numeric::odeint;
 using State3 = std::array<double, 3>;
-using Contact = RegularizedContact<HongoPaper>;
+using Contact = ContactSystem<HongoPaper, FixedWall>;
 
 struct CountingRhs {
   const Contact* sys;

@@ -71,7 +71,7 @@ struct DormandPrinceOptions {
   /// The right-hand side may be singular where an event restarts it or lands a step
   /// (a sqrt(t - t_on) force): check those steps by step doubling (see "Singular
   /// points"). false for a system smooth there (e.g. the contact in regularising
-  /// variables, model/regularized_contact.hpp): every step is then controlled by
+  /// variables, model/contact_system.hpp): every step is then controlled by
   /// the embedded estimate alone.
   bool singular_points = true;
 };

@@ -19,7 +19,7 @@
 // form one dependent chain; for a small system whose cost is the latency of each
 // evaluation, order 8 then costs little more per step than order 5 and takes far
 // fewer steps. Only for right-hand sides smooth over each step: use it on the contact
-// in regularising variables (model/regularized_contact.hpp), not on the square-root
+// in regularising variables (model/contact_system.hpp), not on the square-root
 // singularities of the physical variables.
 //
 // Events: after each accepted step, a g_i that went from > 0 to <= 0 is located on the

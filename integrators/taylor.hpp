@@ -42,7 +42,7 @@
 // functions, `polynomial_rhs(y)` and `polynomial_events(y)` over any ring scalar type
 // with a derivative, returning std::tuples of the components of y' and of the events
 // (PolynomialOdeSystem below), e.g. the regularised contact
-// (model/regularized_contact.hpp) of a law declaring force_of_root.
+// (model/contact_system.hpp) of a law declaring force_of_root.
 //
 // Work reported: one right-hand-side evaluation per Taylor coefficient of the state
 // (p per step), the closest equivalent of the other integrators' count; the event

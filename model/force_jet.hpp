@@ -6,7 +6,7 @@
 // returns (F, F_u, F_xdot), exact to rounding:
 //   (a, a_u, a_v) * (b, b_u, b_v) = (a b, a_u b + a b_u, a_v b + a b_v)
 // and linearly for sums and products with doubles. The regularised contact's peak-force
-// event (model/regularized_contact.hpp) takes its rate dF/dtau = F_u u' + F_xdot xdot'
+// event (model/contact_system.hpp) takes its rate dF/dtau = F_u u' + F_xdot xdot'
 // from it, in one evaluation where differences need three.
 
 namespace hertzdash {

@@ -27,7 +27,7 @@ namespace hertzdash {
 
 /// The oscillator: mass [kg] > 0, stiffness [N/m] >= 0, damping ratio in [0, 1), harmonic force
 /// F0 sin(w t + phi) [N] at w [rad/s] > 0 with phase phi [rad], constant force [N]. The damper's
-/// soft contact (model/damper_contact.hpp) reads phi = 0.
+/// soft contact (SprungPrimary, model/contact_environments.hpp) reads phi = 0.
 struct ForcedOscillator {
   double mass_kg = 1, stiffness_N_per_m = 1, damping_ratio = 0, force_amplitude_N = 0, omega_rad_per_s = 1,
          constant_force_N = 0, force_phase_rad = 0;

@@ -4,7 +4,7 @@
 // fewest Taylor series any step rule needs for the contact, against which the benchmark
 // reads the Taylor path's own count (paper, Section "Performance").
 //
-// In the variables of model/regularized_contact.hpp, without damping and gravity, the
+// In the variables of model/contact_system.hpp, without damping and gravity, the
 // contact is u'' = -(2K/m) u^4 (u = x^{1/2}, ' = d/dtau). Scaled to w'' = -w^4 with
 // w(0) = 0, w'(0) = 1, energy gives w'^2 = 1 - (2/5) w^5, so w rises to
 // w_m = (5/2)^{1/5} and falls back to 0 after the tau-duration 2 S with

@@ -9,7 +9,7 @@
 // with the dimensionless acceleration Gamma = A w^2 / g. In contact the overlap x = s - y obeys
 //   m x'' = m (g + s''(t)) - F(x, x')
 // (body: m y'' = -m g + F): the drop test's equation with the wall's acceleration as an extra,
-// prescribed forcing m s''(t) (model/shaken_contact.hpp).
+// prescribed forcing m s''(t) (model/contact_environments.hpp).
 // A body resting on the wall (x' = 0, no impact) is carried while the wall pushes it,
 // s''(t) > -g, and leaves it where the wall's acceleration falls below -g: sin(w t) > 1/Gamma,
 // never if Gamma <= 1.

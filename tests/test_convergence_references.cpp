@@ -4,7 +4,8 @@
 #include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/model/drop_test.hpp"
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/model/regularized_contact.hpp"
+#include "hertzdash/model/contact_environments.hpp"
+#include "hertzdash/model/contact_system.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
@@ -78,17 +79,17 @@ TEST_CASE("Regularised contact reproduces the undamped closed forms") {
   const DropTestSetup s = steel_at_contact();
   const double K = hertz_stiffness(s), m = s.mass_kg, v0 = *s.impact_velocity_mps;
   const UndampedHertzImpact u = undamped_hertz_impact(K, m, v0);
-  RegularizedContact<Undamped> sys(ImpactConditions{K, m, v0, s.restitution}, s.damping, 0.0);
+  ContactSystem<Undamped, FixedWall> sys(ImpactConditions{K, m, v0, s.restitution}, s.damping, FixedWall{0.0});
   auto y = sys.initial_state();
   double peak = 0, x_max = 0;
   struct Obs {
-    const RegularizedContact<Undamped>& sys;
+    const ContactSystem<Undamped, FixedWall>& sys;
     double &peak, &x_max;
-    void on_step(double, const RegularizedContact<Undamped>::State& y) {
+    void on_step(double, const ContactSystem<Undamped, FixedWall>::State& y) {
       peak = std::max(peak, sys.force(y));
       x_max = std::max(x_max, y[0] * y[0]);
     }
-    void on_event(int, double, const RegularizedContact<Undamped>::State&, EventAction) {}
+    void on_event(int, double, const ContactSystem<Undamped, FixedWall>::State&, EventAction) {}
   } obs{sys, peak, x_max};
   // tau extent of the contact: tc / (2 sqrt(X)) times O(1); 400 steps of a tenth of the scale suffice.
   const double tau_step = u.contact_time_s / (2 * std::sqrt(u.max_deformation_m)) / 400;

@@ -1,6 +1,6 @@
 // The fast path dopri5-regularized (simulation/run/regularized_impact.hpp): the
 // free fall in closed form, the contact in regularising variables u = x^{1/2},
-// dt/dtau = 2u (model/regularized_contact.hpp) with Dormand-Prince 5(4), and the
+// dt/dtau = 2u (model/contact_system.hpp) with Dormand-Prince 5(4), and the
 // laws' declarations force_of_root(u, v) = force(u^2, v) (RootPolynomialLaw) it
 // relies on.
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"

@@ -85,7 +85,7 @@ TEST_CASE("dopri5: undamped Hertz impact against the closed forms, error proport
   // after onset is checked by step doubling and the landing on separation too, so the
   // error stays proportional to the tolerance: within 10 tol, exponent 1 +- 0.2.
   // dopri5-regularized integrates the contact in u = x^{1/2}, where the right-hand side
-  // is the polynomial K u^3 (model/regularized_contact.hpp): there the embedded
+  // is the polynomial K u^3 (model/contact_system.hpp): there the embedded
   // estimate is reliable everywhere, with the same bounds and no checks; and so is the
   // order-8 extrapolation method there (gbs8-regularized).
   const DropTestSetup setup = steel_contact_setup(0.0);

@@ -352,7 +352,7 @@ TEST_CASE("two walls: the damper's stiff soft contact converges to the map of it
   // The symmetric orbit of the Masri-Caughey test above (horizontal box, zeta 0.05, resonance,
   // gap 10 mm, input e = 0.6) with the soft contact of a steel pair (E = 200 GPa times
   // `stiffening`): the contact force acts on the body and the primary, integrated together
-  // (model/damper_contact.hpp). Its orbit must be the instantaneous map's with e = the soft run's
+  // (model/contact_environments.hpp). Its orbit must be the instantaneous map's with e = the soft run's
   // own e_effective (its closed form, masri_caughey above), to O(t_c / T) in phase and speed, the
   // difference falling by 10^{-2/5} = 0.398 a decade of stiffness (t_c ~ stiffening^{-2/5};
   // margin 0.1). Integration (gbs8-regularized, 1e-10) and root search errors: far below.

@@ -126,7 +126,7 @@ RingScalar operator-(RingScalar, double);
 /// using only +, - and * (and doubles), so that it also evaluates on power series (the
 /// Taylor integrator generates the Taylor coefficients of the contact from it). Its
 /// smooth continuation to u < 0 is what makes the contact in regularising variables
-/// (model/regularized_contact.hpp) smooth through onset and separation.
+/// (model/contact_system.hpp) smooth through onset and separation.
 template <class L>
 concept RootPolynomialLaw = DampingLaw<L> && requires(const L& law, double u, detail::RingScalar r) {
   { law.force_of_root(u, u) } -> std::same_as<double>;

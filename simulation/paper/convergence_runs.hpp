@@ -24,7 +24,8 @@
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/model/drop_test.hpp"
-#include "hertzdash/model/regularized_contact.hpp"
+#include "hertzdash/model/contact_environments.hpp"
+#include "hertzdash/model/contact_system.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
@@ -222,7 +223,7 @@ Measurement measure_cvode(const ConvergenceProblem& p, CvodeMethod method, doubl
 }
 
 // ---------------------------------------------------------------------------
-// Runs in the regularised variables (u = x^{1/2}, tau): model/regularized_contact.hpp.
+// Runs in the regularised variables (u = x^{1/2}, tau): model/contact_system.hpp.
 
 namespace detail {
 
@@ -235,11 +236,11 @@ template <class System> struct RegularizedObserver {
     q->max_deformation_m = std::max(q->max_deformation_m, y[0] * y[0]);
   }
   void on_event(int which, double, const typename System::State& y, EventAction) {
-    if (which == event_index(RegularizedContactEvent::separation)) {
+    if (which == event_index(ContactEvent::separation)) {
       q->e_effective = -y[1] / v0;
       q->contact_time_s = y[2];
     }
-    if (which == event_index(RegularizedContactEvent::observation_time)) q->at_t_star = {y[0] * y[0], y[1]};
+    if (which == event_index(ContactEvent::observation_time)) q->at_t_star = {y[0] * y[0], y[1]};
   }
 };
 
@@ -250,7 +251,7 @@ template <class System> struct RegularizedObserver {
 /// then tau_c / N).
 template <DampingLaw Law> double regularized_contact_tau(const ConvergenceProblem& p) {
   const ImpactConditions c{p.K, p.setup.mass_kg, p.v0_mps, p.setup.restitution};
-  RegularizedContact<Law> sys(c, p.setup.damping, p.setup.gravity_mps2);
+  ContactSystem<Law, FixedWall> sys(c, p.setup.damping, FixedWall{p.setup.gravity_mps2});
   auto y = sys.initial_state();
   NullObserver none;
   // The undamped contact lasts ~1.5 tau_scale; 10 leaves room for any law of the family.
@@ -265,8 +266,8 @@ template <DampingLaw Law> double regularized_contact_tau(const ConvergenceProble
 template <class Method, DampingLaw Law>
 Measurement measure_regularized(const ConvergenceProblem& p, double dtau, double min_timing_s = 0) {
   const ImpactConditions c{p.K, p.setup.mass_kg, p.v0_mps, p.setup.restitution};
-  using System = RegularizedContact<Law>;
-  System sys(c, p.setup.damping, p.setup.gravity_mps2, p.t_star_s);
+  using System = ContactSystem<Law, FixedWall>;
+  System sys(c, p.setup.damping, FixedWall{p.setup.gravity_mps2}, p.t_star_s);
   Measurement m;
   IntegrationStats stats;
   m.cpu_time_s = detail::cpu_time_per_call(min_timing_s, [&] {

@@ -15,7 +15,7 @@
 namespace hertzdash {
 
 /// The integrator `shaker` and `walls` run their soft contacts with unless told otherwise: their
-/// wall motion is a forcing of the regularised contact only (simulation/shaker/shaker_contact.hpp).
+/// wall motion is a forcing of the regularised contact only (simulation/run/soft_contact.hpp).
 inline constexpr const char* shaker_default_integrator = "gbs8-regularized";
 
 /// The shaker's own options as given (unset: the declaration's default).

@@ -12,7 +12,7 @@
 // A row's integrate(sys, y, t0, t1, settings, workspace, observer) integrates any
 // OdeSystem: the drop test in physical variables (model/drop_test.hpp) for rows with
 // Variables::physical, the contact in regularising variables
-// (model/regularized_contact.hpp, simulation/run/regularized_impact.hpp) for
+// (model/contact_system.hpp, simulation/run/regularized_impact.hpp) for
 // Variables::regularized.
 #include "hertzdash/integrators/cvode_integrator.hpp"
 #include "hertzdash/integrators/dormand_prince.hpp"

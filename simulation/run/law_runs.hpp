@@ -7,7 +7,9 @@
 // The dispatch is one table look-up per run; inside a run the force inlines into the integrator.
 #include "hertzdash/model/damping/damping_law.hpp"
 
+#include <memory>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 namespace hertzdash {
@@ -19,6 +21,16 @@ struct DropTestSetup;
 struct ImpactSummary;
 struct SolverSettings;
 struct TraceSample;
+struct HarmonicWall;
+struct SprungPrimary;
+struct OscillatorStop;
+template <class Env> class SoftContact;
+
+/// make_soft_contact_of<Law, Env> (simulation/run/soft_contact.hpp): the contacts with the
+/// environment Env, for the command named (in refusals).
+template <class Env>
+using SoftContactMaker = std::unique_ptr<SoftContact<Env>> (*)(const DropTestSetup& setup, const SolverSettings& solver,
+                                                               std::string_view command);
 
 /// One registered law's compiled runs.
 struct LawRuns {
@@ -32,6 +44,9 @@ struct LawRuns {
   /// (simulation/run/elastic_bounces.hpp).
   void (*run_elastic_bounces)(const DropTestSetup& setup, const SolverSettings& solver, const BounceOptions& options,
                               BounceSequence& out);
+  /// The soft contacts with each environment that has a rig (model/contact_environments.hpp).
+  std::tuple<SoftContactMaker<HarmonicWall>, SoftContactMaker<SprungPrimary>, SoftContactMaker<OscillatorStop>>
+      make_soft_contact;
 };
 
 /// The runs of the registered law named `law`; InvalidParameter("damping", ...) for an unknown name.

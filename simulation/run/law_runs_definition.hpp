@@ -1,5 +1,6 @@
 #pragma once
-// The definition of law_runs_of<Law> (simulation/run/law_runs.hpp): every run of a law, with the
+// The definition of law_runs_of<Law> (simulation/run/law_runs.hpp): every run of a law (the drop
+// test's impact, the elastic rod's bounces, the soft contact with every environment), with the
 // integrator templates they instantiate. Included only by the generated translation unit of each
 // registered law (simulation/run/law_instantiation.cpp.in), which compiles them once.
 #include "hertzdash/simulation/run/bounce_sequence.hpp"
@@ -7,6 +8,7 @@
 #include "hertzdash/simulation/run/impact_simulator_run.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/run/law_runs.hpp"
+#include "hertzdash/simulation/run/soft_contact_run.hpp"
 
 #include <type_traits>
 #include <vector>
@@ -46,6 +48,8 @@ template <DampingLaw Law> const LawRuns& law_runs_of() {
                        std::vector<TraceSample>* trace) { return simulator.run<Law>(setup, trace); },
       .calibrated_time_constant = detail::time_constant_calibration<Law>(),
       .run_elastic_bounces = &detail::run_elastic_bounce_sequence<Law>,
+      .make_soft_contact = {&make_soft_contact_of<Law, HarmonicWall>, &make_soft_contact_of<Law, SprungPrimary>,
+                            &make_soft_contact_of<Law, OscillatorStop>},
   };
   return runs;
 }

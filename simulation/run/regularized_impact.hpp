@@ -1,6 +1,6 @@
 #pragma once
 // One drop test the fast way: the free fall in closed form, then the contact in
-// regularising variables (model/regularized_contact.hpp) with any integrator of the
+// regularising variables (model/contact_system.hpp, the fixed wall of model/contact_environments.hpp) with any integrator of the
 // table whose row has Variables::regularized (dopri5-regularized, cvode-regularized,
 // gbs8-regularized, taylor-regularized).
 //
@@ -25,12 +25,13 @@
 // Not for the tension clamp (no_tension: contact ends where F reaches zero, an event
 // this system does not have); the integrator table falls back to the physical variables there.
 // Tolerances: rtol as given; atol relative to the scales X^{1/2}, v0 and t_H of u, v and t
-// (RegularizedContact::state_scale).
+// (ContactSystem::state_scale).
 // The integrator is a callable integrate(system, y, tau0, tau1, observer) ->
 // IntegrationStats over the system ContactUntil<Law> below.
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/model/hertz.hpp"
-#include "hertzdash/model/regularized_contact.hpp"
+#include "hertzdash/model/contact_environments.hpp"
+#include "hertzdash/model/contact_system.hpp"
 #include "hertzdash/simulation/run/impact_summary.hpp"
 
 #include <algorithm>
@@ -44,21 +45,21 @@ namespace detail {
 /// The regularised contact, stopped at separation or at its observation time, 20 undamped
 /// contact times after onset (the end of a contact that never separates).
 template <DampingLaw Law>
-struct ContactUntil : RegularizedContact<Law> {
+struct ContactUntil : ContactSystem<Law, FixedWall> {
   ContactUntil(const ImpactConditions& c, const DampingSettings& s, double gravity_mps2)
-      : RegularizedContact<Law>(c, s, gravity_mps2) {
+      : ContactSystem<Law, FixedWall>(c, s, FixedWall{gravity_mps2}) {
     this->set_observation_time_s(20.0 * this->state_scale()[2]);
   }
-  EventAction handle_event(int which, double tau, const typename RegularizedContact<Law>::State& y) const {
-    if (which == event_index(RegularizedContactEvent::observation_time)) return EventAction::stop;
-    return RegularizedContact<Law>::handle_event(which, tau, y);
+  EventAction handle_event(int which, double tau, const typename ContactSystem<Law, FixedWall>::State& y) const {
+    if (which == event_index(ContactEvent::observation_time)) return EventAction::stop;
+    return ContactSystem<Law, FixedWall>::handle_event(which, tau, y);
   }
 };
 
 /// Builds the summary (and the optional trace, physical variables) from the steps.
 template <DampingLaw Law>
 class RegularizedImpactObserver {
-  using State = typename RegularizedContact<Law>::State;
+  using State = typename ContactSystem<Law, FixedWall>::State;
 
  public:
   RegularizedImpactObserver(const ContactUntil<Law>& sys, const DropTestSetup& setup, double t_onset_s,
@@ -74,7 +75,7 @@ class RegularizedImpactObserver {
       trace_->push_back(rigid_trace_sample(t_onset_s_ + y[2], x, y[1], F, gravity_mps2_ - F / mass_kg_, x + height_m_, y[1]));
   }
   void on_event(int which, double, const State& y, EventAction) {
-    if (which != event_index(RegularizedContactEvent::separation)) return;
+    if (which != event_index(ContactEvent::separation)) return;
     s_->separated = true;
     s_->t_separation_s = t_onset_s_ + y[2];
     s_->rebound_velocity_mps = std::max(-y[1], 0.0);

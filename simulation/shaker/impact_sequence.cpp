@@ -303,7 +303,7 @@ class SequenceRun {
       impact.rebound_speed_mps = impact.impact_speed_mps;  // a touch too slow for a contact: carried below
     } else {
       const double t_obs = 2.0 / s_.frequency_Hz;
-      const SoftContactOutcome c = s_.soft(hit, ti, impact.impact_speed_mps, X, V, t_obs);
+      const SoftImpact c = s_.soft(hit, ti, impact.impact_speed_mps, X, V, t_obs);
       out_.work.add_work(c.work);
       impact.contact_time_s = c.contact_time_s;
       impact.peak_force_N = c.peak_force_N;

@@ -80,7 +80,7 @@ struct SequenceWall {
 };
 
 /// What one soft contact gave.
-struct SoftContactOutcome {
+struct SoftImpact {
   bool separated = false;        ///< false: still in contact at the observation time
   double contact_time_s = 0;     ///< onset to separation [s]
   double rebound_speed_mps = 0;  ///< the relative speed at separation, away from the wall [m/s]
@@ -90,8 +90,8 @@ struct SoftContactOutcome {
 };
 /// The contact with wall `wall` beginning at t_onset [s] at relative speed v0 > 0 [m/s], the box at
 /// X [m], V [m/s], followed for at most t_obs [s].
-using SoftContactRun =
-    std::function<SoftContactOutcome(Wall wall, double t_onset_s, double v0_mps, double X_m, double V_mps, double t_obs_s)>;
+using SoftImpactRun =
+    std::function<SoftImpact(Wall wall, double t_onset_s, double v0_mps, double X_m, double V_mps, double t_obs_s)>;
 
 /// A rig's sequence (see above). The oscillators' w is the drive's.
 struct ImpactSequenceSpec {
@@ -105,7 +105,7 @@ struct ImpactSequenceSpec {
   int carried_by = -1;                                         ///< >= 0: carried by that wall
   int impacts = 100, transient = 1000;
   double restitution = 1;   ///< instantaneous impacts' e
-  SoftContactRun soft;      ///< set: soft impacts
+  SoftImpactRun soft;      ///< set: soft impacts
   PatternTolerance pattern;
   bool energy = false;      ///< keep the energy account (a box of mass M or at rest)
   enum class Sampled { none, box, body } sampled = Sampled::none;

@@ -2,8 +2,10 @@
 #include "hertzdash/simulation/shaker/oscillator.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/run/soft_contact.hpp"
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 namespace hertzdash {
@@ -37,12 +39,21 @@ OscillatorRun run_oscillator(const DropTestSetup& setup, std::string_view law, c
                           .y0_m = o.start_position_m, .u0_mps = o.start_velocity_mps, .impacts = o.impacts,
                           .transient = o.transient, .restitution = setup.restitution, .pattern = o.pattern,
                           .energy = true, .sampled = ImpactSequenceSpec::Sampled::body};
-  if (o.impact_model == ShakerImpactModel::soft)
-    throw InvalidParameter("impact-model", "soft", "instantaneous (the soft stop is not wired yet)");
-  (void)law;
-  (void)solver;
+  std::unique_ptr<SoftContact<OscillatorStop>> contact;
+  if (o.impact_model == ShakerImpactModel::soft) {  // the stop's contact (model/contact_environments.hpp)
+    contact = make_soft_contact<OscillatorStop>(law, setup, solver, "oscillator");
+    const OscillatorStop stop{k, body.damping_N_s_per_m(), o.force_amplitude_N, w, d};
+    spec.soft = [&contact, stop](Wall, double t, double v0, double, double, double t_obs) {
+      OscillatorStop at = stop;
+      at.t_onset_s = t;
+      const auto c = contact->run(at, v0, t_obs);
+      return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
+                        .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work};
+    };
+  }
   OscillatorRun out{run_impact_sequence(spec)};
   out.impact_model = o.impact_model;
+  if (contact) out.integrator_used = contact->integrator_used();
   out.steady_amplitude_m = body.steady_amplitude_m();
   return out;
 }

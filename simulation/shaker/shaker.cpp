@@ -1,8 +1,7 @@
 #include "hertzdash/simulation/shaker/shaker.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/run/law_runs.hpp"
-#include "hertzdash/simulation/shaker/shaker_contact.hpp"
+#include "hertzdash/simulation/run/soft_contact.hpp"
 
 #include <fmt/format.h>
 
@@ -56,17 +55,13 @@ ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const Sol
       .frequency_Hz = wall.frequency_Hz, .speed_scale_mps = g * T, .t0_s = t0, .y0_m = start.height_m,
       .carried_by = start.height_m > 0 ? -1 : 0, .impacts = options.impacts, .transient = options.transient,
       .restitution = setup.restitution, .pattern = options.pattern};
-  std::unique_ptr<ShakerContact> contact;
+  std::unique_ptr<SoftContact<HarmonicWall>> contact;
   if (options.impact_model == ShakerImpactModel::soft) {
-    DropTestSetup s = setup;
-    const LawRuns& runs = law_runs(law);
-    if (runs.calibrated_time_constant && !s.damping.viscous_time_constant_s) s = runs.calibrated_time_constant(s);
-    contact = make_shaker_contact(law, s, solver, wall);
-    spec.soft = [&contact](Wall, double t, double v0, double, double, double t_obs) {
-      const ShakerContactOutcome c = contact->run(t, v0, t_obs);
-      return SoftContactOutcome{.separated = c.separated, .contact_time_s = c.contact_time_s,
-                                .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N,
-                                .work = c.work};
+    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "shaker");
+    spec.soft = [&contact, &wall, g](Wall, double t, double v0, double, double, double t_obs) {
+      const auto c = contact->run(HarmonicWall{wall, g, 1.0, t}, v0, t_obs);
+      return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
+                        .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work};
     };
   }
   ShakerRun out{run_impact_sequence(spec)};

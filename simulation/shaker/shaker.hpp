@@ -4,7 +4,7 @@
 // parabolas; the next impact is the first root of the gap, simulation/shaker/impact_sequence.hpp),
 // and each impact is either
 //   - soft: the contact of the drop test's body and law, integrated with the wall's motion as a
-//     forcing (model/shaken_contact.hpp, simulation/shaker/shaker_contact.hpp), or
+//     forcing (model/contact_environments.hpp, simulation/run/soft_contact.hpp), or
 //   - instantaneous: Newton's law at an instantaneous impact, relative rebound speed = e times
 //     the relative impact speed, u+ = s' + e (s' - u-), the textbook bouncing-ball map (Holmes,
 //     J. Sound Vib. 84 (1982) 173; Luck and Mehta, Phys. Rev. E 48 (1993) 3988; Tufillaro,

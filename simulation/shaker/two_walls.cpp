@@ -2,9 +2,7 @@
 #include "hertzdash/simulation/shaker/two_walls.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/run/law_runs.hpp"
-#include "hertzdash/simulation/shaker/damper_soft_contact.hpp"
-#include "hertzdash/simulation/shaker/shaker_contact.hpp"
+#include "hertzdash/simulation/run/soft_contact.hpp"
 
 #include <fmt/format.h>
 
@@ -61,38 +59,29 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
       .energy = damper, .sampled = damper ? ImpactSequenceSpec::Sampled::box : ImpactSequenceSpec::Sampled::none};
   if (!damper) spec.prescribed = OscillatorMotion::prescribed(options.drive.amplitude_m, w);
 
-  // The soft contacts: the driven box's floor, and its ceiling with g and A reversed; the
-  // damper's, the primary moving with the contact (one system for both walls).
-  std::array<std::unique_ptr<ShakerContact>, 2> contact;
-  std::unique_ptr<DamperSoftContact> damper_contact;
+  // The soft contacts (simulation/run/soft_contact.hpp): the driven box's floor and ceiling, a wall
+  // in harmonic motion (sigma per wall); the damper's, the primary moving with the contact.
+  std::unique_ptr<SoftContact<HarmonicWall>> contact;
+  std::unique_ptr<SoftContact<SprungPrimary>> damper_contact;
   IntegratorKind integrator_used = IntegratorKind::gbs8_regularized;
-  if (options.impact_model == ShakerImpactModel::soft) {
-    DropTestSetup s = setup;
-    const LawRuns& runs = law_runs(law);
-    if (runs.calibrated_time_constant && !s.damping.viscous_time_constant_s) s = runs.calibrated_time_constant(s);
-    if (damper) {
-      damper_contact = make_damper_soft_contact(law, s, solver, free);
-      integrator_used = damper_contact->integrator_used();
-      spec.soft = [&damper_contact](Wall wall, double t, double v0, double X, double V, double t_obs) {
-        const DamperContactOutcome c = damper_contact->run(wall == Wall::floor ? 1.0 : -1.0, t, v0, X, V, t_obs);
-        return SoftContactOutcome{.separated = c.separated, .contact_time_s = c.contact_time_s,
-                                  .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N,
-                                  .X_m = c.X_m, .V_mps = c.V_mps, .work = c.work};
-      };
-    } else {
-      contact[0] = make_shaker_contact(law, s, solver, options.drive);
-      s.gravity_mps2 = -g;
-      HarmonicWallMotion reversed = options.drive;
-      reversed.amplitude_m = -reversed.amplitude_m;
-      contact[1] = make_shaker_contact(law, s, solver, reversed);
-      integrator_used = contact[0]->integrator_used();
-      spec.soft = [&contact](Wall wall, double t, double v0, double, double, double t_obs) {
-        const ShakerContactOutcome c = contact[static_cast<std::size_t>(wall)]->run(t, v0, t_obs);
-        return SoftContactOutcome{.separated = c.separated, .contact_time_s = c.contact_time_s,
-                                  .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N,
-                                  .work = c.work};
-      };
-    }
+  auto sigma = [](Wall wall) { return wall == Wall::floor ? 1.0 : -1.0; };
+  if (options.impact_model == ShakerImpactModel::soft && damper) {
+    damper_contact = make_soft_contact<SprungPrimary>(law, setup, solver, "walls");
+    integrator_used = damper_contact->integrator_used();
+    spec.soft = [&](Wall wall, double t, double v0, double X, double V, double t_obs) {
+      const auto c = damper_contact->run(SprungPrimary{free, g, sigma(wall), t, X, V}, v0, t_obs);
+      return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
+                        .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N,
+                        .X_m = c.environment[0], .V_mps = c.environment[1], .work = c.work};
+    };
+  } else if (options.impact_model == ShakerImpactModel::soft) {
+    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "walls");
+    integrator_used = contact->integrator_used();
+    spec.soft = [&](Wall wall, double t, double v0, double, double, double t_obs) {
+      const auto c = contact->run(HarmonicWall{options.drive, g, sigma(wall), t}, v0, t_obs);
+      return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
+                        .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work};
+    };
   }
 
   TwoWallsRun out{run_impact_sequence(spec)};

@@ -15,12 +15,12 @@
 // on both walls, the impacts (instantaneous: Newton's law with e, momentum conserved against the
 // damper's primary, loss (1 - e^2) m M (V - u)^2 / (2 (m + M)); the same formulas on either
 // wall), sticking, chatter and the energy account.
-// Soft impacts:
-//   - box rig: the shaker's contact system (model/shaken_contact.hpp) on the floor, and on
-//     the ceiling the same system with its signs reversed: the overlap x = y - X - gap obeys
+// Soft impacts (simulation/run/soft_contact.hpp):
+//   - box rig: the harmonic wall (model/contact_environments.hpp) on the floor, and on the ceiling
+//     the same wall with its signs reversed (sigma = -1): the overlap x = y - X - gap obeys
 //     x'' = -g - X''(t) - F/m, the floor's x'' = g + X'' - F/m with g -> -g and A -> -A.
 //   - damper: the contact force acts on body and primary, whose motion is integrated with
-//     the contact (model/damper_contact.hpp, simulation/shaker/damper_soft_contact.hpp); the
+//     the contact (the sprung primary, model/contact_environments.hpp); the
 //     closed form takes over from the primary's state at separation.
 // Carried body: a rebound slower than stick_speed = 1e-6 (g + A w^2) T (box) or
 // 1e-6 (g + |Q| w^2) T (damper; T = 1/f) leaves the body on that wall, carried while the wall

@@ -6,7 +6,7 @@
 // measures it for every integrator hertzdash offers: explicit Euler and classical RK4
 // (fixed step, with and without event location at contact onset and separation),
 // CVODE Adams and BDF (against tolerance), and RK4 in regularising variables
-// (model/regularized_contact.hpp), the remedy this study arrives at.
+// (model/contact_system.hpp), the remedy this study arrives at.
 //
 // The problem (simulation/paper/convergence_runs.hpp): the paper's steel rod
 // meeting the nylon hemisphere at v0 = sqrt(2 g h), h = 20 mm, gravity off during
