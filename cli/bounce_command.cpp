@@ -97,16 +97,14 @@ Command add_bounce_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "bounce", "A drop and the bounces after it: the paper's restitution from impact intervals beside velocity ratios");
   add_run_options(*sub, opt->run);
-  add_number_option(*sub, "--bounces", opt->bounces, "Impacts to follow, the first included (3 give one interval ratio)")
-      ->type_name("INT");
-  add_number_option(*sub, "--min-rebound-velocity", opt->bounce.min_rebound_velocity_mps,
-                    "End the sequence after a rebound slower than this [m/s]");
-  add_number_option(*sub, "--target-interval-restitution", opt->interval_target,
-                    "Calibrate: find the input e whose first interval ratio is this, in (0,1]");
-  sub->add_flag("--json", opt->json, "Print the result as one JSON object");
-  add_output_file_option(*sub, "--trace", opt->trace_path,
-                         "Write the sequence's time series to this CSV file: every contact at the integrator's steps, "
-                         "each flight in closed form (rigid rod only)");
+  auto o = [](std::string_view key) { return declared_option("bounce", key); };
+  add_number_option(*sub, o("bounces").flag, opt->bounces, o("bounces").help)->type_name("INT");
+  add_number_option(*sub, o("min-rebound-velocity").flag, opt->bounce.min_rebound_velocity_mps,
+                    o("min-rebound-velocity").help);
+  add_number_option(*sub, o("target-interval-restitution").flag, opt->interval_target,
+                    o("target-interval-restitution").help);
+  sub->add_flag(o("json").flag, opt->json, o("json").help);
+  add_output_file_option(*sub, o("trace").flag, opt->trace_path, o("trace").help);
   add_mkdir_flag(*sub, opt->mkdir);
 
   return {sub, [opt]() {

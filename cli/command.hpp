@@ -1,5 +1,7 @@
 #pragma once
 // Each subcommand registers itself on the app; main() lists the registrations.
+#include "hertzdash/simulation/rigs/rig.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <functional>
@@ -31,11 +33,8 @@ Command add_bounce_command(CLI::App& app);
 /// `hertzdash fit`: parameters from a measured trace by weighted least squares.
 Command add_fit_command(CLI::App& app);
 
-/// `hertzdash shaker`: a body bouncing on a vibrating wall (soft or instantaneous impacts).
-Command add_shaker_command(CLI::App& app);
-
-/// `hertzdash walls`: a body between two walls: a driven box, or the impact damper.
-Command add_walls_command(CLI::App& app);
+/// `hertzdash RIG` for a registered rig (simulation/rigs/rig.hpp): `shaker`, `walls`, ...
+Command add_rig_command(CLI::App& app, const Rig& rig);
 
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);

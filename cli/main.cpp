@@ -36,17 +36,16 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("hertzdash ") + hertzdash::version() + " (git " +
                                          hertzdash::git_revision() + ")");
   app.require_subcommand(1);
-  const std::vector<hertzdash::cli::Command> commands{
+  std::vector<hertzdash::cli::Command> commands{
       hertzdash::cli::add_simulate_command(app),
       hertzdash::cli::add_models_command(app),
       hertzdash::cli::add_parameters_command(app),
       hertzdash::cli::add_restitution_command(app),
       hertzdash::cli::add_bounce_command(app),
-      hertzdash::cli::add_shaker_command(app),
-      hertzdash::cli::add_walls_command(app),
-      hertzdash::cli::add_fit_command(app),
-      hertzdash::cli::add_sweep_command(app),
   };
+  for (const hertzdash::Rig& rig : hertzdash::rigs()) commands.push_back(hertzdash::cli::add_rig_command(app, rig));
+  commands.push_back(hertzdash::cli::add_fit_command(app));
+  commands.push_back(hertzdash::cli::add_sweep_command(app));
 
   try {
     app.parse(argc, argv);

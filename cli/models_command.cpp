@@ -1,6 +1,7 @@
 // `hertzdash models`: every registered damping law with its citation, formula,
 // coefficients, validity and whether its force is continuous at contact onset.
 #include "cli/command.hpp"
+#include "cli/setup_options.hpp"
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
@@ -14,7 +15,7 @@ namespace hertzdash::cli {
 Command add_models_command(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   CLI::App* sub = app.add_subcommand("models", "List the damping laws (--damping NAME) with their citations");
-  sub->add_flag("--json", *json, "Print the list as a JSON array");
+  sub->add_flag("--json", *json, declared_option("models", "json").help);
   return {sub, [json]() {
             if (*json) {
               std::cout << registered_laws_json().dump(2) << "\n";

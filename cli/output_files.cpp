@@ -4,6 +4,7 @@
 #include "hertzdash/io/file_identity.hpp"
 #include "hertzdash/io/output_directories.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/options/command_options.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -25,9 +26,7 @@ CLI::Option* add_output_file_option(CLI::App& sub, const std::string& flag, std:
 }
 
 void add_mkdir_flag(CLI::App& sub, bool& make_directories) {
-  sub.add_flag("--mkdir", make_directories,
-               "Create the missing parent directories of the output files, right before writing them (without it, a "
-               "missing directory is an error)");
+  sub.add_flag("--mkdir", make_directories, std::string(command_option("RIG", "mkdir").help));
 }
 
 void prepare_output_file(const std::string& option, const std::string& path, bool make_directories) {

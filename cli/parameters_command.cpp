@@ -2,7 +2,7 @@
 // values, default and its source, what reads it, fittable, meaning), as the Markdown of
 // docs/parameters.md.
 #include "cli/command.hpp"
-#include "hertzdash/simulation/options/parameter_reference.hpp"
+#include "hertzdash/simulation/reports/parameter_reference.hpp"
 
 #include <iostream>
 

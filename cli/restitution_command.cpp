@@ -35,9 +35,9 @@ Command add_restitution_command(CLI::App& app) {
       "Effective restitution of a damping law in the contact phase alone (no gravity; a rigid wall unless --rod-E "
       "is given)");
   add_run_options(*sub, opt->run);
-  add_number_option(*sub, "--target-restitution", opt->target,
-                    "Calibrate: find the input e whose effective restitution is this, in (0,1]");
-  sub->add_flag("--json", opt->json, "Print the result as one JSON object");
+  auto o = [](std::string_view key) { return declared_option("restitution", key); };
+  add_number_option(*sub, o("target-restitution").flag, opt->target, o("target-restitution").help);
+  sub->add_flag(o("json").flag, opt->json, o("json").help);
 
   return {sub, [opt]() {
             const RestitutionRun r = run_restitution(opt->run, load_paper_parameters(), opt->target);

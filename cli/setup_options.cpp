@@ -1,6 +1,7 @@
 #include "cli/setup_options.hpp"
 
 #include "cli/number_options.hpp"
+#include "hertzdash/simulation/options/command_options.hpp"
 
 #include <iostream>
 
@@ -44,6 +45,11 @@ void add_run_options(CLI::App& app, RunOptions& options, RunOption::Group group)
 void add_run_options(CLI::App& app, RunOptions& options) {
   add_run_options(app, options, RunOption::Group::setup);
   add_run_options(app, options, RunOption::Group::solver);
+}
+
+DeclaredOption declared_option(std::string_view command, std::string_view key) {
+  const ParameterDecl& d = command_option(command, key);
+  return {"--" + std::string(d.key), help_text(d, KeySpelling::command_line)};
 }
 
 void report_diagnostics(const std::vector<RunDiagnostic>& diagnostics) {

@@ -19,6 +19,13 @@ void add_run_options(CLI::App& app, RunOptions& options, RunOption::Group group)
 /// Both groups: the set-up's options, then the solver's.
 void add_run_options(CLI::App& app, RunOptions& options);
 
+/// The flag ("--key") and help (help_text) of command `command`'s own option `key`, declared in
+/// simulation/options/command_options.hpp.
+struct DeclaredOption {
+  std::string flag, help;
+};
+DeclaredOption declared_option(std::string_view command, std::string_view key);
+
 /// Each note and warning on stderr: "hertzdash: <kind>: <message>".
 void report_diagnostics(const std::vector<RunDiagnostic>& diagnostics);
 

@@ -21,6 +21,7 @@ int run_shaker_sweep_command(const ShakerSweepRequest& q) {
   if (q.sweep.empty()) throw InvalidParameter("threads", format_value(*q.threads), "given with `sweep` only");
   if (q.json) throw InvalidParameter("json", "true", "not given with `sweep` (the diagram goes to `csv`)");
   if (q.csv_path.empty()) throw InvalidParameter("csv", "none", "a file name with `sweep`");
+  check_rig_inputs(shaker_rig(), q.run, q.shaker);
   const ShakerSweepAxis axis = parse_shaker_sweep(q.sweep);
   if (q.threads) require_in_range(shaker_sweep_parameters::threads, *q.threads);
   const ProcessGroup group;

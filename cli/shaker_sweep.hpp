@@ -3,7 +3,7 @@
 // per value on every core, or under an MPI launcher on every process of the job (value i on rank
 // i mod size; rank 0 gathers the runs and writes the same file byte for byte), one CSV row per
 // kept impact (simulation/reports/shaker_sweep_report.hpp, docs/shaker.md).
-#include "hertzdash/simulation/reports/shaker_report.hpp"
+#include "hertzdash/simulation/rigs/shaker_rig.hpp"
 
 #include <optional>
 #include <string>
@@ -12,7 +12,7 @@ namespace hertzdash::cli {
 
 struct ShakerSweepRequest {
   RunOptions run;
-  ShakerInputs shaker;
+  RigInputs shaker;
   std::string sweep, csv_path;
   std::optional<double> threads;
   bool json = false, mkdir = false;

@@ -67,20 +67,15 @@ Command add_simulate_command(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
   CLI::App* sub = app.add_subcommand("simulate", "Simulate one drop of a rod onto the nylon hemisphere");
   add_run_options(*sub, opt->run);
-  add_output_file_option(*sub, "--trace", opt->trace_path, "Write the contact-phase time series to this CSV file");
-  sub->add_option("--trace-format", opt->trace_format,
-                  "model: every integrator step, the measured-trace columns and the model's own; measured: a virtual "
-                  "experiment (sampled, filtered, noisy); both in the measured-trace format "
-                  "(data/measurements/README.md), labelled synthetic")
-      ->capture_default_str();
-  add_number_option(*sub, "--sample-rate", opt->chain.sample_rate_Hz, "Virtual measurement: sampling rate [Hz]");
-  add_number_option(*sub, "--anti-alias", opt->chain.anti_alias_cutoff_Hz,
-                    "Virtual measurement: cut-off [Hz] of the 2nd-order Butterworth anti-alias filter; 0 = none");
-  add_number_option(*sub, "--noise", opt->chain.noise_fraction,
-                    "Virtual measurement: Gaussian noise sigma as a fraction of each channel's largest magnitude");
-  add_integer_option(*sub, "--seed", opt->chain.seed, "Virtual measurement: seed of the noise");
-  sub->add_option("--channels", opt->channels, "Virtual measurement: channels to record")->capture_default_str();
-  sub->add_flag("--json", opt->json, "Print the summary as one JSON object");
+  auto o = [](std::string_view key) { return declared_option("simulate", key); };
+  add_output_file_option(*sub, o("trace").flag, opt->trace_path, o("trace").help);
+  sub->add_option(o("trace-format").flag, opt->trace_format, o("trace-format").help);
+  add_number_option(*sub, o("sample-rate").flag, opt->chain.sample_rate_Hz, o("sample-rate").help);
+  add_number_option(*sub, o("anti-alias").flag, opt->chain.anti_alias_cutoff_Hz, o("anti-alias").help);
+  add_number_option(*sub, o("noise").flag, opt->chain.noise_fraction, o("noise").help);
+  add_integer_option(*sub, o("seed").flag, opt->chain.seed, o("seed").help);
+  sub->add_option(o("channels").flag, opt->channels, o("channels").help);
+  sub->add_flag(o("json").flag, opt->json, o("json").help);
   add_mkdir_flag(*sub, opt->mkdir);
 
   return {sub, [opt, sub]() {

@@ -8,6 +8,7 @@
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/process_group.hpp"
+#include "cli/setup_options.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/output_directories.hpp"
 #include "hertzdash/io/output_lock.hpp"
@@ -83,14 +84,29 @@ std::filesystem::path summary_path(const std::filesystem::path& out) {
 }
 
 // Put this rank's results (runs rank, rank + size, ...) into the whole case's order.
+// A rig's per-impact tables travel as one list of doubles: per run its cell count, then its cells.
+std::vector<double> pack_impacts(const SweepResults& results) {
+  std::vector<double> packed;
+  for (const std::vector<double>& t : results.impacts) {
+    packed.push_back(static_cast<double>(t.size()));
+    packed.insert(packed.end(), t.begin(), t.end());
+  }
+  return packed;
+}
+
 SweepResults assemble(const std::vector<std::vector<double>>& values, const std::vector<std::string>& errors,
-                      const std::vector<std::vector<double>>& diagnostics, std::size_t runs, std::size_t outputs) {
+                      const std::vector<std::vector<double>>& diagnostics, const std::vector<std::vector<double>>& impacts,
+                      std::size_t runs, std::size_t outputs) {
   SweepResults all{.outputs = outputs, .values = std::vector<double>(runs * outputs), .errors = std::vector<std::string>(runs),
-                   .diagnostics = std::vector<DiagnosticSet>(runs)};
+                   .diagnostics = std::vector<DiagnosticSet>(runs), .impacts = std::vector<std::vector<double>>(runs)};
   const std::size_t size = values.size();
   for (std::size_t r = 0; r < size; ++r) {
-    std::size_t j = 0, begin = 0;
+    std::size_t j = 0, begin = 0, at = 0;
     for (std::size_t run = r; run < runs; run += size, ++j) {
+      const auto cells = static_cast<std::ptrdiff_t>(impacts[r].at(at));
+      const auto first = impacts[r].begin() + static_cast<std::ptrdiff_t>(at) + 1;
+      all.impacts[run].assign(first, first + cells);
+      at += 1 + static_cast<std::size_t>(cells);
       std::copy_n(values[r].begin() + static_cast<std::ptrdiff_t>(j * outputs), outputs,
                   all.values.begin() + static_cast<std::ptrdiff_t>(run * outputs));
       const std::size_t end = errors[r].find('\0', begin);
@@ -108,15 +124,23 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   const std::filesystem::path out = opt.out.empty() ? default_sweep_output(c) : std::filesystem::path(opt.out);
   const bool summary = c.summary || !opt.summary.empty();
   const std::filesystem::path summary_out = opt.summary.empty() ? summary_path(out) : std::filesystem::path(opt.summary);
+  // A rig's per-impact tables: beside the rows, the CSV's name with .impacts.csv.
+  const std::filesystem::path impacts_out = std::filesystem::path(out).replace_extension(".impacts.csv");
   const std::string out_option = opt.out.empty() ? "[output] file" : "--out";
   const std::string summary_option = opt.summary.empty() ? "[output] summary" : "--summary";
   prepare_output_file(out_option, out.string(), opt.mkdir);
   if (summary) prepare_output_file(summary_option, summary_out.string(), opt.mkdir);
+  const std::string impacts_option = "the rig's per-impact tables";
+  if (c.rig) prepare_output_file(impacts_option, impacts_out.string(), opt.mkdir);
   refuse_shared_files({{"the case file", opt.case_path}},
-                      {{out_option, out.string()}, {summary_option, summary ? summary_out.string() : ""}});
+                      {{out_option, out.string()},
+                       {summary_option, summary ? summary_out.string() : ""},
+                       {impacts_option, c.rig ? impacts_out.string() : ""}});
   // One sweep at a time per output, held from before the runs until both files are written (an
   // output whose directory --mkdir makes is locked once that is made, right before the write).
-  const std::vector<std::filesystem::path> outputs = summary ? std::vector{out, summary_out} : std::vector{out};
+  std::vector<std::filesystem::path> outputs{out};
+  if (summary) outputs.push_back(summary_out);
+  if (c.rig) outputs.push_back(impacts_out);
   std::deque<OutputLock> locks;
   auto lock = [&locks](const std::filesystem::path& p) {
     if (const std::optional<std::filesystem::path> file = replaced_file(p)) locks.emplace_back(*file);
@@ -171,9 +195,10 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   std::vector<double> codes;  // the diagnostic bits travel as doubles (exact below 2^53)
   for (const DiagnosticSet d : results.diagnostics) codes.push_back(d.bits());
   const std::vector<std::vector<double>> code_parts = group.gather(codes);
+  const std::vector<std::vector<double>> impact_parts = group.gather(pack_impacts(results));
   if (group.rank() != 0) return 0;
 
-  const SweepResults all = assemble(values, error_parts, code_parts, c.size(), c.outputs.size());
+  const SweepResults all = assemble(values, error_parts, code_parts, impact_parts, c.size(), c.outputs.size());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string timing =
       fmt::format("timing: {:.3f} s on {} process{} x {} thread{}, {:.3g} runs/s", seconds, group.size(),
@@ -189,12 +214,14 @@ int run_sweep_command(const SweepCommandOptions& opt) {
       {out, [&](const std::function<void(std::string_view)>& write) { write_sweep_table(c, all, timing, write); }}};
   const std::string summary_text = summary ? sweep_summary_table(c, all) : std::string();
   if (summary) files.emplace_back(summary_out, [&](const std::function<void(std::string_view)>& write) { write(summary_text); });
+  if (c.rig)
+    files.emplace_back(impacts_out, [&](const std::function<void(std::string_view)>& write) { write_sweep_impacts(c, all, write); });
   write_files_atomically(files);
 
   std::size_t failed = 0;
   for (const std::string& e : all.errors) failed += e.empty() ? 0 : 1;
-  std::cout << fmt::format("hertzdash sweep: {} runs, {} failed; wrote {}{}\n", c.size(), failed, out.string(),
-                           summary ? " and " + summary_out.string() : "");
+  std::cout << fmt::format("hertzdash sweep: {} runs, {} failed; wrote {}{}{}\n", c.size(), failed, out.string(),
+                           summary ? " and " + summary_out.string() : "", c.rig ? " and " + impacts_out.string() : "");
   if (summary) std::cout << sweep_summary_text(c, all);
   if (const std::string counts = diagnostic_counts_text(all); !counts.empty())
     std::cerr << fmt::format("hertzdash: warning: runs with warnings, per code (of {}): {} (the warnings column says "
@@ -214,15 +241,12 @@ Command add_sweep_command(CLI::App& app) {
   auto opt = std::make_shared<SweepCommandOptions>();
   CLI::App* sub = app.add_subcommand(
       "sweep", "Run a case file's grid or sample of simulate runs (docs/sweep.md); under mpirun on every process");
-  sub->add_option("case", opt->case_path, "The case file (TOML)")->required();
-  add_output_file_option(*sub, "--out", opt->out,
-                  "The CSV of one row per run (default: the case's [output] file, else the case file's name with .csv)");
-  add_output_file_option(*sub, "--summary", opt->summary,
-                  "Also write the summary of every output here (default with [output] summary = true: "
-                  "the CSV's name with .summary.csv)");
-  add_integer_option(*sub, "--threads", opt->threads,
-                     "Threads per process; 0 (the default): the machine's cores shared among the job's processes on it");
-  sub->add_flag("--quiet", opt->quiet, "No progress line");
+  auto o = [](std::string_view key) { return declared_option("sweep", key); };
+  sub->add_option("case", opt->case_path, o("case").help)->required();
+  add_output_file_option(*sub, o("out").flag, opt->out, o("out").help);
+  add_output_file_option(*sub, o("summary").flag, opt->summary, o("summary").help);
+  add_integer_option(*sub, o("threads").flag, opt->threads, o("threads").help);
+  sub->add_flag(o("quiet").flag, opt->quiet, o("quiet").help);
   add_mkdir_flag(*sub, opt->mkdir);
   return {sub, [opt]() { return run_sweep_command(*opt); }};
 }

@@ -12,6 +12,7 @@
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/reports/bounce_fit_report.hpp"
+#include "hertzdash/simulation/reports/rig_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/run/result_fields.hpp"
@@ -24,6 +25,7 @@
 #include <pybind11/stl.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -579,6 +581,40 @@ std::string result_names(bool ResultReports::*report) {
   return names;
 }
 
+// ---- rigs: run("RIG", **options) and one function per registered rig (simulation/rigs/rig.hpp) ----
+
+py::dict py_run_rig(const Rig& rig, const py::kwargs& kwargs) {
+  RunOptions options;
+  if (!rig.default_integrator.empty()) options.integrator = rig.default_integrator;
+  RigInputs inputs;
+  for (const auto& [key, value] : kwargs) {
+    const std::string keyword = key.cast<std::string>();
+    const auto own = std::find_if(rig.inputs.begin(), rig.inputs.end(),
+                                  [&](const ParameterDecl& d) { return python_keyword(d.key) == keyword; });
+    if (own == rig.inputs.end()) set_option(options, option_named(keyword, rig.name.data()), value);
+    else if (value.is_none()) continue;  // None: the default
+    else if (own->type == ParameterType::text) inputs.texts[std::string(own->key)] = py::str(value).cast<std::string>();
+    else if (py::isinstance<py::bool_>(value) || !py::hasattr(value, "__float__")) throw py::type_error(keyword + ": expected a number");
+    else inputs.numbers[std::string(own->key)] = value.cast<double>();
+  }
+  RigResult r;
+  {
+    py::gil_scoped_release release;
+    r = run_rig(rig, options, paper(), inputs);
+  }
+  for (const std::string& w : r.warnings) warn(w);
+  return to_python(to_json(rig, r));
+}
+
+std::string rig_doc(const Rig& rig) {
+  std::string doc = fmt::format("{}(**options) -> dict\n\n{}, exactly `hertzdash {} --json`: ", rig.name, rig.summary, rig.name);
+  for (const RigField& f : rig.results) doc += std::string(f.name) + ", ";
+  for (const RigColumn& c : rig.table) doc += std::string(c.name) + " (a list: one per kept impact), ";
+  doc += "end_reason, warnings, work, inputs, git_revision. Its own options:\n";
+  for (const ParameterDecl& d : rig.inputs) doc += fmt::format("  {}: {}\n", python_keyword(d.key), help_text(d, KeySpelling::python));
+  return doc + "and the options of simulate() but " + fmt::format("{}", fmt::join(rig.run_options_not_read, ", ")) + ".\n";
+}
+
 std::string options_doc() {
   std::string doc = "Options (keywords; each is the command line's --option, '-' written '_'):\n";
   for (const RunOption& o : run_options())
@@ -743,4 +779,24 @@ PYBIND11_MODULE(hertzdash, m) {
          "raises ValueError naming the option and the point; a result that contradicts the model, RuntimeError.\n\n" +
          options)
             .c_str());
+  for (const Rig& rig : rigs())
+    m.def(std::string(rig.name).c_str(), [&rig](const py::kwargs& kwargs) { return py_run_rig(rig, kwargs); },
+          rig_doc(rig).c_str());
+  m.def(
+      "run",
+      [](const std::string& name, const py::kwargs& kwargs) {
+        const Rig* rig = find_rig(name);
+        if (!rig) throw InvalidParameter("rig", name, "a registered rig (hertzdash.rigs())");
+        return py_run_rig(*rig, kwargs);
+      },
+      py::arg("name"), py::pos_only(),
+      "run(name, /, **options) -> dict\n\nThe registered rig `name` (see rigs()), as hertzdash.NAME(**options).");
+  m.def(
+      "rigs",
+      [] {
+        py::list names;
+        for (const Rig& rig : rigs()) names.append(std::string(rig.name));
+        return names;
+      },
+      "rigs() -> list of str\n\nThe registered rigs, each a function of this module and `hertzdash RIG`.");
 }

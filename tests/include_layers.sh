@@ -8,8 +8,9 @@
 #   rank 2  simulation/run/  simulation/uncertainty/
 #   rank 3  simulation/paper/  simulation/shaker/
 #   rank 4  simulation/options/
-#   rank 5  simulation/fit/  simulation/sweep/
-#   rank 6  simulation/reports/
+#   rank 5  simulation/rigs/
+#   rank 6  simulation/fit/  simulation/sweep/
+#   rank 7  simulation/reports/
 # Applications (cli/, python/, validation/, bench/) may include any library folder, and no
 # library folder includes an application (that would not compile: they are not under
 # include/hertzdash/).
@@ -23,8 +24,9 @@ rank() {
     simulation/run|simulation/uncertainty) echo 2 ;;
     simulation/paper|simulation/shaker) echo 3 ;;
     simulation/options) echo 4 ;;
-    simulation/fit|simulation/sweep) echo 5 ;;
-    simulation/reports) echo 6 ;;
+    simulation/rigs) echo 5 ;;
+    simulation/fit|simulation/sweep) echo 6 ;;
+    simulation/reports) echo 7 ;;
     *) echo unknown ;;
   esac
 }

@@ -9,7 +9,7 @@
 #include "hertzdash/io/decimal_number.hpp"
 #include "hertzdash/model/drop_test_parameters.hpp"
 #include "hertzdash/simulation/fit/trace_fit.hpp"
-#include "hertzdash/simulation/options/parameter_reference.hpp"
+#include "hertzdash/simulation/reports/parameter_reference.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"

@@ -1,4 +1,4 @@
-// `hertzdash shaker` (cli/shaker_command.cpp): the acceptance run of the instantaneous
+// `hertzdash shaker` (cli/rig_command.cpp, simulation/rigs/shaker_rig.cpp): the acceptance run of the instantaneous
 // map across its period-doubling threshold through the command line and its JSON, the CSV with
 // its provenance, and bad input (exit 2, the option named, no output written).
 #include "cli_runner.hpp"

@@ -1,4 +1,4 @@
-// `hertzdash walls` (cli/walls_command.cpp): the impact damper through the command line and its
+// `hertzdash walls` (cli/rig_command.cpp, simulation/rigs/walls_rig.cpp): the impact damper through the command line and its
 // JSON (the keys, the damper's balance and amplitudes), the CSV with its provenance, and bad
 // input (exit 2, the option named, nothing written).
 #include "cli_runner.hpp"

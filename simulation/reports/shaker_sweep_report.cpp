@@ -64,25 +64,20 @@ ShakerSweepAxis parse_shaker_sweep(std::string_view text) {
   return axis;
 }
 
-ShakerSweep resolve_shaker_sweep(const RunOptions& options, const PaperParameters& paper, const ShakerInputs& inputs,
+ShakerSweep resolve_shaker_sweep(const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs,
                                  const ShakerSweepAxis& axis) {
   const std::string sweep_text = fmt::format("{}:{}:{}:{}", axis.key, axis.from, axis.to, axis.count);
   auto refuse = [&](const std::string& key, double v) {
     throw InvalidParameter(key, format_value(v), "not given with `sweep` = " + sweep_text + " (the sweep sets it)");
   };
-  if (axis.key == "frequency" && inputs.frequency_Hz) refuse("frequency", *inputs.frequency_Hz);
-  if (axis.key != "frequency") {
-    if (inputs.gamma) refuse("gamma", *inputs.gamma);
-    if (inputs.amplitude_m) refuse("amplitude", *inputs.amplitude_m);
-  }
+  for (const char* key : {"frequency", "gamma", "amplitude"})
+    if (inputs.number(key) && (axis.key == key || (axis.key != "frequency" && key != std::string("frequency"))))
+      refuse(key, *inputs.number(key));
   ShakerSweep sweep{.axis = axis, .runs = {}};
   sweep.runs.reserve(static_cast<std::size_t>(axis.count));
   for (int i = 0; i < axis.count; ++i) {
-    ShakerInputs in = inputs;
-    const double v = axis.value(i);
-    if (axis.key == "gamma") in.gamma = v;
-    else if (axis.key == "amplitude") in.amplitude_m = v;
-    else in.frequency_Hz = v;
+    RigInputs in = inputs;
+    in.numbers[axis.key] = axis.value(i);
     sweep.runs.push_back(resolve_shaker_command(options, paper, in));
   }
   return sweep;

@@ -2,13 +2,13 @@
 // Bifurcation diagrams of the shaker (simulation/shaker/shaker.hpp): one parameter of the wall,
 // gamma = A (2 pi f)^2 / g, the amplitude A [m] or the frequency f [Hz], swept linearly over
 // [from, to] in `count` values, value i = from + (to - from) i / (count - 1) (the ends exact),
-// one independent `shaker` run per value (resolved as run_shaker_command resolves that value;
+// one independent `shaker` run per value (resolved as the rig `shaker` resolves that value;
 // each starts where a single run with that value starts), on the threads of
 // simulation/sweep/parallel_sweep.hpp, or on MPI processes (cli/shaker_sweep.cpp gathers them).
 // The runs are stored by value index, so the table depends only on the inputs, never on the
 // threads or processes. One CSV row per kept impact of every value: the bifurcation diagram (docs/shaker.md).
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/simulation/reports/shaker_report.hpp"
+#include "hertzdash/simulation/rigs/shaker_rig.hpp"
 #include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 
 #include <string>
@@ -40,7 +40,7 @@ struct ShakerSweep {
 /// Every value's run resolved and validated (cheap: nothing is run), with the other inputs as
 /// given: `inputs` must not set the swept key, nor `gamma` or `amplitude` when sweeping either
 /// of them (InvalidParameter names it), and every value must be valid (InvalidParameter).
-ShakerSweep resolve_shaker_sweep(const RunOptions& options, const PaperParameters& paper, const ShakerInputs& inputs,
+ShakerSweep resolve_shaker_sweep(const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs,
                                  const ShakerSweepAxis& axis);
 
 /// Run the values `values` (indices into sweep.runs) on the threads of `sweep_options`. The

@@ -100,18 +100,18 @@ class CaseReader {
   // One value of an option, typed as the option is.
   // A value of option `o`, checked against its declaration here, before any run (issue 32:
   // `rod = "stel"` in [base] failed every run instead).
-  SweepValue value(const RunOption& o, const std::string& key, const toml::node& node) const {
-    switch (o.decl.type) {
+  SweepValue value(const ParameterDecl& d, const std::string& key, const toml::node& node) const {
+    switch (d.type) {
       case ParameterType::flag: return boolean(key, node);
       case ParameterType::text: {
         const std::string v = text(key, node);
-        if (!is_declared_choice(o.decl, v)) fail(key, node, v, "one of: " + std::string(o.decl.choices));
+        if (!is_declared_choice(d, v)) fail(key, node, v, "one of: " + std::string(d.choices));
         return v;
       }
       case ParameterType::number: {
         const double v = number(key, node);
         try {
-          require_in_range(o.decl, v);
+          require_in_range(d, v);
         } catch (const InvalidParameter& e) {
           fail(key, node, e.value, e.valid_range);
         }
@@ -140,15 +140,15 @@ class CaseReader {
   }
 
   // A grid axis: a list of values, or a range table.
-  std::vector<SweepValue> axis(const RunOption& o, const std::string& key, const toml::node& node) const {
+  std::vector<SweepValue> axis(const ParameterDecl& d, const std::string& key, const toml::node& node) const {
     std::vector<SweepValue> values;
     if (const auto* list = node.as_array()) {
       if (list->empty()) fail(key, node, "[]", "a list of at least one value");
-      for (const toml::node& v : *list) values.push_back(value(o, key, v));
+      for (const toml::node& v : *list) values.push_back(value(d, key, v));
       return values;
     }
     const auto* range = node.as_table();
-    const bool numeric = o.decl.type == ParameterType::number;
+    const bool numeric = d.type == ParameterType::number;
     if (!range || !numeric)
       fail(key, node, describe(node),
            numeric ? "a list of values or a range { from, to, count, spacing = \"linear\" | \"log\" }" : "a list of values");
@@ -172,7 +172,7 @@ class CaseReader {
                        : spacing == "log" ? from * std::pow(to / from, f)
                                           : from + f * (to - from);
       try {  // each point against the option's declaration, as a list's values are
-        require_in_range(o.decl, v);
+        require_in_range(d, v);
       } catch (const InvalidParameter& e) {
         fail(key, node, e.value, e.valid_range + fmt::format(" (point {} of the range)", k + 1));
       }
@@ -216,6 +216,19 @@ class CaseReader {
   std::string source_;
 };
 
+/// The input of `rig` spelled `key` (its key or Python keyword), or nullptr.
+const ParameterDecl* rig_input(const Rig* rig, std::string_view key) {
+  if (rig)
+    for (const ParameterDecl& d : rig->inputs)
+      if (d.key == key || python_keyword(d.key) == key) return &d;
+  return nullptr;
+}
+
+void set_input(RigInputs& inputs, const ParameterDecl& d, const SweepValue& v) {
+  if (d.type == ParameterType::number) inputs.numbers[std::string(d.key)] = std::get<double>(v);
+  else inputs.texts[std::string(d.key)] = std::get<std::string>(v);
+}
+
 void set_option(RunOptions& options, const RunOption& o, const SweepValue& v) {
   switch (o.decl.type) {
     case ParameterType::flag: set_flag(options, o, std::get<bool>(v)); break;
@@ -223,8 +236,6 @@ void set_option(RunOptions& options, const RunOption& o, const SweepValue& v) {
     case ParameterType::number: set_number(options, o, std::get<double>(v)); break;
   }
 }
-
-bool is_numeric(const RunOption& o) { return o.decl.type == ParameterType::number; }
 
 // The number of runs from the case's own numbers (each list's length, each range's and the
 // sample's count), refused beyond max_sweep_runs before any axis or draw is made: eight axes
@@ -256,11 +267,17 @@ std::size_t SweepCase::size() const {
   return n;
 }
 
+std::string SweepAxis::column() const {
+  if (option) return column_name(*option);
+  const std::string keyword = python_keyword(rig_input->key);
+  return rig_input->column_unit.empty() ? keyword : keyword + "_" + std::string(rig_input->column_unit);
+}
+
 std::vector<std::string> SweepCase::parameter_columns() const {
   std::vector<std::string> columns;
-  for (const SweepAxis& a : grid) columns.push_back(column_name(*a.option));
+  for (const SweepAxis& a : grid) columns.push_back(a.column());
   if (sample)
-    for (const SweepAxis& a : sample->inputs) columns.push_back(column_name(*a.option));
+    for (const SweepAxis& a : sample->inputs) columns.push_back(a.column());
   return columns;
 }
 
@@ -279,14 +296,34 @@ std::vector<SweepValue> SweepCase::parameters(std::size_t run) const {
   return values;
 }
 
+namespace {
+
+/// f(axis, value) for every option or input run `run` of `c` varies, the grid's first.
+template <class F>
+void each_varied(const SweepCase& c, std::size_t run, F f) {
+  const std::vector<SweepValue> values = c.parameters(run);
+  std::size_t k = 0;
+  for (const SweepAxis& a : c.grid) f(a, values[k++]);
+  if (c.sample)
+    for (const SweepAxis& a : c.sample->inputs) f(a, values[k++]);
+}
+
+}  // namespace
+
 RunOptions SweepCase::options(std::size_t run) const {
   RunOptions o = base;
-  const std::vector<SweepValue> values = parameters(run);
-  std::size_t k = 0;
-  for (const SweepAxis& a : grid) set_option(o, *a.option, values[k++]);
-  if (sample)
-    for (const SweepAxis& a : sample->inputs) set_option(o, *a.option, values[k++]);
+  each_varied(*this, run, [&o](const SweepAxis& a, const SweepValue& v) {
+    if (a.option) set_option(o, *a.option, v);
+  });
   return o;
+}
+
+RigInputs SweepCase::rig_inputs(std::size_t run) const {
+  RigInputs in = rig_base;
+  each_varied(*this, run, [&in](const SweepAxis& a, const SweepValue& v) {
+    if (a.rig_input) set_input(in, *a.rig_input, v);
+  });
+  return in;
 }
 
 SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
@@ -302,7 +339,24 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
   c.text = std::string(text);
   r.check_keys("case", doc, {"base", "grid", "sample", "output"}, "one of the sections [base], [grid], [sample], [output]");
   check_run_count(doc, source);
-  std::vector<const RunOption*> given;  // every option the case sets, once
+  if (const toml::table* base = doc["base"].as_table())
+    if (const toml::node* rig = base->get("rig")) {
+      c.rig = find_rig(r.text("base.rig", *rig));
+      std::string names;
+      for (const Rig& known : rigs()) names += (names.empty() ? "" : ", ") + std::string(known.name);
+      if (!c.rig) r.fail("base.rig", *rig, r.describe(*rig), "a registered rig: " + names);
+      c.base.integrator = c.rig->default_integrator.empty() ? c.base.integrator : std::string(c.rig->default_integrator);
+    }
+  // The key `section.key` names an input of the case's rig (its declaration), or else an option.
+  std::vector<const void*> given;  // every option and rig input the case sets, once
+  auto input = [&](const std::string& section, const toml::key& k, const toml::node& node) -> const ParameterDecl* {
+    const ParameterDecl* d = rig_input(c.rig, k.str());
+    const std::string key = section + "." + std::string(k.str());
+    if (d && std::find(given.begin(), given.end(), d) != given.end())
+      r.fail(key, node, "a second value", "given once in the whole case ([base], [grid] and [sample] each set an option once)");
+    if (d) given.push_back(d);
+    return d;
+  };
   auto claim = [&](const RunOption& o, const std::string& key, const toml::node& node) {
     if (std::find(given.begin(), given.end(), &o) != given.end())
       r.fail(key, node, "a second value", "given once in the whole case ([base], [grid] and [sample] each set an option once)");
@@ -314,18 +368,27 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
 
   if (const toml::node* base = doc.get("base")) {
     for (const auto& [k, v] : CaseReader::in_file_order(r.table("base", *base))) {
-      const RunOption& o = r.option("base", *k, *v);
       const std::string key = "base." + std::string(k->str());
+      if (k->str() == "rig") continue;
+      if (const ParameterDecl* d = input("base", *k, *v)) {
+        set_input(c.rig_base, *d, r.value(*d, key, *v));
+        continue;
+      }
+      const RunOption& o = r.option("base", *k, *v);
       claim(o, key, *v);
-      set_option(c.base, o, r.value(o, key, *v));
+      set_option(c.base, o, r.value(o.decl, key, *v));
     }
   }
   if (const toml::node* grid = doc.get("grid")) {
     for (const auto& [k, v] : CaseReader::in_file_order(r.table("grid", *grid))) {
-      const RunOption& o = r.option("grid", *k, *v);
       const std::string key = "grid." + std::string(k->str());
+      if (const ParameterDecl* d = input("grid", *k, *v)) {
+        c.grid.push_back({.option = nullptr, .rig_input = d, .values = r.axis(*d, key, *v), .distribution = {}});
+        continue;
+      }
+      const RunOption& o = r.option("grid", *k, *v);
       claim(o, key, *v);
-      c.grid.push_back({.option = &o, .values = r.axis(o, key, *v), .distribution = {}});
+      c.grid.push_back({.option = &o, .rig_input = nullptr, .values = r.axis(o.decl, key, *v), .distribution = {}});
     }
   }
   if (const toml::node* sample_node = doc.get("sample")) {
@@ -340,10 +403,12 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
     for (const auto& [k, v] : CaseReader::in_file_order(t)) {
       if (k->str() == "count" || k->str() == "method" || k->str() == "seed") continue;
       const std::string key = "sample." + std::string(k->str());
-      const RunOption& o = r.option("sample", *k, *v);
-      if (!is_numeric(o)) r.fail(key, *v, r.describe(*v), "a numeric option (a text option is varied in [grid])");
-      claim(o, key, *v);
-      s.inputs.push_back({.option = &o, .values = {}, .distribution = r.distribution(key, *v)});
+      const ParameterDecl* d = input("sample", *k, *v);
+      const RunOption* o = d ? nullptr : &r.option("sample", *k, *v);
+      if ((d ? d->type : o->decl.type) != ParameterType::number)
+        r.fail(key, *v, r.describe(*v), "a numeric option (a text option is varied in [grid])");
+      if (o) claim(*o, key, *v);
+      s.inputs.push_back({.option = o, .rig_input = d, .values = {}, .distribution = r.distribution(key, *v)});
     }
     if (s.inputs.empty())
       r.fail("sample", *sample_node, "no distribution", "at least one option with a distribution, e.g. ball-E = { distribution = \"uniform\", min = 1.2e9, max = 2.9e9 }");
@@ -353,18 +418,30 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
       s.values[i] = s.inputs[i % s.inputs.size()].distribution->quantile(s.values[i]);
     c.sample = std::move(s);
   }
+  if (c.rig) {  // the rig's numeric results but those the varied keys' columns hold
+    const std::vector<std::string> varied = c.parameter_columns();
+    c.outputs.clear();
+    for (const RigField& f : c.rig->results)
+      if (f.number && std::find(varied.begin(), varied.end(), f.name) == varied.end()) c.outputs.emplace_back(f.name);
+  }
   if (const toml::node* output = doc.get("output")) {
     const toml::table& t = r.table("output", *output);
     r.check_keys("output", t, {"columns", "file", "summary"}, "columns, file, summary");
     if (const toml::node* columns = t.get("columns")) {
       const toml::array* list = columns->as_array();
       std::string names;
-      for (const SweepOutput& o : sweep_output_table) names += (names.empty() ? "" : ", ") + std::string(o.name);
+      if (c.rig)
+        for (const RigField& f : c.rig->results) names += (names.empty() ? "" : ", ") + std::string(f.name);
+      else
+        for (const SweepOutput& o : sweep_output_table) names += (names.empty() ? "" : ", ") + std::string(o.name);
       if (!list || list->empty()) r.fail("output.columns", *columns, r.describe(*columns), "a list of at least one of: " + names);
       c.outputs.clear();
       for (const toml::node& v : *list) {
         const std::string name = r.text("output.columns", v);
-        if (!find_sweep_output(name)) r.fail("output.columns", v, name, "one of: " + names);
+        const bool known = c.rig ? std::any_of(c.rig->results.begin(), c.rig->results.end(),
+                                               [&](const RigField& f) { return f.name == name; })
+                                 : find_sweep_output(name) != nullptr;
+        if (!known) r.fail("output.columns", v, name, "one of: " + names);
         if (std::find(c.outputs.begin(), c.outputs.end(), name) != c.outputs.end())
           r.fail("output.columns", v, name, "listed once");
         c.outputs.push_back(name);

@@ -1,7 +1,9 @@
 #pragma once
 // A sweep's case file (TOML; docs/sweep.md): the runs `hertzdash sweep CASE.toml` makes.
 //
-//   [base]     any `simulate` option by its command-line name or Python keyword, fixed
+//   [base]     any `simulate` option by its command-line name or Python keyword, fixed; and
+//              rig = "NAME": the runs are the registered rig's (simulation/rigs/rig.hpp, e.g.
+//              "shaker"), its own inputs ("gamma") set here, in [grid] and [sample] too
 //   [grid]     options varied over the cartesian product of their values: a list, or a range
 //              { from, to, count, spacing = "linear" | "log" }; the first key varies slowest
 //   [sample]   method ("monte-carlo", "latin-hypercube", "sobol"), count, seed, and one
@@ -17,6 +19,7 @@
 // the options of each run are validated when the run is resolved, so one bad point is an error
 // of that row, not of the sweep.
 #include "hertzdash/simulation/options/run_options.hpp"
+#include "hertzdash/simulation/rigs/rig.hpp"
 #include "hertzdash/simulation/uncertainty/input_distribution.hpp"
 #include "hertzdash/simulation/uncertainty/sample_design.hpp"
 
@@ -36,9 +39,12 @@ using SweepValue = std::variant<double, std::string, bool>;
 
 /// One option varied by a case: over grid values, or drawn from a distribution.
 struct SweepAxis {
-  const RunOption* option = nullptr;
+  const RunOption* option = nullptr;             ///< an option of a run, or
+  const ParameterDecl* rig_input = nullptr;      ///< an input of the case's rig
   std::vector<SweepValue> values;                ///< grid axis
   std::optional<InputDistribution> distribution; ///< sample input
+  /// Its column: the Python keyword and unit ("height_m", "gamma").
+  std::string column() const;
 };
 
 struct SweepSample {
@@ -56,6 +62,8 @@ struct SweepCase {
   std::string source;            ///< the file's path (messages, provenance)
   std::string text;              ///< the file's content, as read
   RunOptions base;
+  const Rig* rig = nullptr;      ///< [base] rig: the runs are this rig's; unset: simulate's
+  RigInputs rig_base;            ///< the rig's inputs [base] sets
   std::vector<SweepAxis> grid;   ///< in the file's order: the first varies slowest
   std::optional<SweepSample> sample;
   std::vector<std::string> outputs{"e_effective", "peak_force_N", "contact_time_s"};
@@ -70,6 +78,8 @@ struct SweepCase {
   std::vector<SweepValue> parameters(std::size_t run) const;
   /// The options of run `run`: base with the varied options set (not yet validated).
   RunOptions options(std::size_t run) const;
+  /// The rig's inputs of run `run`: rig_base with the varied inputs set.
+  RigInputs rig_inputs(std::size_t run) const;
 };
 
 /// Parse a case from its text; `source` names it in messages. Throws DataError for a file that

@@ -122,7 +122,63 @@ std::array<double, 9> statistics(const SummaryRow& s) {
   return {s.mean, s.sd, s.min, s.q05, s.q25, s.median, s.q75, s.q95, s.max};
 }
 
+/// The runs of a rig's case: its numeric results that the case records, and its per-impact table.
+void run_rig_sweep(const SweepCase& c, const std::vector<std::size_t>& runs, const PaperParameters& paper,
+                   const SweepOptions& options, SweepResults& r) {
+  std::vector<std::size_t> fields;
+  for (const std::string& name : c.outputs)
+    fields.push_back(static_cast<std::size_t>(
+        std::find_if(c.rig->results.begin(), c.rig->results.end(), [&](const RigField& f) { return f.name == name; }) -
+        c.rig->results.begin()));
+  parallel_for_chunks(
+      runs.size(), [] { return 0; },
+      [&](int, std::size_t j) {
+        try {
+          const RigResult result = run_rig(*c.rig, c.options(runs[j]), paper, c.rig_inputs(runs[j]));
+          for (std::size_t k = 0; k < fields.size(); ++k) {
+            const RigValue& v = result.scalars[fields[k]];
+            if (const double* x = std::get_if<double>(&v)) r.values[j * r.outputs + k] = *x;
+            if (const long* n = std::get_if<long>(&v)) r.values[j * r.outputs + k] = static_cast<double>(*n);
+          }
+          for (const std::vector<double>& row : result.rows) r.impacts[j].insert(r.impacts[j].end(), row.begin(), row.end());
+          r.errors[j].clear();
+        } catch (const std::exception& e) {
+          r.errors[j] = spell_key_references(e.what(), KeySpelling::key);
+        }
+      },
+      options);
+}
+
 }  // namespace
+
+void write_sweep_impacts(const SweepCase& c, const SweepResults& results,
+                         const std::function<void(std::string_view)>& write) {
+  std::vector<std::string> columns{"run"};
+  for (const std::string& p : c.parameter_columns()) columns.push_back(p);
+  columns.emplace_back("n");
+  for (const RigColumn& col : c.rig->table) columns.emplace_back(col.name);
+  CsvWriter csv(fmt::format("hertzdash sweep: one row per kept impact of every run of the case file, rig {}: {}",
+                            c.rig->name, c.rig->table_description),
+                case_parameters(c), columns);
+  write(csv.head());
+  const std::size_t cells = c.rig->table.size();
+  for (std::size_t run = 0; run < c.size(); ++run) {
+    const std::vector<SweepValue> parameters = c.parameters(run);
+    const std::vector<double>& table = results.impacts[run];
+    for (std::size_t n = 0; n * cells < table.size(); ++n) {
+      std::vector<CsvWriter::Cell> row{static_cast<long>(run)};
+      for (const SweepValue& v : parameters) row.push_back(cell(v));
+      row.emplace_back(static_cast<long>(n));
+      for (std::size_t k = 0; k < cells; ++k) {
+        const double v = table[n * cells + k];
+        if (c.rig->table[k].integer) row.emplace_back(static_cast<long>(v));
+        else row.emplace_back(v);
+      }
+      csv.add_row(row);
+    }
+    write(csv.take_rows());
+  }
+}
 
 SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs, const PaperParameters& paper,
                        const SweepOptions& options) {
@@ -131,6 +187,11 @@ SweepResults run_sweep(const SweepCase& c, const std::vector<std::size_t>& runs,
   r.values.assign(runs.size() * r.outputs, NAN);
   r.errors.assign(runs.size(), "not run");
   r.diagnostics.assign(runs.size(), DiagnosticSet{});
+  r.impacts.assign(runs.size(), {});
+  if (c.rig) {
+    run_rig_sweep(c, runs, paper, options, r);
+    return r;
+  }
   std::vector<const SweepOutput*> outputs;
   for (const std::string& name : c.outputs) outputs.push_back(find_sweep_output(name));
   parallel_for_chunks(
@@ -205,7 +266,7 @@ std::string sweep_table(const SweepCase& c, const SweepResults& results, const s
 
 std::string sweep_summary_table(const SweepCase& c, const SweepResults& results) {
   std::vector<std::string> columns;
-  for (std::size_t k : group_axes(c)) columns.push_back(column_name(*c.grid[k].option));
+  for (std::size_t k : group_axes(c)) columns.push_back(c.grid[k].column());
   for (const char* name : {"output", "runs", "failed"}) columns.emplace_back(name);
   for (const char* name : statistic_columns) columns.emplace_back(name);
   CsvWriter csv("hertzdash sweep: summary of every output over the runs that gave a value (SI units; quantiles "
@@ -228,7 +289,7 @@ std::string sweep_summary_table(const SweepCase& c, const SweepResults& results)
 std::string sweep_summary_text(const SweepCase& c, const SweepResults& results) {
   std::string out;
   std::vector<std::string> groups;
-  for (std::size_t k : group_axes(c)) groups.push_back(column_name(*c.grid[k].option));
+  for (std::size_t k : group_axes(c)) groups.push_back(c.grid[k].column());
   std::string head;
   for (const std::string& g : groups) head += fmt::format("{:<18} ", g);
   out += head + fmt::format("{:<26} {:>7} {:>6} {:>13} {:>11} {:>13} {:>13} {:>13}\n", "output", "runs", "failed", "mean",

@@ -26,6 +26,8 @@ struct SweepResults {
   std::vector<double> values;       ///< run-major: output k of the j-th run at [j * outputs + k]
   std::vector<std::string> errors;  ///< per run: why it failed, or empty
   std::vector<DiagnosticSet> diagnostics;  ///< per run: its notes and warnings (none for a failed run)
+  /// A rig's case: per run its per-impact table, row-major, one cell per column of the rig's table.
+  std::vector<std::vector<double>> impacts;
 };
 
 /// Per code of diagnostic_table, the runs whose result carries it.
@@ -51,6 +53,11 @@ std::string sweep_table(const SweepCase& c, const SweepResults& results, const s
 /// ContentPieces): a sweep of millions of runs goes to its file without being held as text.
 void write_sweep_table(const SweepCase& c, const SweepResults& results, const std::string& timing_line,
                        const std::function<void(std::string_view)>& write);
+
+/// A rig's case (SweepCase::rig): the per-impact tables of every run, one row per kept impact:
+/// "run", the varied options, "n" and the rig's table columns (a labelled column as its index),
+/// below the provenance of the case.
+void write_sweep_impacts(const SweepCase& c, const SweepResults& results, const std::function<void(std::string_view)>& write);
 
 /// Per output (and per value of every text or true/false grid option, e.g. per damping law):
 /// runs, failed, mean, sd, min, q05, q25, median, q75, q95, max of the runs that gave a value.

@@ -1,0 +1,76 @@
+// `hertzdash RIG` for every registered rig (simulation/rigs/rig.hpp), generated from its schemas:
+// the options of a run and the rig's own inputs (--KEY, help, valid values and default from the
+// declarations), --json (the rig's JSON), --csv FILE (the per-impact table below its provenance),
+// --mkdir, and the text report; bad input is refused by the rig (exit 2, the option named).
+// `shaker --sweep` is the shaker's bifurcation diagram (cli/shaker_sweep.hpp).
+#include "cli/command.hpp"
+#include "cli/number_options.hpp"
+#include "cli/output_files.hpp"
+#include "cli/setup_options.hpp"
+#include "cli/shaker_sweep.hpp"
+#include "hertzdash/simulation/options/command_options.hpp"
+#include "hertzdash/simulation/reports/rig_report.hpp"
+
+#include <iostream>
+#include <memory>
+
+namespace hertzdash::cli {
+
+namespace {
+
+struct RigCommandOptions {
+  RunOptions run;
+  RigInputs inputs;
+  std::string csv_path, sweep;
+  std::optional<double> threads;
+  bool json = false, mkdir = false;
+};
+
+}  // namespace
+
+Command add_rig_command(CLI::App& app, const Rig& rig) {
+  auto opt = std::make_shared<RigCommandOptions>();
+  if (!rig.default_integrator.empty()) opt->run.integrator = rig.default_integrator;
+  CLI::App* sub = app.add_subcommand(std::string(rig.name), std::string(rig.summary));
+  add_run_options(*sub, opt->run);
+  for (const RigOptionNote& n : rig.run_option_notes) sub->get_option("--" + std::string(n.key))->description(std::string(n.help));
+  const std::string group = "The " + std::string(rig.name) + " rig";
+  for (const ParameterDecl& d : rig.inputs) {
+    const std::string flag = "--" + std::string(d.key), key(d.key), help = help_text(d, KeySpelling::command_line);
+    CLI::Option* o =
+        d.type == ParameterType::text
+            ? sub->add_option_function<std::string>(flag, [opt, key](const std::string& v) { opt->inputs.texts[key] = v; }, help)
+            : add_number_option(*sub, flag, [opt, key](double v) { opt->inputs.numbers[key] = v; }, help);
+    if (d.type == ParameterType::number && d.range.kind == NumberRange::Kind::integer) o->type_name("INT");
+    o->group(group);
+  }
+  // The shaker's bifurcation diagram (cli/shaker_sweep.hpp), where the command declares it.
+  const bool sweeps = !options_of_command(rig.name).empty();
+  if (sweeps) {
+    auto o = [&rig](std::string_view key) { return declared_option(rig.name, key); };
+    sub->add_option(o("sweep").flag, opt->sweep, o("sweep").help)->type_name("KEY:FROM:TO:COUNT")->group(group);
+    add_number_option(*sub, o("threads").flag, opt->threads, o("threads").help)->type_name("INT")->group(group);
+  }
+  auto o = [](std::string_view key) { return declared_option("RIG", key); };
+  sub->add_flag(o("json").flag, opt->json, o("json").help);
+  add_output_file_option(*sub, o("csv").flag, opt->csv_path, o("csv").help);
+  add_mkdir_flag(*sub, opt->mkdir);
+
+  return {sub, [opt, &rig, sweeps]() {
+            prepare_output_file("--csv", opt->csv_path, opt->mkdir);
+            if (sweeps && (!opt->sweep.empty() || opt->threads))
+              return run_shaker_sweep_command(
+                  {opt->run, opt->inputs, opt->sweep, opt->csv_path, opt->threads, opt->json, opt->mkdir});
+            const RigResult r = run_rig(rig, opt->run, load_paper_parameters(), opt->inputs);
+            if (!opt->csv_path.empty()) {
+              create_output_directories(opt->csv_path, opt->mkdir);
+              rig_table_csv(rig, r).save(opt->csv_path);
+            }
+            for (const std::string& w : r.warnings) std::cerr << "hertzdash: warning: " << w << "\n";
+            if (opt->json) std::cout << to_json(rig, r).dump(2) << "\n";
+            else std::cout << rig_text(rig, r);
+            return 0;
+          }};
+}
+
+}  // namespace hertzdash::cli

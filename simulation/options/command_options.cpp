@@ -1,0 +1,94 @@
+// The commands' own options (simulation/options/command_options.hpp).
+#include "hertzdash/simulation/options/command_options.hpp"
+
+#include "hertzdash/model/shaker_sweep_parameters.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace hertzdash {
+
+namespace {
+
+using R = NumberRange;
+using T = ParameterType;
+
+constexpr ParameterDecl json{.key = "json", .type = T::flag, .default_value = "off", .help = "Print the result as one JSON object"};
+constexpr ParameterDecl mkdir{.key = "mkdir", .type = T::flag, .default_value = "off",
+                              .help = "Create the missing parent directories of the output files, right before "
+                                      "writing them (without it, a missing directory is an error)"};
+/// An output file `key`.
+constexpr ParameterDecl file(std::string_view key, std::string_view help, std::string_view default_value = "none") {
+  return {.key = key, .type = T::text, .choices = "a file path", .default_value = default_value, .help = help};
+}
+
+constexpr ParameterDecl simulate[] = {
+    file("trace", "Write the contact-phase time series to this CSV file"),
+    {.key = "trace-format", .type = T::text, .choices = "model, measured", .default_value = "model",
+     .help = "model: every integrator step, the measured-trace columns and the model's own; measured: a virtual "
+             "experiment (sampled, filtered, noisy); both in the measured-trace format (data/measurements/README.md), "
+             "labelled synthetic"},
+    {.key = "sample-rate", .unit = "Hz", .range = R::positive(), .default_value = "1e6",
+     .help = "Virtual measurement: sampling rate [Hz]"},
+    {.key = "anti-alias", .unit = "Hz", .range = R::non_negative(), .default_value = "0",
+     .help = "Virtual measurement: cut-off [Hz] of the 2nd-order Butterworth anti-alias filter; 0 = none"},
+    {.key = "noise", .range = R::non_negative(), .default_value = "0",
+     .help = "Virtual measurement: Gaussian noise sigma as a fraction of each channel's largest magnitude, in [0, 1]"},
+    {.key = "seed", .range = R::integer(0, 18446744073709551615.0), .default_value = "1",
+     .help = "Virtual measurement: seed of the noise"},
+    {.key = "channels", .type = T::text, .choices = "comma-separated channels of the measured-trace format",
+     .default_value = "force_N,accel_mps2,displacement_m", .help = "Virtual measurement: channels to record"},
+    json, mkdir};
+constexpr ParameterDecl restitution[] = {
+    {.key = "target-restitution", .range = R::open_closed(0, 1), .default_value = "none",
+     .help = "Calibrate: find the input e whose effective restitution is this, in (0,1]"},
+    json};
+constexpr ParameterDecl bounce[] = {
+    {.key = "bounces", .range = R::integer(1, 1000), .default_value = "5",
+     .help = "Impacts to follow, the first included (3 give one interval ratio)"},
+    {.key = "min-rebound-velocity", .unit = "m/s", .range = R::non_negative(), .default_value = "0.001",
+     .help = "End the sequence after a rebound slower than this [m/s]"},
+    {.key = "target-interval-restitution", .range = R::open_closed(0, 1), .default_value = "none",
+     .help = "Calibrate: find the input e whose first interval ratio is this, in (0,1]"},
+    json,
+    file("trace", "Write the sequence's time series to this CSV file: every contact at the integrator's steps, each "
+                  "flight in closed form (rigid rod only)"),
+    mkdir};
+constexpr ParameterDecl rig[] = {json, file("csv", "Write the kept impacts to this CSV file, one row each"), mkdir};
+constexpr ParameterDecl sweep[] = {
+    {.key = "case", .type = T::text, .choices = "a TOML file (docs/sweep.md)", .default_value = "required",
+     .help = "The case file (TOML), the first argument"},
+    file("out", "The CSV of one row per run", "the case's [output] file, else the case file's name with .csv"),
+    file("summary", "Also write the summary of every output here",
+         "with [output] summary = true: the CSV's name with .summary.csv"),
+    {.key = "threads", .range = R::integer(0, 4294967295.0), .default_value = "0",
+     .default_source = "the machine's cores shared among the job's processes on it", .help = "Threads per process"},
+    {.key = "quiet", .type = T::flag, .default_value = "off", .help = "No progress line"},
+    mkdir};
+constexpr ParameterDecl models[] = {{.key = "json", .type = T::flag, .default_value = "off", .help = "Print the list as a JSON array"}};
+
+constexpr CommandOptions table[] = {
+    {"simulate", simulate}, {"models", models},       {"restitution", restitution},
+    {"bounce", bounce},     {"RIG", rig},             {"shaker", shaker_sweep_parameters::all},
+    {"fit", {}},            {"sweep", sweep}};
+
+}  // namespace
+
+std::span<const CommandOptions> command_options() { return table; }
+
+ParameterDecls fit_command_options() { return {}; }
+
+ParameterDecls options_of_command(std::string_view command) {
+  if (command == "fit") return fit_command_options();  // the fit's own table
+  for (const CommandOptions& c : table)
+    if (c.command == command) return c.options;
+  return {};
+}
+
+const ParameterDecl& command_option(std::string_view command, std::string_view key) {
+  for (const ParameterDecl& d : options_of_command(command))
+    if (d.key == key) return d;
+  throw std::logic_error("no option `" + std::string(key) + "` of command " + std::string(command));
+}
+
+}  // namespace hertzdash

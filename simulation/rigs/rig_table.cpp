@@ -1,0 +1,72 @@
+// The registered rigs (simulation/rigs/rig.hpp), one line each, and what every rig shares: its
+// inputs' lookup and checks.
+#include "hertzdash/simulation/rigs/rig.hpp"
+#include "hertzdash/simulation/rigs/shaker_rig.hpp"
+#include "hertzdash/simulation/rigs/walls_rig.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
+namespace hertzdash {
+
+std::span<const Rig> rigs() {
+  static const std::array table{
+      shaker_rig(),
+      walls_rig(),
+  };
+  return table;
+}
+
+const Rig* find_rig(std::string_view name) {
+  for (const Rig& r : rigs())
+    if (r.name == name) return &r;
+  return nullptr;
+}
+
+const ParameterDecl* find_rig_input(const Rig& rig, std::string_view key) {
+  for (const ParameterDecl& d : rig.inputs)
+    if (d.key == key) return &d;
+  return nullptr;
+}
+
+std::optional<double> RigInputs::number(std::string_view key) const {
+  const auto it = numbers.find(key);
+  return it == numbers.end() ? std::nullopt : std::optional(it->second);
+}
+
+std::optional<std::string> RigInputs::text(std::string_view key) const {
+  const auto it = texts.find(key);
+  return it == texts.end() ? std::nullopt : std::optional(it->second);
+}
+
+double RigInputs::number_or_default(const ParameterDecl& d) const { return number(d.key).value_or(d.default_number); }
+
+void check_rig_inputs(const Rig& rig, const RunOptions& options, const RigInputs& inputs) {
+  auto declared = [&](const std::string& key, ParameterType type) -> const ParameterDecl& {
+    const ParameterDecl* d = find_rig_input(rig, key);
+    if (!d || d->type != type) throw std::invalid_argument(fmt::format("`{}` is no input of the rig {}", key, rig.name));
+    return *d;
+  };
+  for (const auto& [key, value] : inputs.numbers) require_in_range(declared(key, ParameterType::number), value);
+  for (const auto& [key, value] : inputs.texts) {
+    const ParameterDecl& d = declared(key, ParameterType::text);
+    const std::vector<std::string> choices = split_option_list(std::string(d.choices));
+    if (std::none_of(choices.begin(), choices.end(), [&](const std::string& c) { return c == value || " " + value == c; }))
+      throw InvalidParameter(key, value, "one of: " + std::string(d.choices));
+  }
+  for (const std::string_view key : rig.run_options_not_read) {
+    const RunOption* o = find_run_option(key);
+    if (o && is_given(options, *o))
+      throw InvalidParameter(std::string(key), given_text(options, *o),
+                             fmt::format("not given for `{}` ({})", rig.name, rig.not_read_because));
+  }
+}
+
+RigResult run_rig(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs) {
+  check_rig_inputs(rig, options, inputs);
+  return rig.run(options, paper, inputs);
+}
+
+}  // namespace hertzdash

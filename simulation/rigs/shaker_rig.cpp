@@ -1,0 +1,123 @@
+// The rig `shaker` (simulation/rigs/shaker_rig.hpp).
+#include "hertzdash/simulation/rigs/shaker_rig.hpp"
+
+#include "hertzdash/model/shaker_parameters.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
+
+#include <fmt/format.h>
+
+namespace hertzdash {
+
+ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  namespace p = shaker_parameters;
+  if (in.number("amplitude") && in.number("gamma"))
+    throw InvalidParameter("gamma", format_value(*in.number("gamma")), "omitted with `amplitude` (one sets the other)");
+  ShakerCommandRun r;
+  r.setup = resolve_setup(options, paper);
+  refuse_trace_only_options(options, "hertzdash shaker");
+  r.law = options.damping;
+  r.solver = resolve_solver(options);
+  ShakerOptions& o = r.options;
+  o.wall.frequency_Hz = in.number_or_default(p::frequency);
+  o.wall.amplitude_m = in.number("amplitude")
+                           ? in.number_or_default(p::amplitude)
+                           : shaker_amplitude_m(in.number_or_default(p::gamma), o.wall.frequency_Hz, r.setup.gravity_mps2);
+  o.impacts = static_cast<int>(in.number_or_default(p::impacts));
+  o.transient = static_cast<int>(in.number_or_default(p::transient));
+  o.start_height_m = options.height_m;
+  o.start_phase = in.number("start-phase");
+  o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(p::impact_model.default_value)));
+  if (o.impact_model == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g
+    RunOptions defaults;
+    defaults.integrator = shaker_default_integrator;
+    static constexpr std::string_view read[] = {"rod", "restitution", "gravity", "height"};
+    refuse_options_not_read(options, defaults, read,
+                            "`impact-model` soft (the instantaneous map reads `restitution`, `gravity` and `height`)");
+  }
+  r.inputs = describe_run(r.setup, r.law, r.solver);
+  r.inputs.emplace_back("frequency_Hz", fmt::format("{}", o.wall.frequency_Hz));
+  r.inputs.emplace_back("amplitude_m", fmt::format("{}", o.wall.amplitude_m));
+  r.inputs.emplace_back("impacts", std::to_string(o.impacts));
+  r.inputs.emplace_back("transient", std::to_string(o.transient));
+  r.inputs.emplace_back("impact_model", to_string(o.impact_model));
+  const ShakerStart start = shaker_start(o, r.setup.restitution, r.setup.gravity_mps2);
+  r.inputs.emplace_back("start_height_m", fmt::format("{}", start.height_m));
+  r.inputs.emplace_back("start_phase", fmt::format("{}", start.phase));
+  return r;
+}
+
+namespace {
+
+using Run = ShakerCommandRun;
+
+ShakerCommandRun run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  ShakerCommandRun r = resolve_shaker_command(options, paper, in);
+  r.run = run_shaker(r.setup, r.law, r.solver, r.options);
+  return r;
+}
+
+bool soft(const Run& r) { return r.run.impact_model == ShakerImpactModel::soft; }
+
+RigResult outcome(const Run& r) {
+  return {.heading = fmt::format("{} impacts{}", to_string(r.run.impact_model),
+                                 soft(r) ? fmt::format(", damping law '{}', integrator {}", r.law,
+                                                       to_string(r.run.integrator_used))
+                                         : fmt::format(", e = {}", r.setup.restitution)),
+          .scalars = {}, .rows = {}, .warnings = r.run.warnings, .end_reason = r.run.end_reason,
+          .work = soft(r) ? std::optional(r.run.work) : std::nullopt, .inputs = r.inputs};
+}
+
+constexpr RigFieldOf<Run> results[] = {
+    {{"gamma", "1", "the wall's peak acceleration over g, A (2 pi f)^2 / g"}, [](const Run& r) -> RigValue { return r.run.gamma; }},
+    {{"frequency_Hz", "Hz", "the wall's frequency f"}, [](const Run& r) -> RigValue { return r.options.wall.frequency_Hz; }},
+    {{"amplitude_m", "m", "the wall's amplitude A"}, [](const Run& r) -> RigValue { return r.options.wall.amplitude_m; }},
+    {{"impact_model", "", "soft or instantaneous", false, false, false},
+     [](const Run& r) -> RigValue { return std::string(to_string(r.run.impact_model)); }},
+    {{"damping", "", "the damping law", false, false, false}, [](const Run& r) -> RigValue { return r.law; }},
+    {{"integrator_used", "", "the integrator of the soft contacts (soft impacts only)", false, false, false},
+     [](const Run& r) -> RigValue { return soft(r) ? RigValue(std::string(to_string(r.run.integrator_used))) : RigValue(); }},
+    {{"period", "", "the detected period in table cycles (0: none)"}, [](const Run& r) -> RigValue { return long{r.run.pattern.period}; }},
+    {{"impacts_per_period", "", "kept impacts per period"},
+     [](const Run& r) -> RigValue { return long{r.run.pattern.impacts_per_period}; }},
+    {{"e_effective", "1", "mean rebound over impact speed, relative to the wall, of the kept impacts (null: none)"},
+     [](const Run& r) -> RigValue { return r.run.e_effective; }},
+    {{"sticking_episodes", "", "times the wall carried the body", true, true},
+     [](const Run& r) -> RigValue { return r.run.sticking_episodes; }},
+    {{"impacts_run", "", "impacts run, transient and kept", false, true},
+     [](const Run& r) -> RigValue { return r.run.impacts_run; }},
+};
+
+constexpr RigColumnOf<ShakerImpact> table[] = {
+    {{"impact_time_s", "s", "impact (contact onset) time from the start"}, [](const ShakerImpact& i) { return i.time_s; }},
+    {{"impact_phase", "1", "phase of s(t) = A sin(2 pi f t) in [0, 1)"}, [](const ShakerImpact& i) { return i.phase; }},
+    {{"impact_speed_mps", "m/s", "impact speed relative to the wall"}, [](const ShakerImpact& i) { return i.impact_speed_mps; }},
+    {{"rebound_speed_mps", "m/s", "rebound speed relative to the wall"},
+     [](const ShakerImpact& i) { return i.rebound_speed_mps; }},
+    {{"contact_time_s", "s", "contact duration (0: instantaneous)"}, [](const ShakerImpact& i) { return i.contact_time_s; }},
+    {{"peak_force_N", "N", "largest contact force (0: instantaneous)"}, [](const ShakerImpact& i) { return i.peak_force_N; }},
+};
+
+constexpr std::string_view not_read[] = {"impact-velocity"};
+constexpr RigOptionNote notes[] = {
+    shaker_integrator_note,
+    {"height", "Height [m] above the wall's mean position from which the body is released at rest at --start-phase; "
+               "0: at rest on the wall (default: the apex of the instantaneous map's period-1 orbit, docs/shaker.md)"}};
+
+}  // namespace
+
+const Rig& shaker_rig() {
+  static const Rig rig = make_rig<Run, ShakerImpact>(
+      {.name = "shaker",
+       .summary = "A body bouncing on a vibrating wall: soft contacts or instantaneous impacts, exact flights",
+       .inputs = shaker_parameters::all, .run_options_not_read = not_read,
+       .not_read_because = "the body starts at rest, at `height` above the wall's mean position",
+       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .results = results,
+       .table_description = "one row per kept impact (time from the start, the body at rest on the wall; phase of "
+                            "s(t) = A sin(2 pi f t) in [0,1); speeds relative to the wall)",
+       .table = table, .run = run, .impacts = [](const Run& r) -> const std::vector<ShakerImpact>& { return r.run.impacts; },
+       .outcome = outcome});
+  return rig;
+}
+
+}  // namespace hertzdash

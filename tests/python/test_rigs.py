@@ -1,0 +1,78 @@
+"""The registered rigs from Python (simulation/rigs/rig.hpp, python/hertzdash_module.cpp):
+hertzdash.run("RIG", **options) and hertzdash.RIG(**options) are `hertzdash RIG --json`, made
+from the same rig table and JSON writer, so the dicts are equal to the last bit (JSON carries
+doubles with 17 significant digits, which read back exactly); bad input is the program's
+refusal as a ValueError naming the keyword.
+
+Run by ctest (test `python_module`) with PYTHONPATH=build/python and HERTZDASH_BIN set.
+"""
+import json
+import math
+import os
+import subprocess
+
+import pytest
+
+import hertzdash
+
+BIN = os.environ["HERTZDASH_BIN"]
+
+
+def cli_json(*args):
+    r = subprocess.run([BIN, *args, "--json"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+def test_every_rig_is_a_function_and_a_command():
+    assert hertzdash.rigs() == ["shaker", "walls"]
+    for rig in hertzdash.rigs():
+        assert callable(getattr(hertzdash, rig))
+        assert subprocess.run([BIN, rig, "--help"], capture_output=True).returncode == 0
+
+
+def test_shaker_gives_the_programs_numbers():
+    # The instantaneous map (e = 0.5) just above its period-doubling threshold
+    # sqrt((pi/3)^2 + (10/9)^2) = 1.5268 (docs/shaker.md): period 2, e_effective = e exactly.
+    kw = dict(impact_model="instantaneous", restitution=0.5, gamma=1.55, impacts=4, transient=2000)
+    d = hertzdash.shaker(**kw)
+    assert d == hertzdash.run("shaker", **kw)
+    assert d == cli_json("shaker", "--impact-model", "instantaneous", "--restitution", "0.5", "--gamma", "1.55",
+                         "--impacts", "4", "--transient", "2000")
+    assert d["period"] == 2 and d["e_effective"] == pytest.approx(0.5, rel=1e-12)
+    assert len(d["impact_phase"]) == 4
+
+
+def test_soft_shaker_gives_the_programs_numbers():
+    kw = dict(restitution=0.5, gamma=1.3, impacts=2, transient=50, frequency=25)
+    assert hertzdash.shaker(**kw) == cli_json("shaker", "--restitution", "0.5", "--gamma", "1.3", "--impacts", "2",
+                                              "--transient", "50", "--frequency", "25")
+
+
+def test_walls_damper_gives_the_programs_numbers_and_balances_energy():
+    kw = dict(rig="damper", impact_model="instantaneous", gravity=0, restitution=0.6, primary_damping_ratio=0.05,
+              impacts=4, transient=400)
+    d = hertzdash.walls(**kw)
+    assert d == hertzdash.run("walls", **kw)
+    assert d == cli_json("walls", "--rig", "damper", "--impact-model", "instantaneous", "--gravity", "0",
+                         "--restitution", "0.6", "--primary-damping-ratio", "0.05", "--impacts", "4",
+                         "--transient", "400")
+    # The damper's energy account (simulation/shaker/two_walls.hpp): W - D - L = E(end) - E(0),
+    # each a sum of Gauss-Legendre quadratures and closed forms: to round-off of the work.
+    E = d["energy_J"]
+    assert E["drive_work"] - E["damping_dissipation"] - E["impact_loss"] == \
+        pytest.approx(E["final"] - E["initial"], abs=1e-9 * abs(E["drive_work"]))
+    assert set(d["wall"]) == {"floor", "ceiling"}
+
+
+def test_bad_rig_input_is_a_value_error_naming_the_keyword():
+    with pytest.raises(ValueError, match="gamma"):
+        hertzdash.shaker(gamma=1.3, amplitude=1e-3)
+    with pytest.raises(ValueError, match="impact_velocity"):
+        hertzdash.shaker(impact_velocity=1.0)
+    with pytest.raises(ValueError, match="rig"):
+        hertzdash.run("drum")
+    with pytest.raises(TypeError, match="bogus"):
+        hertzdash.walls(bogus=1)
+    with pytest.raises(ValueError, match="impacts"):
+        hertzdash.walls(impacts=2.5)

@@ -1,0 +1,90 @@
+// The rig table (simulation/rigs/rig.hpp) and what every front end makes of it: each registered
+// rig is a command whose --help lists every declared input, its run fills one scalar per result
+// field and one cell per table column, and its JSON holds every field the run has under its name;
+// a case file runs a rig over a grid (simulation/sweep/sweep_case.hpp).
+#include "cli_runner.hpp"
+#include "scratch_dir.hpp"
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/reports/rig_report.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <string>
+#include <variant>
+#include <vector>
+
+using hertzdash::test::run_cli;
+namespace test = hertzdash::test;
+
+TEST_CASE("every registered rig is a command taking its declared inputs", "[rigs]") {
+  REQUIRE(hertzdash::rigs().size() >= 2);
+  for (const hertzdash::Rig& rig : hertzdash::rigs()) {
+    INFO(rig.name);
+    CHECK(hertzdash::find_rig(rig.name) == &rig);
+    const auto help = run_cli(std::string(rig.name) + " --help");
+    CHECK(help.exit_code == 0);
+    for (const hertzdash::ParameterDecl& d : rig.inputs) CHECK(help.out.find("--" + std::string(d.key)) != std::string::npos);
+  }
+}
+
+TEST_CASE("a rig's result has a value per field and a cell per column, and its JSON every field it has", "[rigs]") {
+  // The instantaneous map of the shaker with e = 0.5: every rebound is e times the impact speed
+  // relative to the wall (u+ - s' = -e (u- - s')), so e_effective is e to round-off.
+  const hertzdash::Rig& rig = *hertzdash::find_rig("shaker");
+  hertzdash::RunOptions options;
+  options.integrator = std::string(rig.default_integrator);
+  options.restitution = 0.5;
+  hertzdash::RigInputs inputs;
+  inputs.texts["impact-model"] = "instantaneous";
+  inputs.numbers["impacts"] = 3;
+  inputs.numbers["transient"] = 100;
+  const hertzdash::RigResult r = hertzdash::run_rig(rig, options, hertzdash::load_paper_parameters(), inputs);
+  REQUIRE(r.scalars.size() == rig.results.size());
+  REQUIRE(r.rows.size() == 3);
+  for (const auto& row : r.rows) CHECK(row.size() == rig.table.size());
+  const auto json = hertzdash::to_json(rig, r);
+  for (std::size_t k = 0; k < rig.results.size(); ++k) {
+    const std::string name(rig.results[k].name);
+    const bool present = !std::holds_alternative<std::monostate>(r.scalars[k]);
+    CHECK(json.contains(name) == present);
+  }
+  CHECK(json["e_effective"].get<double>() == Approx(0.5).epsilon(1e-12));
+  CHECK_FALSE(json.contains("integrator_used"));  // soft impacts only
+  for (const hertzdash::RigColumn& c : rig.table) CHECK(json[std::string(c.name)].size() == 3);
+}
+
+TEST_CASE("a case file with rig = \"shaker\" sweeps gamma: a row per point, the impacts in a second file", "[rigs][sweep]") {
+  // The instantaneous map at e = 0.5 (tests/test_shaker.cpp): period 1 below its period doubling
+  // Gamma_2 = sqrt((pi/3)^2 + (10/9)^2) = 1.5268, period 2 above; every rebound e times the impact
+  // speed, so e_effective is 0.5 at every point. 1.40 and 1.65 lie 8 % either side of Gamma_2,
+  // where 2000 transient impacts settle the orbit (the slower eigenvalue is far from -1 there).
+  const hertzdash::test::ScratchDir dir;
+  std::ofstream(dir.path / "case.toml") << "[base]\nrig = \"shaker\"\nimpact-model = \"instantaneous\"\n"
+                                           "restitution = 0.5\ntransient = 2000\nimpacts = 4\n"
+                                           "[grid]\ngamma = [1.40, 1.65]\n";
+  std::string rows[2], impacts[2];
+  for (int threads : {1, 2}) {
+    const std::string out = (dir.path / ("t" + std::to_string(threads) + ".csv")).string();
+    const auto r = run_cli("sweep " + (dir.path / "case.toml").string() + " --quiet --threads " +
+                           std::to_string(threads) + " --out " + out);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    rows[threads - 1] = test::slurp(out);
+    rows[threads - 1].erase(rows[threads - 1].find("# timing:"), rows[threads - 1].find('\n', rows[threads - 1].find("# timing:")));
+    impacts[threads - 1] = test::slurp(dir.path / ("t" + std::to_string(threads) + ".impacts.csv"));
+  }
+  CHECK(rows[0] == rows[1]);  // the runs do not depend on the threads that ran them
+  CHECK(impacts[0] == impacts[1]);
+  const hertzdash::CsvTable t = hertzdash::CsvTable::read(dir.path / "t1.csv");
+  REQUIRE(t.rows() == 2);
+  CHECK(t.number(0, "gamma") == 1.40);
+  CHECK(t.number(0, "period") == 1);
+  CHECK(t.number(1, "period") == 2);
+  for (std::size_t row = 0; row < 2; ++row) CHECK(t.number(row, "e_effective") == Approx(0.5).epsilon(1e-12));
+  const hertzdash::CsvTable i = hertzdash::CsvTable::read(dir.path / "t1.impacts.csv");
+  CHECK(i.columns() == std::vector<std::string>{"run", "gamma", "n", "impact_time_s", "impact_phase", "impact_speed_mps",
+                                                "rebound_speed_mps", "contact_time_s", "peak_force_N"});
+  CHECK(i.rows() == 2 * 4);
+}
