@@ -3,7 +3,7 @@
 // transient's extremes, computed here in real form, independently of the run's complex closed
 // form); when it does, the energy balance of the run, with and without sticking on the stop.
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
-#include "hertzdash/simulation/shaker/oscillator.hpp"
+#include "hertzdash/simulation/rigs/oscillator_rig.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -35,6 +35,7 @@ OscillatorOptions oscillator(double d_m, int transient, int impacts) {
   o.stop_distance_m = d_m;
   o.transient = transient;
   o.impacts = impacts;
+  o.impact_model = ShakerImpactModel::instantaneous;
   return o;
 }
 
@@ -175,4 +176,17 @@ TEST_CASE("oscillator: at the stop, drive work equals damping, impact losses and
     CHECK(L > 0.1);
     check_balance(r, 1e-9);
   }
+}
+TEST_CASE("explore oscillator orbits", "[explore]") {
+  for (double f : {10.0, 15.0, 20.0, 25.0})
+    for (double e : {0.5, 0.7, 0.8})
+      for (double frac : {0.2, 0.5, 0.8}) {
+        const DropTestSetup s = body(e);
+        OscillatorOptions o = oscillator(1.0, 2000, 8);
+        o.frequency_Hz = f;
+        o.stop_distance_m = frac * steady(o, s.mass_kg).A;
+        const OscillatorRun r = run_oscillator(s, "hongo", {}, o);
+        std::printf("f %g e %g frac %g: sticks %ld period %d/%d v %g\n", f, e, frac, r.sticking_episodes,
+                    r.pattern.period, r.pattern.impacts_per_period, r.impacts.back().impact_speed_mps);
+      }
 }

@@ -1,7 +1,8 @@
 #pragma once
 // One impact-sequence driver for every rig whose body flies between impacts: the shaker (a body
 // on a vibrating wall, simulation/shaker/shaker.hpp), the driven box and the impact damper (a
-// body between two walls, two_walls.hpp) and the impact oscillator with a stop (oscillator.hpp).
+// body between two walls, two_walls.hpp) and the impact oscillator with a stop
+// (simulation/rigs/oscillator_rig.hpp).
 // A rig describes two bodies and the walls, and the driver runs the sequence:
 //   - the body, mass m, a linear oscillator m y'' + c y' + k y = F0 sin(w t + phi) + Fc (k = 0: a
 //     free flight, gravity Fc = -m g; the oscillator: its spring, dashpot and drive);

@@ -1,0 +1,69 @@
+// `hertzdash oscillator` (the rig simulation/rigs/oscillator_rig.hpp through the command line): its
+// JSON (the keys, the closed-form steady amplitude, the energy balance) and bad input (exit 2, the
+// option named, nothing written).
+#include "cli_runner.hpp"
+#include "scratch_dir.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+using hertzdash::test::run_cli;
+
+TEST_CASE("CLI oscillator: the JSON reports the impacts, the closed-form amplitude and a balanced energy", "[oscillator]") {
+  // The defaults: k = 1e4 N/m, zeta = 0.05, F = 10 N at 20 Hz, the stop at 2 mm, the paper's steel
+  // rod. Without the stop |X| = (F / k) / sqrt((1 - r^2)^2 + (2 zeta r)^2), r = w / sqrt(k / m),
+  // m the mass the run reports among its inputs; the stop is inside it, so the body strikes it.
+  const auto r = run_cli("oscillator --impact-model instantaneous --restitution 0.7 --transient 100 --impacts 10 --json");
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"period", "impacts_per_period", "e_effective", "amplitude_m", "peak_phase",
+                          "steady_amplitude_m", "energy_J", "impact_time_s", "impact_phase", "impact_speed_mps",
+                          "rebound_speed_mps", "contact_time_s", "peak_force_N", "sticking_episodes", "impacts_run",
+                          "end_reason", "warnings", "inputs"})
+    CHECK(j.contains(key));
+  CHECK(j["impact_time_s"].size() == 10);
+  CHECK(j["e_effective"].get<double>() == Approx(0.7).epsilon(1e-12));
+  const double m = std::stod(j["inputs"]["mass_kg"].get<std::string>()), w = 40 * std::numbers::pi;
+  const double r_ = w / std::sqrt(1e4 / m);
+  const double steady = 10.0 / 1e4 / std::hypot(1 - r_ * r_, 0.1 * r_);
+  CHECK(j["steady_amplitude_m"].get<double>() == Approx(steady).epsilon(1e-9));
+  CHECK(steady > 0.002);
+  // The body stops at the stop (max x = d) and swings back: its amplitude at most the steady one's
+  // order, its maximum the stop's position.
+  CHECK(j["amplitude_m"].get<double>() > 0.001);
+  // W - D - L = E(end) - E(0) (tests/test_oscillator.cpp derives it), to 1e-9 of W.
+  const nlohmann::json& E = j["energy_J"];
+  const double W = E["drive_work"].get<double>();
+  CHECK(W - E["damping_dissipation"].get<double>() - E["impact_loss"].get<double>() ==
+        Approx(E["change"].get<double>()).margin(1e-9 * W));
+}
+
+TEST_CASE("CLI oscillator: bad input exits 2 naming the option and writes nothing", "[oscillator]") {
+  const hertzdash::test::ScratchDir dir;
+  const std::string csv = (dir.path / "never.csv").string();
+  struct Case {
+    std::string args, option;
+  };
+  for (const Case& c : {Case{"--stop-distance 0", "--stop-distance"}, Case{"--stiffness -1", "--stiffness"},
+                        Case{"--damping-ratio 1", "--damping-ratio"}, Case{"--frequency 0", "--frequency"},
+                        Case{"--force-amplitude -1", "--force-amplitude"},
+                        Case{"--start-position 0.01", "--start-position"}, Case{"--impacts 1.5", "--impacts"},
+                        Case{"--impact-model hard", "--impact-model"}, Case{"--height 0.1", "--height"},
+                        Case{"--gravity 1", "--gravity"}, Case{"--impact-velocity 1", "--impact-velocity"},
+                        Case{"--integrator rk4", "--integrator"},
+                        // Instantaneous impacts read e and the mass only.
+                        Case{"--impact-model instantaneous --ball-E 9e9", "--ball-E"},
+                        Case{"--impact-model instantaneous --rtol 1e-3", "--rtol"}}) {
+    const auto r = run_cli("oscillator --transient 10 --impacts 5 " + c.args + " --csv " + csv);
+    INFO(c.args << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.option) != std::string::npos);
+    CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(csv));
+  }
+}
