@@ -1,14 +1,13 @@
 // `hertzdash oscillator` (the rig simulation/rigs/oscillator_rig.hpp through the command line): its
 // JSON (the keys, the closed-form steady amplitude, the energy balance) and bad input (exit 2, the
 // option named, nothing written).
+#include "cli_bad_input.hpp"
 #include "cli_runner.hpp"
-#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 #include <string>
 
@@ -45,26 +44,14 @@ TEST_CASE("CLI oscillator: the JSON reports the impacts, the closed-form amplitu
 }
 
 TEST_CASE("CLI oscillator: bad input exits 2 naming the option and writes nothing", "[oscillator]") {
-  const hertzdash::test::ScratchDir dir;
-  const std::string csv = (dir.path / "never.csv").string();
-  struct Case {
-    std::string args, option;
-  };
-  for (const Case& c : {Case{"--stop-distance 0", "--stop-distance"}, Case{"--stiffness -1", "--stiffness"},
-                        Case{"--damping-ratio 1", "--damping-ratio"}, Case{"--frequency 0", "--frequency"},
-                        Case{"--force-amplitude -1", "--force-amplitude"},
-                        Case{"--start-position 0.01", "--start-position"}, Case{"--impacts 1.5", "--impacts"},
-                        Case{"--impact-model hard", "--impact-model"}, Case{"--height 0.1", "--height"},
-                        Case{"--gravity 1", "--gravity"}, Case{"--impact-velocity 1", "--impact-velocity"},
-                        Case{"--integrator rk4", "--integrator"},
-                        // Instantaneous impacts read e and the mass only.
-                        Case{"--impact-model instantaneous --ball-E 9e9", "--ball-E"},
-                        Case{"--impact-model instantaneous --rtol 1e-3", "--rtol"}}) {
-    const auto r = run_cli("oscillator --transient 10 --impacts 5 " + c.args + " --csv " + csv);
-    INFO(c.args << ": " << r.err);
-    CHECK(r.exit_code == 2);
-    CHECK(r.err.find(c.option) != std::string::npos);
-    CHECK(r.out.empty());
-    CHECK_FALSE(std::filesystem::exists(csv));
-  }
+  hertzdash::test::check_bad_inputs(
+      "oscillator --transient 10 --impacts 5",
+      {{"--stop-distance 0", "--stop-distance"}, {"--stiffness -1", "--stiffness"},
+       {"--damping-ratio 1", "--damping-ratio"}, {"--frequency 0", "--frequency"},
+       {"--force-amplitude -1", "--force-amplitude"}, {"--start-position 0.01", "--start-position"},
+       {"--impacts 1.5", "--impacts"}, {"--impact-model hard", "--impact-model"}, {"--height 0.1", "--height"},
+       {"--gravity 1", "--gravity"}, {"--impact-velocity 1", "--impact-velocity"}, {"--integrator rk4", "--integrator"},
+       // Instantaneous impacts read e and the mass only.
+       {"--impact-model instantaneous --ball-E 9e9", "--ball-E"},
+       {"--impact-model instantaneous --rtol 1e-3", "--rtol"}});
 }
