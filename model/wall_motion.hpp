@@ -55,31 +55,4 @@ inline double shaker_amplitude_m(double gamma, double frequency_Hz, double gravi
   return gamma * gravity_mps2 / (w * w);
 }
 
-/// A body in free flight: at t0 [s] at height y0 [m] moving upward at u0 [m/s], under gravity g.
-struct Flight {
-  double t0_s = 0, y0_m = 0, u0_mps = 0, gravity_mps2 = 0;
-  double height_m(double t) const {
-    const double tau = t - t0_s;
-    return y0_m + tau * (u0_mps - 0.5 * gravity_mps2 * tau);
-  }
-  double velocity_mps(double t) const { return u0_mps - gravity_mps2 * (t - t0_s); }
-};
-
-/// The time [s] after t at which a body carried by the wall leaves it: the first t' >= t with
-/// sin(w t') >= 1/Gamma (the wall decelerating faster than gravity), t itself if it holds there;
-/// +inf if Gamma <= 1 (the wall never pulls away: the body rests on it for good).
-inline double release_time_s(const HarmonicWallMotion& wall, double gravity_mps2, double t) {
-  const double a = wall.peak_acceleration_mps2();
-  if (!(a > gravity_mps2)) return INFINITY;
-  const double w = wall.omega_rad_per_s();
-  const double two_pi = 2.0 * std::numbers::pi;
-  const double theta_release = std::asin(gravity_mps2 / a);  // in (0, pi/2)
-  // The wall pulls away for phases theta (mod 2 pi) in [theta_release, pi - theta_release].
-  const double cycles = std::floor(w * t / two_pi);
-  const double theta = w * t - two_pi * cycles;  // in [0, 2 pi)
-  if (theta >= theta_release && theta <= std::numbers::pi - theta_release) return t;
-  const double next = theta < theta_release ? theta_release : theta_release + two_pi;
-  return (two_pi * cycles + next) / w;
-}
-
 }  // namespace hertzdash

@@ -1,6 +1,7 @@
 // `hertzdash walls` (cli/rig_command.cpp, simulation/rigs/walls_rig.cpp): the impact damper through the command line and its
 // JSON (the keys, the damper's balance and amplitudes), the CSV with its provenance, and bad
 // input (exit 2, the option named, nothing written).
+#include "cli_bad_input.hpp"
 #include "cli_runner.hpp"
 #include "scratch_dir.hpp"
 
@@ -71,29 +72,15 @@ TEST_CASE("CLI walls: --csv writes one row per kept impact below its provenance"
 }
 
 TEST_CASE("CLI walls: bad input exits 2 naming the option", "[walls]") {
-  const hertzdash::test::ScratchDir dir;
-  const std::string csv = (dir.path / "never.csv").string();
-  struct Case {
-    std::string args, option;
-  };
-  for (const Case& c : {Case{"--gap 0", "--gap"}, Case{"--gap -1", "--gap"}, Case{"--rig drum", "--rig"},
-                        Case{"--rig damper --gamma 2", "--gamma"}, Case{"--rig damper --amplitude 0.001", "--amplitude"},
-                        Case{"--primary-mass 2", "--primary-mass"}, Case{"--force-amplitude 3", "--force-amplitude"},
-                        Case{"--rig damper --primary-damping-ratio 1", "--primary-damping-ratio"},
-                        Case{"--rig damper --primary-stiffness 0", "--primary-stiffness"},
-                        Case{"--rig damper --impact-model hard", "--impact-model"},
-                        Case{"--gravity 0 --gamma 2", "--gamma"}, Case{"--gamma 2 --amplitude 0.001", "--gamma"},
-                        Case{"--height 0.01", "--height"}, Case{"--impact-velocity 1", "--impact-velocity"},
-                        Case{"--integrator rk4", "--integrator"}, Case{"--impacts 1.5", "--impacts"},
-                        // Instantaneous impacts read e, g and (the damper's momentum) the body's mass only.
-                        Case{"--impact-model instantaneous --ball-E 9e9", "--ball-E"},
-                        Case{"--impact-model instantaneous --mass 0.1", "--mass"},
-                        Case{"--rig damper --impact-model instantaneous --rtol 1e-3", "--rtol"}}) {
-    const auto r = run_cli("walls --transient 10 --impacts 5 " + c.args + " --csv " + csv);
-    INFO(c.args << ": " << r.err);
-    CHECK(r.exit_code == 2);
-    CHECK(r.err.find(c.option) != std::string::npos);
-    CHECK(r.out.empty());
-    CHECK_FALSE(std::filesystem::exists(csv));
-  }
+  hertzdash::test::check_bad_inputs(
+      "walls --transient 10 --impacts 5",
+      {{"--gap 0", "--gap"}, {"--gap -1", "--gap"}, {"--rig drum", "--rig"}, {"--rig damper --gamma 2", "--gamma"},
+       {"--rig damper --amplitude 0.001", "--amplitude"}, {"--primary-mass 2", "--primary-mass"},
+       {"--force-amplitude 3", "--force-amplitude"}, {"--rig damper --primary-damping-ratio 1", "--primary-damping-ratio"},
+       {"--rig damper --primary-stiffness 0", "--primary-stiffness"}, {"--rig damper --impact-model hard", "--impact-model"},
+       {"--gravity 0 --gamma 2", "--gamma"}, {"--gamma 2 --amplitude 0.001", "--gamma"}, {"--height 0.01", "--height"},
+       {"--impact-velocity 1", "--impact-velocity"}, {"--integrator rk4", "--integrator"}, {"--impacts 1.5", "--impacts"},
+       // Instantaneous impacts read e, g and (the damper's momentum) the body's mass only.
+       {"--impact-model instantaneous --ball-E 9e9", "--ball-E"}, {"--impact-model instantaneous --mass 0.1", "--mass"},
+       {"--rig damper --impact-model instantaneous --rtol 1e-3", "--rtol"}});
 }

@@ -1,5 +1,6 @@
 // The registered rigs (simulation/rigs/rig.hpp), one line each, and what every rig shares: its
 // inputs' lookup and checks.
+#include "hertzdash/simulation/rigs/oscillator_rig.hpp"
 #include "hertzdash/simulation/rigs/rig.hpp"
 #include "hertzdash/simulation/rigs/shaker_rig.hpp"
 #include "hertzdash/simulation/rigs/walls_rig.hpp"
@@ -15,6 +16,7 @@ std::span<const Rig> rigs() {
   static const std::array table{
       shaker_rig(),
       walls_rig(),
+      oscillator_rig(),
   };
   return table;
 }

@@ -57,45 +57,20 @@ ShakerCommandRun run(const RunOptions& options, const PaperParameters& paper, co
   return r;
 }
 
-bool soft(const Run& r) { return r.run.impact_model == ShakerImpactModel::soft; }
-
-RigResult outcome(const Run& r) {
-  return {.heading = fmt::format("{} impacts{}", to_string(r.run.impact_model),
-                                 soft(r) ? fmt::format(", damping law '{}', integrator {}", r.law,
-                                                       to_string(r.run.integrator_used))
-                                         : fmt::format(", e = {}", r.setup.restitution)),
-          .scalars = {}, .rows = {}, .warnings = r.run.warnings, .end_reason = r.run.end_reason,
-          .work = soft(r) ? std::optional(r.run.work) : std::nullopt, .inputs = r.inputs};
-}
+RigResult outcome(const Run& r) { return sequence_outcome(r); }
 
 constexpr RigFieldOf<Run> results[] = {
     {{"gamma", "1", "the wall's peak acceleration over g, A (2 pi f)^2 / g"}, [](const Run& r) -> RigValue { return r.run.gamma; }},
     {{"frequency_Hz", "Hz", "the wall's frequency f"}, [](const Run& r) -> RigValue { return r.options.wall.frequency_Hz; }},
     {{"amplitude_m", "m", "the wall's amplitude A"}, [](const Run& r) -> RigValue { return r.options.wall.amplitude_m; }},
-    {{"impact_model", "", "soft or instantaneous", false, false, false},
-     [](const Run& r) -> RigValue { return std::string(to_string(r.run.impact_model)); }},
-    {{"damping", "", "the damping law", false, false, false}, [](const Run& r) -> RigValue { return r.law; }},
-    {{"integrator_used", "", "the integrator of the soft contacts (soft impacts only)", false, false, false},
-     [](const Run& r) -> RigValue { return soft(r) ? RigValue(std::string(to_string(r.run.integrator_used))) : RigValue(); }},
+    SequenceFields<Run>::impact_model, SequenceFields<Run>::damping, SequenceFields<Run>::integrator_used,
     {{"period", "", "the detected period in table cycles (0: none)"}, [](const Run& r) -> RigValue { return long{r.run.pattern.period}; }},
-    {{"impacts_per_period", "", "kept impacts per period"},
-     [](const Run& r) -> RigValue { return long{r.run.pattern.impacts_per_period}; }},
+    SequenceFields<Run>::impacts_per_period,
     {{"e_effective", "1", "mean rebound over impact speed, relative to the wall, of the kept impacts (null: none)"},
      [](const Run& r) -> RigValue { return r.run.e_effective; }},
     {{"sticking_episodes", "", "times the wall carried the body", true, true},
      [](const Run& r) -> RigValue { return r.run.sticking_episodes; }},
-    {{"impacts_run", "", "impacts run, transient and kept", false, true},
-     [](const Run& r) -> RigValue { return r.run.impacts_run; }},
-};
-
-constexpr RigColumnOf<ShakerImpact> table[] = {
-    {{"impact_time_s", "s", "impact (contact onset) time from the start"}, [](const ShakerImpact& i) { return i.time_s; }},
-    {{"impact_phase", "1", "phase of s(t) = A sin(2 pi f t) in [0, 1)"}, [](const ShakerImpact& i) { return i.phase; }},
-    {{"impact_speed_mps", "m/s", "impact speed relative to the wall"}, [](const ShakerImpact& i) { return i.impact_speed_mps; }},
-    {{"rebound_speed_mps", "m/s", "rebound speed relative to the wall"},
-     [](const ShakerImpact& i) { return i.rebound_speed_mps; }},
-    {{"contact_time_s", "s", "contact duration (0: instantaneous)"}, [](const ShakerImpact& i) { return i.contact_time_s; }},
-    {{"peak_force_N", "N", "largest contact force (0: instantaneous)"}, [](const ShakerImpact& i) { return i.peak_force_N; }},
+    SequenceFields<Run>::impacts_run,
 };
 
 constexpr std::string_view not_read[] = {"impact-velocity"};
@@ -115,7 +90,7 @@ const Rig& shaker_rig() {
        .run_option_notes = notes, .default_integrator = shaker_default_integrator, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest on the wall; phase of "
                             "s(t) = A sin(2 pi f t) in [0,1); speeds relative to the wall)",
-       .table = table, .run = run, .impacts = [](const Run& r) -> const std::vector<ShakerImpact>& { return r.run.impacts; },
+       .table = one_wall_impact_table, .run = run, .impacts = [](const Run& r) -> const std::vector<ShakerImpact>& { return r.run.impacts; },
        .outcome = outcome});
   return rig;
 }

@@ -3,7 +3,10 @@
 // harmonically vibrating wall s(t) = A sin(2 pi f t), the drop test's body, contact, law and e,
 // soft or instantaneous impacts, exact flights. Its inputs are model/shaker_parameters.hpp's.
 #include "hertzdash/simulation/rigs/rig.hpp"
+#include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
+
+#include <fmt/format.h>
 
 namespace hertzdash {
 
@@ -15,6 +18,52 @@ inline constexpr const char* shaker_default_integrator = "gbs8-regularized";
 inline constexpr RigOptionNote shaker_integrator_note{
     "integrator", "Integrator of the soft contacts, one in regularising variables (docs/shaker.md): dopri5-regularized, "
                   "cvode-regularized, gbs8-regularized, taylor-regularized (default: gbs8-regularized)"};
+
+/// The per-impact table of a rig with one wall, the shaker's and the impact oscillator's.
+inline constexpr RigColumnOf<SequenceImpact> one_wall_impact_table[] = {
+    {{"impact_time_s", "s", "impact (contact onset) time from the start"}, [](const SequenceImpact& i) { return i.time_s; }},
+    {{"impact_phase", "1", "phase of the drive (the wall's A sin(2 pi f t), the oscillator's F cos(2 pi f t)) in [0, 1)"},
+     [](const SequenceImpact& i) { return i.phase; }},
+    {{"impact_speed_mps", "m/s", "impact speed relative to the wall"},
+     [](const SequenceImpact& i) { return i.impact_speed_mps; }},
+    {{"rebound_speed_mps", "m/s", "rebound speed relative to the wall"},
+     [](const SequenceImpact& i) { return i.rebound_speed_mps; }},
+    {{"contact_time_s", "s", "contact duration (0: instantaneous)"}, [](const SequenceImpact& i) { return i.contact_time_s; }},
+    {{"peak_force_N", "N", "largest contact force (0: instantaneous)"}, [](const SequenceImpact& i) { return i.peak_force_N; }},
+};
+
+/// What a rig on the impact-sequence driver reports besides its fields: the heading "[prefix]soft
+/// impacts, damping law 'L', integrator I" or "[prefix]instantaneous impacts, e = E", its
+/// warnings, end reason, work (soft impacts) and inputs. `Run` has setup, law, inputs and run.
+template <class Run>
+RigResult sequence_outcome(const Run& r, std::string_view prefix = "") {
+  const bool soft = r.run.impact_model == ShakerImpactModel::soft;
+  return {.heading = fmt::format("{}{} impacts{}", prefix, to_string(r.run.impact_model),
+                                 soft ? fmt::format(", damping law '{}', integrator {}", r.law, to_string(r.run.integrator_used))
+                                      : fmt::format(", e = {}", r.setup.restitution)),
+          .scalars = {}, .rows = {}, .warnings = r.run.warnings, .end_reason = r.run.end_reason,
+          .work = soft ? std::optional(r.run.work) : std::nullopt, .inputs = r.inputs};
+}
+
+/// Fields every rig on the impact-sequence driver reports, for its `Run` (with law and run).
+template <class Run>
+struct SequenceFields {
+  static RigValue text(const char* t) { return std::string(t); }
+  static constexpr RigFieldOf<Run> impact_model{{"impact_model", "", "soft or instantaneous", false, false, false},
+                                                [](const Run& r) { return text(to_string(r.run.impact_model)); }};
+  static constexpr RigFieldOf<Run> damping{{"damping", "", "the damping law", false, false, false},
+                                           [](const Run& r) -> RigValue { return r.law; }};
+  static constexpr RigFieldOf<Run> integrator_used{
+      {"integrator_used", "", "the integrator of the soft contacts (soft impacts only)", false, false, false},
+      [](const Run& r) {
+        return r.run.impact_model == ShakerImpactModel::soft ? text(to_string(r.run.integrator_used)) : RigValue();
+      }};
+  static constexpr RigFieldOf<Run> impacts_per_period{
+      {"impacts_per_period", "", "kept impacts per period"},
+      [](const Run& r) -> RigValue { return long{r.run.pattern.impacts_per_period}; }};
+  static constexpr RigFieldOf<Run> impacts_run{{"impacts_run", "", "impacts run, transient and kept", false, true},
+                                               [](const Run& r) -> RigValue { return r.run.impacts_run; }};
+};
 
 /// A shaker run: its resolved set-up, law, solver and options, its inputs and its outcome.
 struct ShakerCommandRun {

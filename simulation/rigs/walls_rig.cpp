@@ -114,15 +114,7 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
 bool soft(const Run& r) { return r.run.impact_model == ShakerImpactModel::soft; }
 bool box(const Run& r) { return r.run.rig == TwoWallsRig::box; }
 
-RigResult outcome(const Run& r) {
-  return {.heading = fmt::format("{}, {} impacts{}", box(r) ? "driven box" : "impact damper",
-                                 to_string(r.run.impact_model),
-                                 soft(r) ? fmt::format(", damping law '{}', integrator {}", r.law,
-                                                       to_string(r.run.integrator_used))
-                                         : fmt::format(", e = {}", r.setup.restitution)),
-          .scalars = {}, .rows = {}, .warnings = r.run.warnings, .end_reason = r.run.end_reason,
-          .work = soft(r) ? std::optional(r.run.work) : std::nullopt, .inputs = r.inputs};
-}
+RigResult outcome(const Run& r) { return sequence_outcome(r, box(r) ? "driven box, " : "impact damper, "); }
 
 /// A number the run has only where `has` holds.
 RigValue only(bool has, double v) { return has ? RigValue(v) : RigValue(); }
@@ -137,14 +129,9 @@ constexpr RigFieldOf<Run> results[] = {
      [](const Run& r) { return only(box(r), r.options.drive.amplitude_m); }},
     {{"gamma", "1", "A (2 pi f)^2 / g (box; null with g = 0)", false},
      [](const Run& r) { return only(box(r), shaker_gamma(r.options.drive, r.setup.gravity_mps2)); }},
-    {{"impact_model", "", "soft or instantaneous", false, false, false},
-     [](const Run& r) -> RigValue { return std::string(to_string(r.run.impact_model)); }},
-    {{"damping", "", "the damping law", false, false, false}, [](const Run& r) -> RigValue { return r.law; }},
-    {{"integrator_used", "", "the integrator of the soft contacts (soft impacts only)", false, false, false},
-     [](const Run& r) -> RigValue { return soft(r) ? RigValue(std::string(to_string(r.run.integrator_used))) : RigValue(); }},
+    SequenceFields<Run>::impact_model, SequenceFields<Run>::damping, SequenceFields<Run>::integrator_used,
     {{"period", "", "the detected period in drive cycles (0: none)"}, [](const Run& r) -> RigValue { return long{r.run.pattern.period}; }},
-    {{"impacts_per_period", "", "kept impacts per period"},
-     [](const Run& r) -> RigValue { return long{r.run.pattern.impacts_per_period}; }},
+    SequenceFields<Run>::impacts_per_period,
     {{"impacts_per_cycle", "1", "impacts per drive cycle (0: no period)"},
      [](const Run& r) -> RigValue { return r.run.impacts_per_cycle; }},
     {{"floor_impacts", "", "kept impacts on the floor"}, [](const Run& r) -> RigValue { return r.run.floor_impacts; }},
@@ -168,8 +155,7 @@ constexpr RigFieldOf<Run> results[] = {
      [](const Run& r) { return energy(r, &EnergyAccount::impact_loss_J); }},
     {{"sticking_episodes", "", "times a wall carried the body", true, true},
      [](const Run& r) -> RigValue { return r.run.sticking_episodes; }},
-    {{"impacts_run", "", "impacts run, transient and kept", false, true},
-     [](const Run& r) -> RigValue { return r.run.impacts_run; }},
+    SequenceFields<Run>::impacts_run,
 };
 
 constexpr RigColumnOf<TwoWallsImpact> table[] = {

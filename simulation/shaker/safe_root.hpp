@@ -1,8 +1,8 @@
 #pragma once
 // The first root after a of a smooth function h with |h''| <= M on [a, limit], h(a) >= 0, found
-// by safe steps that can miss no root, grazing ones included: the two-wall rig's next impact on
-// either wall, the instant a carried body leaves a wall (simulation/shaker/two_walls.hpp), and
-// the shaker's next impact on its one wall (simulation/shaker/next_impact.hpp). For t >= a
+// by safe steps that can miss no root, grazing ones included: the next impact on each wall, the
+// instant a carried body leaves a wall and the end of the window where it cannot come back
+// (simulation/shaker/impact_sequence.hpp). For t >= a
 //   h(a) + h'(a)(t - a) - M (t - a)^2 / 2  <=  h(t)  <=  h(a) + h'(a)(t - a) + M (t - a)^2 / 2,
 // so the lower bound is positive on (a, a + d), d = (h' + sqrt(h'^2 + 2 M h)) / M, and the search
 // moves there; once h' < 0 and h'^2 >= 2 M h, h(a + d_up) <= 0 for

@@ -1,7 +1,7 @@
 #pragma once
 // A body bouncing on a harmonically vibrating wall (the shaker): the wall moves as
 // s(t) = A sin(2 pi f t) (model/wall_motion.hpp), the body flies freely between impacts (exact
-// parabolas; the next impact is the first root of the gap, simulation/shaker/next_impact.hpp),
+// parabolas; the next impact is the first root of the gap, simulation/shaker/impact_sequence.hpp),
 // and each impact is either
 //   - soft: the contact of the drop test's body and law, integrated with the wall's motion as a
 //     forcing (model/contact_environments.hpp, simulation/run/soft_contact.hpp), or
@@ -19,20 +19,21 @@
 // else phi0 = 0, h0 = A + g T^2 / 8. h0 = 0 (with any phase) puts the body at rest on the wall,
 // carried until the wall first pulls away from it. Where attractors coexist (for e = 0.5 a
 // chattering, sticking orbit beside the bouncing ones) the start picks one.
+// The sequence is run by the impact-sequence driver (simulation/shaker/impact_sequence.hpp: the
+// flight a free body under gravity, the box the prescribed wall, one wall, the floor).
 // Sticking: a body whose relative rebound speed (instantaneous) or impact speed (soft) falls
-// below stick_speed = 1e-6 g/f while the wall pushes it (s'' > -g) rests on the wall and is
-// carried until the wall's acceleration falls below -g (sin(w t) >= 1/Gamma), then released with
-// the wall's velocity: the end of a chatter sequence (impacts accumulating in finite time, each
-// rebound e times the last) or of a contact that does not rebound. Never more than
+// below stick_speed = 1e-6 g/f rests on the wall and is carried while the wall pushes it
+// (s'' > -g), until the wall's acceleration falls below -g (sin(w t) >= 1/Gamma), then released
+// with the wall's velocity: the end of a chatter sequence (impacts accumulating in finite time,
+// each rebound e times the last) or of a contact that does not rebound. Never more than
 // max_impacts_per_cycle impacts in one table cycle (more is chatter the threshold did not stop:
 // the body is carried, with a warning); a body that cannot leave the wall (Gamma <= 1) ends the
 // run with a warning. The soft model's resting contact is approximated by the rigid carry (its
 // static deformation, (m (g + s'')/K)^{2/3}, is left out).
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/model/wall_motion.hpp"
-#include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/simulation/run/solver_settings.hpp"
-#include "hertzdash/simulation/shaker/impact_pattern.hpp"
+#include "hertzdash/simulation/shaker/impact_sequence.hpp"
 
 #include <optional>
 #include <string>
@@ -40,18 +41,6 @@
 #include <vector>
 
 namespace hertzdash {
-
-enum class ShakerImpactModel { soft, instantaneous };
-
-/// "soft" or "instantaneous".
-const char* to_string(ShakerImpactModel m);
-/// The model spelled `name`; InvalidParameter("impact-model", ...) otherwise.
-ShakerImpactModel parse_shaker_impact_model(std::string_view name);
-
-/// The most impacts one table cycle may hold before the body is taken as carried (chatter).
-inline constexpr int max_impacts_per_cycle = 10000;
-/// The most impacts (transient plus kept) of one run.
-inline constexpr int max_shaker_impacts = 10000000;
 
 struct ShakerOptions {
   HarmonicWallMotion wall;
@@ -67,28 +56,13 @@ struct ShakerOptions {
 /// `start-phase`.
 void validate(const ShakerOptions& o);
 
-/// One kept impact. Speeds relative to the wall, positive.
-struct ShakerImpact {
-  double time_s = 0;             ///< impact (contact onset) time [s]
-  double phase = 0;              ///< the table phase of the impact, in [0, 1)
-  double impact_speed_mps = 0;   ///< relative impact speed [m/s]
-  double rebound_speed_mps = 0;  ///< relative rebound speed [m/s]
-  double contact_time_s = 0;     ///< 0 for an instantaneous impact [s]
-  double peak_force_N = 0;       ///< 0 for an instantaneous impact [N]
-};
+/// One kept impact (its wall always the floor). Speeds relative to the wall, positive.
+using ShakerImpact = SequenceImpact;
 
-struct ShakerRun {
+/// The driver's result (its energy and sampled amplitude not kept) and:
+struct ShakerRun : ImpactSequence {
   double gamma = 0;  ///< A (2 pi f)^2 / g
   ShakerImpactModel impact_model = ShakerImpactModel::soft;
-  std::vector<ShakerImpact> impacts;  ///< the kept impacts
-  ImpactPattern pattern;              ///< period and impacts per period of the kept impacts
-  double e_effective = 0;             ///< mean rebound/impact speed ratio of the kept impacts (NaN: none)
-  long impacts_run = 0;               ///< transient and kept
-  long sticking_episodes = 0;         ///< times the body was carried by the wall (the start's included)
-  std::vector<std::string> warnings;  ///< chatter caps, a body that never leaves, a flight without impact
-  std::string end_reason;
-  IntegratorKind integrator_used = IntegratorKind::gbs8_regularized;  ///< soft model only
-  IntegrationStats work;                                              ///< every soft contact
 };
 
 /// The start (h0 [m], phi0) of `options` for restitution e and gravity g (see above).

@@ -25,10 +25,22 @@ def cli_json(*args):
 
 
 def test_every_rig_is_a_function_and_a_command():
-    assert hertzdash.rigs() == ["shaker", "walls"]
+    assert hertzdash.rigs() == ["shaker", "walls", "oscillator"]
     for rig in hertzdash.rigs():
         assert callable(getattr(hertzdash, rig))
         assert subprocess.run([BIN, rig, "--help"], capture_output=True).returncode == 0
+
+
+def test_oscillator_gives_the_programs_numbers():
+    # The impact oscillator's default stop (inside the steady amplitude) with e = 0.7: Python's
+    # function, hertzdash.run and the command give the same JSON; Newton's law gives e_effective = e.
+    kw = dict(impact_model="instantaneous", restitution=0.7, stop_distance=0.002, impacts=4, transient=100)
+    d = hertzdash.oscillator(**kw)
+    assert d == hertzdash.run("oscillator", **kw)
+    assert d == cli_json("oscillator", "--impact-model", "instantaneous", "--restitution", "0.7", "--stop-distance",
+                         "0.002", "--impacts", "4", "--transient", "100")
+    assert d["e_effective"] == pytest.approx(0.7, rel=1e-12)
+    assert len(d["impact_phase"]) == 4
 
 
 def test_shaker_gives_the_programs_numbers():
