@@ -81,7 +81,7 @@ bench: build
 # The cold build and the rebuild after editing one damping law's header, ccache off, in a scratch
 # directory of their own (tools/measure-build-times.sh): the generated blocks of docs/build-times.md
 # and of the README. Half an hour and more on 2 cores.
-build-times: deps
+build-times: deps-paper
 	tools/measure-build-times.sh $(BUILD_TIMES_BUILD) $(JOBS)
 
 # The whole ctest suite under AddressSanitizer + UndefinedBehaviorSanitizer, every report fatal

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # `make build-times`: how long a law author waits. Configures a scratch build directory with
 # ccache disabled, times the cold build (`cmake --build -j JOBS`), touches one damping law's header,
-# times the rebuild, and writes both, with the machine's cores, the load average around each and
+# times the rebuild, then the whole test suite on that built tree (`ctest -j JOBS`, what `make test`
+# runs once built; the article's build needs debian-packages-paper.txt), and writes the three, with
+# the machine's cores, the load average around each and
 # the git revision, into the generated blocks of docs/build-times.md (the table and the files the
 # rebuild compiled) and of README.md (one sentence beside the opening commands).
 #   tools/measure-build-times.sh [BUILD_DIR [JOBS]]   (default: build-times, nproc)
 # LAW_HEADER chooses the header touched (default model/damping/laws/hunt_crossley.hpp). The
 # scratch directory is removed first and kept afterwards (its logs: configure.log, cold.log,
-# rebuild.log).
+# rebuild.log, ctest.log).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build-times}
@@ -39,6 +41,12 @@ touch "$law"
 rebuild_load_start=$(load)
 rebuild_s=$(timed "$build/rebuild.log" cmake --build "$build" -j "$jobs")
 rebuild_load_end=$(load)
+ctest_load_start=$(load)
+ctest_s=$(cd "$build" && timed ctest.log ctest -j "$jobs")
+ctest_load_end=$(load)
+# The slowest tests, from ctest's lines "N/M Test #K: name ....   Passed   12.34 sec".
+slowest=$(sed -n 's/.*Test *#[0-9]*: \(.*[^. ]\) *\.\.*  *Passed *\([0-9.]*\) sec$/\2|\1/p' "$build/ctest.log" |
+  sort -t'|' -k1,1 -rn | head -5)
 # Source paths from make's object names; a generated unit is named by its place in the build directory.
 compiled=$(sed -n 's/.*Building CXX object \(.*\)\.o$/\1/p' "$build/rebuild.log" |
   sed 's|CMakeFiles/[^/]*\.dir/||; s|^.*/__/__/generated/|BUILD/generated/|')
@@ -61,6 +69,11 @@ trap 'rm -f "$page" "$sentence"' EXIT
   echo "|---|---|---|---|"
   echo "| cold (a fresh build directory: libraries, program, studies, benchmark, tests) | $(duration "$cold_s") | $cold_load_start | $cold_load_end |"
   echo "| after \`touch $law\` | $(duration "$rebuild_s") | $rebuild_load_start | $rebuild_load_end |"
+  echo "| the test suite on the built tree (\`ctest -j $jobs\`, as \`make test\`) | $(duration "$ctest_s") | $ctest_load_start | $ctest_load_end |"
+  echo
+  echo "The slowest tests (seconds each, run $jobs at a time):"
+  echo
+  printf '%s\n' "$slowest" | awk -F'|' '{ printf "- `%s`: %.0f s\n", $2, $1 }'
   echo
   echo "The rebuild compiled $compiled_count files:"
   echo
@@ -81,5 +94,6 @@ replace_block() {
 }
 replace_block docs/build-times.md build-times "$page"
 replace_block README.md build-times "$sentence"
-echo "cold build $(duration "$cold_s"), rebuild after touching $law $(duration "$rebuild_s") ($compiled_count files);"
+echo "cold build $(duration "$cold_s"), rebuild after touching $law $(duration "$rebuild_s") ($compiled_count files),"
+echo "the test suite $(duration "$ctest_s");"
 echo "written to docs/build-times.md and README.md"
