@@ -18,8 +18,9 @@
 // rejects the step and shrinks.
 //
 // Covariance s^2 (J^T J)^-1 with s^2 = chi^2 / (n - p) (gsl_multifit_nlinear_covar), mapped to
-// the parameters by the transforms' derivatives; a column of J that is zero, or a variance GSL's
-// pivoting sets to zero, is an infinite standard error. Condition number: of J with the law's
+// the parameters by the transforms' derivatives; a column of J no larger than the central
+// difference's rounding noise (about 1e3 eps (|y / sd| + |r|) / h: the data do not see that
+// variable), or a variance GSL's pivoting sets to zero, is an infinite standard error. Condition number: of J with the law's
 // columns scaled to relative changes (d r / d ln p) and the nuisances' to their variables.
 // Identifiable: not failed, condition number below identifiable_condition_limit, no
 // correlation beyond identifiable_correlation_limit, every standard error finite.
