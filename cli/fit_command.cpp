@@ -45,6 +45,9 @@ std::vector<std::string> given_options(const CLI::App& sub) {
 
 // AIC differences below 2 do not prefer one model over another (Burnham and Anderson).
 constexpr double aic_tie = 2.0;
+// cv_rms values that agree to this relative difference share a cv_rank (the model's accuracy:
+// laws that make the same e agree to about it, not to the last bit).
+constexpr double cv_tie = 1e-9;
 
 // The profile-likelihood intervals, where computed (--profile-intervals).
 void print_profile_intervals(const std::vector<FittedParameter>& parameters) {
@@ -109,7 +112,7 @@ void print_fit(const FitRun& r, const FitResult& f) {
       std::cout << fmt::format("  cross-validation ({} {} left out in turn): RMS prediction error {:.4g}{}, {:.3g} "
                                "times the {} {:.4g}{}\n",
                                cv.folds, folds, cv.rms_prediction_error, unit, cv.ratio,
-                               bounce ? "timing sigma" : trace ? "noise" : "data's scatter", cv.scatter, unit);
+                               bounce ? "timing sigma" : trace ? "standardized noise" : "data's scatter", cv.scatter, unit);
     else std::cout << fmt::format("  cross-validation failed: {}\n", cv.failure);
   }
   if (trace)
@@ -140,7 +143,12 @@ void print_law_ranking(const FitRun& r) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return r.fits[a].cross_validation->rms_prediction_error < r.fits[b].cross_validation->rms_prediction_error;
     });
-    for (std::size_t k = 0; k < order.size(); ++k) cv_rank[order[k]] = k + 1;
+    // Laws whose cv_rms agree to a relative 1e-9 share a rank (1, 1, 3).
+    const auto rms = [&](std::size_t k) { return r.fits[order[k]].cross_validation->rms_prediction_error; };
+    for (std::size_t k = 0; k < order.size(); ++k)
+      cv_rank[order[k]] = k > 0 && std::abs(rms(k) - rms(k - 1)) <= cv_tie * std::max(std::abs(rms(k)), std::abs(rms(k - 1)))
+                              ? cv_rank[order[k - 1]]
+                              : k + 1;
   }
   std::string ties;
   for (std::size_t i = 0; i < r.fits.size(); ++i) {

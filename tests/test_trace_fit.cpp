@@ -584,7 +584,9 @@ TEST_CASE("CLI fit: a failed fit exits 3 and prints no identifiable, refusals ex
 // predicted from a fit of the other four with its own onset re-fitted). The force of the truth
 // above with white noise of 1 % of its peak: the law that made it predicts the left-out samples
 // to that noise, so the RMS prediction error is the noise sigma, which the fit's weight estimates
-// (the channel's noise_sigma, the cross-validation's scatter): their ratio is 1 within the spread
+// (the channel's noise_sigma): scored in standardized residuals (each divided by its channel's
+// noise sigma, so that channels of different units add up), the scatter is 1 and the RMS
+// prediction error, the ratio, is 1 within the spread
 // of an RMS over the n samples (1 / sqrt(2 n), n about 1300 at 1 MHz: 2 %) and of the weight's
 // robust estimate (a median absolute deviation: about 3 %); [0.85, 1.15] is about 4 of those.
 // The undamped law cannot make the rebound (e = 1 against 0.80): with only E and the onset to
@@ -604,7 +606,8 @@ TEST_CASE("fit --trace --cross-validate: the law that made a trace predicts left
   INFO("rms " << cv.rms_prediction_error << " scatter " << cv.scatter << " failure " << cv.failure);
   CHECK(cv.folds == trace_folds);
   CHECK(cv.failure.empty());
-  CHECK(cv.scatter == Approx(f.groups[0].unit).epsilon(1e-12));
+  CHECK(cv.scatter == 1);  // standardized residuals (was the channel's noise sigma in N)
+  CHECK(cv.rms_prediction_error == Approx(cv.ratio).epsilon(1e-12));
   CHECK(cv.ratio > 0.85);
   CHECK(cv.ratio < 1.15);
 

@@ -70,9 +70,10 @@ struct Problem {
     const std::vector<double> v = full(zf);
     if (!data->residuals(law_values(v), nuisance_values(v), r)) std::fill(r, r + n(), outside_residual);
   }
-  // Central differences, step 1e-6 in every free variable.
+  // Central differences, step h = 1e-6 in every free variable.
+  static constexpr double step = 1e-6;
   void jacobian(const double* zf, gsl_matrix* J) {
-    const double h = 1e-6;
+    const double h = step;
     std::vector<double> zz(zf, zf + p()), plus(n()), minus(n());
     for (std::size_t j = 0; j < p(); ++j) {
       zz[j] = zf[j] + h;
@@ -131,6 +132,7 @@ Solution solve(Problem& problem, const std::vector<double>& z0, const FitSetting
     for (double r : s.f) s.rss += r * r;
     return s;
   }
+  if (n < p) throw DataError(problem.data->too_few(n, p));  // GSL's workspace needs n >= p
   std::vector<double> zs = z0;
   gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
   const gsl_ptr<gsl_multifit_nlinear_workspace> w(gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p),
@@ -197,8 +199,23 @@ double scaled_condition_number(const gsl_matrix* J, const Problem& problem, cons
   return smallest > 0 ? largest / smallest : inf;
 }
 
-// The covariance s2 (J^T J)^-1 of the variables, infinite for a variable J does not see.
-std::vector<std::vector<double>> covariance(const gsl_matrix* J, double s2) {
+// The norm of a Jacobian column of rounding noise alone: each r_i = (y_i - model_i) / sd_i is
+// reproducible to model_rounding |y_i - r_i sd_i| / sd_i <= model_rounding (|y_i| / sd_i + |r_i|)
+// (a model run is thousands of floating-point steps, not one: its rounding is about 1e3 eps, not
+// eps), so a central difference of step h is noise below model_rounding (|y / sd| + |r|) / h.
+double difference_noise(const FitData& data, double rss) {
+  constexpr double model_rounding = 1e3 * std::numeric_limits<double>::epsilon();
+  double y2 = 0;
+  for (std::size_t i = 0; i < data.rows(); ++i) {
+    const FitPoint row = data.row(i);
+    y2 += std::pow(row.measured / row.unit, 2);
+  }
+  return model_rounding * (std::sqrt(y2) + std::sqrt(rss)) / Problem::step;
+}
+
+// The covariance s2 (J^T J)^-1 of the variables, infinite for a variable J does not see: its
+// column's norm at most `noise` (difference_noise), or a variance GSL's pivoting sets to zero.
+std::vector<std::vector<double>> covariance(const gsl_matrix* J, double s2, double noise) {
   const std::size_t p = J->size2;
   const gsl_ptr<gsl_matrix> c(gsl_matrix_alloc(p, p), gsl_matrix_free);
   if (const int s = gsl_multifit_nlinear_covar(J, 0.0, c.get()); s != GSL_SUCCESS)
@@ -208,7 +225,7 @@ std::vector<std::vector<double>> covariance(const gsl_matrix* J, double s2) {
     for (std::size_t j = 0; j < p; ++j) out[i][j] = s2 * gsl_matrix_get(c.get(), i, j);
   for (std::size_t j = 0; j < p; ++j) {
     gsl_vector_const_view column = gsl_matrix_const_column(J, j);
-    if (gsl_blas_dnrm2(&column.vector) == 0 || !(out[j][j] > 0))
+    if (!(gsl_blas_dnrm2(&column.vector) > noise) || !(out[j][j] > 0))
       for (std::size_t i = 0; i < p; ++i) out[i][j] = out[j][i] = i == j ? inf : NAN;
   }
   return out;
@@ -252,6 +269,7 @@ CrossValidation cross_validate(const FitData& data, const FitSettings& settings,
   }
   FitSettings fold = settings;
   fold.profile_intervals = fold.cross_validate = false;
+  const bool standardized = data.mixed_units();
   double sum_sq = 0, dof = 0;
   for (std::size_t k = 0; k < cv.folds; ++k) {
     try {
@@ -269,17 +287,17 @@ CrossValidation cross_validate(const FitData& data, const FitSettings& settings,
       }
       const Solution s = solve(problem, z0, fold);
       if (!(s.rss < outside_residual)) throw std::runtime_error("the model cannot be evaluated on the left-out data");
-      for (std::size_t i = 0; i < held->rows(); ++i) sum_sq += std::pow(s.f[i] * held->row(i).unit, 2);
+      for (std::size_t i = 0; i < held->rows(); ++i) sum_sq += std::pow(standardized ? s.f[i] : s.f[i] * held->row(i).unit, 2);
       dof += static_cast<double>(held->rows()) - static_cast<double>(problem.nuisances.size());
-    } catch (const DataError&) {
-      throw;
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {  // a DataError too: a fold too small to fit, the full fit stands
       cv.failure = fmt::format("the fit without {}: {}", data.fold_name(k), e.what());
       return cv;
     }
   }
   cv.rms_prediction_error = std::sqrt(sum_sq / dof);
-  if (data.sd_known()) {
+  if (standardized) {
+    cv.scatter = 1;  // of r_i = e_i / sd_i
+  } else if (data.sd_known()) {
     double s = 0;
     for (const FitPoint& pt : fit.points) s += pt.unit * pt.unit;
     cv.scatter = std::sqrt(s / static_cast<double>(fit.points.size()));
@@ -332,7 +350,7 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& settings
   fit.sigma_estimated = !data.sd_known();
   fit.sigma = fit.sigma_estimated ? std::sqrt(s2) : 0.0;
   fit.reduced_chi_square = fit.sigma_estimated ? NAN : s2;
-  const std::vector<std::vector<double>> C = covariance(s.J.get(), s2);
+  const std::vector<std::vector<double>> C = covariance(s.J.get(), s2, difference_noise(data, s.rss));
   fit.condition_number = scaled_condition_number(s.J.get(), problem, v);
 
   // The parameters: the law's, then the nuisances of every row; a group's own with its group.

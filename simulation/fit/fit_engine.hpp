@@ -18,8 +18,9 @@
 // rejects the step and shrinks.
 //
 // Covariance s^2 (J^T J)^-1 with s^2 = chi^2 / (n - p) (gsl_multifit_nlinear_covar), mapped to
-// the parameters by the transforms' derivatives; a column of J that is zero, or a variance GSL's
-// pivoting sets to zero, is an infinite standard error. Condition number: of J with the law's
+// the parameters by the transforms' derivatives; a column of J no larger than the central
+// difference's rounding noise (about 1e3 eps (|y / sd| + |r|) / h: the data do not see that
+// variable), or a variance GSL's pivoting sets to zero, is an infinite standard error. Condition number: of J with the law's
 // columns scaled to relative changes (d r / d ln p) and the nuisances' to their variables.
 // Identifiable: not failed, condition number below identifiable_condition_limit, no
 // correlation beyond identifiable_correlation_limit, every standard error finite.
@@ -41,9 +42,11 @@
 //
 // Cross-validation (FitSettings::cross_validate): each of the kind's folds in turn is left out;
 // the rest is fitted (from the estimate), then the left-out part predicted with the law's
-// parameters fixed there and only its own nuisances fitted. The prediction error's RMS, in the
-// data's units (r_i sd_i), is sqrt(sum e^2 / sum (n_k - q_k)), n_k the left-out rows and q_k their
-// nuisances; the data's own scatter is the RMS of sd_i where known, else the fit's sigma; a
+// parameters fixed there and only its own nuisances fitted. The prediction error's RMS is
+// sqrt(sum e^2 / sum (n_k - q_k)), n_k the left-out rows and q_k their nuisances, e_i = r_i sd_i
+// in the data's unit where the rows share one (a table's e, a recording's times), else
+// (FitData::mixed_units: a trace's channels in N, m/s^2, m) the standardized r_i, dimensionless;
+// the data's own scatter is then 1, else the RMS of sd_i where known, else the fit's sigma; a
 // ratio about 1 for a law that predicts new data as well as the data allow.
 #include "hertzdash/simulation/fit/profile_interval.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
@@ -140,8 +143,8 @@ struct FitGroup {
 /// The cross-validation of a fit (the header's "Cross-validation").
 struct CrossValidation {
   std::size_t folds = 0;
-  double rms_prediction_error = 0;  ///< in the data's unit
-  double scatter = 0;               ///< RMS of sd_i, or the fit's sigma
+  double rms_prediction_error = 0;  ///< in the data's unit; of the standardized r_i with mixed units
+  double scatter = 0;               ///< RMS of sd_i, or the fit's sigma; 1 with mixed units
   double ratio = 0;                 ///< rms_prediction_error / scatter
   std::string failure;              ///< why a fold could not be fitted (the values above then unset), else empty
 };
@@ -211,6 +214,8 @@ class FitData {
   virtual bool residuals(const std::vector<double>& law, const std::vector<double>& nuisances, double* r) = 0;
   /// sd_i known (chi^2 criteria) or one common sigma estimated.
   virtual bool sd_known() const = 0;
+  /// Rows in different units (a trace's channels): cross-validation scores the standardized r_i.
+  virtual bool mixed_units() const { return false; }
   /// Least RSS / n with sigma estimated (the model's accuracy) [the data's unit squared].
   virtual double least_variance() const { return 0; }
   /// The work so far, bounded by FitSettings::max_work (a trace's RK4 steps and interpolations).

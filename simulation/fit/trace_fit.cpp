@@ -172,6 +172,7 @@ class TraceData final : public FitData {
     return true;
   }
   bool sd_known() const override { return true; }
+  bool mixed_units() const override { return true; }  // channels in N, m/s^2, m
   double work() const override { return model_.steps() + evaluations_ * static_cast<double>(rows()); }
   std::string too_few(std::size_t n, std::size_t p) const override {
     return fmt::format("{}: {} values cannot determine {} parameters", setup_->path, n, p);
