@@ -1,7 +1,7 @@
 #pragma once
 // A damped linear oscillator under a harmonic force, in closed form: the primary of the impact
 // damper (a box on a spring, simulation/shaker/two_walls.hpp) between impacts, the impact
-// oscillator's body between impacts (simulation/shaker/oscillator.hpp), with no spring a body in
+// oscillator's body between impacts (simulation/rigs/oscillator_rig.hpp), with no spring a body in
 // free flight under gravity, and, with no response of its own, the harmonically driven box.
 // Displacement X [m] (the damper's from the static equilibrium),
 //   M X'' + c X' + k X = F0 sin(w t + phi) + Fc,     c = 2 zeta sqrt(k M),   0 <= zeta < 1,

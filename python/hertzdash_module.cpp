@@ -57,11 +57,12 @@ std::string option_list() {
   return names;
 }
 
-const RunOption& option_named(const std::string& keyword, const char* function) {
+// `own_inputs`: a rig's inputs, listed before the options.
+const RunOption& option_named(const std::string& keyword, const char* function, const std::string& own_inputs = {}) {
   const RunOption* o = find_run_option(keyword);
   if (!o || python_keyword(o->name) != keyword)
-    throw py::type_error(fmt::format("{}() got an unexpected keyword argument '{}'; options: {}", function, keyword,
-                                     option_list()));
+    throw py::type_error(fmt::format("{}() got an unexpected keyword argument '{}'; {}options: {}", function, keyword,
+                                     own_inputs.empty() ? "" : "inputs: " + own_inputs + "; ", option_list()));
   return *o;
 }
 
@@ -570,7 +571,11 @@ py::dict py_run_rig(const Rig& rig, const py::kwargs& kwargs) {
     const std::string keyword = key.cast<std::string>();
     const auto own = std::find_if(rig.inputs.begin(), rig.inputs.end(),
                                   [&](const ParameterDecl& d) { return python_keyword(d.key) == keyword; });
-    if (own == rig.inputs.end()) set_option(options, option_named(keyword, rig.name.data()), value);
+    if (own == rig.inputs.end()) {
+      std::string names;
+      for (const ParameterDecl& d : rig.inputs) names += (names.empty() ? "" : ", ") + python_keyword(d.key);
+      set_option(options, option_named(keyword, rig.name.data(), names), value);
+    }
     else if (value.is_none()) continue;  // None: the default
     else if (own->type == ParameterType::text) inputs.texts[std::string(own->key)] = py::str(value).cast<std::string>();
     else if (py::isinstance<py::bool_>(value) || !py::hasattr(value, "__float__")) throw py::type_error(keyword + ": expected a number");

@@ -1,4 +1,4 @@
-// The impact oscillator with a stop (simulation/shaker/oscillator.hpp): while it does not reach the
+// The impact oscillator with a stop (simulation/rigs/oscillator_rig.hpp): while it does not reach the
 // stop, the closed-form linear response (its steady amplitude and phase, and from rest the
 // transient's extremes, computed here in real form, independently of the run's complex closed
 // form); when it does, the energy balance of the run, with and without sticking on the stop.

@@ -1,7 +1,8 @@
 // The rig table (simulation/rigs/rig.hpp) and what every front end makes of it: each registered
 // rig is a command whose --help lists every declared input, its run fills one scalar per result
 // field and one cell per table column, and its JSON holds every field the run has under its name;
-// a case file runs a rig over a grid (simulation/sweep/sweep_case.hpp).
+// a case file runs a rig over a grid (simulation/sweep/sweep_case.hpp), checked against the rig
+// when read.
 #include "cli_runner.hpp"
 #include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
@@ -9,7 +10,9 @@
 #include "hertzdash/simulation/reports/rig_report.hpp"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <variant>
@@ -87,4 +90,93 @@ TEST_CASE("a case file with rig = \"shaker\" sweeps gamma: a row per point, the 
   CHECK(i.columns() == std::vector<std::string>{"run", "gamma", "n", "impact_time_s", "impact_phase", "impact_speed_mps",
                                                 "rebound_speed_mps", "contact_time_s", "peak_force_N"});
   CHECK(i.rows() == 2 * 4);
+}
+
+TEST_CASE("a rig's case file is checked against the rig when read: exit 2 naming the key and line, no file", "[rigs][sweep]") {
+  // Each case gives what its rig refuses: an option it does not read, an input of the other walls
+  // variant (in [base], or by a [grid] value of `rig`), gamma with amplitude, a draw out of range.
+  const test::ScratchDir dir;
+  const std::pair<const char*, const char*> cases[] = {
+      {"[base]\nrig = \"oscillator\"\nheight = 0.1\n", "invalid base.height (" /* line 3 */},
+      {"[base]\nrig = \"walls\"\nforce-amplitude = 5\n", "invalid base.force-amplitude ("},
+      {"[base]\nrig = \"walls\"\nforce-amplitude = 5\n[grid]\nrig = [\"damper\", \"box\"]\n", "invalid base.force-amplitude ("},
+      {"[base]\nrig = \"shaker\"\namplitude = 0.001\n[grid]\ngamma = [1.0, 2.0]\n", "invalid grid.gamma ("},
+      {"[base]\nrig = \"oscillator\"\n[sample]\ncount = 8\nstiffness = { distribution = \"normal\", mean = 0, sd = 1 }\n",
+       "invalid sample.stiffness ("},
+  };
+  for (const auto& [text, message] : cases) {
+    INFO(text);
+    std::ofstream(dir.path / "case.toml") << text;
+    const auto r = run_cli("sweep " + (dir.path / "case.toml").string() + " --quiet");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(message) != std::string::npos);
+    CHECK(r.err.find("case.toml line ") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.path / "case.csv"));
+    CHECK_FALSE(std::filesystem::exists(dir.path / "case.impacts.csv"));
+  }
+}
+
+TEST_CASE("a rig's case file: an unknown key lists the rig's inputs, [output] columns only its numbers", "[rigs][sweep]") {
+  const test::ScratchDir dir;
+  std::ofstream(dir.path / "case.toml") << "[base]\nrig = \"shaker\"\nbogus = 1\n";
+  auto r = run_cli("sweep " + (dir.path / "case.toml").string() + " --quiet");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("an input of the rig shaker: frequency, amplitude, gamma") != std::string::npos);
+  std::ofstream(dir.path / "case.toml") << "[base]\nrig = \"shaker\"\n[output]\ncolumns = [\"impact_model\"]\n";
+  r = run_cli("sweep " + (dir.path / "case.toml").string() + " --quiet");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("invalid output.columns (") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir.path / "case.csv"));
+}
+
+TEST_CASE("a rig's case file writes a dotted result under its flat name; the damper's energy balances", "[rigs][sweep]") {
+  // The damper's energy account with instantaneous impacts (simulation/shaker/two_walls.hpp):
+  // W - D - L = E(end) - E(0), each term to round-off of W; the CSV's 10 significant digits make
+  // the balance hold to ~1e-9 of the largest term.
+  const test::ScratchDir dir;
+  std::ofstream(dir.path / "case.toml")
+      << "[base]\nrig = \"walls\"\nimpact-model = \"instantaneous\"\ngravity = 0\nrestitution = 0.6\n"
+         "primary-damping-ratio = 0.05\nimpacts = 4\ntransient = 400\n[grid]\nrig = [\"damper\"]\n"
+         "[output]\ncolumns = [\"energy_J_initial\", \"energy_J_final\", \"energy_J_drive_work\", "
+         "\"energy_J_damping_dissipation\", \"energy_J_impact_loss\"]\n";
+  const auto r = run_cli("sweep " + (dir.path / "case.toml").string() + " --quiet");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const hertzdash::CsvTable t = hertzdash::CsvTable::read(dir.path / "case.csv");
+  REQUIRE(t.rows() == 1);
+  const double W = t.number(0, "energy_J_drive_work"), D = t.number(0, "energy_J_damping_dissipation"),
+               L = t.number(0, "energy_J_impact_loss");
+  CHECK(W > 0);
+  CHECK(W - D - L == Approx(t.number(0, "energy_J_final") - t.number(0, "energy_J_initial")).margin(1e-8 * W));
+}
+
+TEST_CASE("a rig records the options it reads and every own input, by column name", "[rigs]") {
+  // run_options_not_read are refused, so not recorded; the own inputs at their defaults.
+  const std::pair<const char*, std::vector<std::string>> absent[] = {
+      {"oscillator", {"height_m", "impact_velocity_mps", "gravity_mps2"}},
+      {"walls", {"height_m", "impact_velocity_mps"}},
+      {"shaker", {"impact_velocity_mps"}},
+  };
+  for (const auto& [rig, keys] : absent) {
+    INFO(rig);
+    const auto r = run_cli(std::string(rig) + " --impact-model instantaneous --impacts 2 --transient 10 --json");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    for (const std::string& k : keys) CHECK_FALSE(j["inputs"].contains(k));
+    for (const char* k : {"impacts", "transient", "impact_model"}) CHECK(j["inputs"].contains(k));
+    CHECK(j["inputs"]["impact_model"] == "instantaneous");
+  }
+  const auto j = nlohmann::json::parse(run_cli("oscillator --impacts 2 --json").out);
+  CHECK(j["inputs"]["stiffness_N_per_m"] == 1e4);  // the declared default
+  CHECK(j["inputs"]["stop_distance_m"] == 0.002);
+}
+
+TEST_CASE("a rig's refusal names its command as `hertzdash RIG`, not as an option", "[rigs]") {
+  auto r = run_cli("shaker --rod-model elastic");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("rigid for `hertzdash shaker`") != std::string::npos);
+  r = run_cli("oscillator --height 0.1");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("not given for `hertzdash oscillator`") != std::string::npos);
+  CHECK(r.err.find("--oscillator") == std::string::npos);
 }

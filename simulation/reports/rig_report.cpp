@@ -37,13 +37,6 @@ std::string cell_text(const RigColumn& c, double v) {
   return c.integer ? fmt::format("{}", static_cast<long>(v)) : fmt::format("{:.10g}", v);
 }
 
-/// "energy_J.initial" -> "energy_J_initial".
-std::string flat_name(std::string_view name) {
-  std::string s(name);
-  std::replace(s.begin(), s.end(), '.', '_');
-  return s;
-}
-
 }  // namespace
 
 nlohmann::ordered_json to_json(const Rig& rig, const RigResult& r) {

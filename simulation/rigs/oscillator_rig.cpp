@@ -39,6 +39,8 @@ namespace s = shaker_parameters;
 constexpr ParameterDecl inputs[] = {stiffness,      damping_ratio,  force_amplitude, frequency,  stop_distance,
                                     start_position, start_velocity, s::impacts,      s::transient, s::impact_model};
 
+constexpr std::string_view not_read[] = {"height", "impact-velocity", "gravity"};
+
 struct Run {
   DropTestSetup setup;
   std::string law;
@@ -46,27 +48,35 @@ struct Run {
   OscillatorRun run;
 };
 
-Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
-  Run r{.setup = resolve_setup(options, paper), .law = options.damping, .inputs = {}, .run = {}};
+/// Options of a trace, and with instantaneous impacts the options they do not read (Rig::refuse).
+void refuse(const RunOptions& options, const RigInputs& in) {
   refuse_trace_only_options(options, "hertzdash oscillator");
-  const SolverSettings solver = resolve_solver(options);
-  OscillatorOptions o;
-  double* numbers[] = {&o.stiffness_N_per_m, &o.damping_ratio,   &o.force_amplitude_N, &o.frequency_Hz,
-                       &o.stop_distance_m,   &o.start_position_m, &o.start_velocity_mps};
-  r.inputs = describe_run(r.setup, r.law, solver);
-  for (std::size_t i = 0; i < std::size(numbers); ++i) {
-    *numbers[i] = in.number_or_default(inputs[i]);
-    r.inputs.emplace_back(std::string(inputs[i].key), fmt::format("{}", *numbers[i]));
-  }
-  o.impacts = static_cast<int>(in.number_or_default(s::impacts));
-  o.transient = static_cast<int>(in.number_or_default(s::transient));
-  o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value)));
-  if (o.impact_model == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights m
+  const std::string model = in.text("impact-model").value_or(std::string(s::impact_model.default_value));
+  if (parse_shaker_impact_model(model) == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights m
     RunOptions defaults;
     defaults.integrator = shaker_default_integrator;
     static constexpr std::string_view read[] = {"rod", "restitution", "mass"};
     refuse_options_not_read(options, defaults, read, "`impact-model` soft (instantaneous impacts read `restitution` and `mass`)");
   }
+}
+
+Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  Run r{.setup = resolve_setup(options, paper), .law = options.damping, .inputs = {}, .run = {}};
+  const SolverSettings solver = resolve_solver(options);
+  OscillatorOptions o;
+  double* numbers[] = {&o.stiffness_N_per_m, &o.damping_ratio,   &o.force_amplitude_N, &o.frequency_Hz,
+                       &o.stop_distance_m,   &o.start_position_m, &o.start_velocity_mps};
+  r.inputs = describe_rig_run(r.setup, r.law, solver, not_read);
+  for (std::size_t i = 0; i < std::size(numbers); ++i) {
+    *numbers[i] = in.number_or_default(inputs[i]);
+    r.inputs.emplace_back(input_column(inputs[i]), fmt::format("{}", *numbers[i]));
+  }
+  o.impacts = static_cast<int>(in.number_or_default(s::impacts));
+  o.transient = static_cast<int>(in.number_or_default(s::transient));
+  o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value)));
+  r.inputs.emplace_back(input_column(s::impacts), std::to_string(o.impacts));
+  r.inputs.emplace_back(input_column(s::transient), std::to_string(o.transient));
+  r.inputs.emplace_back(input_column(s::impact_model), to_string(o.impact_model));
   r.run = run_oscillator(r.setup, r.law, solver, o);
   return r;
 }
@@ -90,7 +100,6 @@ constexpr RigFieldOf<Run> results[] = {
     F::impacts_run,
 };
 
-constexpr std::string_view not_read[] = {"height", "impact-velocity", "gravity"};
 constexpr RigOptionNote notes[] = {shaker_integrator_note};
 
 }  // namespace
@@ -118,7 +127,7 @@ OscillatorRun run_oscillator(const DropTestSetup& setup, std::string_view law, c
                           .energy = true, .sampled = ImpactSequenceSpec::Sampled::body};
   std::unique_ptr<SoftContact<OscillatorStop>> contact;
   if (o.impact_model == ShakerImpactModel::soft) {  // the stop's contact (model/contact_environments.hpp)
-    contact = make_soft_contact<OscillatorStop>(law, setup, solver, "oscillator");
+    contact = make_soft_contact<OscillatorStop>(law, setup, solver, "hertzdash oscillator");
     const OscillatorStop stop{k, body.damping_N_s_per_m(), o.force_amplitude_N, w, d};
     spec.soft = [&contact, stop](Wall, double t, double v0, double, double, double t_obs) {
       OscillatorStop at = stop;
@@ -141,7 +150,7 @@ const Rig& oscillator_rig() {
        .summary = "The impact oscillator: a body on a spring driven by F cos(2 pi f t) against a stop at distance d; "
                   "soft contacts or instantaneous impacts, exact flights",
        .inputs = inputs, .run_options_not_read = not_read, .not_read_because = "the body starts at `start-position`",
-       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .results = results,
+       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse, .results = results,
        .table_description = "one row per kept impact (time from the start; phase of the drive F cos(2 pi f t) in "
                             "[0,1); speeds relative to the stop)",
        .table = one_wall_impact_table, .run = run,

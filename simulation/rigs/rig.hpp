@@ -11,6 +11,7 @@
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/parameter.hpp"
 #include "hertzdash/ode/ode_system.hpp"
+#include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 
 #include <functional>
@@ -49,6 +50,9 @@ struct RigField {
   bool number = true;        ///< a number or a count (a column of a sweep's rows), not a text
 };
 
+/// A field's name where a flat name is needed: "energy_J.initial" -> "energy_J_initial".
+std::string flat_name(std::string_view name);
+
 /// One column of a rig's per-impact table. A column with labels holds an index into them: the
 /// JSON and the text show the label, the CSV the index.
 struct RigColumn {
@@ -73,6 +77,14 @@ struct RigOptionNote {
   std::string_view key, help;
 };
 
+/// The column of a rig's input: its Python keyword and unit ("stiffness_N_per_m", "gamma").
+std::string input_column(const ParameterDecl& d);
+
+/// A rig's run's recorded inputs: describe_run() without the options it does not read
+/// (`not_read`: its run_options_not_read), to which the rig appends its own by input_column().
+Parameters describe_rig_run(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                            std::span<const std::string_view> not_read);
+
 /// A registered rig, its schemas and its run, as every front end sees it.
 struct Rig {
   std::string_view name, summary;
@@ -82,6 +94,9 @@ struct Rig {
   std::string_view not_read_because;
   std::span<const RigOptionNote> run_option_notes;
   std::string_view default_integrator;  ///< empty: RunOptions' own
+  /// The rig's refusals of inputs given together (`gamma` with `amplitude`), read before any run;
+  /// null: none. Throws InvalidParameter naming the key.
+  void (*refuse)(const RunOptions&, const RigInputs&) = nullptr;
   std::vector<RigField> results;
   std::string_view table_description;  ///< what a row of the table is (the CSV's first line)
   std::vector<RigColumn> table;
@@ -98,7 +113,8 @@ const Rig* find_rig(std::string_view name);
 const ParameterDecl* find_rig_input(const Rig& rig, std::string_view key);
 
 /// Checks `inputs` against `rig`'s declarations (a key it does not declare, a number outside its
-/// range, a text not among its choices) and `options` against run_options_not_read.
+/// range, a text not among its choices), `options` against run_options_not_read, then the rig's
+/// own refusals (Rig::refuse). Reads no file and runs nothing: a case file checks it when read.
 void check_rig_inputs(const Rig& rig, const RunOptions& options, const RigInputs& inputs);
 /// check_rig_inputs(), then the rig's run.
 RigResult run_rig(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs);
@@ -128,6 +144,7 @@ struct RigDefinition {
   std::string_view not_read_because;
   std::span<const RigOptionNote> run_option_notes;
   std::string_view default_integrator;
+  void (*refuse)(const RunOptions&, const RigInputs&);
   std::span<const RigFieldOf<Run>> results;
   std::string_view table_description;
   std::span<const RigColumnOf<Impact>> table;
@@ -141,7 +158,7 @@ template <class Run, class Impact>
 Rig make_rig(const RigDefinition<Run, Impact>& d) {
   Rig rig{.name = d.name, .summary = d.summary, .inputs = d.inputs, .run_options_not_read = d.run_options_not_read,
           .not_read_because = d.not_read_because, .run_option_notes = d.run_option_notes,
-          .default_integrator = d.default_integrator, .results = {}, .table_description = d.table_description,
+          .default_integrator = d.default_integrator, .refuse = d.refuse, .results = {}, .table_description = d.table_description,
           .table = {}, .run = {}};
   for (const auto& f : d.results) rig.results.push_back(f.field);
   for (const auto& c : d.table) rig.table.push_back(c.column);

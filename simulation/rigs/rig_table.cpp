@@ -33,6 +33,29 @@ const ParameterDecl* find_rig_input(const Rig& rig, std::string_view key) {
   return nullptr;
 }
 
+std::string input_column(const ParameterDecl& d) {
+  const std::string keyword = python_keyword(d.key);
+  return d.column_unit.empty() ? keyword : keyword + "_" + std::string(d.column_unit);
+}
+
+Parameters describe_rig_run(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                            std::span<const std::string_view> not_read) {
+  Parameters p = describe_run(setup, law, solver);
+  std::erase_if(p, [&](const auto& entry) {
+    return std::any_of(not_read.begin(), not_read.end(), [&](std::string_view key) {
+      const RunOption* o = find_run_option(key);
+      return o && column_name(*o) == entry.first;
+    });
+  });
+  return p;
+}
+
+std::string flat_name(std::string_view name) {
+  std::string s(name);
+  std::replace(s.begin(), s.end(), '.', '_');
+  return s;
+}
+
 std::optional<double> RigInputs::number(std::string_view key) const {
   const auto it = numbers.find(key);
   return it == numbers.end() ? std::nullopt : std::optional(it->second);
@@ -62,8 +85,9 @@ void check_rig_inputs(const Rig& rig, const RunOptions& options, const RigInputs
     const RunOption* o = find_run_option(key);
     if (o && is_given(options, *o))
       throw InvalidParameter(std::string(key), given_text(options, *o),
-                             fmt::format("not given for `{}` ({})", rig.name, rig.not_read_because));
+                             fmt::format("not given for `hertzdash {}` ({})", rig.name, rig.not_read_because));
   }
+  if (rig.refuse) rig.refuse(options, inputs);
 }
 
 RigResult run_rig(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs) {

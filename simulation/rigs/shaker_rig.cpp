@@ -9,13 +9,30 @@
 
 namespace hertzdash {
 
-ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+namespace {
+constexpr std::string_view not_read[] = {"impact-velocity"};
+}  // namespace
+
+void refuse_shaker_inputs(const RunOptions& options, const RigInputs& in) {
   namespace p = shaker_parameters;
   if (in.number("amplitude") && in.number("gamma"))
     throw InvalidParameter("gamma", format_value(*in.number("gamma")), "omitted with `amplitude` (one sets the other)");
+  refuse_trace_only_options(options, "hertzdash shaker");
+  const std::string model = in.text("impact-model").value_or(std::string(p::impact_model.default_value));
+  if (parse_shaker_impact_model(model) == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g
+    RunOptions defaults;
+    defaults.integrator = shaker_default_integrator;
+    static constexpr std::string_view read[] = {"rod", "restitution", "gravity", "height"};
+    refuse_options_not_read(options, defaults, read,
+                            "`impact-model` soft (the instantaneous map reads `restitution`, `gravity` and `height`)");
+  }
+}
+
+ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  namespace p = shaker_parameters;
+  refuse_shaker_inputs(options, in);
   ShakerCommandRun r;
   r.setup = resolve_setup(options, paper);
-  refuse_trace_only_options(options, "hertzdash shaker");
   r.law = options.damping;
   r.solver = resolve_solver(options);
   ShakerOptions& o = r.options;
@@ -28,14 +45,7 @@ ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperPa
   o.start_height_m = options.height_m;
   o.start_phase = in.number("start-phase");
   o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(p::impact_model.default_value)));
-  if (o.impact_model == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g
-    RunOptions defaults;
-    defaults.integrator = shaker_default_integrator;
-    static constexpr std::string_view read[] = {"rod", "restitution", "gravity", "height"};
-    refuse_options_not_read(options, defaults, read,
-                            "`impact-model` soft (the instantaneous map reads `restitution`, `gravity` and `height`)");
-  }
-  r.inputs = describe_run(r.setup, r.law, r.solver);
+  r.inputs = describe_rig_run(r.setup, r.law, r.solver, not_read);
   r.inputs.emplace_back("frequency_Hz", fmt::format("{}", o.wall.frequency_Hz));
   r.inputs.emplace_back("amplitude_m", fmt::format("{}", o.wall.amplitude_m));
   r.inputs.emplace_back("impacts", std::to_string(o.impacts));
@@ -73,7 +83,6 @@ constexpr RigFieldOf<Run> results[] = {
     SequenceFields<Run>::impacts_run,
 };
 
-constexpr std::string_view not_read[] = {"impact-velocity"};
 constexpr RigOptionNote notes[] = {
     shaker_integrator_note,
     {"height", "Height [m] above the wall's mean position from which the body is released at rest at --start-phase; "
@@ -87,7 +96,7 @@ const Rig& shaker_rig() {
        .summary = "A body bouncing on a vibrating wall: soft contacts or instantaneous impacts, exact flights",
        .inputs = shaker_parameters::all, .run_options_not_read = not_read,
        .not_read_because = "the body starts at rest, at `height` above the wall's mean position",
-       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .results = results,
+       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse_shaker_inputs, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest on the wall; phase of "
                             "s(t) = A sin(2 pi f t) in [0,1); speeds relative to the wall)",
        .table = one_wall_impact_table, .run = run, .impacts = [](const Run& r) -> const std::vector<ShakerImpact>& { return r.run.impacts; },

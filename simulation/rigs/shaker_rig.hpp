@@ -75,6 +75,10 @@ struct ShakerCommandRun {
   ShakerRun run;
 };
 
+/// The shaker's refusals before any run (Rig::refuse): `amplitude` with `gamma`, an option of a
+/// trace, an option the instantaneous map does not read.
+void refuse_shaker_inputs(const RunOptions& options, const RigInputs& in);
+
 /// Resolve and validate, without running (`run` left empty). InvalidParameter for bad options:
 /// `amplitude` with `gamma`, a non-integer count, a contact option with instantaneous impacts.
 ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperParameters& paper,

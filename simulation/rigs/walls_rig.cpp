@@ -17,6 +17,8 @@ namespace {
 namespace s = shaker_parameters;
 namespace p = two_walls_parameters;
 
+constexpr std::string_view not_read[] = {"height", "impact-velocity"};
+
 struct Run {
   DropTestSetup setup;
   std::string law;
@@ -31,17 +33,40 @@ void refuse_unless(bool read, const RigInputs& in, const ParameterDecl& d, std::
     throw InvalidParameter(std::string(d.key), format_value(*in.number(d.key)), fmt::format("not given with `rig` {}", rig));
 }
 
+/// The inputs of the other variant, `gamma` with `amplitude`, `gamma` with `gravity` 0, options
+/// the instantaneous model does not read (Rig::refuse: checked before any run).
+void refuse(const RunOptions& options, const RigInputs& in) {
+  const TwoWallsRig variant = parse_two_walls_rig(in.text("rig").value_or(std::string(p::rig.default_value)));
+  const bool box = variant == TwoWallsRig::box;
+  const std::string_view rig = to_string(variant);
+  for (const ParameterDecl* d : {&s::amplitude, &s::gamma}) refuse_unless(box, in, *d, rig);
+  for (const ParameterDecl* d : {&p::primary_mass, &p::primary_stiffness, &p::primary_damping_ratio, &p::force_amplitude})
+    refuse_unless(!box, in, *d, rig);
+  if (in.number("amplitude") && in.number("gamma"))
+    throw InvalidParameter("gamma", format_value(*in.number("gamma")), "omitted with `amplitude` (one sets the other)");
+  if (box && !in.number("amplitude") && options.gravity_mps2 && *options.gravity_mps2 == 0)
+    throw InvalidParameter("gamma", format_value(in.number_or_default(s::gamma)),
+                           "omitted with `gravity` 0 (gamma is in units of g): give `amplitude`");
+  refuse_trace_only_options(options, "hertzdash walls");
+  const std::string model = in.text("impact-model").value_or(std::string(s::impact_model.default_value));
+  if (parse_shaker_impact_model(model) == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g, momentum m
+    RunOptions defaults;
+    defaults.integrator = shaker_default_integrator;
+    static constexpr std::string_view box_reads[] = {"rod", "restitution", "gravity"};
+    static constexpr std::string_view damper_reads[] = {"rod", "restitution", "gravity", "mass"};
+    refuse_options_not_read(options, defaults, box ? std::span<const std::string_view>(box_reads) : damper_reads,
+                            box ? "`impact-model` soft (the instantaneous box reads `restitution` and `gravity`)"
+                                : "`impact-model` soft (the instantaneous damper reads `restitution`, `gravity` and "
+                                  "`mass`)");
+  }
+}
+
 Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
   Run r;
   TwoWallsOptions& o = r.options;
   o.rig = parse_two_walls_rig(in.text("rig").value_or(std::string(p::rig.default_value)));
   const bool box = o.rig == TwoWallsRig::box;
   const std::string_view rig = to_string(o.rig);
-  for (const ParameterDecl* d : {&s::amplitude, &s::gamma}) refuse_unless(box, in, *d, rig);
-  for (const ParameterDecl* d : {&p::primary_mass, &p::primary_stiffness, &p::primary_damping_ratio, &p::force_amplitude})
-    refuse_unless(!box, in, *d, rig);
-  if (in.number("amplitude") && in.number("gamma"))
-    throw InvalidParameter("gamma", format_value(*in.number("gamma")), "omitted with `amplitude` (one sets the other)");
   o.gap_m = in.number_or_default(p::gap);
   o.drive.frequency_Hz = in.number_or_default(s::frequency);
   const double w = o.drive.omega_rad_per_s();
@@ -53,9 +78,6 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   double speed_scale_mps = 0;
   if (box) {
     if (in.number("amplitude")) o.drive.amplitude_m = *in.number("amplitude");
-    else if (horizontal)
-      throw InvalidParameter("gamma", format_value(in.number_or_default(s::gamma)),
-                             "omitted with `gravity` 0 (gamma is in units of g): give `amplitude`");
     speed_scale_mps = o.drive.amplitude_m * w;
   } else {
     o.primary.mass_kg = in.number_or_default(p::primary_mass);
@@ -74,7 +96,6 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
     set_up.impact_velocity_mps = speed_scale_mps;
   }
   r.setup = resolve_setup(set_up, paper);
-  refuse_trace_only_options(options, "hertzdash walls");
   r.law = options.damping;
   const SolverSettings solver = resolve_solver(options);
   if (box && !in.number("amplitude"))
@@ -82,17 +103,7 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   o.impacts = static_cast<int>(in.number_or_default(s::impacts));
   o.transient = static_cast<int>(in.number_or_default(s::transient));
   o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value)));
-  if (o.impact_model == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g, momentum m
-    RunOptions defaults;
-    defaults.integrator = shaker_default_integrator;
-    static constexpr std::string_view box_reads[] = {"rod", "restitution", "gravity"};
-    static constexpr std::string_view damper_reads[] = {"rod", "restitution", "gravity", "mass"};
-    refuse_options_not_read(options, defaults, box ? std::span<const std::string_view>(box_reads) : damper_reads,
-                            box ? "`impact-model` soft (the instantaneous box reads `restitution` and `gravity`)"
-                                : "`impact-model` soft (the instantaneous damper reads `restitution`, `gravity` and "
-                                  "`mass`)");
-  }
-  r.inputs = describe_run(r.setup, r.law, solver);
+  r.inputs = describe_rig_run(r.setup, r.law, solver, not_read);
   r.inputs.emplace_back("rig", std::string(rig));
   r.inputs.emplace_back("gap_m", fmt::format("{}", o.gap_m));
   r.inputs.emplace_back("frequency_Hz", fmt::format("{}", o.drive.frequency_Hz));
@@ -176,7 +187,6 @@ constexpr RigColumnOf<TwoWallsImpact> table[] = {
 constexpr ParameterDecl inputs[] = {p::rig,           p::gap,         s::frequency,       s::amplitude,
                                     s::gamma,         p::primary_mass, p::primary_stiffness, p::primary_damping_ratio,
                                     p::force_amplitude, s::impacts,   s::transient,       s::impact_model};
-constexpr std::string_view not_read[] = {"height", "impact-velocity"};
 constexpr RigOptionNote notes[] = {shaker_integrator_note};
 
 }  // namespace
@@ -187,7 +197,7 @@ const Rig& walls_rig() {
        .summary = "A body between two walls: a harmonically driven box, or the impact damper (a box on a primary "
                   "oscillator under a harmonic force); exact flights",
        .inputs = inputs, .run_options_not_read = not_read, .not_read_because = "the body starts at rest at mid-gap",
-       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .results = results,
+       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest at mid-gap; phase of the "
                             "drive sin(2 pi f t) in [0,1); wall 0 floor, 1 ceiling; speeds relative to the box)",
        .table = table, .run = run,

@@ -57,7 +57,7 @@ ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const Sol
       .restitution = setup.restitution, .pattern = options.pattern};
   std::unique_ptr<SoftContact<HarmonicWall>> contact;
   if (options.impact_model == ShakerImpactModel::soft) {
-    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "shaker");
+    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "hertzdash shaker");
     spec.soft = [&contact, &wall, g](Wall, double t, double v0, double, double, double t_obs) {
       const auto c = contact->run(HarmonicWall{wall, g, 1.0, t}, v0, t_obs);
       return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,

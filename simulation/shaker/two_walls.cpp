@@ -66,7 +66,7 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
   IntegratorKind integrator_used = IntegratorKind::gbs8_regularized;
   auto sigma = [](Wall wall) { return wall == Wall::floor ? 1.0 : -1.0; };
   if (options.impact_model == ShakerImpactModel::soft && damper) {
-    damper_contact = make_soft_contact<SprungPrimary>(law, setup, solver, "walls");
+    damper_contact = make_soft_contact<SprungPrimary>(law, setup, solver, "hertzdash walls");
     integrator_used = damper_contact->integrator_used();
     spec.soft = [&](Wall wall, double t, double v0, double X, double V, double t_obs) {
       const auto c = damper_contact->run(SprungPrimary{free, g, sigma(wall), t, X, V}, v0, t_obs);
@@ -75,7 +75,7 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
                         .X_m = c.environment[0], .V_mps = c.environment[1], .work = c.work};
     };
   } else if (options.impact_model == ShakerImpactModel::soft) {
-    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "walls");
+    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "hertzdash walls");
     integrator_used = contact->integrator_used();
     spec.soft = [&](Wall wall, double t, double v0, double, double, double t_obs) {
       const auto c = contact->run(HarmonicWall{options.drive, g, sigma(wall), t}, v0, t_obs);

@@ -86,13 +86,20 @@ class CaseReader {
     fail(key, node, describe(node), "a table");
   }
 
-  // The option a key names (command-line or Python spelling).
-  const RunOption& option(const std::string& section, const toml::key& key, const toml::node& node) const {
+  // The option a key names (command-line or Python spelling); unknown: the message lists `rig`'s
+  // inputs too.
+  const RunOption& option(const std::string& section, const toml::key& key, const toml::node& node,
+                          const Rig* rig) const {
     const RunOption* o = find_run_option(key.str());
     if (!o) {
       std::string names;
       for (const RunOption& r : run_options()) names += (names.empty() ? "" : ", ") + r.name;
-      fail(section + "." + std::string(key.str()), node, "an unknown option", "one of the simulate options: " + names);
+      std::string inputs;
+      if (rig)
+        for (const ParameterDecl& d : rig->inputs) inputs += (inputs.empty() ? "" : ", ") + std::string(d.key);
+      fail(section + "." + std::string(key.str()), node, "an unknown option",
+           rig ? fmt::format("an input of the rig {}: {}; or one of the simulate options: {}", rig->name, inputs, names)
+               : "one of the simulate options: " + names);
     }
     return *o;
   }
@@ -269,8 +276,7 @@ std::size_t SweepCase::size() const {
 
 std::string SweepAxis::column() const {
   if (option) return column_name(*option);
-  const std::string keyword = python_keyword(rig_input->key);
-  return rig_input->column_unit.empty() ? keyword : keyword + "_" + std::string(rig_input->column_unit);
+  return input_column(*rig_input);
 }
 
 std::vector<std::string> SweepCase::parameter_columns() const {
@@ -349,12 +355,16 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
     }
   // The key `section.key` names an input of the case's rig (its declaration), or else an option.
   std::vector<const void*> given;  // every option and rig input the case sets, once
+  std::vector<std::pair<std::string, const toml::node*>> given_at;  // each one's key and value in the file
   auto input = [&](const std::string& section, const toml::key& k, const toml::node& node) -> const ParameterDecl* {
     const ParameterDecl* d = rig_input(c.rig, k.str());
     const std::string key = section + "." + std::string(k.str());
     if (d && std::find(given.begin(), given.end(), d) != given.end())
       r.fail(key, node, "a second value", "given once in the whole case ([base], [grid] and [sample] each set an option once)");
-    if (d) given.push_back(d);
+    if (d) {
+      given.push_back(d);
+      given_at.emplace_back(key, &node);
+    }
     return d;
   };
   auto claim = [&](const RunOption& o, const std::string& key, const toml::node& node) {
@@ -364,6 +374,7 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
     if (o.readers.flights_only)
       r.fail(key, node, r.describe(node), "given only with " + o.readers.describe() + "; a sweep runs single impacts");
     given.push_back(&o);
+    given_at.emplace_back(key, &node);
   };
 
   if (const toml::node* base = doc.get("base")) {
@@ -374,7 +385,7 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
         set_input(c.rig_base, *d, r.value(*d, key, *v));
         continue;
       }
-      const RunOption& o = r.option("base", *k, *v);
+      const RunOption& o = r.option("base", *k, *v, c.rig);
       claim(o, key, *v);
       set_option(c.base, o, r.value(o.decl, key, *v));
     }
@@ -386,7 +397,7 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
         c.grid.push_back({.option = nullptr, .rig_input = d, .values = r.axis(*d, key, *v), .distribution = {}});
         continue;
       }
-      const RunOption& o = r.option("grid", *k, *v);
+      const RunOption& o = r.option("grid", *k, *v, c.rig);
       claim(o, key, *v);
       c.grid.push_back({.option = &o, .rig_input = nullptr, .values = r.axis(o.decl, key, *v), .distribution = {}});
     }
@@ -404,7 +415,7 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
       if (k->str() == "count" || k->str() == "method" || k->str() == "seed") continue;
       const std::string key = "sample." + std::string(k->str());
       const ParameterDecl* d = input("sample", *k, *v);
-      const RunOption* o = d ? nullptr : &r.option("sample", *k, *v);
+      const RunOption* o = d ? nullptr : &r.option("sample", *k, *v, c.rig);
       if ((d ? d->type : o->decl.type) != ParameterType::number)
         r.fail(key, *v, r.describe(*v), "a numeric option (a text option is varied in [grid])");
       if (o) claim(*o, key, *v);
@@ -418,11 +429,45 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
       s.values[i] = s.inputs[i % s.inputs.size()].distribution->quantile(s.values[i]);
     c.sample = std::move(s);
   }
+  if (c.rig) {  // the rig's checks before any run: run 0, then each value of each axis in it
+    auto check = [&](const RunOptions& o, const RigInputs& in) {
+      try {
+        check_rig_inputs(*c.rig, o, in);
+      } catch (const InvalidParameter& e) {
+        const ParameterDecl* d = find_rig_input(*c.rig, e.key);
+        const void* what = d ? static_cast<const void*>(d) : static_cast<const void*>(find_run_option(e.key));
+        const auto at = std::find(given.begin(), given.end(), what);
+        if (at == given.end()) throw InvalidParameter(e.key + " (" + source + ")", e.value, e.valid_range);
+        const auto& [key, node] = given_at[static_cast<std::size_t>(at - given.begin())];
+        r.fail(key, *node, e.value, e.valid_range);
+      }
+    };
+    const RunOptions options = c.options(0);
+    const RigInputs inputs = c.rig_inputs(0);
+    check(options, inputs);
+    for (const SweepAxis& a : c.grid)
+      for (const SweepValue& v : a.values) {
+        RunOptions o = options;
+        RigInputs in = inputs;
+        if (a.option) set_option(o, *a.option, v);
+        else set_input(in, *a.rig_input, v);
+        check(o, in);
+      }
+    if (c.sample)
+      for (std::size_t i = 0; i < c.sample->values.size(); ++i) {
+        const SweepAxis& a = c.sample->inputs[i % c.sample->inputs.size()];
+        if (!a.rig_input) continue;  // an option's draw is checked when its run is resolved
+        RigInputs in = inputs;
+        set_input(in, *a.rig_input, c.sample->values[i]);
+        check(options, in);
+      }
+  }
   if (c.rig) {  // the rig's numeric results but those the varied keys' columns hold
     const std::vector<std::string> varied = c.parameter_columns();
     c.outputs.clear();
     for (const RigField& f : c.rig->results)
-      if (f.number && std::find(varied.begin(), varied.end(), f.name) == varied.end()) c.outputs.emplace_back(f.name);
+      if (f.number && std::find(varied.begin(), varied.end(), flat_name(f.name)) == varied.end())
+        c.outputs.push_back(flat_name(f.name));
   }
   if (const toml::node* output = doc.get("output")) {
     const toml::table& t = r.table("output", *output);
@@ -430,16 +475,18 @@ SweepCase parse_sweep_case(std::string_view text, const std::string& source) {
     if (const toml::node* columns = t.get("columns")) {
       const toml::array* list = columns->as_array();
       std::string names;
-      if (c.rig)
-        for (const RigField& f : c.rig->results) names += (names.empty() ? "" : ", ") + std::string(f.name);
-      else
+      if (c.rig) {  // a column holds numbers: a text result is none
+        for (const RigField& f : c.rig->results)
+          if (f.number) names += (names.empty() ? "" : ", ") + flat_name(f.name);
+      } else {
         for (const SweepOutput& o : sweep_output_table) names += (names.empty() ? "" : ", ") + std::string(o.name);
+      }
       if (!list || list->empty()) r.fail("output.columns", *columns, r.describe(*columns), "a list of at least one of: " + names);
       c.outputs.clear();
       for (const toml::node& v : *list) {
         const std::string name = r.text("output.columns", v);
         const bool known = c.rig ? std::any_of(c.rig->results.begin(), c.rig->results.end(),
-                                               [&](const RigField& f) { return f.name == name; })
+                                               [&](const RigField& f) { return f.number && flat_name(f.name) == name; })
                                  : find_sweep_output(name) != nullptr;
         if (!known) r.fail("output.columns", v, name, "one of: " + names);
         if (std::find(c.outputs.begin(), c.outputs.end(), name) != c.outputs.end())

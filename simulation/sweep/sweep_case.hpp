@@ -15,9 +15,10 @@
 // With both a grid and a sample, every grid point runs the whole sample (the same draws at every
 // grid point), the sample varying fastest. Run i is grid point i / count, draw i % count.
 //
-// Reading validates the file's structure (keys, types, ranges, decimal numbers, the outputs);
-// the options of each run are validated when the run is resolved, so one bad point is an error
-// of that row, not of the sweep.
+// Reading validates the file's structure (keys, types, ranges, decimal numbers, the outputs) and,
+// with a rig, its inputs against the rig (check_rig_inputs: run 0, each grid value, each draw);
+// the rest of each run's options are validated when the run is resolved, so one bad point is an
+// error of that row, not of the sweep.
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/rigs/rig.hpp"
 #include "hertzdash/simulation/uncertainty/input_distribution.hpp"

@@ -128,7 +128,7 @@ void run_rig_sweep(const SweepCase& c, const std::vector<std::size_t>& runs, con
   std::vector<std::size_t> fields;
   for (const std::string& name : c.outputs)
     fields.push_back(static_cast<std::size_t>(
-        std::find_if(c.rig->results.begin(), c.rig->results.end(), [&](const RigField& f) { return f.name == name; }) -
+        std::find_if(c.rig->results.begin(), c.rig->results.end(), [&](const RigField& f) { return flat_name(f.name) == name; }) -
         c.rig->results.begin()));
   parallel_for_chunks(
       runs.size(), [] { return 0; },

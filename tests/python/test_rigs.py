@@ -86,5 +86,8 @@ def test_bad_rig_input_is_a_value_error_naming_the_keyword():
         hertzdash.run("drum")
     with pytest.raises(TypeError, match="bogus"):
         hertzdash.walls(bogus=1)
+    # An unknown keyword lists the rig's own inputs beside the options.
+    with pytest.raises(TypeError, match="inputs: frequency, amplitude, gamma, impacts"):
+        hertzdash.shaker(bogus=1)
     with pytest.raises(ValueError, match="impacts"):
         hertzdash.walls(impacts=2.5)
