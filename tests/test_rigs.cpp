@@ -129,7 +129,7 @@ TEST_CASE("a rig's case file: an unknown key lists the rig's inputs, [output] co
   CHECK_FALSE(std::filesystem::exists(dir.path / "case.csv"));
 }
 
-TEST_CASE("a rig's case file writes a dotted result under its flat name; the damper's energy balances", "[rigs][sweep]") {
+TEST_CASE("a rig's case file writes a dotted result under its flat name and the damper's energy balances", "[rigs][sweep]") {
   // The damper's energy account with instantaneous impacts (simulation/shaker/two_walls.hpp):
   // W - D - L = E(end) - E(0), each term to round-off of W; the CSV's 10 significant digits make
   // the balance hold to ~1e-9 of the largest term.
