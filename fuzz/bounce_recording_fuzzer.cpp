@@ -5,19 +5,15 @@
 // 0 (not given) or finite > 0), and write back to a text that reads again to the same values.
 #include "fuzz/input_file.hpp"
 #include "hertzdash/io/bounce_recording.hpp"
-#include "hertzdash/io/csv_table.hpp"
 
 #include <cmath>
 #include <set>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hertzdash;
-  BounceRecording r;
-  try {
-    r = read_bounce_recording(fuzz::input_file(data, size));
-  } catch (const DataError&) {
-    return 0;
-  }
+  const std::optional<BounceRecording> read = fuzz::read_or_refused(read_bounce_recording, data, size);
+  if (!read) return 0;
+  const BounceRecording& r = *read;
   if (r.drops.empty() || r.source.empty()) __builtin_trap();
   std::set<std::string> labels;
   for (const RecordedDrop& d : r.drops) {
@@ -28,12 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!(d.drop_height_m == 0 || (std::isfinite(d.drop_height_m) && d.drop_height_m > 0))) __builtin_trap();
   }
   const std::string text = bounce_recording_text(r, "fuzz", {});
-  BounceRecording again;
-  try {
-    again = read_bounce_recording(fuzz::input_file(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
-  } catch (const DataError&) {
-    __builtin_trap();  // what the writer wrote must read
-  }
+  const BounceRecording again = fuzz::read_again(read_bounce_recording, text);
   if (again.drops.size() != r.drops.size() || again.synthetic != r.synthetic) __builtin_trap();
   for (std::size_t i = 0; i < r.drops.size(); ++i)
     if (again.drops[i].label != r.drops[i].label || again.drops[i].impact_time_s != r.drops[i].impact_time_s ||

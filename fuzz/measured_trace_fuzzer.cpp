@@ -3,19 +3,15 @@
 // (strictly increasing finite times, every quantity as long as the time, none but NaN or
 // finite values, a finite height > 0), and write back to a file that reads again.
 #include "fuzz/input_file.hpp"
-#include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/measured_trace.hpp"
 
 #include <cmath>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hertzdash;
-  MeasuredTrace m;
-  try {
-    m = read_measured_trace(fuzz::input_file(data, size));
-  } catch (const DataError&) {
-    return 0;
-  }
+  const std::optional<MeasuredTrace> read = fuzz::read_or_refused(read_measured_trace, data, size);
+  if (!read) return 0;
+  const MeasuredTrace& m = *read;
   if (!(std::isfinite(m.height_m) && m.height_m > 0)) __builtin_trap();
   for (std::size_t i = 0; i < m.t_s.size(); ++i)
     if (!std::isfinite(m.t_s[i]) || (i > 0 && !(m.t_s[i] > m.t_s[i - 1]))) __builtin_trap();

@@ -4,19 +4,15 @@
 // value > 0 per row, contact times empty or one per row, NaN or finite > 0), and write back to a
 // text that reads again to the same values.
 #include "fuzz/input_file.hpp"
-#include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/restitution_table.hpp"
 
 #include <cmath>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hertzdash;
-  RestitutionTable t;
-  try {
-    t = read_restitution_table(fuzz::input_file(data, size));
-  } catch (const DataError&) {
-    return 0;
-  }
+  const std::optional<RestitutionTable> read = fuzz::read_or_refused(read_restitution_table, data, size);
+  if (!read) return 0;
+  const RestitutionTable& t = *read;
   const std::size_t n = t.rows();
   if (n < 2 || t.impact_speed_mps.size() != n || (!t.e_sd.empty() && t.e_sd.size() != n) ||
       (!t.contact_time_s.empty() && t.contact_time_s.size() != n) || t.source.empty())
@@ -30,12 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       __builtin_trap();
   }
   const std::string text = restitution_table_text(t, "fuzz", {});
-  RestitutionTable again;
-  try {
-    again = read_restitution_table(fuzz::input_file(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
-  } catch (const DataError&) {
-    __builtin_trap();  // what the writer wrote must read
-  }
+  const RestitutionTable again = fuzz::read_again(read_restitution_table, text);
   if (again.e != t.e || again.impact_speed_mps != t.impact_speed_mps || again.e_sd != t.e_sd ||
       again.synthetic != t.synthetic)
     __builtin_trap();

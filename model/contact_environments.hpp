@@ -30,32 +30,6 @@ struct FixedWall {
   std::array<double, 0> extra_scale(double, double) const { return {}; }
 };
 
-/// A wall in the prescribed motion s(t) = A sin(w t) (model/wall_motion.hpp) under gravity g,
-/// the contact beginning at t_onset [s]. Floor (sigma = +1, overlap x = s - y, body height y):
-/// m y'' = -m g + F gives x'' = g + s''(t) - F/m; the ceiling of a box (sigma = -1, x = y - s -
-/// gap, pushed down: m y'' = -m g - F) x'' = -(g + s''(t)) - F/m. So, with s'' = -A w^2 S,
-///   a = sigma (g - A w^2 S),   mu = m,   z = (S, C) from w t_onset,   scale (1, 1).
-/// The shaker's floor (simulation/shaker/shaker.hpp) and the driven box's floor and ceiling
-/// (simulation/shaker/two_walls.hpp); the observation time stops (still in contact then).
-struct HarmonicWall {
-  HarmonicWallMotion motion;
-  double gravity_mps2 = 0, sigma = 1, t_onset_s = 0;
-
-  static constexpr int extra_dimension = 2;
-  static constexpr bool lands_max_compression = false;
-  static constexpr bool stops_at_observation_time = true;
-  double reduced_mass_kg(double m) const { return m; }
-  template <class Y, class F> auto rates(const Y& y, const F&, double) const {
-    const double w = motion.omega_rad_per_s();
-    return std::tuple{sigma * (gravity_mps2 - motion.peak_acceleration_mps2() * y[3]), w * y[4], -w * y[3]};
-  }
-  std::array<double, 2> initial_extra() const {
-    const double theta = motion.omega_rad_per_s() * t_onset_s;
-    return {std::sin(theta), std::cos(theta)};
-  }
-  std::array<double, 2> extra_scale(double, double) const { return {1.0, 1.0}; }
-};
-
 /// The impact damper's wall: the floor (sigma = +1, x = X - y) or ceiling (sigma = -1, x = y - X -
 /// gap) of the box of the primary `o` (mass M on the spring k, damping c, driven by F0 sin(w t);
 /// simulation/shaker/two_walls.hpp), whose motion the contact force moves too: with the
@@ -87,15 +61,26 @@ struct SprungPrimary {
   }
 };
 
-/// The body is itself a linear oscillator, m x'' + c x' + k x = F0 cos(w t) (no gravity; the
-/// oscillator rig), and strikes a fixed stop at x = d on its positive side: overlap x - d = u^2,
-/// v = x' (approaching positive), the stop's force F pushing the body back:
-///   m x'' = F0 cos(w t) - c v - k (d + u^2) - F,
-///   a = (F0 C - c v - k (d + u^2)) / m,   mu = m,   z = (S, C) from w t_onset,   scale (1, 1).
-/// The observation time stops.
-struct OscillatorStop {
+/// A contact forced harmonically at w [rad/s], in one of two settings that share the drive's phase
+/// z = (S, C) = (sin, cos)(w t), from w t_onset [s], scale (1, 1), and mu = m:
+///  - a wall in the prescribed motion s(t) = A sin(w t) (model/wall_motion.hpp) under gravity g
+///    (harmonic_wall): the floor (sigma = +1, overlap x = s - y, body height y): m y'' = -m g + F
+///    gives x'' = g + s''(t) - F/m; the ceiling of a box (sigma = -1, x = y - s - gap, pushed down:
+///    m y'' = -m g - F) x'' = -(g + s''(t)) - F/m; so, with s'' = -A w^2 S, a = sigma (g - A w^2 S).
+///    The shaker's floor (simulation/shaker/shaker.hpp), the driven box's floor and ceiling
+///    (simulation/shaker/two_walls.hpp).
+///  - a body that is itself a linear oscillator, m x'' + c x' + k x = F0 cos(w t) (no gravity; the
+///    oscillator rig), striking a fixed stop at x = d on its positive side: overlap x - d = u^2,
+///    v = x' (approaching positive), the stop's force F pushing the body back:
+///    m x'' = F0 cos(w t) - c v - k (d + u^2) - F, so a = (F0 C - c v - k (d + u^2)) / m.
+/// One environment with both terms,
+///   a = sigma (g - A w^2 S) + (F0 C - c v - k (d + u^2)) / m,
+/// in which the other setting's coefficients are zero and add exact zeros, so each law's unit
+/// compiles one soft contact for the two (simulation/run/law_runs.hpp). The observation time stops.
+struct HarmonicForcing {
   double stiffness_N_per_m = 0, damping_N_s_per_m = 0, force_amplitude_N = 0, omega_rad_per_s = 0,
          stop_m = 0, t_onset_s = 0;
+  double wall_peak_acceleration_mps2 = 0, gravity_mps2 = 0, sigma = 1;
 
   static constexpr int extra_dimension = 2;
   static constexpr bool lands_max_compression = false;
@@ -103,8 +88,9 @@ struct OscillatorStop {
   double reduced_mass_kg(double m) const { return m; }
   template <class Y, class F> auto rates(const Y& y, const F&, double inverse_m) const {
     const double w = omega_rad_per_s;
-    return std::tuple{(force_amplitude_N * y[4] - damping_N_s_per_m * y[1] -
-                       stiffness_N_per_m * (stop_m + y[0] * y[0])) * inverse_m,
+    return std::tuple{sigma * (gravity_mps2 - wall_peak_acceleration_mps2 * y[3]) +
+                          (force_amplitude_N * y[4] - damping_N_s_per_m * y[1] -
+                           stiffness_N_per_m * (stop_m + y[0] * y[0])) * inverse_m,
                       w * y[4], -w * y[3]};
   }
   std::array<double, 2> initial_extra() const {
@@ -112,5 +98,14 @@ struct OscillatorStop {
   }
   std::array<double, 2> extra_scale(double, double) const { return {1.0, 1.0}; }
 };
+
+/// The wall in the motion `motion` under gravity g [m/s^2], the floor (sigma = +1) or the ceiling
+/// (sigma = -1), the contact beginning at t_onset [s] (HarmonicForcing).
+inline HarmonicForcing harmonic_wall(const HarmonicWallMotion& motion, double gravity_mps2, double sigma,
+                                     double t_onset_s) {
+  return {.omega_rad_per_s = motion.omega_rad_per_s(), .t_onset_s = t_onset_s,
+          .wall_peak_acceleration_mps2 = motion.peak_acceleration_mps2(), .gravity_mps2 = gravity_mps2,
+          .sigma = sigma};
+}
 
 }  // namespace hertzdash

@@ -34,10 +34,10 @@ RunOptions light_ball(bool drag) {
   return o;
 }
 
-BounceFit fit(const BounceRecording& r, RunOptions o) {
+FitResult fit(const BounceRecording& r, RunOptions o) {
   o.restitution.reset();  // the fit's parameter: its starting value is not the truth
   const CheckedRecording c = check_bounce_recording(r);
-  return fit_bounce_recording(c, r.path.string(), o, load_paper_parameters(), BounceFitSettings{});
+  return fit_bounce_recording(c, r.path.string(), o, load_paper_parameters(), FitSettings{});
 }
 
 }  // namespace
@@ -50,7 +50,7 @@ TEST_CASE("bounce recording: drag changes the fitted e of a light ball, as the f
   // With the drag it was made with, the fit returns e = 0.9 to the fit's accuracy: 1e-8 in
   // tests/test_bounce_recording_fit.cpp for the steel rod's 8 impacts; here 6 impacts of d e /
   // d t ~ 1 / (k t_k) ten times weaker at these shorter flights (0.1-0.5 s), so 1e-7.
-  const BounceFit with = fit(r, light_ball(true));
+  const FitResult with = fit(r, light_ball(true));
   REQUIRE_FALSE(with.failed);
   CHECK(with.parameter("restitution").estimate == Approx(0.9).margin(1e-7));
 
@@ -60,7 +60,7 @@ TEST_CASE("bounce recording: drag changes the fitted e of a light ball, as the f
   // model fits one e' to ratios whose d spans the recording's flights, so
   //   e (1 - (1 + e^2) d_max / 4) - O(d_max^2) <= e' <= e (1 - (1 + e^2) d_min / 4) + O(d_max^2),
   // d_max and d_min the largest and smallest (v_r / v_t)^2 of the flights the fit sees.
-  const BounceFit without = fit(r, light_ball(false));
+  const FitResult without = fit(r, light_ball(false));
   REQUIRE_FALSE(without.failed);
   const double e = 0.9, e_fitted = without.parameter("restitution").estimate;
   const double v_t = terminal_speed_mps({.air_density_kg_per_m3 = 1.204}, 2.7e-3, 0.02, 9.80665);

@@ -19,14 +19,14 @@ using namespace hertzdash::test;
 
 namespace {
 
-BounceFit fit(const BounceRecording& r, const std::string& law = "hongo", bool cross_validate = false) {
+FitResult fit(const BounceRecording& r, const std::string& law = "hongo", bool cross_validate = false) {
   RunOptions o;
   o.damping = law;
-  BounceFitSettings s;
+  FitSettings s;
   s.cross_validate = cross_validate;
   const PaperParameters paper = load_paper_parameters();
   const CheckedRecording c = check_bounce_recording(r);
-  BounceFit f = fit_bounce_recording(c, r.path.string(), o, paper, s);
+  FitResult f = fit_bounce_recording(c, r.path.string(), o, paper, s);
   return f;
 }
 
@@ -39,7 +39,7 @@ BounceFit fit(const BounceRecording& r, const std::string& law = "hongo", bool c
 // (GSL stops at xtol 1e-10 relative in the variables). v0 likewise; t0 to ~1e-12 s.
 TEST_CASE("bounce recording: the law that made a noise-free recording gives back e, speeds and clocks",
           "[bounce_fit]") {
-  const BounceFit f = fit(synthetic_recording(hongo_truth(), three_drops(), 8));
+  const FitResult f = fit(synthetic_recording(hongo_truth(), three_drops(), 8));
   CHECK_FALSE(f.failed);
   CHECK(f.converged);
   REQUIRE(f.parameters.size() == 1);
@@ -65,7 +65,7 @@ TEST_CASE("bounce recording: the law that made a noise-free recording gives back
 // and the truth lies within 3 standard errors.
 TEST_CASE("bounce recording: timing jitter is estimated, the truth lies within the error bars", "[bounce_fit]") {
   for (unsigned seed : {1u, 2u, 3u}) {
-    const BounceFit f = fit(synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, seed));
+    const FitResult f = fit(synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, seed));
     CAPTURE(seed, f.sigma);
     CHECK_FALSE(f.failed);
     CHECK(f.sigma > 0.5e-4);
@@ -86,7 +86,7 @@ TEST_CASE("bounce recording: the 1-sigma intervals cover the truth about 68 % of
   int covered = 0;
   const int seeds = 50;
   for (int seed = 100; seed < 100 + seeds; ++seed) {
-    const BounceFit f = fit(synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, static_cast<unsigned>(seed)));
+    const FitResult f = fit(synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, static_cast<unsigned>(seed)));
     REQUIRE_FALSE(f.failed);
     const FittedParameter& e = f.parameter("restitution");
     covered += std::abs(e.estimate - 0.80) <= e.standard_error;
@@ -110,7 +110,7 @@ TEST_CASE("bounce recording: glitches are flagged and the fit still recovers e",
   CHECK((c.flagged[1].drop == "b" && c.flagged[1].index == 4u && c.flagged[1].kind == "doubled"));
   CHECK((c.flagged[2].drop == "c" && c.flagged[2].index == 7u && c.flagged[2].kind == "non_monotonic"));
   CHECK((c.flagged[3].drop == "d" && !c.flagged[3].index && c.flagged[3].kind == "too_few"));
-  const BounceFit f = fit(r);
+  const FitResult f = fit(r);
   CHECK_FALSE(f.failed);
   CHECK(f.n == 10 + 9 + 10 - 0);  // a lost one impact; b's and c's extra times are out
   const FittedParameter& e = f.parameter("restitution");
@@ -126,7 +126,7 @@ TEST_CASE("bounce recording: every law compared and cross-validated, the true on
   kk.damping = "kuwabara-kono";
   kk.viscous_time_constant_s = 7.7e-5;
   const BounceRecording r = synthetic_recording(kk, three_drops(), 8, 1e-5, 9);
-  const BounceFit k = fit(r, "kuwabara-kono", true), h = fit(r, "hongo", true);
+  const FitResult k = fit(r, "kuwabara-kono", true), h = fit(r, "hongo", true);
   CHECK(k.parameter("viscous-time-constant").estimate == Approx(7.7e-5).epsilon(0.05));
   CHECK(k.aic < h.aic - 10);
   CHECK(k.e_max - k.e_min > 0.02);  // its e varies over the data's speeds
@@ -230,12 +230,12 @@ TEST_CASE("fit --bounce-times: JSON keys, flagged glitches on stderr, refusals w
 // allowed; 1 % would hold as well, 5 % allows the Jacobian's central differences.
 TEST_CASE("fit --bounce-times --profile-intervals: a nearly linear problem's interval is estimate +- standard error",
           "[bounce_fit][profile_interval]") {
-  BounceFitSettings s;
+  FitSettings s;
   s.profile_intervals = true;
   RunOptions o;
   o.damping = "hongo";
   const BounceRecording r = synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, 1);
-  const BounceFit f = fit_bounce_recording(check_bounce_recording(r), r.path.string(), o, load_paper_parameters(), s);
+  const FitResult f = fit_bounce_recording(check_bounce_recording(r), r.path.string(), o, load_paper_parameters(), s);
   REQUIRE_FALSE(f.failed);
   const FittedParameter& e = f.parameter("restitution");
   check_nearly_wald_interval(e, 0.05);

@@ -1,5 +1,5 @@
 // The contact system over an environment (model/contact_system.hpp) with the oscillator's stop
-// (model/contact_environments.hpp, OscillatorStop), run by the soft-contact runner
+// (model/contact_environments.hpp, HarmonicForcing), run by the soft-contact runner
 // (simulation/run/soft_contact.hpp): the free Hertz impact's closed form where the oscillator's
 // spring, damper and drive are off, and the energy balance where they are on.
 #include "hertzdash/integrators/fixed_step.hpp"
@@ -45,9 +45,9 @@ TEST_CASE("contact system: the oscillator's stop without spring, damper or drive
     SolverSettings solver;
     solver.integrator = row;
     solver.rtol = 1e-11;
-    const auto contact = make_soft_contact<OscillatorStop>("none", s, solver, "oscillator");
+    const auto contact = make_soft_contact<HarmonicForcing>("none", s, solver, "oscillator");
     CHECK(contact->integrator_used() == row);
-    const auto c = contact->run(OscillatorStop{.omega_rad_per_s = 100.0, .stop_m = 0.01, .t_onset_s = 0.3}, v0,
+    const auto c = contact->run(HarmonicForcing{.omega_rad_per_s = 100.0, .stop_m = 0.01, .t_onset_s = 0.3}, v0,
                                 10.0 * h.contact_time_s);
     REQUIRE(c.separated);
     CHECK(c.contact_time_s == Approx(h.contact_time_s).epsilon(1e-8));
@@ -79,17 +79,17 @@ TEST_CASE("contact system: the oscillator's energy changes by the drive's and th
   const UndampedHertzImpact h = undamped_hertz_impact(K, m, v0);
   const double X = h.max_deformation_m, P = h.peak_force_N, tc = h.contact_time_s, d = 10.0 * X;
   const double w = 2.0 * std::numbers::pi / (5.0 * tc);
-  const OscillatorStop stop{.stiffness_N_per_m = 0.2 * P / d, .damping_N_s_per_m = 0.1 * P / v0,
+  const HarmonicForcing stop{.stiffness_N_per_m = 0.2 * P / d, .damping_N_s_per_m = 0.1 * P / v0,
                             .force_amplitude_N = 0.3 * P, .omega_rad_per_s = w, .stop_m = d,
                             .t_onset_s = 0.5 * std::numbers::pi / w};
-  using System = ContactSystem<Undamped, OscillatorStop>;
+  using System = ContactSystem<Undamped, HarmonicForcing>;
   System sys(ImpactConditions{K, m, v0, s.restitution}, s.damping, stop, 20.0 * tc);
   auto energy = [&](const System::State& y) {
     const double x = d + y[0] * y[0];
     return 0.5 * m * y[1] * y[1] + 0.5 * stop.stiffness_N_per_m * x * x + 0.4 * K * std::pow(y[0], 5);
   };
   struct Works {
-    const OscillatorStop& stop;
+    const HarmonicForcing& stop;
     double tau = 0, drive_rate = 0, damper_rate = 0, drive = 0, damper = 0;
     bool separated = false;
     void on_step(double t, const System::State& y) {
@@ -122,7 +122,7 @@ TEST_CASE("contact system: a soft contact refuses the physical variables, the te
   solver.integrator = IntegratorKind::dopri5;
   auto refused_key = [&](const DropTestSetup& setup) {
     try {
-      make_soft_contact<OscillatorStop>("hongo", setup, solver, "oscillator");
+      make_soft_contact<HarmonicForcing>("hongo", setup, solver, "oscillator");
     } catch (const InvalidParameter& e) {
       CHECK(e.valid_range.find("`oscillator`") != std::string::npos);
       return e.key;

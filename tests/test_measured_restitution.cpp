@@ -63,18 +63,18 @@ struct Croquet {
   }
 };
 
-const RestitutionLawComparison& comparison() {
-  static const RestitutionLawComparison c = [] {
+const LawComparison& comparison() {
+  static const LawComparison c = [] {
     const Croquet k;
-    RestitutionFitSettings s;
+    FitSettings s;
     s.cross_validate = true;
     return compare_laws_on_restitution(k.table, k.base, load_paper_parameters(), s);
   }();
   return c;
 }
 
-const RestitutionFit& fit_of(const std::string& law) {
-  for (const RestitutionFit& f : comparison().fits)
+const FitResult& fit_of(const std::string& law) {
+  for (const FitResult& f : comparison().fits)
     if (f.law == law) return f;
   FAIL("no fit of " << law);
   throw std::logic_error("unreachable");
@@ -126,7 +126,7 @@ TEST_CASE("on the croquet table every law calibrated from e fits the table's mea
   double rss = 0;
   for (double e : k.table.e) rss += (e - mean) * (e - mean);
   int constant_laws = 0;
-  for (const RestitutionFit& f : comparison().fits) {
+  for (const FitResult& f : comparison().fits) {
     if (f.law == "kuwabara-kono") continue;
     INFO(f.law);
     ++constant_laws;
@@ -151,14 +151,14 @@ TEST_CASE("the croquet table's e falls with speed: the viscoelastic law fits and
   // D. R. Anderson, Model Selection and Multimodel Inference, Springer 2002, sec. 2.6): the
   // table's fall of e with the speed is beyond its scatter. Its predictions err more than twice
   // as much as the viscoelastic law's.
-  const RestitutionFit& best = comparison().fits.front();
+  const FitResult& best = comparison().fits.front();
   CHECK(best.law == "kuwabara-kono");
   CHECK_FALSE(best.failed);
   CHECK(best.identifiable);
   CHECK(best.e_max - best.e_min > 0.05);  // the table's e falls by 0.062
-  const RestitutionFit& hongo = fit_of("hongo");
+  const FitResult& hongo = fit_of("hongo");
   CHECK(hongo.aic - best.aic > 10);
-  for (const RestitutionFit& f : comparison().fits) {
+  for (const FitResult& f : comparison().fits) {
     INFO(f.law);
     REQUIRE(f.cross_validation);
     CHECK(f.cross_validation->failure.empty());
@@ -176,17 +176,17 @@ TEST_CASE("the croquet table cannot give the modulus: kuwabara-kono's e depends 
   const PaperParameters paper = load_paper_parameters();
   RunOptions kk = k.base;
   kk.damping = "kuwabara-kono";
-  const RestitutionFit f1 = fit_restitution_table(k.table, kk, paper, {});
+  const FitResult f1 = fit_restitution_table(k.table, kk, paper, {});
   RunOptions stiffer = kk;
   stiffer.ball_E_Pa = 2 * *kk.ball_E_Pa;
-  const RestitutionFit f2 = fit_restitution_table(k.table, stiffer, paper, {});
+  const FitResult f2 = fit_restitution_table(k.table, stiffer, paper, {});
   // Each A to ~5e-10 relative (test_restitution_table_fit.cpp, "Accuracy"); 1e-7 allows for the
   // stopping tolerance. The RSS, a minimum, to 1e-6.
   CHECK(f2.parameter("viscous-time-constant").estimate ==
         Approx(f1.parameter("viscous-time-constant").estimate / std::pow(2.0, 0.4)).epsilon(1e-7));
   CHECK(f2.chi_square == Approx(f1.chi_square).epsilon(1e-6));
-  RestitutionFitSettings joint;
+  FitSettings joint;
   joint.parameters = parse_fit_parameters("viscous-time-constant,ball-E");
-  const RestitutionFit both = fit_restitution_table(k.table, kk, paper, joint);
+  const FitResult both = fit_restitution_table(k.table, kk, paper, joint);
   CHECK_FALSE(both.identifiable);
 }

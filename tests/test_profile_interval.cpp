@@ -181,9 +181,9 @@ TEST_CASE("restitution table: the profile interval's ends are where the RSS rise
   const RestitutionTable t = noisy_kuwabara_kono_table();
   RunOptions base;
   base.damping = "kuwabara-kono";
-  RestitutionFitSettings s;
+  FitSettings s;
   s.profile_intervals = true;
-  const RestitutionFit f = fit_restitution_table(t, base, load_paper_parameters(), s);
+  const FitResult f = fit_restitution_table(t, base, load_paper_parameters(), s);
   REQUIRE_FALSE(f.failed);
   const FittedParameter& A = f.parameter("viscous-time-constant");
   check_nearly_wald_interval(A, 0.05);

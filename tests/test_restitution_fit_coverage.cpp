@@ -99,7 +99,7 @@ int covered(const Truth& truth, bool with_sd, unsigned first_seed) {
   base.damping = truth.options.damping;
   int inside = 0;
   for (int d = 0; d < draws; ++d) {
-    const RestitutionFit f = fit_restitution_table(noisy_table(e_true, with_sd, first_seed + d), base, paper, {});
+    const FitResult f = fit_restitution_table(noisy_table(e_true, with_sd, first_seed + d), base, paper, {});
     REQUIRE_FALSE(f.failed);
     CHECK(f.sigma_estimated == !with_sd);
     const FittedParameter& p = f.parameter(truth.parameter);

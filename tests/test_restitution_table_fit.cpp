@@ -78,13 +78,13 @@ std::vector<double> repeated_speeds() {
   return v;
 }
 
-RestitutionFit fit(const RestitutionTable& t, const std::string& law, bool cross_validate = false) {
+FitResult fit(const RestitutionTable& t, const std::string& law, bool cross_validate = false) {
   RunOptions o;
   o.damping = law;
-  RestitutionFitSettings s;
+  FitSettings s;
   s.cross_validate = cross_validate;
   const PaperParameters paper = load_paper_parameters();
-  RestitutionFit f = fit_restitution_table(t, o, paper, s);
+  FitResult f = fit_restitution_table(t, o, paper, s);
   return f;
 }
 
@@ -97,13 +97,13 @@ RestitutionFit fit(const RestitutionTable& t, const std::string& law, bool cross
 // to A, so de/d(ln A) is about -(1 - e) = -0.2 and ln A errs by ~1e-10 / 0.2 = 5e-10. The
 // assertions allow a hundred times that (GSL stops at xtol 1e-10 relative in the variables).
 TEST_CASE("restitution table: the law that made a noise-free table gives back its parameter", "[restitution_fit]") {
-  const RestitutionFit h = fit(synthetic_table(hongo_truth(), six_speeds), "hongo");
+  const FitResult h = fit(synthetic_table(hongo_truth(), six_speeds), "hongo");
   CHECK_FALSE(h.failed);
   CHECK(h.parameters.size() == 1);
   CHECK(h.parameter("restitution").estimate == Approx(0.80).margin(1e-8));
   CHECK(h.sigma_estimated);
 
-  const RestitutionFit k = fit(synthetic_table(kuwabara_kono_truth(), six_speeds), "kuwabara-kono");
+  const FitResult k = fit(synthetic_table(kuwabara_kono_truth(), six_speeds), "kuwabara-kono");
   CHECK_FALSE(k.failed);
   CHECK(k.parameter("viscous-time-constant").estimate == Approx(7.7e-5).epsilon(5e-8));
 }
@@ -113,12 +113,12 @@ TEST_CASE("restitution table: a speed-independent table is the paper's law's, a 
   // The paper's dashpot scales with the impact (tau = 2 zeta / omega_n(v0)), so its e does not
   // depend on the speed: the fitted model's range over the table's speeds is the model's accuracy.
   const RestitutionTable flat = synthetic_table(hongo_truth(), six_speeds);
-  const RestitutionFit h = fit(flat, "hongo");
+  const FitResult h = fit(flat, "hongo");
   CHECK(h.e_max - h.e_min < 1e-8);
   // Kuwabara-Kono's e rises towards 1 as the speed falls: its own law fits its table far better.
   const RestitutionTable falling = synthetic_table(kuwabara_kono_truth(), six_speeds);
   CHECK(falling.e.front() - falling.e.back() > 0.05);
-  const RestitutionFit kk = fit(falling, "kuwabara-kono"), hk = fit(falling, "hongo");
+  const FitResult kk = fit(falling, "kuwabara-kono"), hk = fit(falling, "hongo");
   CHECK(kk.aic < hk.aic - 10);
   CHECK(hk.e_max - hk.e_min < 1e-8);  // hongo cannot follow it: flat at the table's mean
   CHECK(kk.e_max - kk.e_min > 0.05);
@@ -131,7 +131,7 @@ TEST_CASE("restitution table: noise of known e_sd gives a reduced chi-square nea
   const double sd = 0.005;
   for (unsigned seed : {1u, 2u, 3u}) {
     const RestitutionTable t = synthetic_table(kuwabara_kono_truth(), repeated_speeds(), sd, seed);
-    const RestitutionFit k = fit(t, "kuwabara-kono");
+    const FitResult k = fit(t, "kuwabara-kono");
     CAPTURE(seed, k.reduced_chi_square);
     CHECK_FALSE(k.sigma_estimated);
     CHECK(k.reduced_chi_square > 0.44);
@@ -144,7 +144,7 @@ TEST_CASE("restitution table: noise of known e_sd gives a reduced chi-square nea
 
 TEST_CASE("restitution table: cross-validation prefers the true law", "[restitution_fit]") {
   const RestitutionTable t = synthetic_table(kuwabara_kono_truth(), repeated_speeds(), 0.005, 7);
-  const RestitutionFit k = fit(t, "kuwabara-kono", true), h = fit(t, "hongo", true);
+  const FitResult k = fit(t, "kuwabara-kono", true), h = fit(t, "hongo", true);
   REQUIRE(k.cross_validation);
   REQUIRE(h.cross_validation);
   CHECK(k.cross_validation->failure.empty());
@@ -158,8 +158,8 @@ TEST_CASE("restitution table: cross-validation prefers the true law", "[restitut
 TEST_CASE("restitution table: every law compared, ranked by AIC, the undamped law among the failures",
           "[restitution_fit]") {
   const RestitutionTable t = synthetic_table(kuwabara_kono_truth(), six_speeds, 0.005, 11);
-  RestitutionFitSettings s;
-  const RestitutionLawComparison c = compare_laws_on_restitution(t, RunOptions{}, load_paper_parameters(), s);
+  FitSettings s;
+  const LawComparison c = compare_laws_on_restitution(t, RunOptions{}, load_paper_parameters(), s);
   REQUIRE_FALSE(c.fits.empty());
   CHECK(c.fits.front().law == "kuwabara-kono");
   for (std::size_t i = 1; i < c.fits.size(); ++i) CHECK(c.fits[i - 1].aic <= c.fits[i].aic);
@@ -254,9 +254,9 @@ TEST_CASE("fit --restitution-table --cross-validate: a fold too small is that fo
 TEST_CASE("restitution table: a parameter the law's e does not depend on is not identifiable", "[restitution_fit]") {
   RunOptions o;
   o.damping = "none";
-  RestitutionFitSettings s;
+  FitSettings s;
   s.parameters = parse_fit_parameters("ball-E");
-  const RestitutionFit f =
+  const FitResult f =
       fit_restitution_table(synthetic_table(hongo_truth(), six_speeds), o, load_paper_parameters(), s);
   CHECK(f.e_max == Approx(1.0).margin(1e-9));
   CHECK(f.e_min == Approx(1.0).margin(1e-9));

@@ -60,7 +60,7 @@ TEST_CASE("fit: a noise-free virtual experiment gives back its truth", "[fit]") 
   // their sensitivities (d ln F / d ln E ~ 0.4): 1e-5 bounds it with margin.
   MeasurementChain chain;
   const MeasuredTrace m = virtual_trace(truth_options(), chain);
-  const TraceFit f = fit_trace(m, RunOptions{}, load_paper_parameters(), TraceFitSettings{});
+  const FitResult f = fit_trace(m, RunOptions{}, load_paper_parameters(), TraceFitSettings{});
   INFO("E " << f.parameter("ball-E").estimate << " e " << f.parameter("restitution").estimate << " t0 "
             << f.parameter("onset-time").estimate);
   CHECK(f.parameter("ball-E").estimate == Approx(1.7e9).epsilon(1e-5));
@@ -78,7 +78,7 @@ TEST_CASE("fit: 1 % noise, the estimates lie within their 2-sigma intervals, eac
     MeasurementChain chain;
     chain.noise_fraction = 0.01;
     chain.seed = seed;
-    const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), {});
+    const FitResult f = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), {});
     for (const auto& [name, truth] : {std::pair{"ball-E", 1.7e9}, std::pair{"restitution", 0.80}}) {
       const FittedParameter& p = f.parameter(name);
       INFO("seed " << seed << ": " << name << " = " << p.estimate << " +- " << p.standard_error);
@@ -102,7 +102,7 @@ TEST_CASE("fit: the onset on the trace's clock is found, a shifted trace gives t
   for (double shift_s : {37e-6, 3e-3, 1.0}) {
     MeasuredTrace m = original;
     for (double& t : m.t_s) t += shift_s;
-    const TraceFit f = fit_trace(m, RunOptions{}, load_paper_parameters(), {});
+    const FitResult f = fit_trace(m, RunOptions{}, load_paper_parameters(), {});
     INFO("shift " << shift_s);
     CHECK(f.parameter("onset-time").estimate == Approx(shift_s).margin(1e-8));
     CHECK(f.parameter("ball-E").estimate == Approx(1.7e9).epsilon(1e-5));
@@ -120,7 +120,7 @@ TEST_CASE("fit: a parameter the trace does not see has an infinite standard erro
   start.rod_E_Pa = std::numeric_limits<double>::infinity();
   TraceFitSettings s;
   s.parameters = parse_fit_parameters("rod-nu,ball-E");
-  const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), start, load_paper_parameters(), s);
+  const FitResult f = fit_trace(virtual_trace(truth_options(), chain), start, load_paper_parameters(), s);
   CHECK(std::isinf(f.parameter("rod-nu").standard_error));
   CHECK(std::isfinite(f.parameter("ball-E").standard_error));
   CHECK_FALSE(f.identifiable);
@@ -133,12 +133,12 @@ TEST_CASE("fit: a degenerate pair is flagged: ball-E and ball-radius enter only 
   chain.noise_fraction = 0.01;
   TraceFitSettings s;
   s.parameters = parse_fit_parameters("ball-E,ball-radius");
-  const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), s);
+  const FitResult f = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), s);
   CHECK_FALSE(f.identifiable);
   CHECK(std::abs(f.correlation[0][1]) > identifiable_correlation_limit);
   // Among other parameters the pair still shows, by its correlation.
   s.parameters = parse_fit_parameters("mass,ball-E,restitution,ball-radius");
-  const TraceFit g = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), s);
+  const FitResult g = fit_trace(virtual_trace(truth_options(), chain), RunOptions{}, load_paper_parameters(), s);
   CHECK_FALSE(g.identifiable);
 }
 
@@ -154,9 +154,9 @@ TEST_CASE("fit: the paper's law and Kuwabara-Kono are one law at one speed, the 
   RunOptions kk, hc;
   kk.damping = "kuwabara-kono";
   hc.damping = "hunt-crossley";
-  const TraceFit paper_law = fit_trace(m, RunOptions{}, paper, {});
-  const TraceFit kuwabara = fit_trace(m, kk, paper, {});
-  const TraceFit hunt = fit_trace(m, hc, paper, {});
+  const FitResult paper_law = fit_trace(m, RunOptions{}, paper, {});
+  const FitResult kuwabara = fit_trace(m, kk, paper, {});
+  const FitResult hunt = fit_trace(m, hc, paper, {});
   CHECK(kuwabara.chi_square == Approx(paper_law.chi_square).epsilon(1e-6));
   CHECK(hunt.aic > paper_law.aic + 100);
 }
@@ -177,8 +177,8 @@ TEST_CASE("fit: columns in other units are read into SI and give the same fit", 
     for (std::size_t i = 0; i < m.t_s.size(); ++i) out << m.t_s[i] * 1e6 << "," << m.force_N[i] / 1e3 << "\n";
   }
   const PaperParameters paper = load_paper_parameters();
-  const TraceFit a = fit_trace(read_measured_trace(dir / "si.csv"), {}, paper, {});
-  const TraceFit b = fit_trace(read_measured_trace(dir / "units.csv"), {}, paper, {});
+  const FitResult a = fit_trace(read_measured_trace(dir / "si.csv"), {}, paper, {});
+  const FitResult b = fit_trace(read_measured_trace(dir / "units.csv"), {}, paper, {});
   // Unit conversion rounds each sample once (1e-16 relative), far below the estimates' errors.
   CHECK(b.parameters[0].estimate == Approx(a.parameters[0].estimate).epsilon(1e-9));
   CHECK(b.parameters[1].estimate == Approx(a.parameters[1].estimate).epsilon(1e-9));
@@ -192,7 +192,7 @@ TEST_CASE("fit: the anti-alias filter's delay is absorbed by the onset time", "[
   // the filter's second-order term (omega t_d)^2 ~ 1e-4, and the estimates barely move.
   MeasurementChain chain;
   chain.anti_alias_cutoff_Hz = 1e5;
-  const TraceFit f = fit_trace(virtual_trace(truth_options(), chain), {}, load_paper_parameters(), {});
+  const FitResult f = fit_trace(virtual_trace(truth_options(), chain), {}, load_paper_parameters(), {});
   const double delay_s = std::numbers::sqrt2 / (2 * std::numbers::pi * 1e5);
   INFO("onset " << f.parameter("onset-time").estimate << " delay " << delay_s);
   CHECK(f.parameter("onset-time").estimate == Approx(delay_s).epsilon(0.02));
@@ -498,7 +498,7 @@ TEST_CASE("fit: nonsense traces are refused, or their fit fails and says so", "[
       const auto f = fields(line);
       return f[0] + "," + fmt::format("{:.17g}", 1000 * std::stod(f[1]));
     });
-    const TraceFit f = fitted();
+    const FitResult f = fitted();
     CHECK(f.failed);
     CHECK(f.failure.find("restitution ended at its bound") != std::string::npos);
     CHECK_FALSE(f.identifiable);
@@ -533,7 +533,7 @@ TEST_CASE("fit: nonsense traces are refused, or their fit fails and says so", "[
     });
     TraceFitSettings s;
     s.max_work = 2e6;
-    const TraceFit f = fitted(s);
+    const FitResult f = fitted(s);
     CHECK(f.failed);
     CHECK_FALSE(f.identifiable);
     CHECK(f.work <= s.max_work + 22 * (4e4 + 900));
@@ -600,7 +600,7 @@ TEST_CASE("fit --trace --cross-validate: the law that made a trace predicts left
   const MeasuredTrace m = virtual_trace(truth_options(), chain);
   TraceFitSettings s;
   s.cross_validate = true;
-  const TraceFit f = fit_trace(m, RunOptions{}, load_paper_parameters(), s);
+  const FitResult f = fit_trace(m, RunOptions{}, load_paper_parameters(), s);
   REQUIRE(f.cross_validation);
   const CrossValidation& cv = *f.cross_validation;
   INFO("rms " << cv.rms_prediction_error << " scatter " << cv.scatter << " failure " << cv.failure);
@@ -614,7 +614,7 @@ TEST_CASE("fit --trace --cross-validate: the law that made a trace predicts left
   RunOptions undamped;
   undamped.damping = "none";
   s.parameters = parse_fit_parameters("ball-E");
-  const TraceFit g = fit_trace(m, undamped, load_paper_parameters(), s);
+  const FitResult g = fit_trace(m, undamped, load_paper_parameters(), s);
   REQUIRE(g.cross_validation);
   CHECK(g.cross_validation->ratio > 3);
 

@@ -158,8 +158,8 @@ std::vector<std::string> names_of(const std::vector<FitParameter>& parameters) {
 }
 
 // The options checked and flying, the settings with the law's own parameters where none are given.
-std::pair<RunOptions, BounceFitSettings> prepared(const RunOptions& given, const PaperParameters& paper,
-                                                  BounceFitSettings settings) {
+std::pair<RunOptions, FitSettings> prepared(const RunOptions& given, const PaperParameters& paper,
+                                                  FitSettings settings) {
   check_bounce_fit_options(given);
   const RunOptions base = flying(given);
   RunOptions probe = base;
@@ -175,16 +175,16 @@ std::pair<RunOptions, BounceFitSettings> prepared(const RunOptions& given, const
 
 }  // namespace
 
-BounceFit fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& given,
-                               const PaperParameters& paper, const BounceFitSettings& settings) {
+FitResult fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& given,
+                               const PaperParameters& paper, const FitSettings& settings) {
   const auto [base, own] = prepared(given, paper, settings);
   RecordingData d(data, path, base, paper, names_of(own.parameters));
   return fit(d, base.damping, own);
 }
 
-BounceLawComparison compare_laws_on_bounces(const CheckedRecording& data, const std::string& path,
+LawComparison compare_laws_on_bounces(const CheckedRecording& data, const std::string& path,
                                             const RunOptions& base, const PaperParameters& paper,
-                                            const BounceFitSettings& settings) {
+                                            const FitSettings& settings) {
   check_bounce_fit_options(base);
   return compare_laws(
       [&](const RunOptions& o, const std::vector<FitParameter>& parameters) {

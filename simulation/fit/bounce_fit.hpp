@@ -18,7 +18,7 @@
 // two, and the Jacobian costs 2 (p_law + 1) sequences per drop.
 //
 // Parameters. The law's own, as for a table (law_fit_parameters; any fittable
-// option by BounceFitSettings::parameters, `--fit`). Starting values: the option given, else the
+// option by FitSettings::parameters, `--fit`). Starting values: the option given, else the
 // input e at the median of the drops' interval ratios (bounce_recording_check.hpp), the time
 // constant of a material-time-constant law calibrated to that e at the median first impact
 // speed, else the set-up's value; v0_d = sqrt(2 g h) where the drop gives drop_height_m, else
@@ -48,12 +48,6 @@
 
 namespace hertzdash {
 
-/// How to fit a bounce recording (empty parameters: the law's own, law_fit_parameters).
-using BounceFitSettings = FitSettings;
-/// The result of one fit: FitResult, a group per drop.
-using BounceFit = FitResult;
-using BounceLawComparison = LawComparison;
-
 /// Refuses (InvalidParameter) the options a bounce-recording fit cannot use: `impact-velocity`
 /// or `height` (each drop's first impact speed is fitted), an elastic rod (flights integrated:
 /// too slow to fit), an iterated omega_n, an option read only into a trace.
@@ -61,12 +55,13 @@ void check_bounce_fit_options(const RunOptions& o);
 
 /// Fit the checked recording (`path`: for messages). Validates the options
 /// (check_bounce_fit_options, resolve_setup); throws DataError for fewer times than parameters.
-BounceFit fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& base,
-                               const PaperParameters& paper, const BounceFitSettings& settings);
+/// The result has a group per drop.
+FitResult fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& base,
+                               const PaperParameters& paper, const FitSettings& settings);
 
 /// Every registered law fitted (fit_engine.hpp's compare_laws).
-BounceLawComparison compare_laws_on_bounces(const CheckedRecording& data, const std::string& path,
+LawComparison compare_laws_on_bounces(const CheckedRecording& data, const std::string& path,
                                             const RunOptions& base, const PaperParameters& paper,
-                                            const BounceFitSettings& settings);
+                                            const FitSettings& settings);
 
 }  // namespace hertzdash

@@ -96,7 +96,7 @@ std::vector<std::string> names_of(const std::vector<FitParameter>& parameters) {
 }
 
 // The settings with the law's own parameters where none are given; refused for a law with none.
-RestitutionFitSettings with_parameters(const RunOptions& base, RestitutionFitSettings settings) {
+FitSettings with_parameters(const RunOptions& base, FitSettings settings) {
   if (settings.parameters.empty()) settings.parameters = law_fit_parameters(base);
   if (settings.parameters.empty())
     throw InvalidParameter("damping", base.damping,
@@ -107,18 +107,18 @@ RestitutionFitSettings with_parameters(const RunOptions& base, RestitutionFitSet
 
 }  // namespace
 
-RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOptions& base, const PaperParameters& paper,
-                                     const RestitutionFitSettings& given) {
+FitResult fit_restitution_table(const RestitutionTable& table, const RunOptions& base, const PaperParameters& paper,
+                                     const FitSettings& given) {
   check_restitution_fit_options(base);
   resolve_setup(base, paper);  // the options' own refusals first
-  const RestitutionFitSettings settings = with_parameters(base, given);
+  const FitSettings settings = with_parameters(base, given);
   TableData data(table, base, paper, names_of(settings.parameters));
   return fit(data, base.damping, settings);
 }
 
-RestitutionLawComparison compare_laws_on_restitution(const RestitutionTable& table, const RunOptions& base,
+LawComparison compare_laws_on_restitution(const RestitutionTable& table, const RunOptions& base,
                                                      const PaperParameters& paper,
-                                                     const RestitutionFitSettings& settings) {
+                                                     const FitSettings& settings) {
   check_restitution_fit_options(base);
   return compare_laws(
       [&](const RunOptions& o, const std::vector<FitParameter>& parameters) {

@@ -17,7 +17,7 @@
 // the material time constant (`viscous-time-constant`) for a law that has one (kuwabara-kono:
 // with A fixed its e falls with the speed; calibrated from e at each run's own speed it would
 // not); a law with neither (the undamped `none`) has nothing to fit. Any fittable option by
-// RestitutionFitSettings::parameters instead (`--fit`). Starting values: the option given, else
+// FitSettings::parameters instead (`--fit`). Starting values: the option given, else
 // for `restitution` the table's mean e, for `viscous-time-constant` the A whose e at the table's
 // median speed is the table's mean e (the law's calibration), else the set-up's value
 // (fit_parameters.hpp).
@@ -46,12 +46,6 @@
 
 namespace hertzdash {
 
-/// How to fit a restitution table (empty parameters: the law's own, law_fit_parameters).
-using RestitutionFitSettings = FitSettings;
-/// The result of one fit: FitResult, its points one per row (x the impact speed [m/s]).
-using RestitutionFit = FitResult;
-using RestitutionLawComparison = LawComparison;
-
 /// Refuses (InvalidParameter) the options a restitution-table fit cannot use: an elastic rod,
 /// `impact-velocity` or `height` (the table gives the speeds), `gravity`, `rod-nu` without
 /// `rod-E`, an iterated omega_n.
@@ -60,13 +54,14 @@ void check_restitution_fit_options(const RunOptions& o);
 /// Fit the table. Validates the options like `restitution` (InvalidParameter: the rod model
 /// rigid, no `impact-velocity` or `height` (the table gives the speeds), no `gravity`, a
 /// closed-form omega_n variant); throws DataError for a table with no more rows than parameters.
-RestitutionFit fit_restitution_table(const RestitutionTable& table, const RunOptions& base, const PaperParameters& paper,
-                                     const RestitutionFitSettings& settings);
+/// The result has a point per row, x the impact speed [m/s].
+FitResult fit_restitution_table(const RestitutionTable& table, const RunOptions& base, const PaperParameters& paper,
+                                     const FitSettings& settings);
 
 /// Every registered law fitted (fit_engine.hpp's compare_laws), each cross-validated with
 /// settings.cross_validate.
-RestitutionLawComparison compare_laws_on_restitution(const RestitutionTable& table, const RunOptions& base,
+LawComparison compare_laws_on_restitution(const RestitutionTable& table, const RunOptions& base,
                                                      const PaperParameters& paper,
-                                                     const RestitutionFitSettings& settings);
+                                                     const FitSettings& settings);
 
 }  // namespace hertzdash

@@ -208,7 +208,7 @@ class TraceData final : public FitData {
 
 }  // namespace
 
-TraceFit fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
+FitResult fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                    const TraceFitSettings& settings) {
   const std::unique_ptr<TraceData> data = TraceData::prepare(trace, base, paper, settings);
   return fit(*data, base.damping, settings);

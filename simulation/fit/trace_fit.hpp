@@ -78,9 +78,6 @@ struct TraceFitSettings : FitSettings {
   TraceFitSettings() : FitSettings{parse_fit_parameters("ball-E,restitution"), 200, 3e7, false, false} {}
 };
 
-/// The result of one fit: FitResult, a group per channel, the onset last among the parameters.
-using TraceFit = FitResult;
-
 /// Folds of a trace's cross-validation (interleaved samples).
 inline constexpr std::size_t trace_folds = 5;
 /// Fewest samples per contact the fit accepts (the sampling check).
@@ -104,8 +101,9 @@ inline constexpr double outlier_ratio = 10;
 /// not hide (ten noise levels in some channel), no channel that never changes, no outlier
 /// (outlier_ratio), at most max_samples_per_contact, a predicted work within
 /// settings.max_work; a trace unfit for fitting throws DataError naming the file. A fit that
-/// ran and determined nothing is returned with `failed` set.
-TraceFit fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
+/// ran and determined nothing is returned with `failed` set. The result has a group per channel,
+/// the onset last among the parameters.
+FitResult fit_trace(const MeasuredTrace& trace, const RunOptions& base, const PaperParameters& paper,
                    const TraceFitSettings& settings);
 
 /// fit_trace for every registered law (fit_engine.hpp's compare_laws). A trace unfit for

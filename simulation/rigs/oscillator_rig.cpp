@@ -125,16 +125,14 @@ OscillatorRun run_oscillator(const DropTestSetup& setup, std::string_view law, c
                           .y0_m = o.start_position_m, .u0_mps = o.start_velocity_mps, .impacts = o.impacts,
                           .transient = o.transient, .restitution = setup.restitution, .pattern = o.pattern,
                           .energy = true, .sampled = ImpactSequenceSpec::Sampled::body};
-  std::unique_ptr<SoftContact<OscillatorStop>> contact;
+  std::unique_ptr<SoftContact<HarmonicForcing>> contact;
   if (o.impact_model == ShakerImpactModel::soft) {  // the stop's contact (model/contact_environments.hpp)
-    contact = make_soft_contact<OscillatorStop>(law, setup, solver, "hertzdash oscillator");
-    const OscillatorStop stop{k, body.damping_N_s_per_m(), o.force_amplitude_N, w, d};
+    contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash oscillator");
+    const HarmonicForcing stop{k, body.damping_N_s_per_m(), o.force_amplitude_N, w, d};
     spec.soft = [&contact, stop](Wall, double t, double v0, double, double, double t_obs) {
-      OscillatorStop at = stop;
+      HarmonicForcing at = stop;
       at.t_onset_s = t;
-      const auto c = contact->run(at, v0, t_obs);
-      return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
-                        .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work};
+      return soft_impact(contact->run(at, v0, t_obs));
     };
   }
   OscillatorRun out{run_impact_sequence(spec)};

@@ -1,7 +1,7 @@
 #pragma once
 // The impact oscillator with a stop (docs/shaker.md): the drop test's body, mass m, on a spring k
 // with a dashpot c = 2 zeta sqrt(k m), m x'' + c x' + k x = F cos(2 pi f t), against a stop at
-// x = d > 0 met instantaneously, v+ = -e v-, or with the drop test's soft contact (OscillatorStop,
+// x = d > 0 met instantaneously, v+ = -e v-, or with the drop test's soft contact (HarmonicForcing,
 // model/contact_environments.hpp). A rig on the impact-sequence driver (simulation/shaker/
 // impact_sequence.hpp): the body its oscillator (F sin(w t + pi/2)), the box at rest, the stop a
 // wall at d met from below. Without the stop x = |X| cos(w t - psi), |X| = (F / k) /

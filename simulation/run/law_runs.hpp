@@ -21,9 +21,8 @@ struct DropTestSetup;
 struct ImpactSummary;
 struct SolverSettings;
 struct TraceSample;
-struct HarmonicWall;
+struct HarmonicForcing;
 struct SprungPrimary;
-struct OscillatorStop;
 template <class Env> class SoftContact;
 
 /// make_soft_contact_of<Law, Env> (simulation/run/soft_contact.hpp): the contacts with the
@@ -45,8 +44,7 @@ struct LawRuns {
   void (*run_elastic_bounces)(const DropTestSetup& setup, const SolverSettings& solver, const BounceOptions& options,
                               BounceSequence& out);
   /// The soft contacts with each environment that has a rig (model/contact_environments.hpp).
-  std::tuple<SoftContactMaker<HarmonicWall>, SoftContactMaker<SprungPrimary>, SoftContactMaker<OscillatorStop>>
-      make_soft_contact;
+  std::tuple<SoftContactMaker<HarmonicForcing>, SoftContactMaker<SprungPrimary>> make_soft_contact;
 };
 
 /// The runs of the registered law named `law`; InvalidParameter("damping", ...) for an unknown name.

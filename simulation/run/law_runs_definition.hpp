@@ -48,8 +48,7 @@ template <DampingLaw Law> const LawRuns& law_runs_of() {
                        std::vector<TraceSample>* trace) { return simulator.run<Law>(setup, trace); },
       .calibrated_time_constant = detail::time_constant_calibration<Law>(),
       .run_elastic_bounces = &detail::run_elastic_bounce_sequence<Law>,
-      .make_soft_contact = {&make_soft_contact_of<Law, HarmonicWall>, &make_soft_contact_of<Law, SprungPrimary>,
-                            &make_soft_contact_of<Law, OscillatorStop>},
+      .make_soft_contact = {&make_soft_contact_of<Law, HarmonicForcing>, &make_soft_contact_of<Law, SprungPrimary>},
   };
   return runs;
 }

@@ -47,6 +47,7 @@
 // impact's onset and end (not within soft contacts).
 #include "hertzdash/model/forced_oscillator.hpp"
 #include "hertzdash/ode/ode_system.hpp"
+#include "hertzdash/simulation/run/soft_contact.hpp"
 #include "hertzdash/simulation/run/solver_settings.hpp"
 #include "hertzdash/simulation/shaker/impact_pattern.hpp"
 
@@ -89,6 +90,12 @@ struct SoftImpact {
   double X_m = 0, V_mps = 0;  ///< a box of mass M: its state at separation
   IntegrationStats work;
 };
+/// One soft contact's outcome (simulation/run/soft_contact.hpp) as the sequence takes it (a box's
+/// state at separation is the caller's to set).
+template <class Env> SoftImpact soft_impact(const SoftContactOutcome<Env>& c) {
+  return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
+                    .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work};
+}
 /// The contact with wall `wall` beginning at t_onset [s] at relative speed v0 > 0 [m/s], the box at
 /// X [m], V [m/s], followed for at most t_obs [s].
 using SoftImpactRun =

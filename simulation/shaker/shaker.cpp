@@ -55,13 +55,11 @@ ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const Sol
       .frequency_Hz = wall.frequency_Hz, .speed_scale_mps = g * T, .t0_s = t0, .y0_m = start.height_m,
       .carried_by = start.height_m > 0 ? -1 : 0, .impacts = options.impacts, .transient = options.transient,
       .restitution = setup.restitution, .pattern = options.pattern};
-  std::unique_ptr<SoftContact<HarmonicWall>> contact;
+  std::unique_ptr<SoftContact<HarmonicForcing>> contact;
   if (options.impact_model == ShakerImpactModel::soft) {
-    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "hertzdash shaker");
+    contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash shaker");
     spec.soft = [&contact, &wall, g](Wall, double t, double v0, double, double, double t_obs) {
-      const auto c = contact->run(HarmonicWall{wall, g, 1.0, t}, v0, t_obs);
-      return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
-                        .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work};
+      return soft_impact(contact->run(harmonic_wall(wall, g, 1.0, t), v0, t_obs));
     };
   }
   ShakerRun out{run_impact_sequence(spec)};

@@ -61,7 +61,7 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
 
   // The soft contacts (simulation/run/soft_contact.hpp): the driven box's floor and ceiling, a wall
   // in harmonic motion (sigma per wall); the damper's, the primary moving with the contact.
-  std::unique_ptr<SoftContact<HarmonicWall>> contact;
+  std::unique_ptr<SoftContact<HarmonicForcing>> contact;
   std::unique_ptr<SoftContact<SprungPrimary>> damper_contact;
   IntegratorKind integrator_used = IntegratorKind::gbs8_regularized;
   auto sigma = [](Wall wall) { return wall == Wall::floor ? 1.0 : -1.0; };
@@ -70,17 +70,15 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
     integrator_used = damper_contact->integrator_used();
     spec.soft = [&](Wall wall, double t, double v0, double X, double V, double t_obs) {
       const auto c = damper_contact->run(SprungPrimary{free, g, sigma(wall), t, X, V}, v0, t_obs);
-      return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
-                        .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N,
-                        .X_m = c.environment[0], .V_mps = c.environment[1], .work = c.work};
+      SoftImpact s = soft_impact(c);
+      s.X_m = c.environment[0], s.V_mps = c.environment[1];
+      return s;
     };
   } else if (options.impact_model == ShakerImpactModel::soft) {
-    contact = make_soft_contact<HarmonicWall>(law, setup, solver, "hertzdash walls");
+    contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash walls");
     integrator_used = contact->integrator_used();
     spec.soft = [&](Wall wall, double t, double v0, double, double, double t_obs) {
-      const auto c = contact->run(HarmonicWall{options.drive, g, sigma(wall), t}, v0, t_obs);
-      return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
-                        .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work};
+      return soft_impact(contact->run(harmonic_wall(options.drive, g, sigma(wall), t), v0, t_obs));
     };
   }
 

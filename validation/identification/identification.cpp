@@ -127,7 +127,7 @@ int main(int argc, char** argv) try {
     for (int d = 1; d <= draws; ++d) {
       MeasurementChain c = chain;
       c.seed = static_cast<std::uint64_t>(d);
-      const TraceFit f = fit_trace(virtual_measurement(truth, rod.name, c), fit_start(rod.name, false, elements), paper,
+      const FitResult f = fit_trace(virtual_measurement(truth, rod.name, c), fit_start(rod.name, false, elements), paper,
                                    settings);
       const FittedParameter &E = f.parameter("ball-E"), &e = f.parameter("restitution");
       inside_E += std::abs(E.estimate - truth_E_Pa) <= E.standard_error;
@@ -163,7 +163,7 @@ int main(int argc, char** argv) try {
     const LawComparison laws = compare_laws(virtual_measurement(truth_run(paper, steel.name, false, elements), steel.name, c),
                                             fit_start(steel.name, false, elements), paper, settings);
     auto aic = [&](const std::string& law) {
-      for (const TraceFit& f : laws.fits)
+      for (const FitResult& f : laws.fits)
         if (f.law == law) return f.aic;
       throw std::logic_error("law not fitted: " + law);
     };

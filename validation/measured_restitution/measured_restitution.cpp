@@ -154,26 +154,26 @@ int main(int argc, char** argv) try {
   LatexMacros macros("hertzdash measured_restitution: every law fitted to Gugan's croquet ball on a wooden face", header);
 
   // 2. Every law fitted, with cross-validation.
-  RestitutionFitSettings settings;
+  FitSettings settings;
   settings.cross_validate = true;
-  const RestitutionLawComparison comparison = compare_laws_on_restitution(table, base, paper, settings);
+  const LawComparison comparison = compare_laws_on_restitution(table, base, paper, settings);
   if (comparison.fits.empty() || comparison.fits.front().failed) throw std::runtime_error("no law could be fitted");
-  for (const RestitutionFit& f : comparison.fits)
+  for (const FitResult& f : comparison.fits)
     if (!f.cross_validation || !f.cross_validation->failure.empty())
       throw std::runtime_error("the cross-validation of " + f.law + " failed");
-  const RestitutionFit& best = comparison.fits.front();  // least AIC
-  const RestitutionFit* best_cv = &best;
-  const RestitutionFit *hongo = nullptr, *kk_fit = nullptr;
-  for (const RestitutionFit& f : comparison.fits) {
+  const FitResult& best = comparison.fits.front();  // least AIC
+  const FitResult* best_cv = &best;
+  const FitResult *hongo = nullptr, *kk_fit = nullptr;
+  for (const FitResult& f : comparison.fits) {
     if (f.cross_validation->rms_prediction_error < best_cv->cross_validation->rms_prediction_error) best_cv = &f;
     if (f.law == HongoPaper::info.name) hongo = &f;
     if (f.law == viscoelastic) kk_fit = &f;
   }
   if (!hongo || !kk_fit || kk_fit->failed) throw std::runtime_error("the paper's or the viscoelastic law was not fitted");
-  auto speed_independent = [](const RestitutionFit& f) { return f.e_max - f.e_min < speed_independent_span; };
+  auto speed_independent = [](const FitResult& f) { return f.e_max - f.e_min < speed_independent_span; };
   int constant_laws = 0, not_converged_constant = 0;
   std::vector<std::string> not_converged;
-  for (const RestitutionFit& f : comparison.fits) {
+  for (const FitResult& f : comparison.fits) {
     constant_laws += speed_independent(f);
     if (!f.converged) not_converged.push_back(f.law), not_converged_constant += speed_independent(f);
   }
@@ -188,7 +188,7 @@ int main(int argc, char** argv) try {
                     "\\begin{tabular}{@{}lllrrl@{}}\n\\toprule\n"
                     "Law & fitted parameter & $e$ over the speeds & $\\Delta$AIC & $\\sigma$ & CV RMS error \\\\\n"
                     "\\midrule\n";
-  for (const RestitutionFit& f : comparison.fits) {
+  for (const FitResult& f : comparison.fits) {
     const CrossValidation& cv = *f.cross_validation;
     for (const FittedParameter& p : f.parameters)
       laws_csv.add_row({f.law, f.aic, f.aic - best.aic, f.bic, f.sigma, p.name, p.estimate, p.standard_error, f.e_min,
@@ -220,7 +220,7 @@ int main(int argc, char** argv) try {
                    "in order of speed",
                    header, {"law", "impact_speed_mps", "e_measured", "e_model", "residual"});
   const int grid = args.reduced ? 6 : 60;
-  for (const RestitutionFit& f : comparison.fits) {
+  for (const FitResult& f : comparison.fits) {
     for (int i = 0; i < grid; ++i) {
       const double v = dense_min_mps * std::pow(dense_max_mps / dense_min_mps, i / static_cast<double>(grid - 1));
       const ImpactSummary r = simulator.run(contact_at(f.fitted_options, paper, v), f.law);
@@ -237,9 +237,9 @@ int main(int argc, char** argv) try {
   // 4. kuwabara-kono with A and E_ball together.
   RunOptions kk = base;
   kk.damping = viscoelastic;
-  RestitutionFitSettings joint_settings;
+  FitSettings joint_settings;
   joint_settings.parameters = parse_fit_parameters("viscous-time-constant,ball-E");
-  const RestitutionFit joint = fit_restitution_table(table, kk, paper, joint_settings);
+  const FitResult joint = fit_restitution_table(table, kk, paper, joint_settings);
   const double joint_correlation = std::abs(joint.correlation.at(0).at(1));
 
   // 5. The model's contact times at the measured ones' speeds.
@@ -321,7 +321,7 @@ int main(int argc, char** argv) try {
 
   std::cout << fmt::format("E* = {:.4g} Pa from T = {} s at {} m/s (Johnson's constant {:.4f}); E_ball = {:.4g} Pa\n",
                            E_star, T, U_T, johnson_constant, E_ball);
-  for (const RestitutionFit& f : comparison.fits)
+  for (const FitResult& f : comparison.fits)
     std::cout << fmt::format("{:20} AIC {:9.3f}  dAIC {:6.2f}  sigma {:.5f}  e {:.4f}-{:.4f}  cv_rms {:.5f}{}\n", f.law,
                              f.aic, f.aic - best.aic, f.sigma, f.e_min, f.e_max, f.cross_validation->rms_prediction_error,
                              f.converged ? "" : "  (not converged: " + f.stop_reason + ")");
