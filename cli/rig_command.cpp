@@ -2,12 +2,12 @@
 // the options of a run and the rig's own inputs (--KEY, help, valid values and default from the
 // declarations), --json (the rig's JSON), --csv FILE (the per-impact table below its provenance),
 // --mkdir, and the text report; bad input is refused by the rig (exit 2, the option named).
-// `shaker --sweep` is the shaker's bifurcation diagram (cli/shaker_sweep.hpp).
+// A rig's sweeps (a bifurcation diagram over any of its inputs) are case files of `hertzdash
+// sweep` with `rig = "NAME"` (simulation/sweep/sweep_case.hpp).
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
-#include "cli/shaker_sweep.hpp"
 #include "hertzdash/simulation/options/command_options.hpp"
 #include "hertzdash/simulation/reports/rig_report.hpp"
 
@@ -17,7 +17,13 @@
 namespace hertzdash::cli {
 
 Command add_rig_command(CLI::App& app, const Rig& rig) {
-  auto opt = std::make_shared<ShakerSweepRequest>();
+  struct Request {
+    RunOptions run;
+    RigInputs inputs;
+    std::string csv_path;
+    bool json = false, mkdir = false;
+  };
+  auto opt = std::make_shared<Request>();
   if (!rig.default_integrator.empty()) opt->run.integrator = rig.default_integrator;
   CLI::App* sub = app.add_subcommand(std::string(rig.name), std::string(rig.summary));
   add_run_options(*sub, opt->run);
@@ -32,22 +38,13 @@ Command add_rig_command(CLI::App& app, const Rig& rig) {
     if (d.type == ParameterType::number && d.range.kind == NumberRange::Kind::integer) o->type_name("INT");
     o->group(group);
   }
-  // The shaker's bifurcation diagram (cli/shaker_sweep.hpp), where the command declares it.
-  const bool sweeps = !options_of_command(rig.name).empty();
-  if (sweeps) {
-    auto o = [&rig](std::string_view key) { return declared_option(rig.name, key); };
-    sub->add_option(o("sweep").flag, opt->sweep, o("sweep").help)->type_name("KEY:FROM:TO:COUNT")->group(group);
-    add_number_option(*sub, o("threads").flag, opt->threads, o("threads").help)->type_name("INT")->group(group);
-  }
   auto o = [](std::string_view key) { return declared_option("RIG", key); };
   sub->add_flag(o("json").flag, opt->json, o("json").help);
   add_output_file_option(*sub, o("csv").flag, opt->csv_path, o("csv").help);
   add_mkdir_flag(*sub, opt->mkdir);
 
-  return {sub, [opt, &rig, sweeps]() {
+  return {sub, [opt, &rig]() {
             prepare_output_file("--csv", opt->csv_path, opt->mkdir);
-            if (sweeps && (!opt->sweep.empty() || opt->threads))
-              return run_shaker_sweep_command(*opt);
             const RigResult r = run_rig(rig, opt->run, load_paper_parameters(), opt->inputs);
             if (!opt->csv_path.empty()) {
               create_output_directories(opt->csv_path, opt->mkdir);

@@ -79,14 +79,15 @@ struct Shifted {  // s + a: the constant enters coefficient 0 only
   void bind(double*& next) { a.bind(next); }
 };
 
-template <class A, class B>
-struct Sum {
+/// a + sign b, sign = +1 (Sum) or -1 (Difference): -b is exact, so a + (-b) is a - b to the bit.
+template <class A, class B, int sign>
+struct SignedSum {
   static constexpr bool is_series_expression = true;
   static constexpr int lost_orders = std::max(A::lost_orders, B::lost_orders);
   static constexpr int products = A::products + B::products;
   A a;
   B b;
-  double operator[](int j) const { return a[j] + b[j]; }
+  double operator[](int j) const { return sign > 0 ? a[j] + b[j] : a[j] - b[j]; }
   void update(int k) {
     a.update(k);
     b.update(k);
@@ -96,24 +97,8 @@ struct Sum {
     b.bind(next);
   }
 };
-
-template <class A, class B>
-struct Difference {
-  static constexpr bool is_series_expression = true;
-  static constexpr int lost_orders = std::max(A::lost_orders, B::lost_orders);
-  static constexpr int products = A::products + B::products;
-  A a;
-  B b;
-  double operator[](int j) const { return a[j] - b[j]; }
-  void update(int k) {
-    a.update(k);
-    b.update(k);
-  }
-  void bind(double*& next) {
-    a.bind(next);
-    b.bind(next);
-  }
-};
+template <class A, class B> using Sum = SignedSum<A, B, 1>;
+template <class A, class B> using Difference = SignedSum<A, B, -1>;
 
 template <class A, class B>
 struct Product {

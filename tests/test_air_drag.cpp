@@ -17,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <string>
 
 using namespace hertzdash;
 
@@ -158,21 +160,16 @@ TEST_CASE("air drag: the intervals of a light ball read an e below its contacts'
 TEST_CASE("air drag: refused where nothing flies, named", "[air-drag][cli]") {
   // A single impact integrates its fall without drag: refused, not ignored. The drag coefficient
   // without air is read by nothing. The elastic rod integrates its flights without drag.
-  const auto simulate = test::run_cli("simulate --air-density 1.2");
-  CHECK(simulate.exit_code == 2);
-  CHECK(simulate.err.find("--air-density") != std::string::npos);
-  CHECK(simulate.err.find("takes no drag") != std::string::npos);
-  const auto coefficient = test::run_cli("bounce --drag-coefficient 0.5");
-  CHECK(coefficient.exit_code == 2);
-  CHECK(coefficient.err.find("--drag-coefficient") != std::string::npos);
-  CHECK(coefficient.err.find("--air-density") != std::string::npos);
-  const auto elastic = test::run_cli("bounce --rod-model elastic --air-density 1.2 --bounces 2");
-  CHECK(elastic.exit_code == 2);
-  CHECK(elastic.err.find("--air-density") != std::string::npos);
-  CHECK(elastic.err.find("--rod-model is elastic") != std::string::npos);
-  const auto negative = test::run_cli("bounce --air-density -1");
-  CHECK(negative.exit_code == 2);
-  CHECK(negative.err.find(">= 0") != std::string::npos);
+  auto refused = [](const std::string& args, std::initializer_list<std::string> pieces) {
+    const auto r = test::run_cli(args);
+    INFO(args << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    for (const std::string& piece : pieces) CHECK(r.err.find(piece) != std::string::npos);
+  };
+  refused("simulate --air-density 1.2", {"--air-density", "takes no drag"});
+  refused("bounce --drag-coefficient 0.5", {"--drag-coefficient", "--air-density"});
+  refused("bounce --rod-model elastic --air-density 1.2 --bounces 2", {"--air-density", "--rod-model is elastic"});
+  refused("bounce --air-density -1", {">= 0"});
   const auto bounce = test::run_cli("bounce --air-density 1.204 --json");
   REQUIRE(bounce.exit_code == 0);
   const auto j = nlohmann::json::parse(bounce.out);

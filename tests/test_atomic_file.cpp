@@ -50,6 +50,24 @@ struct stat stat_of(const fs::path& p) {
   return st;
 }
 
+// Runs `body` in a child process with `signal` at its default disposition and no core file;
+// returns the child's wait status.
+template <class Body>
+int in_child(int signal, Body body) {
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    const struct rlimit no_core {0, 0};
+    ::setrlimit(RLIMIT_CORE, &no_core);
+    std::signal(signal, SIG_DFL);
+    body();
+    ::_exit(0);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return status;
+}
+
 }  // namespace
 
 TEST_CASE("atomic file: a regular file is replaced by a new inode, nothing else left in the directory",
@@ -170,17 +188,13 @@ TEST_CASE("atomic file: a failed write leaves the old file and no temporary", "[
   const ScratchDir s;
   const fs::path p = s.path / "out.csv";
   std::ofstream(p) << "previous\n";
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
+  const int status = in_child(SIGXFSZ, [&] {
     std::signal(SIGXFSZ, SIG_IGN);
     const struct rlimit limit {100, 100};
     ::setrlimit(RLIMIT_FSIZE, &limit);
     const std::string m = message_of(p, std::string(1000, 'x'));
     ::_exit(m.find("File too large") != std::string::npos ? 0 : 1);
-  }
-  int status = 0;
-  ::waitpid(child, &status, 0);
+  });
   CHECK(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 0);
   CHECK(slurp(p) == "previous\n");
@@ -193,16 +207,10 @@ TEST_CASE("atomic file: SIGTERM removes a registered temporary, then terminates"
   const ScratchDir s;
   const fs::path tmp = s.path / "big.csv.tmp.1.0";
   std::ofstream(tmp) << "half a file";
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
-    std::signal(SIGTERM, SIG_DFL);
+  const int status = in_child(SIGTERM, [&] {
     const hertzdash::RemoveOnSignal registered(tmp);
     ::raise(SIGTERM);
-    ::_exit(0);  // not reached
-  }
-  int status = 0;
-  ::waitpid(child, &status, 0);
+  });
   CHECK(WIFSIGNALED(status));
   CHECK(WTERMSIG(status) == SIGTERM);
   CHECK_FALSE(fs::exists(tmp));
@@ -213,16 +221,10 @@ TEST_CASE("atomic file: an unregistered file survives SIGTERM", "[atomic_file]")
   const ScratchDir s;
   const fs::path kept = s.path / "kept.csv";
   std::ofstream(kept) << "kept";
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
-    std::signal(SIGTERM, SIG_DFL);
+  const int status = in_child(SIGTERM, [&] {
     { const hertzdash::RemoveOnSignal registered(kept); }
     ::raise(SIGTERM);
-    ::_exit(0);
-  }
-  int status = 0;
-  ::waitpid(child, &status, 0);
+  });
   CHECK(WIFSIGNALED(status));
   CHECK(fs::exists(kept));
 }
@@ -299,28 +301,6 @@ TEST_CASE("atomic file: a replaced file keeps its permissions", "[atomic_file]")
   CHECK(message_of(fresh, "x\n").empty());
   CHECK((stat_of(fresh).st_mode & 07777) == (0666 & ~umask_now));
 }
-
-namespace {
-
-// Runs `body` in a child process with `signal` at its default disposition and no core file;
-// returns the child's wait status.
-template <class Body>
-int in_child(int signal, Body body) {
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
-    const struct rlimit no_core {0, 0};
-    ::setrlimit(RLIMIT_CORE, &no_core);
-    std::signal(signal, SIG_DFL);
-    body();
-    ::_exit(0);
-  }
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  return status;
-}
-
-}  // namespace
 
 TEST_CASE("atomic file: every signal that ends the process removes a registered temporary", "[atomic_file]") {
   // Before, only SIGINT, SIGTERM and SIGHUP did: SIGQUIT, SIGUSR1, SIGALRM and the others left

@@ -23,6 +23,15 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 constexpr const char* trace_header = "t_s,force_N,accel_mps2,velocity_mps,displacement_m,x_m";
 
+// `hertzdash ARGS` refused: exit code 2, exactly "hertzdash: REFUSAL" on stderr, nothing on stdout.
+void check_refusal(const std::string& args, const std::string& refusal) {
+  INFO(args);
+  const auto r = run_cli(args);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err == "hertzdash: " + refusal + "\n");
+  CHECK(r.out.empty());
+}
+
 }  // namespace
 
 TEST_CASE("CLI simulate --trace /dev/stdout: the trace, then the summary, on standard output", "[cli][output]") {
@@ -103,9 +112,8 @@ TEST_CASE("CLI --mkdir creates the missing directories of every output file", "[
 
 TEST_CASE("CLI: an output path that is a directory exits 2 and says so", "[cli][output]") {
   const ScratchDir s;
-  const auto r = run_cli("simulate --trace " + s.path.string());
-  CHECK(r.exit_code == 2);
-  CHECK(r.err == "hertzdash: invalid --trace = " + s.path.string() + ": must be a file, not a directory\n");
+  check_refusal("simulate --trace " + s.path.string(),
+                "invalid --trace = " + s.path.string() + ": must be a file, not a directory");
   CHECK(fs::is_empty(s.path));
 }
 
@@ -153,11 +161,9 @@ TEST_CASE("CLI: a file or a symbolic-link loop where a directory should be exits
   };
   for (const bool mkdir : {false, true})
     for (const auto& c : cases) {
-      INFO(c.path << (mkdir ? " with --mkdir" : ""));
-      const auto r = run_cli(std::string("simulate ") + (mkdir ? "--mkdir " : "") + "--trace " + c.path);
-      CHECK(r.exit_code == 2);
-      CHECK(r.err == "hertzdash: invalid --trace = " + c.path +
-                         ": must be a file in a directory that exists or can be created " + c.reason + "\n");
+      check_refusal(std::string("simulate ") + (mkdir ? "--mkdir " : "") + "--trace " + c.path,
+                    "invalid --trace = " + c.path + ": must be a file in a directory that exists or can be created " +
+                        c.reason);
     }
   CHECK(fs::is_regular_file(s.path / "file"));
   CHECK(fs::is_symlink(s.path / "loop"));
@@ -180,13 +186,7 @@ TEST_CASE("CLI: an empty output path exits 2 naming the option", "[cli][output]"
       {"sweep " + case_file + " --quiet --out ''", "--out"},
       {"sweep " + case_file + " --quiet --summary ''", "--summary"},
   };
-  for (const auto& c : cases) {
-    INFO(c.args);
-    const auto r = run_cli(c.args);
-    CHECK(r.exit_code == 2);
-    CHECK(r.err == "hertzdash: invalid " + c.option + " = '': must be a file path (not empty)\n");
-    CHECK(r.out.empty());
-  }
+  for (const auto& c : cases) check_refusal(c.args, "invalid " + c.option + " = '': must be a file path (not empty)");
   CHECK_FALSE(fs::exists(s.path / "case.csv"));
 }
 
@@ -252,13 +252,7 @@ TEST_CASE("CLI: an output no file can be written to exits 2 before any run", "[c
        "invalid --trace = /proc/hertzdash-out.csv: must be a file that can be written (cannot write "
        "/proc/hertzdash-out.csv: No such file or directory)"},
   };
-  for (const auto& c : cases) {
-    INFO(c.args);
-    const auto r = run_cli(c.args);
-    CHECK(r.exit_code == 2);
-    CHECK(r.err == "hertzdash: " + c.refusal + "\n");
-    CHECK(r.out.empty());
-  }
+  for (const auto& c : cases) check_refusal(c.args, c.refusal);
   CHECK(s.names() == std::vector<std::string>{"ok.toml"});
 }
 

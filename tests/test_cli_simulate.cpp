@@ -2,6 +2,7 @@
 // inputs actually used; the trace is the contact phase in the measured-trace format, provenance below the column names;
 // the README's example prints what the README says it prints.
 #include "cli_runner.hpp"
+#include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/provenance.hpp"
 
@@ -12,9 +13,27 @@
 #include <cmath>
 #include <string>
 #include <vector>
-#include <unistd.h>
 
 using hertzdash::test::run_cli;
+
+namespace {
+
+/// `hertzdash simulate ARGS --json --trace FILE`: its JSON and the trace file read back (the file
+/// in a scratch directory, removed after).
+struct SimulatedTrace {
+  nlohmann::json j;
+  hertzdash::CsvTable t;
+};
+SimulatedTrace simulate_with_trace(const std::string& args) {
+  const hertzdash::test::ScratchDir dir;
+  const std::string path = (dir.path / "trace.csv").string();
+  const auto r = run_cli("simulate " + args + " --json --trace " + path);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  return {nlohmann::json::parse(r.out), hertzdash::CsvTable::read(path)};
+}
+
+}  // namespace
 
 TEST_CASE("CLI simulate --json: fields, units and inputs", "[cli]") {
   const auto r = run_cli("simulate --rod steel --height 0.02 --integrator cvode --json");
@@ -96,12 +115,7 @@ TEST_CASE("CLI restitution names the integrator that ran", "[cli]") {
 }
 
 TEST_CASE("CLI simulate --trace: contact phase under a provenance header", "[cli]") {
-  const auto path = std::filesystem::temp_directory_path() / ("hertzdash_trace_" + std::to_string(::getpid()) + ".csv");
-  const auto r = run_cli("simulate --json --trace " + path.string());
-  REQUIRE(r.exit_code == 0);
-  const auto j = nlohmann::json::parse(r.out);
-  const auto t = hertzdash::CsvTable::read(path);
-  std::filesystem::remove(path);
+  const auto [j, t] = simulate_with_trace("");
   // The measured-trace format (data/measurements/README.md), then the model's own columns.
   CHECK(t.columns() == std::vector<std::string>{"t_s", "force_N", "accel_mps2", "velocity_mps", "displacement_m",
                                                 "x_m", "xdot_mps", "contact_force_N", "rod_accel_mps2"});
@@ -148,12 +162,7 @@ TEST_CASE("CLI --version names the version and the git revision it was built fro
 }
 
 TEST_CASE("CLI simulate --rod-model elastic: the instruments, the energy account, the stability note", "[cli][elastic]") {
-  const auto path = std::filesystem::temp_directory_path() / ("hertzdash_elastic_" + std::to_string(::getpid()) + ".csv");
-  const auto r = run_cli("simulate --rod-model elastic --json --trace " + path.string());
-  REQUIRE(r.exit_code == 0);
-  const auto j = nlohmann::json::parse(r.out);
-  const auto t = hertzdash::CsvTable::read(path);
-  std::filesystem::remove(path);
+  const auto [j, t] = simulate_with_trace("--rod-model elastic");
   const auto& e = j["elastic_rod"];
   // The account closes: in = rigid-body out + vibration + cell + both dissipations + error,
   // with the error at the integrator's level (rtol 1e-8 of the energy in, with margin).

@@ -40,6 +40,30 @@ std::size_t data_rows(const std::string& csv) {
   return rows - 1;  // the column names
 }
 
+/// `hertzdash sweep CASE --quiet` run in `dir`: its exit code (-1: killed), stderr and peak
+/// memory. (Linux counts the forked test process's own ~10 MB before the exec in it: a floor
+/// under every size compared.)
+struct SweepPeak {
+  int exit_code = -1;
+  std::string err;
+  long kB = 0;
+};
+SweepPeak sweep_peak(const fs::path& dir, const char* case_file) {
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("err.txt", "w", stderr);
+    ::execl(HERTZDASH_BIN, HERTZDASH_BIN, "sweep", case_file, "--quiet", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  struct rusage usage {};
+  ::wait4(child, &status, 0, &usage);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "err.txt"), usage.ru_maxrss};
+}
+
 }  // namespace
 
 TEST_CASE("The README's sweep example runs as written and prints what the README shows", "[cli][sweep][readme]") {
@@ -193,31 +217,14 @@ TEST_CASE("CLI sweep: an oversized grid is refused from the case's numbers, befo
   dir.write("small.toml", "[grid]\nheight = { from = 0.01, to = 0.02, count = 2 }\nrestitution = [0.5, 0.6]\n"
                           "[sample]\nmethod = \"sobol\"\ncount = 5000001\nball-E = { distribution = \"uniform\", "
                           "min = 1.2e9, max = 2.9e9 }\n");
-  auto run = [&](const char* case_file, std::string& err) {
-    const pid_t child = ::fork();
-    REQUIRE(child >= 0);
-    if (child == 0) {
-      if (::chdir(dir.path.c_str()) != 0) ::_exit(127);
-      std::freopen("/dev/null", "w", stdout);
-      std::freopen("err.txt", "w", stderr);
-      ::execl(HERTZDASH_BIN, HERTZDASH_BIN, "sweep", case_file, "--quiet", static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    int status = 0;
-    struct rusage usage {};
-    ::wait4(child, &status, 0, &usage);
-    CHECK(WIFEXITED(status));
-    CHECK(WEXITSTATUS(status) == 2);
-    err = slurp(dir.path / "err.txt");
-    return usage.ru_maxrss;  // kB
-  };
-  std::string err, small_err;
-  const long huge_kB = run("huge.toml", err), small_kB = run("small.toml", small_err);
-  CHECK(err ==
+  const SweepPeak huge = sweep_peak(dir.path, "huge.toml"), small = sweep_peak(dir.path, "small.toml");
+  CHECK(huge.exit_code == 2);
+  CHECK(small.exit_code == 2);
+  CHECK(huge.err ==
         "hertzdash: invalid the number of runs of huge.toml = 2e+07: must be at most 10000000 (grid points times "
         "sample count; split the case)\n");
-  CHECK_THAT(small_err, Catch::Contains("must be at most 10000000"));  // refused at the same point
-  CHECK(huge_kB < small_kB + 100 * 1024);  // the axis alone would be 400 MB
+  CHECK_THAT(small.err, Catch::Contains("must be at most 10000000"));  // refused at the same point
+  CHECK(huge.kB < small.kB + 100 * 1024);  // the axis alone would be 400 MB
 }
 
 TEST_CASE("CLI sweep: a case file given as a FIFO is read", "[cli][sweep]") {
@@ -232,27 +239,6 @@ TEST_CASE("CLI sweep: a case file given as a FIFO is read", "[cli][sweep]") {
   CHECK(data_rows(slurp(dir.path / "out.csv")) == 2);
 }
 
-namespace {
-
-// The peak memory [kB] of `hertzdash sweep CASE --quiet` run in `dir`. (Linux counts the forked
-// test process's own ~10 MB before the exec in it: a floor under both sizes compared below.)
-long sweep_peak_kB(const fs::path& dir, const char* case_file) {
-  const pid_t child = ::fork();
-  if (child == 0) {
-    if (::chdir(dir.c_str()) != 0) ::_exit(127);
-    std::freopen("/dev/null", "w", stdout);
-    std::freopen("/dev/null", "w", stderr);
-    ::execl(HERTZDASH_BIN, HERTZDASH_BIN, "sweep", case_file, "--quiet", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  int status = 0;
-  struct rusage usage {};
-  ::wait4(child, &status, 0, &usage);
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? usage.ru_maxrss : -1;
-}
-
-}  // namespace
-
 TEST_CASE("CLI sweep: the per-run table goes to its file as it is made, not held as text", "[cli][sweep]") {
 #if defined(__SANITIZE_ADDRESS__)
   SUCCEED("not under AddressSanitizer: its redzones and quarantine change every allocation's size");
@@ -266,10 +252,11 @@ TEST_CASE("CLI sweep: the per-run table goes to its file as it is made, not held
   const char* base = "[base]\ndamping = \"none\"\nintegrator = \"taylor-regularized\"\n[output]\nsummary = true\n";
   dir.write("small.toml", std::string(base) + "[grid]\nheight = { from = 0.01, to = 0.05, count = 2 }\n");
   dir.write("large.toml", std::string(base) + "[grid]\nheight = { from = 0.01, to = 0.05, count = 200000 }\n");
-  const long small = sweep_peak_kB(dir.path, "small.toml"), large = sweep_peak_kB(dir.path, "large.toml");
-  REQUIRE(small > 0);
-  REQUIRE(large > 0);
-  const double bytes_per_run = (large - small) * 1024.0 / 200000;
+  const SweepPeak small_run = sweep_peak(dir.path, "small.toml"), large_run = sweep_peak(dir.path, "large.toml");
+  REQUIRE(small_run.exit_code == 0);
+  REQUIRE(large_run.exit_code == 0);
+  const long small = small_run.kB, large = large_run.kB;
+  const double bytes_per_run = static_cast<double>(large - small) * 1024.0 / 200000;
   INFO("peak " << small << " kB for 2 runs, " << large << " kB for 200000: " << bytes_per_run << " bytes per run");
   CHECK(bytes_per_run < 300);
   std::ifstream table(dir.path / "large.csv");  // 20 MB: beyond CsvTable's 16 MiB for data tables

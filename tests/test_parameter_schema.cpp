@@ -48,6 +48,19 @@ Parameters description(const RunOptions& o) {
   return describe_run(resolve_setup(o, paper()), o.damping, resolve_solver(o));
 }
 
+// f(o) for the run options o that select each registered law x rod model x integrator.
+template <class F> void for_each_law_rod_integrator(F f) {
+  for (const LawInfo& law : registered_laws())
+    for (const char* rod_model : {"rigid", "elastic"})
+      for (const IntegratorTraits& integrator : all_integrator_traits) {
+        RunOptions o;
+        o.damping = std::string(law.name);
+        o.rod_model = rod_model;
+        o.integrator = std::string(integrator.name);
+        f(o);
+      }
+}
+
 }  // namespace
 
 TEST_CASE("docs/parameters.md is the program's parameter reference", "[parameters]") {
@@ -157,17 +170,11 @@ TEST_CASE("no option is ignored: option x law x rig x integrator, each read or r
   std::size_t read = 0, refused = 0;
   for (const RunOption& o : run_options()) {
     if (is_selection(o)) continue;
-    for (const LawInfo& law : registered_laws())
-      for (const char* rig : {"rigid", "elastic"})
-        for (const IntegratorTraits& integrator : all_integrator_traits) {
-          RunOptions base;
-          base.damping = std::string(law.name);
-          base.rod_model = rig;
-          base.integrator = std::string(integrator.name);
+    for_each_law_rod_integrator([&](const RunOptions& base) {
           RunOptions with = base;
           set_sample(with, o);
-          INFO(o.name << " = " << given_text(with, o) << " with damping " << law.name << ", rod-model " << rig
-                      << ", integrator " << integrator.name);
+          INFO(o.name << " = " << given_text(with, o) << " with damping " << base.damping << ", rod-model "
+                      << base.rod_model << ", integrator " << base.integrator);
           if (read_in(o, with)) {
             // Read: the run's description (every output's header) changes with it.
             CHECK(description(with) != description(base));
@@ -183,7 +190,7 @@ TEST_CASE("no option is ignored: option x law x rig x integrator, each read or r
             }
             ++refused;
           }
-        }
+        });
   }
   // Both sides of the matrix are exercised (the law, rig and integrator options are refused
   // somewhere, the set-up's options read everywhere).
@@ -196,13 +203,7 @@ TEST_CASE("the run description lists each option the run reads, under its column
   // rig and integrator, an option appears (as its Python keyword and unit, `ball_E_Pa`) exactly
   // when the run reads it and holds a value of it (a law's computed default is none).
   std::size_t runs = 0;
-  for (const LawInfo& law : registered_laws())
-    for (const char* rig : {"rigid", "elastic"})
-      for (const IntegratorTraits& integrator : all_integrator_traits) {
-        RunOptions run;
-        run.damping = std::string(law.name);
-        run.rod_model = rig;
-        run.integrator = std::string(integrator.name);
+  for_each_law_rod_integrator([&](const RunOptions& run) {
         const DropTestSetup setup = resolve_setup(run, paper());
         const SolverSettings solver = resolve_solver(run);
         const Parameters d = describe_run(setup, run.damping, solver);
@@ -211,13 +212,14 @@ TEST_CASE("the run description lists each option the run reads, under its column
           if (!o.value_in_run) continue;
           const std::string name = column_name(o);
           const auto listed = std::find_if(d.begin(), d.end(), [&](const auto& entry) { return entry.first == name; });
-          INFO(name << " with damping " << law.name << ", rod-model " << rig << ", integrator " << integrator.name);
+          INFO(name << " with damping " << run.damping << ", rod-model " << run.rod_model << ", integrator "
+                    << run.integrator);
           const bool expected = read_in(o, run) && o.value_in_run(setup, solver).has_value();
           CHECK((listed != d.end()) == expected);
           if (expected && listed != d.end()) CHECK(listed->second == *o.value_in_run(setup, solver));
         }
         CHECK(std::count_if(d.begin(), d.end(), [](const auto& e) { return e.first == "damping"; }) == 1);
-      }
+      });
   CHECK(runs == registered_laws().size() * 2 * all_integrator_traits.size());
 }
 

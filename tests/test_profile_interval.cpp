@@ -3,6 +3,7 @@
 // the bound of its range (simulation/fit/restitution_fit.hpp, "Profile intervals").
 #include "cli_runner.hpp"
 #include "profile_interval_checks.hpp"
+#include "restitution_at_speeds.hpp"
 #include "scratch_dir.hpp"
 #include "hertzdash/io/restitution_table.hpp"
 #include "hertzdash/simulation/fit/profile_interval.hpp"
@@ -134,17 +135,10 @@ const std::vector<double> eight_speeds{0.15, 0.30, 0.45, 0.60, 0.75, 0.90, 1.05,
 // --damping kuwabara-kono --viscous-time-constant A --impact-velocity v --rtol 1e-12` (CVODE:
 // another integrator than the fit's gbs8).
 std::vector<double> kuwabara_kono_e(double A_s) {
-  const PaperParameters paper = load_paper_parameters();
   RunOptions o;
   o.damping = "kuwabara-kono";
   o.viscous_time_constant_s = A_s;
-  o.rtol = 1e-12;
-  std::vector<double> e;
-  for (double v : eight_speeds) {
-    o.impact_velocity_mps = v;
-    e.push_back(run_restitution(o, paper).e_effective);
-  }
-  return e;
+  return test::restitution_at_speeds(o, eight_speeds);
 }
 
 // SYNTHETIC: Kuwabara-Kono at A = 7.7e-5 s, Gaussian noise of sd 0.004 (seed 3), no e_sd.

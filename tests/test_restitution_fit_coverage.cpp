@@ -23,6 +23,7 @@
 //
 // Run time: 2000 fits of 8 speeds, about 6 s of CPU (a fit of one parameter takes a few
 // iterations of 3 x 8 gbs8 impacts).
+#include "restitution_at_speeds.hpp"
 #include "hertzdash/io/restitution_table.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
@@ -60,18 +61,6 @@ Truth kuwabara_kono_truth() {
   return {o, "viscous-time-constant", 7.7e-5};
 }
 
-// e_effective of one impact at each speed, as `hertzdash restitution --impact-velocity v --rtol 1e-12`.
-std::vector<double> e_effective(RunOptions o) {
-  const PaperParameters paper = load_paper_parameters();
-  o.rtol = 1e-12;
-  std::vector<double> e;
-  for (double v : speeds) {
-    o.impact_velocity_mps = v;
-    e.push_back(run_restitution(o, paper).e_effective);
-  }
-  return e;
-}
-
 // The per-row e_sd of the weighted cases: 0.005 to 0.02.
 double row_sd(std::size_t i) { return 0.005 + 0.015 * static_cast<double>(i) / static_cast<double>(speeds.size() - 1); }
 
@@ -94,7 +83,7 @@ RestitutionTable noisy_table(const std::vector<double>& e_true, bool with_sd, un
 // Fraction of the draws whose 1-sigma interval contains the truth.
 int covered(const Truth& truth, bool with_sd, unsigned first_seed) {
   const PaperParameters paper = load_paper_parameters();
-  const std::vector<double> e_true = e_effective(truth.options);
+  const std::vector<double> e_true = test::restitution_at_speeds(truth.options, speeds);
   RunOptions base;
   base.damping = truth.options.damping;
   int inside = 0;

@@ -3,6 +3,7 @@
 // run_restitution (CVODE at rtol 1e-12: another integrator than the fit's gbs8), written as a
 // table labelled `synthetic: true`. No measured table ships.
 #include "cli_runner.hpp"
+#include "restitution_at_speeds.hpp"
 #include "scratch_dir.hpp"
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/restitution_table.hpp"
@@ -39,18 +40,6 @@ RunOptions kuwabara_kono_truth() {
   return o;
 }
 
-// e_effective of one impact at each speed, as `hertzdash restitution --impact-velocity v --rtol 1e-12`.
-std::vector<double> e_effective(RunOptions o, const std::vector<double>& speeds) {
-  const PaperParameters paper = load_paper_parameters();
-  o.rtol = 1e-12;
-  std::vector<double> e;
-  for (double v : speeds) {
-    o.impact_velocity_mps = v;
-    e.push_back(run_restitution(o, paper).e_effective);
-  }
-  return e;
-}
-
 RestitutionTable synthetic_table(const RunOptions& truth, const std::vector<double>& speeds, double sd = 0,
                                  unsigned seed = 0) {
   RestitutionTable t;
@@ -58,7 +47,7 @@ RestitutionTable synthetic_table(const RunOptions& truth, const std::vector<doub
   t.source = "SYNTHETIC: written by tests/test_restitution_table_fit.cpp, law " + truth.damping;
   t.synthetic = true;
   t.impact_speed_mps = speeds;
-  t.e = e_effective(truth, speeds);
+  t.e = test::restitution_at_speeds(truth, speeds);
   if (sd > 0) {
     std::mt19937 rng(seed);
     std::normal_distribution<double> noise(0.0, sd);

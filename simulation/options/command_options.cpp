@@ -1,8 +1,6 @@
 // The commands' own options (simulation/options/command_options.hpp).
 #include "hertzdash/simulation/options/command_options.hpp"
 
-#include "hertzdash/model/shaker_sweep_parameters.hpp"
-
 #include <stdexcept>
 #include <string>
 
@@ -69,8 +67,8 @@ constexpr ParameterDecl models[] = {{.key = "json", .type = T::flag, .default_va
 
 constexpr CommandOptions table[] = {
     {"simulate", simulate}, {"models", models},       {"restitution", restitution},
-    {"bounce", bounce},     {"RIG", rig},             {"shaker", shaker_sweep_parameters::all},
-    {"fit", {}},            {"sweep", sweep}};
+    {"bounce", bounce},     {"RIG", rig},             {"fit", {}},
+    {"sweep", sweep}};
 
 }  // namespace
 

@@ -89,6 +89,8 @@ std::string diagnostic_message(Diagnostic code, const ImpactSummary& s, const Dr
                          "run changed the pair (a mass, modulus, Poisson ratio or radius of its own), for which e is "
                          "not known: give `restitution` for it",
                          setup.restitution, setup.rod_preset);
+    case Diagnostic::rig_warning:
+      return "the rig's run warned: `hertzdash RIG` with the run's inputs prints why";
   }
   return {};
 }

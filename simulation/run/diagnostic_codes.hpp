@@ -21,6 +21,7 @@ enum class Diagnostic : std::uint8_t {
   not_separated,        ///< warning: the rod did not separate (e_effective, contact time undefined)
   no_rebound,           ///< warning: the elastic rod separated still moving down (e_effective 0, no bounce)
   preset_restitution,   ///< note: the input e is the preset rod's, measured on a pair the run changed
+  rig_warning,          ///< warning: a rig's run warned (its text: `hertzdash RIG` with the run's inputs)
 };
 
 struct DiagnosticInfo {
@@ -30,7 +31,7 @@ struct DiagnosticInfo {
 };
 
 /// Every code, in enumerator order (the order front ends report them in).
-inline constexpr std::array<DiagnosticInfo, 9> diagnostic_table{{
+inline constexpr std::array<DiagnosticInfo, 10> diagnostic_table{{
     {Diagnostic::integrator_fallback, "integrator_fallback", "note"},
     {Diagnostic::stability_limit, "stability_limit", "note"},
     {Diagnostic::under_resolved, "under_resolved", "warning"},
@@ -40,6 +41,7 @@ inline constexpr std::array<DiagnosticInfo, 9> diagnostic_table{{
     {Diagnostic::not_separated, "not_separated", "warning"},
     {Diagnostic::no_rebound, "no_rebound", "warning"},
     {Diagnostic::preset_restitution, "preset_restitution", "note"},
+    {Diagnostic::rig_warning, "rig_warning", "warning"},
 }};
 
 constexpr const DiagnosticInfo& diagnostic_info(Diagnostic d) { return diagnostic_table[static_cast<std::size_t>(d)]; }

@@ -128,6 +128,14 @@ constexpr bool smooth_at_events() {
 
 namespace integrator_rows {
 
+/// The traits of a row in the regularising variables that runs only the laws whose force is a
+/// polynomial in x^{1/2}, the others falling back to dopri5-regularized; dopri5 in the physical ones.
+constexpr IntegratorTraits root_polynomial_row(IntegratorKind kind, std::string_view name, IntegratorMethod method) {
+  return {.kind = kind, .name = name, .method = method, .variables = Variables::regularized,
+          .needs_root_polynomial = true, .fallback_for_other_laws = IntegratorKind::dopri5_regularized,
+          .physical_counterpart = IntegratorKind::dopri5};
+}
+
 /// How the fixed-step rows call them: Method (explicit Euler, classical RK4) with events
 /// located by regula falsi or handled at the end of the crossing step.
 template <class Method>
@@ -175,11 +183,8 @@ struct CallDopri5 {
   template <OdeSystem S, class Observer>
   static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
                                     IntegratorWorkspace&, Observer& observer) {
-    DormandPrinceOptions o;
-    o.rtol = s.rtol;
-    o.atol = s.atol;
-    o.max_step = s.max_step_s;
-    o.singular_points = !smooth_at_events<S>();
+    const DormandPrinceOptions o{
+        .rtol = s.rtol, .atol = s.atol, .max_step = s.max_step_s, .singular_points = !smooth_at_events<S>()};
     return integrate_dormand_prince(sys, y, t0, t1, o, observer);
   }
 };
@@ -211,19 +216,12 @@ struct CvodeRegularized : CallCvode {
 /// Gragg-Bulirsch-Stoer extrapolation of order 8 on the regularised contact: the fastest
 /// path, for laws smooth through onset and separation in u = x^{1/2}.
 struct Gbs8Regularized {
-  static constexpr IntegratorTraits traits{.kind = IntegratorKind::gbs8_regularized, .name = "gbs8-regularized",
-                                           .method = IntegratorMethod::gbs8,
-                                           .variables = Variables::regularized,
-                                           .needs_root_polynomial = true,
-                                           .fallback_for_other_laws = IntegratorKind::dopri5_regularized,
-                                           .physical_counterpart = IntegratorKind::dopri5};
+  static constexpr IntegratorTraits traits =
+      root_polynomial_row(IntegratorKind::gbs8_regularized, "gbs8-regularized", IntegratorMethod::gbs8);
   template <OdeSystem S, class Observer>
   static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
                                     IntegratorWorkspace&, Observer& observer) {
-    ExtrapolationOptions o;
-    o.rtol = s.rtol;
-    o.atol = s.atol;
-    return integrate_extrapolation(sys, y, t0, t1, o, observer);
+    return integrate_extrapolation(sys, y, t0, t1, ExtrapolationOptions{.rtol = s.rtol, .atol = s.atol}, observer);
   }
 };
 
@@ -231,12 +229,8 @@ struct Gbs8Regularized {
 /// force_of_root) on the regularised contact, events located on the series: for laws
 /// whose force is a polynomial in u = x^{1/2}.
 struct TaylorRegularized {
-  static constexpr IntegratorTraits traits{.kind = IntegratorKind::taylor_regularized, .name = "taylor-regularized",
-                                           .method = IntegratorMethod::taylor,
-                                           .variables = Variables::regularized,
-                                           .needs_root_polynomial = true,
-                                           .fallback_for_other_laws = IntegratorKind::dopri5_regularized,
-                                           .physical_counterpart = IntegratorKind::dopri5};
+  static constexpr IntegratorTraits traits =
+      root_polynomial_row(IntegratorKind::taylor_regularized, "taylor-regularized", IntegratorMethod::taylor);
   template <OdeSystem S, class Observer>
   static IntegrationStats integrate(S& sys, typename S::State& y, double t0, double t1, const SolverSettings& s,
                                     IntegratorWorkspace&, Observer& observer) {

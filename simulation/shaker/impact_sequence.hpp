@@ -103,18 +103,18 @@ using SoftImpactRun =
 
 /// A rig's sequence (see above). The oscillators' w is the drive's.
 struct ImpactSequenceSpec {
-  ForcedOscillator body;                      ///< mass m > 0
-  std::optional<OscillatorMotion> prescribed; ///< the box's motion if prescribed, else:
-  ForcedOscillator box;                       ///< the box as an oscillator of mass M (X0, V0 at t0)
-  std::vector<SequenceWall> walls;            ///< one or two
+  ForcedOscillator body{};                      ///< mass m > 0
+  std::optional<OscillatorMotion> prescribed{}; ///< the box's motion if prescribed, else:
+  ForcedOscillator box{};                       ///< the box as an oscillator of mass M (X0, V0 at t0)
+  std::vector<SequenceWall> walls{};            ///< one or two
   double frequency_Hz = 1;                    ///< the drive's: phases, cycles, the pattern
   double speed_scale_mps = 1;  ///< stick_speed is 1e-6 of it; the pattern's speed scale if it has none
   double t0_s = 0, y0_m = 0, u0_mps = 0, X0_m = 0, V0_mps = 0;  ///< the start: in flight at (y0, u0), or
   int carried_by = -1;                                         ///< >= 0: carried by that wall
   int impacts = 100, transient = 1000;
   double restitution = 1;   ///< instantaneous impacts' e
-  SoftImpactRun soft;      ///< set: soft impacts
-  PatternTolerance pattern;
+  SoftImpactRun soft{};    ///< set: soft impacts
+  PatternTolerance pattern{};
   bool energy = false;      ///< keep the energy account (a box of mass M or at rest)
   enum class Sampled { none, box, body } sampled = Sampled::none;
 };

@@ -141,6 +141,7 @@ void run_rig_sweep(const SweepCase& c, const std::vector<std::size_t>& runs, con
             if (const long* n = std::get_if<long>(&v)) r.values[j * r.outputs + k] = static_cast<double>(*n);
           }
           for (const std::vector<double>& row : result.rows) r.impacts[j].insert(r.impacts[j].end(), row.begin(), row.end());
+          if (!result.warnings.empty()) r.diagnostics[j].add(Diagnostic::rig_warning);
           r.errors[j].clear();
         } catch (const std::exception& e) {
           r.errors[j] = spell_key_references(e.what(), KeySpelling::key);
