@@ -79,7 +79,7 @@ struct Shifted {  // s + a: the constant enters coefficient 0 only
   void bind(double*& next) { a.bind(next); }
 };
 
-/// a + sign b, sign = +1 (Sum) or -1 (Difference): -b is exact, so a + (-b) is a - b to the bit.
+/// a + b (sign +1: Sum) or a - b (sign -1: Difference), coefficient by coefficient.
 template <class A, class B, int sign>
 struct SignedSum {
   static constexpr bool is_series_expression = true;
