@@ -75,7 +75,8 @@ void check_rig_inputs(const Rig& rig, const RunOptions& options, const RigInputs
     return *d;
   };
   for (const auto& [key, value] : inputs.numbers) require_in_range(declared(key, ParameterType::number), value);
-  for (const auto& [key, value] : inputs.texts) {
+  for (const auto& [key, text] : inputs.texts) {
+    const std::string& value = text;  // a lambda may not capture a structured binding in clang 14
     const ParameterDecl& d = declared(key, ParameterType::text);
     const std::vector<std::string> choices = split_option_list(std::string(d.choices));
     if (std::none_of(choices.begin(), choices.end(), [&](const std::string& c) { return c == value || " " + value == c; }))
