@@ -8,7 +8,7 @@
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"
-#include "hertzdash/simulation/paper/chung_ooi_benchmark.hpp"
+#include "validation/common/chung_ooi_benchmark.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <catch2/catch.hpp>

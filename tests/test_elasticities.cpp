@@ -15,7 +15,7 @@
 // resolves the smallest elasticities (e_effective to E, m, R, h, which act only through
 // gravity during contact) to a few per cent of their size.
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/simulation/paper/paper_law_elasticities.hpp"
+#include "validation/common/paper_law_elasticities.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 

@@ -5,7 +5,7 @@
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/kelvin_voigt.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
-#include "hertzdash/simulation/paper/convergence_runs.hpp"
+#include "validation/common/convergence_runs.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 

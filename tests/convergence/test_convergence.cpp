@@ -24,7 +24,7 @@
 // CVODE is scattered by its order and step selection: for the state the study fits
 // 0.96 to 1.01 over rtol 1e-8..1e-12 and this test's sweep 0.92 to 1.15 over
 // 1e-5..1e-10, so 1 +- 0.3 is asserted (the located maxima, 0.5 to 0.9, are not).
-#include "hertzdash/simulation/paper/convergence_runs.hpp"
+#include "validation/common/convergence_runs.hpp"
 #include "hertzdash/simulation/run/step_resolution.hpp"
 
 #include <catch2/catch.hpp>

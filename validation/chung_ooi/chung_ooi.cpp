@@ -7,7 +7,7 @@
 // identical glass spheres meeting at 20 m/s, and an aluminium alloy sphere striking a rigid flat
 // at 0.2 m/s. Along the line of centres each is the drop test's rigid-rod model with the
 // benchmark's effective mass, effective radius and E*, no gravity
-// (simulation/paper/chung_ooi_benchmark.hpp maps the benchmark's bodies onto the set-up's names:
+// (validation/common/chung_ooi_benchmark.hpp maps the benchmark's bodies onto the set-up's names:
 // the moving "rod" carries m*, the "hemisphere" the sphere's radius R* and elastic constants, and
 // the "rod's flat end" those of what the sphere strikes). We run it with the undamped law "none".
 //
@@ -26,7 +26,7 @@
 // at least that far, so this is the stricter reading of the README's "~1 % of full scale"):
 // the vertical deviation at the digitised abscissa, and the distance to the curve in both
 // columns at once, which is what a digitisation error in both columns moves
-// (simulation/paper/chung_ooi_benchmark.hpp). Also the peak force, the largest overlap and the contact
+// (validation/common/chung_ooi_benchmark.hpp). Also the peak force, the largest overlap and the contact
 // time read off the curves against ours.
 //
 // Part 3, test 2's restitution map: the effective restitution of every registered law against
@@ -47,7 +47,7 @@
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
-#include "hertzdash/simulation/paper/chung_ooi_benchmark.hpp"
+#include "validation/common/chung_ooi_benchmark.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/calibrate_restitution.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"

@@ -8,7 +8,7 @@
 // CVODE Adams and BDF (against tolerance), and RK4 in regularising variables
 // (model/contact_system.hpp), the remedy this study arrives at.
 //
-// The problem (simulation/paper/convergence_runs.hpp): the paper's steel rod
+// The problem (validation/common/convergence_runs.hpp): the paper's steel rod
 // meeting the nylon hemisphere at v0 = sqrt(2 g h), h = 20 mm, gravity off during
 // the contact, starting in flight a fraction of a step before onset. Two laws:
 //   - `none` (undamped Hertz, F = K x^{3/2}): exact references in closed form
@@ -60,7 +60,7 @@
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/run/step_resolution.hpp"
 #include "validation/common/study_args.hpp"
-#include "hertzdash/simulation/paper/convergence_runs.hpp"
+#include "validation/common/convergence_runs.hpp"
 
 #include <fmt/format.h>
 

@@ -5,7 +5,7 @@
 // at all (data/assumptions.csv), e is measured, m, h and R are known well. An elasticity
 // d ln y / d ln p says what a 1 % change of p does to y in per cent, so it ranks them.
 // It is computed by CVODES forward sensitivity analysis of the contact phase and the
-// chain rule through eqs. (3), (6), (11) (simulation/paper/paper_law_elasticities.hpp),
+// chain rule through eqs. (3), (6), (11) (validation/common/paper_law_elasticities.hpp),
 // cross-checked against central differences of the full simulation in
 // tests/test_elasticities.cpp (agreement to ~1e-7).
 //
@@ -22,7 +22,7 @@
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
-#include "hertzdash/simulation/paper/paper_law_elasticities.hpp"
+#include "validation/common/paper_law_elasticities.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "validation/common/study_args.hpp"
 

@@ -19,7 +19,7 @@
 #include "validation/common/all_rods.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
-#include "hertzdash/simulation/paper/convergence_runs.hpp"
+#include "validation/common/convergence_runs.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 #include "validation/common/study_args.hpp"

@@ -42,7 +42,7 @@
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
-#include "hertzdash/simulation/paper/paper_law_elasticities.hpp"
+#include "validation/common/paper_law_elasticities.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_history.hpp"
 #include "hertzdash/simulation/sweep/parallel_sweep.hpp"

@@ -1,4 +1,4 @@
-#include "hertzdash/simulation/paper/paper_law_elasticities.hpp"
+#include "validation/common/paper_law_elasticities.hpp"
 
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/hertz.hpp"
