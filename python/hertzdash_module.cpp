@@ -247,25 +247,91 @@ py::dict py_virtual_measurement(const std::string& path, double sample_rate, dou
   return to_python(to_json(run, note));
 }
 
-// The fit functions: `hertzdash fit --json` of their kind, the fit's own keywords as the
-// program's options (fit_request), the set-up's options as keywords (the fit integrates its
-// model itself: a solver option is refused).
-py::dict py_fit_kind(const char* function, std::map<std::string, std::string> values, const std::string& curves,
-                     const py::kwargs& kwargs) {
+// The fit functions, one per kind of data, generated from `fit`'s option table
+// (simulation/reports/fit_request.cpp): `hertzdash fit --KIND PATH --json`, the fit's own options
+// of that kind as keywords, the set-up's options as the rest (the fit integrates its model
+// itself: a solver option is refused).
+struct FitFunction {
+  const char* name;
+  FitDataKind kind;
+  const char* path;     ///< the first argument's name
+  const char* summary;  ///< what it does and returns
+};
+
+constexpr FitFunction fit_functions[] = {
+    {"fit", FitDataKind::trace, "trace",
+     "Identify parameters from a measured trace by weighted least squares, exactly `hertzdash fit --trace TRACE "
+     "--json` (docs/fit.md): trace, fits (parameters with estimate, standard_error, bounds; correlation; channels "
+     "with noise_sigma and residual_rms; reduced_chi_square, condition_number, identifiable, aic, bic, "
+     "fitted_inputs), failures. Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) are "
+     "UserWarnings."},
+    {"fit_restitution_table", FitDataKind::restitution_table, "path",
+     "Fit a damping law's own parameters to a restitution table (e against the impact speed, "
+     "data/measurements/README.md), exactly `hertzdash fit --restitution-table PATH --json` (docs/fit.md): table, "
+     "fits (parameters with estimate, standard_error, profile_interval; correlation; sigma; reduced_chi_square; "
+     "aic, bic; e_effective_range; points; cross_validation), failures. Warnings (a synthetic table, sigma "
+     "estimated, a failed fit) are UserWarnings."},
+    {"fit_bounce_times", FitDataKind::bounce_times, "path",
+     "Fit a damping law's own parameters, and each drop's first impact speed and clock offset, to a bounce "
+     "recording (the detected impact times of one or more drops, data/measurements/README.md), exactly `hertzdash "
+     "fit --bounce-times PATH --json` (docs/fit.md): recording, flagged (the doubled, missed, out-of-order and "
+     "non-shrinking detections left out, by drop and index), fits (parameters, drops, sigma_s, aic, bic, "
+     "e_effective_range, points, cross_validation, profile_interval), failures. air_density and drag_coefficient "
+     "add air drag to the model's flights. Warnings (each flag, a synthetic recording) are UserWarnings."},
+};
+
+// The fit's own options that `f` takes as keywords: those its kind reads, but the one naming the
+// data (its first argument) and the command line's output flags.
+std::vector<const ParameterDecl*> fit_keywords(const FitFunction& f) {
+  std::vector<const ParameterDecl*> keywords;
+  for (const FitOption& o : fit_command_options())
+    if ((o.kinds & (1u << static_cast<int>(f.kind))) && o.decl.key != fit_kind_option(f.kind) &&
+        o.decl.key != "json" && o.decl.key != "mkdir")
+      keywords.push_back(&o.decl);
+  return keywords;
+}
+
+// The fit's own option `d` from a Python value, as the command line's text ("" for off or None).
+std::string fit_option_text(const ParameterDecl& d, py::handle value) {
+  const std::string keyword = python_keyword(d.key);
+  if (value.is_none()) return "";
+  if (d.type == ParameterType::flag) {
+    if (!py::isinstance<py::bool_>(value)) throw py::type_error(keyword + ": expected True or False");
+    return value.cast<bool>() ? "true" : "";
+  }
+  if (d.type == ParameterType::text) {
+    if (!py::isinstance<py::str>(value)) throw py::type_error(keyword + ": expected a string");
+    return value.cast<std::string>();
+  }
+  if (py::isinstance<py::bool_>(value) || !py::hasattr(value, "__float__")) throw py::type_error(keyword + ": expected a number");
+  return fmt::format("{}", value.cast<double>());
+}
+
+py::dict py_fit_kind(const FitFunction& f, const std::string& path, const py::kwargs& kwargs) {
+  const std::vector<const ParameterDecl*> own = fit_keywords(f);
+  std::map<std::string, std::string> values{{std::string(fit_kind_option(f.kind)), path}};
   RunOptions options;
   std::vector<std::string> given;  // even at a default value (rod="steel"): a trace may not contradict it
   for (const auto& [key, value] : kwargs) {
-    const RunOption& o = option_named(key.cast<std::string>(), function);
+    const std::string keyword = key.cast<std::string>();
+    const auto d = std::ranges::find_if(own, [&](const ParameterDecl* p) { return python_keyword(p->key) == keyword; });
+    if (d != own.end()) {
+      if (std::string text = fit_option_text(**d, value); !text.empty()) values[std::string((*d)->key)] = text;
+      continue;
+    }
+    std::string names;
+    for (const ParameterDecl* p : own) names += (names.empty() ? "" : ", ") + python_keyword(p->key);
+    const RunOption& o = option_named(keyword, f.name, names);
     given.push_back(o.name);
     if (o.group != RunOption::Group::setup)
       throw py::type_error(fmt::format("{}() got the solver option '{}': the fit integrates its model itself "
                                        "(simulation/fit/fit_engine.hpp)",
-                                       function, python_keyword(o.name)));
+                                       f.name, python_keyword(o.name)));
     set_option(options, o, value);
   }
-  std::erase_if(values, [](const auto& kv) { return kv.second.empty() || kv.second == "false"; });
   FitRequest request = fit_request(values, options);
   request.given = given;
+  const std::string curves = values.contains("curves") ? values.at("curves") : "";
   if (find_shared_file({request.path}, {curves}))  // curves= would replace the trace it fits (issue 31)
     throw InvalidParameter("curves", curves, "another file than trace (" + request.path + "), which is read: they are the same file");
   FitRun run;
@@ -278,32 +344,11 @@ py::dict py_fit_kind(const char* function, std::map<std::string, std::string> va
   return to_python(to_json(run, paper()));
 }
 
-std::string flag(bool on) { return on ? "true" : "false"; }
-
-py::dict py_fit(const std::string& trace, const std::string& fit, const std::string& channels, double resample,
-                bool compare_laws, const std::string& curves, bool profile_intervals, bool cross_validate,
-                const py::kwargs& kwargs) {
-  return py_fit_kind("fit",
-                     {{"trace", trace}, {"fit", fit}, {"channels", channels},
-                      {"resample", resample != 0 ? fmt::format("{}", resample) : ""}, {"compare-laws", flag(compare_laws)},
-                      {"profile-intervals", flag(profile_intervals)}, {"cross-validate", flag(cross_validate)}},
-                     curves, kwargs);
-}
-
-py::dict py_fit_restitution_table(const std::string& path, const std::string& fit, bool compare_laws,
-                                  bool cross_validate, bool profile_intervals, const py::kwargs& kwargs) {
-  return py_fit_kind("fit_restitution_table",
-                     {{"restitution-table", path}, {"fit", fit}, {"compare-laws", flag(compare_laws)},
-                      {"cross-validate", flag(cross_validate)}, {"profile-intervals", flag(profile_intervals)}},
-                     "", kwargs);
-}
-
-py::dict py_fit_bounce_times(const std::string& path, const std::string& fit, bool compare_laws, bool cross_validate,
-                             bool profile_intervals, const py::kwargs& kwargs) {
-  return py_fit_kind("fit_bounce_times",
-                     {{"bounce-times", path}, {"fit", fit}, {"compare-laws", flag(compare_laws)},
-                      {"cross-validate", flag(cross_validate)}, {"profile-intervals", flag(profile_intervals)}},
-                     "", kwargs);
+std::string fit_doc(const FitFunction& f) {
+  std::string doc = fmt::format("{}({}, **options) -> dict\n\n{}\n\nIts own options:\n", f.name, f.path, f.summary);
+  for (const ParameterDecl* d : fit_keywords(f))
+    doc += fmt::format("  {}: {}\n", python_keyword(d->key), help_text(*d, KeySpelling::python));
+  return doc;
 }
 
 py::dict py_paper_parameters() {
@@ -693,47 +738,9 @@ PYBIND11_MODULE(hertzdash, m) {
          "--trace-format measured ...`. Returns simulate()'s dict.\n\n" +
          options)
             .c_str());
-  m.def("fit", &py_fit, py::arg("trace"), py::arg("fit") = "ball-E,restitution", py::arg("channels") = "",
-        py::arg("resample") = 0.0, py::arg("compare_laws") = false, py::arg("curves") = "",
-        py::arg("profile_intervals") = false, py::arg("cross_validate") = false,
-        ("fit(trace, fit='ball-E,restitution', channels='', resample=0, compare_laws=False, curves='', "
-         "profile_intervals=False, cross_validate=False, **options) "
-         "-> dict\n\nIdentify parameters from a measured trace by weighted least squares, exactly `hertzdash fit "
-         "--trace TRACE --json` (docs/fit.md): trace, fits (parameters with estimate, standard_error, bounds; "
-         "correlation; channels with noise_sigma and residual_rms; reduced_chi_square, condition_number, "
-         "identifiable, aic, bic, fitted_inputs), failures. fit: NAME or NAME:LOWER:UPPER, comma-separated; the "
-         "starting values are the options below (set-up options only). curves: a CSV file for the trace, the "
-         "fit and the residuals. profile_intervals: each parameter's profile-likelihood interval too "
-         "(profile_interval). cross_validate: five interleaved folds of samples, each predicted from the rest "
-         "(cross_validation). Warnings (not identifiable, a bound reached, a poor fit, a synthetic trace) "
-         "are UserWarnings.\n\n" +
-         options)
-            .c_str());
-  m.def("fit_restitution_table", &py_fit_restitution_table, py::arg("path"), py::arg("fit") = "",
-        py::arg("compare_laws") = false, py::arg("cross_validate") = false, py::arg("profile_intervals") = false,
-        ("fit_restitution_table(path, fit='', compare_laws=False, cross_validate=False, profile_intervals=False, "
-         "**options) -> dict\n\nFit a damping law's own parameters to a restitution table (e against the impact "
-         "speed, data/measurements/README.md), exactly `hertzdash fit --restitution-table PATH --json` "
-         "(docs/fit.md): table, fits (parameters with estimate, standard_error and, with profile_intervals, "
-         "profile_interval; correlation; sigma; reduced_chi_square; aic, bic; e_effective_range; points; "
-         "cross_validation with cross_validate), failures. fit: NAME or NAME:LOWER:UPPER, comma-separated "
-         "(empty: the law's own, restitution or viscous-time-constant); compare_laws fits every registered law "
-         "(damping then omitted); cross_validate leaves out each speed in turn. Warnings (a synthetic table, "
-         "sigma estimated, a failed fit) are UserWarnings.\n\n" +
-         options)
-            .c_str());
-  m.def("fit_bounce_times", &py_fit_bounce_times, py::arg("path"), py::arg("fit") = "",
-        py::arg("compare_laws") = false, py::arg("cross_validate") = false, py::arg("profile_intervals") = false,
-        ("fit_bounce_times(path, fit='', compare_laws=False, cross_validate=False, profile_intervals=False, **options) -> dict\n\nFit a "
-         "damping law's own parameters, and each drop's first impact speed and clock offset, to a bounce recording "
-         "(the detected impact times of one or more drops, data/measurements/README.md), exactly `hertzdash fit "
-         "--bounce-times PATH --json` (docs/fit.md): recording, flagged (the doubled, missed, out-of-order and "
-         "non-shrinking detections left out, by drop and index), fits (parameters, drops, sigma_s, aic, bic, "
-         "e_effective_range, points, cross_validation with cross_validate, profile_interval with profile_intervals), failures. air_density and "
-         "drag_coefficient add air drag to the model's flights. Warnings (each flag, a synthetic recording) are "
-         "UserWarnings.\n\n" +
-         options)
-            .c_str());
+  for (const FitFunction& f : fit_functions)
+    m.def(f.name, [&f](const std::string& path, const py::kwargs& kwargs) { return py_fit_kind(f, path, kwargs); },
+          py::arg(f.path), (fit_doc(f) + "\n" + options).c_str());
   m.def("laws", [] { return to_python(registered_laws_json()); },
         "laws() -> list of dict\n\nThe registered damping laws: name, citation, formula, coefficients, validity, "
         "force_continuous_at_onset, dissipative (`hertzdash models --json`).");

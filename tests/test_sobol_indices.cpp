@@ -1,9 +1,9 @@
-// The Sobol index estimators (simulation/uncertainty/sobol_indices.hpp) on functions whose indices are
+// The Sobol index estimators (validation/common/sobol_indices.hpp) on functions whose indices are
 // known in closed form: the Ishigami function and a linear additive function; the design's
 // layout; the sample quantile they use for their intervals.
 #include "hertzdash/simulation/uncertainty/input_distribution.hpp"
 #include "hertzdash/simulation/uncertainty/sample_quantile.hpp"
-#include "hertzdash/simulation/uncertainty/sobol_indices.hpp"
+#include "validation/common/sobol_indices.hpp"
 
 #include <catch2/catch.hpp>
 

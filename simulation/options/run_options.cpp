@@ -39,7 +39,7 @@ using V = std::optional<double>;
 
 std::string help_text(const ParameterDecl& d, KeySpelling spelling) {
   std::string h = spell_key_references(d.help, spelling);
-  if (d.type == ParameterType::text) h += " (one of: " + std::string(d.choices) + ")";
+  if (d.type == ParameterType::text && !d.choices.empty()) h += " (one of: " + std::string(d.choices) + ")";
   if (d.type == ParameterType::number) h += "; " + d.range.text(d.unit);
   if (d.type != ParameterType::flag)
     h += fmt::format(" (default: {}{})", d.default_value,

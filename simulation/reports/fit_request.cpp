@@ -60,6 +60,8 @@ constexpr const char* kind_option[] = {"trace", "restitution-table", "bounce-tim
 
 }  // namespace
 
+std::string_view fit_kind_option(FitDataKind kind) { return kind_option[static_cast<int>(kind)]; }
+
 std::span<const FitOption> fit_command_options() { return options; }
 
 FitRequest fit_request(const std::map<std::string, std::string>& values, const RunOptions& run) {

@@ -9,6 +9,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <string_view>
 
 namespace hertzdash {
 
@@ -20,6 +21,9 @@ struct FitOption {
 
 /// Every option of `fit` besides the set-up's (run_options()), in the order the help lists them.
 std::span<const FitOption> fit_command_options();
+
+/// The option naming the data of `kind`: "trace", "restitution-table", "bounce-times".
+std::string_view fit_kind_option(FitDataKind kind);
 
 /// The request made by `values`, the options given (key: value; a flag's value "true"), and the
 /// set-up `options`: exactly one of trace, restitution-table and bounce-times names the data

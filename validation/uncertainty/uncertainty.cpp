@@ -11,7 +11,7 @@
 //   nylon E, nylon nu, the rod's nu, e (Table 2 + deviation), R, h, m (Table 1 + deviation),
 //   the rod's E (Table 3 x (1 + deviation)).
 // For every rod at the paper's h = 20 mm the paper's model (law "hongo") runs on the rows of a
-// Saltelli design (simulation/uncertainty/sobol_indices.hpp: N rows each of A, B and the d matrices
+// Saltelli design (validation/common/sobol_indices.hpp: N rows each of A, B and the d matrices
 // A_B^(i); Sobol points, so N (d + 2) runs, each started at contact onset with v0 = sqrt(2 g h))
 // and gives
 //   - the 5 %, 50 % and 95 % quantiles of e_effective, peak force and contact time over the
@@ -47,7 +47,7 @@
 #include "hertzdash/simulation/run/impact_history.hpp"
 #include "hertzdash/simulation/sweep/parallel_sweep.hpp"
 #include "hertzdash/simulation/uncertainty/sample_quantile.hpp"
-#include "hertzdash/simulation/uncertainty/sobol_indices.hpp"
+#include "validation/common/sobol_indices.hpp"
 #include "validation/common/all_rods.hpp"
 #include "validation/common/study_args.hpp"
 

@@ -1,4 +1,4 @@
-#include "hertzdash/simulation/uncertainty/sobol_indices.hpp"
+#include "validation/common/sobol_indices.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/uncertainty/sample_quantile.hpp"
