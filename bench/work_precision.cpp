@@ -22,7 +22,7 @@
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
 #include "hertzdash/model/regularized_contact_singularities.hpp"

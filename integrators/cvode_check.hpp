@@ -1,7 +1,7 @@
 #pragma once
 // Every SUNDIALS return code checked: failures name the call and CVODE's flag. For the .cpp
 // files that call CVODE(S) directly (integrators/cvode_integrator.cpp,
-// simulation/run/contact_sensitivity.cpp, bench/cvode_fresh_peer.cpp); it includes SUNDIALS'
+// validation/common/contact_sensitivity.cpp, bench/cvode_fresh_peer.cpp); it includes SUNDIALS'
 // header, so no public header includes it.
 #include <cvodes/cvodes.h>
 

@@ -7,7 +7,7 @@
 //   dF/ds = F_q dq/ds + F_v dv/ds
 //  - physical variables (model/drop_test.hpp): q = x, s = t, so dF/dt = F_x x' + F_v x'';
 //  - regularising variables (model/contact_system.hpp, and the forward
-//    sensitivities of simulation/run/contact_sensitivity.cpp): q = u = x^{1/2}, s = tau with
+//    sensitivities of validation/common/contact_sensitivity.cpp): q = u = x^{1/2}, s = tau with
 //    dt = 2u dtau, so dF/dtau = F_u v + F_v 2u x'' = 2u dF/dt: the same zeros inside the
 //    contact, and finite at u = 0 where F_x (and so dF/dt) is not.
 // A force maximum is a zero through which the rate decreases, which is how every

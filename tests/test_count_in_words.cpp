@@ -1,7 +1,7 @@
 // Counts in the article's prose: a generated count goes into a sentence as words that read
 // right for every value it can take ("in none of the paper's four drops", "in three of ...",
 // "in all of ..."), never as a digit dropped into a sentence written for one value.
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 
 #include <catch2/catch.hpp>
 

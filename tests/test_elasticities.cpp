@@ -1,4 +1,4 @@
-// CVODES forward sensitivities of the paper's impact (simulation/run/contact_sensitivity,
+// CVODES forward sensitivities of the paper's impact (validation/common/contact_sensitivity,
 // paper_law_elasticities) against central finite differences of the full drop-test
 // simulation (simulation/run/impact_simulator: free fall + contact, events located).
 //

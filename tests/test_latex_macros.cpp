@@ -1,6 +1,6 @@
-// The LaTeX text helpers of io/latex_macros.hpp, which every generated number of the
+// The LaTeX text helpers of validation/common/latex_macros.hpp, which every generated number of the
 // article passes through: numbers in scientific notation, and free text escaped.
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -29,7 +29,7 @@
 // Writes: OUT/bounce_sequence.csv and OUT/bounce_restitutions.csv (bounce_sequence.gp),
 // GENERATED/bounce_table.tex and GENERATED/bounce.tex (macros \bounce...).
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"

@@ -43,7 +43,7 @@
 // GENERATED/chung_ooi_table.tex and GENERATED/chung_ooi_curves_table.tex. Prints the numbers.
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/undamped_hertz_trajectory.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"

@@ -19,7 +19,7 @@
 // Outputs y: e_effective = v_r / v0, peak force, contact time.
 // Only the paper's omega_n assumption (eq. 11), free fall from h, no tension clamp.
 #include "hertzdash/model/drop_test_setup.hpp"
-#include "hertzdash/simulation/run/contact_sensitivity.hpp"
+#include "validation/common/contact_sensitivity.hpp"
 
 #include <array>
 #include <string_view>

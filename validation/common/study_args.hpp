@@ -7,7 +7,7 @@
 // --full: the full sample size of a study whose `make figures` size is cut to stay within a
 //   minute (validation/uncertainty: `make uncertainty`); studies without one run as usual.
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 
 #include <exception>
 #include <filesystem>

@@ -56,7 +56,7 @@
 // dt/dtau = 2u, where every law of this family is polynomial, recovers order 4.
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/run/step_resolution.hpp"
 #include "validation/common/study_args.hpp"

@@ -36,7 +36,7 @@
 // Prints the table.
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/damping/registry.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"

@@ -31,7 +31,7 @@
 // (elastic_rod_spectrum.gp), OUT/elastic_rod_heights.csv (elastic_rod_heights.gp),
 // GENERATED/elastic_rod_table.tex and GENERATED/elastic_rod.tex (macros \elastic...).
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/elastic_drop_test.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"

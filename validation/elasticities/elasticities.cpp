@@ -21,7 +21,7 @@
 // up to the same small corrections.
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "validation/common/paper_law_elasticities.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "validation/common/study_args.hpp"

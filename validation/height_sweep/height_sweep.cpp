@@ -18,7 +18,7 @@
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "validation/common/convergence_runs.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "hertzdash/simulation/sweep/parallel_sweep.hpp"

@@ -27,7 +27,7 @@
 // (macros \ident...) and GENERATED/identification_table.tex.
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 #include "validation/common/all_rods.hpp"
 #include "validation/common/study_args.hpp"

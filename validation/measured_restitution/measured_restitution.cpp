@@ -45,7 +45,7 @@
 // GENERATED/measured_restitution_table.tex.
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/io/restitution_table.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/hertz.hpp"

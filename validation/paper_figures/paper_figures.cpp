@@ -21,7 +21,7 @@
 // OUT/fig5_measured_<k>.csv / fig6_measured_<k>.csv if measured traces exist,
 // GENERATED/paper_figures.tex (macros \figs...).
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/io/measured_trace.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"

@@ -39,7 +39,7 @@
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/decimal_number.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"

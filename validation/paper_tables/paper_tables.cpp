@@ -25,7 +25,7 @@
 #include "validation/common/all_rods.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>

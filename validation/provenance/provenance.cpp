@@ -12,7 +12,7 @@
 //   GENERATED/provenance.tex      \provGitRevision, \provCompiler, \provSundials,
 //                                 \provGsl, \provEigen, \provGnuplot
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "validation/common/study_args.hpp"
 

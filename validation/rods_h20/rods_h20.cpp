@@ -21,7 +21,7 @@
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "validation/common/all_rods.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "validation/common/study_args.hpp"
 

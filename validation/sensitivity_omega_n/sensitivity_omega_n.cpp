@@ -28,7 +28,7 @@
 //   ../generated/sensitivity_omega_n_table.tex  the h = 20 mm comparison table
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/omega_n_fixed_point.hpp"

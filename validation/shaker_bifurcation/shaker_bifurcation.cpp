@@ -30,7 +30,7 @@
 // kept impacts; shaker_bifurcation.gp), GENERATED/shaker_bifurcation_table.tex (the thresholds)
 // and GENERATED/shaker_bifurcation.tex (macros \shaker...).
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/wall_motion.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"

@@ -40,7 +40,7 @@
 // GENERATED/uncertainty_sobol_table.tex.
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "validation/common/paper_law_elasticities.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"

@@ -29,7 +29,7 @@
 // (contact_pressure.gp), GENERATED/velocity_dependence_table.tex and
 // GENERATED/velocity_dependence.tex (macros \velocity...).
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"

@@ -102,7 +102,7 @@ class HongoPaper {
   double time_constant_s() const noexcept { return tau_; }
 
   /// The force at u = x^{1/2} >= 0 for given (K, tau) and its partial derivatives, for
-  /// forward sensitivities (simulation/run/contact_sensitivity.cpp):
+  /// forward sensitivities (validation/common/contact_sensitivity.cpp):
   ///   F = K u (u^2 + tau xdot),   F_u = K (3u^2 + tau xdot),   F_xdot = K tau u,
   ///   F_K = u (u^2 + tau xdot),   F_tau = K u xdot.
   struct Gradient {

@@ -1,4 +1,4 @@
-#include "hertzdash/io/latex_macros.hpp"
+#include "validation/common/latex_macros.hpp"
 
 #include "hertzdash/io/atomic_file.hpp"
 

@@ -1,4 +1,4 @@
-#include "hertzdash/simulation/run/contact_sensitivity.hpp"
+#include "validation/common/contact_sensitivity.hpp"
 
 #include "hertzdash/integrators/cvode_check.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
