@@ -25,7 +25,7 @@
 #include "validation/common/latex_macros.hpp"
 #include "hertzdash/model/damping/laws/hongo_paper.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
-#include "hertzdash/model/regularized_contact_singularities.hpp"
+#include "validation/common/regularized_contact_singularities.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
 #include "hertzdash/simulation/sweep/parallel_sweep.hpp"
@@ -441,7 +441,7 @@ void report_contact_costs(const std::vector<Point>& points, LatexMacros& macros)
 }
 
 /// An estimate of the fewest Taylor series the contact allows
-/// (model/regularized_contact_singularities.hpp): the undamped contact's singularities
+/// (validation/common/regularized_contact_singularities.hpp): the undamped contact's singularities
 /// against the series the Taylor path generates for it, at tolerance 1e-8 (the steel case
 /// without damping and gravity, same impact speed).
 void report_taylor_series_estimate(const DropTestSetup& contact, LatexMacros& macros) {

@@ -78,8 +78,4 @@ void require_in_open(const std::string& key, double v, double lo, double hi) {
   if (!(v > lo && v < hi)) throw InvalidParameter(key, format_value(v), fmt::format("in ({}, {})", lo, hi));
 }
 
-void require_positive_or_infinite(const std::string& key, double v, const std::string& unit) {
-  if (!(v > 0)) throw InvalidParameter(key, format_value(v), "a number > 0 or inf (" + unit + ")");
-}
-
 }  // namespace hertzdash

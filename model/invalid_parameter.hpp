@@ -54,7 +54,5 @@ void require_non_negative(const std::string& key, double v, const std::string& u
 void require_in_open_closed(const std::string& key, double v, double lo, double hi);
 /// Require v in the open interval (lo, hi).
 void require_in_open(const std::string& key, double v, double lo, double hi);
-/// Require v > 0, allowing +infinity (a rigid body's modulus).
-void require_positive_or_infinite(const std::string& key, double v, const std::string& unit);
 
 }  // namespace hertzdash

@@ -1,11 +1,11 @@
 // The complex singularities of the undamped regularised contact
-// (model/regularized_contact_singularities.hpp), which set how far any Taylor step can reach,
+// (validation/common/regularized_contact_singularities.hpp), which set how far any Taylor step can reach,
 // against the series themselves; and the Taylor path's count of series against the least
 // count they allow.
 #include "hertzdash/integrators/power_series.hpp"
 #include "hertzdash/integrators/taylor.hpp"
 #include "hertzdash/model/damping/laws/undamped.hpp"
-#include "hertzdash/model/regularized_contact_singularities.hpp"
+#include "validation/common/regularized_contact_singularities.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 

@@ -151,9 +151,7 @@ const Rig& oscillator_rig() {
        .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse, .results = results,
        .table_description = "one row per kept impact (time from the start; phase of the drive F cos(2 pi f t) in "
                             "[0,1); speeds relative to the stop)",
-       .table = one_wall_impact_table, .run = run,
-       .impacts = [](const Run& r) -> const std::vector<SequenceImpact>& { return r.run.impacts; },
-       .outcome = outcome});
+       .table = one_wall_impact_table, .run = run, .outcome = outcome});
   return rig;
 }
 

@@ -134,8 +134,8 @@ struct RigColumnOf {
 };
 
 /// A rig as its file declares it: schemas with accessors into its own result type `Run`, whose
-/// kept impacts `impacts(run)` are of type `Impact`, and `outcome(run)` gives the rest of the
-/// generic result (heading, warnings, end reason, work, inputs; not scalars and rows).
+/// kept impacts (`run.run.impacts`, the driver's) are of type `Impact`, and `outcome(run)` gives
+/// the rest of the generic result (heading, warnings, end reason, work, inputs; not scalars and rows).
 template <class Run, class Impact>
 struct RigDefinition {
   std::string_view name, summary;
@@ -149,7 +149,6 @@ struct RigDefinition {
   std::string_view table_description;
   std::span<const RigColumnOf<Impact>> table;
   Run (*run)(const RunOptions&, const PaperParameters&, const RigInputs&);
-  const std::vector<Impact>& (*impacts)(const Run&);
   RigResult (*outcome)(const Run&);
 };
 
@@ -166,7 +165,7 @@ Rig make_rig(const RigDefinition<Run, Impact>& d) {
     const Run run = d.run(options, paper, inputs);
     RigResult r = d.outcome(run);
     for (const auto& f : d.results) r.scalars.push_back(f.value(run));
-    for (const Impact& i : d.impacts(run)) {
+    for (const Impact& i : run.run.impacts) {
       std::vector<double>& row = r.rows.emplace_back();
       for (const auto& c : d.table) row.push_back(c.value(i));
     }

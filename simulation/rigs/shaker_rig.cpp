@@ -10,9 +10,21 @@
 namespace hertzdash {
 
 namespace {
-constexpr std::string_view not_read[] = {"impact-velocity"};
-}  // namespace
 
+constexpr std::string_view not_read[] = {"impact-velocity"};
+
+// A shaker run: its resolved set-up, law, solver and options, its inputs and its outcome.
+struct ShakerCommandRun {
+  DropTestSetup setup;
+  std::string law;
+  SolverSettings solver;
+  ShakerOptions options;
+  Parameters inputs;  // describe_run() and the shaker's options
+  ShakerRun run;
+};
+
+// The shaker's refusals before any run (Rig::refuse): `amplitude` with `gamma`, an option of a
+// trace, an option the instantaneous map does not read.
 void refuse_shaker_inputs(const RunOptions& options, const RigInputs& in) {
   namespace p = shaker_parameters;
   if (in.number("amplitude") && in.number("gamma"))
@@ -28,6 +40,7 @@ void refuse_shaker_inputs(const RunOptions& options, const RigInputs& in) {
   }
 }
 
+// Resolve and validate, without running (`run` left empty).
 ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
   namespace p = shaker_parameters;
   refuse_shaker_inputs(options, in);
@@ -56,8 +69,6 @@ ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperPa
   r.inputs.emplace_back("start_phase", fmt::format("{}", start.phase));
   return r;
 }
-
-namespace {
 
 using Run = ShakerCommandRun;
 
@@ -99,8 +110,7 @@ const Rig& shaker_rig() {
        .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse_shaker_inputs, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest on the wall; phase of "
                             "s(t) = A sin(2 pi f t) in [0,1); speeds relative to the wall)",
-       .table = one_wall_impact_table, .run = run, .impacts = [](const Run& r) -> const std::vector<ShakerImpact>& { return r.run.impacts; },
-       .outcome = outcome});
+       .table = one_wall_impact_table, .run = run, .outcome = outcome});
   return rig;
 }
 

@@ -65,25 +65,6 @@ struct SequenceFields {
                                                [](const Run& r) -> RigValue { return r.run.impacts_run; }};
 };
 
-/// A shaker run: its resolved set-up, law, solver and options, its inputs and its outcome.
-struct ShakerCommandRun {
-  DropTestSetup setup;
-  std::string law;
-  SolverSettings solver;
-  ShakerOptions options;
-  Parameters inputs;  ///< describe_run() and the shaker's options
-  ShakerRun run;
-};
-
-/// The shaker's refusals before any run (Rig::refuse): `amplitude` with `gamma`, an option of a
-/// trace, an option the instantaneous map does not read.
-void refuse_shaker_inputs(const RunOptions& options, const RigInputs& in);
-
-/// Resolve and validate, without running (`run` left empty). InvalidParameter for bad options:
-/// `amplitude` with `gamma`, a non-integer count, a contact option with instantaneous impacts.
-ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperParameters& paper,
-                                        const RigInputs& inputs);
-
 /// The rig `shaker`: inputs frequency, amplitude or gamma, impacts, transient, impact-model,
 /// start-phase and every run option but impact-velocity (`height` is the start's height above the
 /// wall's mean position); results gamma, frequency_Hz, amplitude_m, impact_model, damping,

@@ -200,9 +200,7 @@ const Rig& walls_rig() {
        .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest at mid-gap; phase of the "
                             "drive sin(2 pi f t) in [0,1); wall 0 floor, 1 ceiling; speeds relative to the box)",
-       .table = table, .run = run,
-       .impacts = [](const Run& r) -> const std::vector<TwoWallsImpact>& { return r.run.impacts; },
-       .outcome = outcome});
+       .table = table, .run = run, .outcome = outcome});
   return rig;
 }
 

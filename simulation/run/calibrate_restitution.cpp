@@ -21,10 +21,6 @@ DropTestSetup contact_phase_setup(const DropTestSetup& s) {
   return c;
 }
 
-double effective_restitution(ImpactSimulator& simulator, const DropTestSetup& s, std::string_view law) {
-  return simulator.run(contact_phase_setup(s), law).e_effective;
-}
-
 RestitutionCalibration calibrate_input_restitution(const std::function<double(double)>& observable, double target,
                                                    const std::string& option, std::string_view what) {
   require_in_open_closed(option, target, 0.0, 1.0);

@@ -20,9 +20,6 @@ namespace hertzdash {
 /// flat, no gravity, and the approach speed given as the impact velocity.
 DropTestSetup contact_phase_setup(const DropTestSetup& s);
 
-/// e_effective of `law` for the contact phase of `s` (0 if the rod never separates).
-double effective_restitution(ImpactSimulator& simulator, const DropTestSetup& s, std::string_view law);
-
 struct RestitutionCalibration {
   double e_input;      ///< the input restitution found
   double e_effective;  ///< the law's effective restitution at e_input
