@@ -62,9 +62,8 @@ class CvodeFresh final : public ImpactSolver {
 
   ImpactResult run(const DropTestSetup& setup) override {
     PeerImpact impact(setup);
-    auto& sys = impact.sys;
     const auto& y0 = impact.y0;
-    CvodeContext user{&sys};
+    CvodeContext user{&impact.sys};
     const double t_end = 10 * impact.fall_time_s + 20 * impact.contact_time_s;
 
     CvodeInstance c;
@@ -89,9 +88,9 @@ class CvodeFresh final : public ImpactSolver {
       const int flag = CVode(c.mem, t_end, c.y, &t, CV_NORMAL);
       check_cvode_flag(flag, "CVode");
       if (flag != CV_ROOT_RETURN) throw std::runtime_error("CVODE peer: no crossing before the end time");
-      if (sys.in_contact()) break;
+      if (impact.sys.in_contact()) break;
       // Onset: calibrate the law, restart in contact mode.
-      sys.handle_event(event_index(DropTestEvent::contact), t, DropTest<HongoPaper>::State{yv[0], yv[1]});
+      impact.sys.handle_event(event_index(DropTestEvent::contact), t, DropTest<HongoPaper>::State{yv[0], yv[1]});
       v_impact = yv[1];
       long n = 0;
       check_cvode_flag(CVodeGetNumRhsEvals(c.mem, &n), "CVodeGetNumRhsEvals");

@@ -147,15 +147,22 @@ void warn_about(const std::vector<RunDiagnostic>& diagnostics) {
 
 // ---- the functions ----
 
-py::dict py_simulate(const py::kwargs& kwargs) {
-  const RunOptions options = run_options_from(kwargs, "simulate");
-  SimulateRun run;
+// A command's run `run_command(options)` on the options of `kwargs`, with the GIL released; its
+// notes and warnings as UserWarnings; its JSON as a dict.
+template <class RunCommand>
+py::dict run_command(const char* function, const py::kwargs& kwargs, RunCommand run_command) {
+  const RunOptions options = run_options_from(kwargs, function);
+  decltype(run_command(options)) run;
   {
     py::gil_scoped_release release;
-    run = run_simulate(options, paper());
+    run = run_command(options);
   }
   warn_about(run_diagnostics(run));
   return to_python(to_json(run));
+}
+
+py::dict py_simulate(const py::kwargs& kwargs) {
+  return run_command("simulate", kwargs, [](const RunOptions& o) { return run_simulate(o, paper()); });
 }
 
 py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
@@ -190,25 +197,12 @@ py::dict py_trace(std::optional<double> grid_step, const py::kwargs& kwargs) {
 }
 
 py::dict py_restitution(const py::kwargs& kwargs) {
-  const RunOptions options = run_options_from(kwargs, "restitution");
-  RestitutionRun run;
-  {
-    py::gil_scoped_release release;
-    run = run_restitution(options, paper());
-  }
-  warn_about(run_diagnostics(run));
-  return to_python(to_json(run));
+  return run_command("restitution", kwargs, [](const RunOptions& o) { return run_restitution(o, paper()); });
 }
 
 py::dict calibrate(double target, const py::kwargs& kwargs) {
-  const RunOptions options = run_options_from(kwargs, "calibrate_restitution");
-  RestitutionRun run;
-  {
-    py::gil_scoped_release release;
-    run = run_restitution(options, paper(), target);
-  }
-  warn_about(run_diagnostics(run));
-  return to_python(to_json(run));
+  return run_command("calibrate_restitution", kwargs,
+                     [target](const RunOptions& o) { return run_restitution(o, paper(), target); });
 }
 
 // bounce: `hertzdash bounce`'s own options are keywords of their own; the rest are the run's.
@@ -351,40 +345,21 @@ std::string fit_doc(const FitFunction& f) {
   return doc;
 }
 
-py::dict py_paper_parameters() {
+py::object py_paper_parameters() {
+  using json = nlohmann::ordered_json;
   const PaperParameters& p = paper();
-  py::list rods;
-  for (const RodData& r : p.rods) {
-    py::dict d;
-    d["name"] = r.name;
-    d["diameter_m"] = r.diameter_m;
-    d["length_m"] = r.length_m;
-    d["mass_kg"] = r.mass_kg;
-    d["restitution"] = r.restitution;
-    d["zeta_printed"] = r.zeta_printed;
-    d["natural_frequency_hz"] = r.natural_frequency_hz;
-    d["E_Pa"] = r.E_Pa;
-    d["nu"] = r.nu;
-    rods.append(d);
-  }
-  py::dict ball;
-  ball["diameter_m"] = p.ball.diameter_m;
-  ball["height_m"] = p.ball.height_m;
-  ball["mass_kg"] = p.ball.mass_kg;
-  ball["E_Pa"] = p.ball.E_Pa;
-  ball["E_min_Pa"] = p.ball.E_min_Pa;
-  ball["E_max_Pa"] = p.ball.E_max_Pa;
-  ball["nu"] = p.ball.nu;
-  ball["radius_m"] = p.ball.radius_m;
+  json rods = json::array(), uncertain = json::array();
+  for (const RodData& r : p.rods)
+    rods.push_back({{"name", r.name}, {"diameter_m", r.diameter_m}, {"length_m", r.length_m}, {"mass_kg", r.mass_kg},
+                    {"restitution", r.restitution}, {"zeta_printed", r.zeta_printed},
+                    {"natural_frequency_hz", r.natural_frequency_hz}, {"E_Pa", r.E_Pa}, {"nu", r.nu}});
+  const json ball = {{"diameter_m", p.ball.diameter_m}, {"height_m", p.ball.height_m}, {"mass_kg", p.ball.mass_kg},
+                     {"E_Pa", p.ball.E_Pa}, {"E_min_Pa", p.ball.E_min_Pa}, {"E_max_Pa", p.ball.E_max_Pa},
+                     {"nu", p.ball.nu}, {"radius_m", p.ball.radius_m}};
   // The joint uncertainty study's inputs, each distribution in the terms of data/assumptions.csv.
-  py::list uncertain;
   for (const UncertainInput& u : p.uncertain_inputs) {
-    py::dict d;
-    d["parameter"] = u.parameter;
-    d["unit"] = u.unit;
-    d["value"] = u.value;
     const InputDistribution& q = u.distribution;
-    d["distribution"] = to_string(q.kind);
+    json d = {{"parameter", u.parameter}, {"unit", u.unit}, {"value", u.value}, {"distribution", to_string(q.kind)}};
     switch (q.kind) {
       case DistributionKind::uniform: break;
       case DistributionKind::normal: d["mean"] = q.p1, d["sd"] = q.p2; break;
@@ -393,31 +368,23 @@ py::dict py_paper_parameters() {
     d["lower"] = q.kind == DistributionKind::uniform ? q.p1 : q.lower;
     d["upper"] = q.kind == DistributionKind::uniform ? q.p2 : q.upper;
     d["reason"] = u.reason;
-    uncertain.append(d);
+    uncertain.push_back(d);
   }
-  py::dict out;
-  out["rods"] = rods;
-  out["ball"] = ball;
-  out["uncertain_inputs"] = uncertain;
-  out["gravity_mps2"] = p.gravity_mps2;
-  out["data_dir"] = paper_data().dir.string();
-  return out;
+  return to_python({{"rods", rods}, {"ball", ball}, {"uncertain_inputs", uncertain}, {"gravity_mps2", p.gravity_mps2},
+                    {"data_dir", paper_data().dir.string()}});
 }
 
-py::list py_integrators() {
-  py::list list;
-  for (const IntegratorTraits& r : all_integrator_traits) {
-    py::dict d;
-    d["name"] = std::string(r.name);
-    d["step_control"] = r.step_control == StepControl::fixed_step ? "fixed-step" : "adaptive";
-    d["variables"] = r.variables == Variables::physical ? "physical" : "regularized";
-    d["method"] = std::string(method_traits(r.method).name);
-    d["needs_root_polynomial_law"] = r.needs_root_polynomial;
-    d["fallback_for_other_laws"] = to_string(r.fallback_for_other_laws);
-    d["physical_counterpart"] = to_string(r.physical_counterpart);
-    list.append(d);
-  }
-  return list;
+py::object py_integrators() {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const IntegratorTraits& r : all_integrator_traits)
+    rows.push_back({{"name", r.name},
+                    {"step_control", r.step_control == StepControl::fixed_step ? "fixed-step" : "adaptive"},
+                    {"variables", r.variables == Variables::physical ? "physical" : "regularized"},
+                    {"method", method_traits(r.method).name},
+                    {"needs_root_polynomial_law", r.needs_root_polynomial},
+                    {"fallback_for_other_laws", to_string(r.fallback_for_other_laws)},
+                    {"physical_counterpart", to_string(r.physical_counterpart)}});
+  return to_python(rows);
 }
 
 // simulate_many: numeric set-up options may be 1-D arrays (broadcast against scalars);
@@ -581,21 +548,13 @@ py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {
   return out;
 }
 
-py::list py_result_fields() {
-  py::list list;
-  for (const ResultField& f : result_fields) {
-    py::dict d;
-    d["name"] = std::string(f.name);
-    d["group"] = std::string(f.group);
-    d["type"] = std::string(json_type_name(f.type));
-    d["unit"] = std::string(f.unit);
-    d["meaning"] = std::string(f.meaning);
-    d["json"] = f.in.json;
-    d["sweep"] = f.in.sweep;
-    d["simulate_many"] = f.in.python_many;
-    list.append(d);
-  }
-  return list;
+py::object py_result_fields() {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const ResultField& f : result_fields)
+    rows.push_back({{"name", f.name}, {"group", f.group}, {"type", json_type_name(f.type)}, {"unit", f.unit},
+                    {"meaning", f.meaning}, {"json", f.in.json}, {"sweep", f.in.sweep},
+                    {"simulate_many", f.in.python_many}});
+  return to_python(rows);
 }
 
 // The names of the top-level fields `report` marks, comma-separated, in table order.

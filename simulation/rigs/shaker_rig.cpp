@@ -12,6 +12,7 @@ namespace hertzdash {
 namespace {
 
 constexpr std::string_view not_read[] = {"impact-velocity"};
+constexpr std::string_view starts = "the body starts at rest, at `height` above the wall's mean position";
 
 // A shaker run: its resolved set-up, law, solver and options, its inputs and its outcome.
 struct ShakerCommandRun {
@@ -105,8 +106,7 @@ const Rig& shaker_rig() {
   static const Rig rig = make_rig<Run, ShakerImpact>(
       {.name = "shaker",
        .summary = "A body bouncing on a vibrating wall: soft contacts or instantaneous impacts, exact flights",
-       .inputs = shaker_parameters::all, .run_options_not_read = not_read,
-       .not_read_because = "the body starts at rest, at `height` above the wall's mean position",
+       .inputs = shaker_parameters::all, .run_options_not_read = not_read, .not_read_because = starts,
        .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse_shaker_inputs, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest on the wall; phase of "
                             "s(t) = A sin(2 pi f t) in [0,1); speeds relative to the wall)",
