@@ -2,6 +2,8 @@
 
 #include "hertzdash/io/decimal_number.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <fstream>
@@ -22,6 +24,34 @@ std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(blanks);
   if (b == std::string::npos) return "";
   return s.substr(b, s.find_last_not_of(blanks) - b + 1);
+}
+
+// The offset of the first byte of `line` that is not UTF-8 text (RFC 3629: no overlong forms, no
+// surrogates, nothing above U+10FFFF) or is a NUL, or npos. A table is text: a Latin-1 "é" in a
+// label would otherwise reach the JSON writer, which refuses it after the whole fit.
+std::size_t first_non_text_byte(std::string_view line) {
+  for (std::size_t i = 0; i < line.size();) {
+    const auto b = static_cast<unsigned char>(line[i]);
+    if (b == 0) return i;
+    if (b < 0x80) {
+      ++i;
+      continue;
+    }
+    // The sequence's length and the range of its second byte (the rest are 0x80-0xBF).
+    std::size_t length = 0;
+    unsigned char lo = 0x80, hi = 0xBF;
+    if (b >= 0xC2 && b <= 0xDF) length = 2;
+    else if (b >= 0xE0 && b <= 0xEF) length = 3, lo = b == 0xE0 ? 0xA0 : 0x80, hi = b == 0xED ? 0x9F : 0xBF;
+    else if (b >= 0xF0 && b <= 0xF4) length = 4, lo = b == 0xF0 ? 0x90 : 0x80, hi = b == 0xF4 ? 0x8F : 0xBF;
+    else return i;
+    if (i + length > line.size()) return i;
+    for (std::size_t k = 1; k < length; ++k) {
+      const auto c = static_cast<unsigned char>(line[i + k]);
+      if (c < (k == 1 ? lo : 0x80) || c > (k == 1 ? hi : 0xBF)) return i;
+    }
+    i += length;
+  }
+  return std::string_view::npos;
 }
 
 struct Fields {
@@ -116,6 +146,11 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
     begin = end + (content.compare(end, 2, "\r\n") == 0 ? 2 : 1);
     ++n;
     if (n == 1 && line.rfind(byte_order_mark, 0) == 0) line.erase(0, byte_order_mark.size());
+    if (const std::size_t bad = first_non_text_byte(line); bad != std::string_view::npos)
+      throw DataError(t.path_ + ":" + std::to_string(n) + ":" + std::to_string(bad + 1) + ": " +
+                      (line[bad] == '\0' ? std::string("a NUL byte")
+                                          : fmt::format("byte 0x{:02X}", static_cast<unsigned char>(line[bad]))) +
+                      ", not UTF-8 text; save the file as UTF-8 (a Latin-1 or Windows-1252 file is not)");
     const std::string s = trim(line);
     if (s.empty()) continue;
     if (s[0] == '#') {

@@ -18,8 +18,10 @@ inline constexpr ParameterDecl amplitude{
     .default_value = "from `gamma`", .default_source = "computed: A = gamma g / (2 pi f)^2",
     .help = "Amplitude A of the wall's motion [m], instead of `gamma`"};
 inline constexpr ParameterDecl gamma{
-    .key = "gamma", .range = R::non_negative(), .default_value = "1.3", .default_number = 1.3,
-    .default_source = "chosen: the period-1 orbit of e = 0.5 (between pi (1-e)/(1+e) and its period doubling)",
+    .key = "gamma", .range = R::non_negative(), .default_value = "the middle of the period-1 window of e",
+    .default_source = "computed: (gamma_1 + gamma_2)/2, where the instantaneous map's period-1 orbit appears, gamma_1 "
+                      "= pi (1-e)/(1+e), and doubles, gamma_2 = sqrt(gamma_1^2 + (2 (1+e^2)/(1+e)^2)^2) "
+                      "(model/wall_motion.hpp)",
     .help = "The wall's peak acceleration in units of gravity, gamma = A (2 pi f)^2 / g, instead of `amplitude`"};
 inline constexpr ParameterDecl impacts{
     .key = "impacts", .range = R::integer(1, 1e7), .default_value = "100", .default_number = 100,

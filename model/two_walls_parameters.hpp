@@ -37,6 +37,11 @@ inline constexpr ParameterDecl force_amplitude{
     .default_number = 100.0, .default_source = "chosen: a bare resonant amplitude of 16 mm",
     .help = "Amplitude F0 of the harmonic force F0 sin(2 pi f t) on the primary [N] (`rig` damper)"};
 
+inline constexpr ParameterDecl gamma{
+    .key = "gamma", .range = R::non_negative(), .default_value = "1.3", .default_number = 1.3,
+    .default_source = "chosen", .help = "The box's peak acceleration in units of gravity, gamma = A (2 pi f)^2 / g, "
+                                        "instead of `amplitude` (`rig` box)"};
+
 /// The two-wall inputs, in the order of the options.
 inline constexpr ParameterDecl all[] = {rig, gap, primary_mass, primary_stiffness, primary_damping_ratio,
                                         force_amplitude};

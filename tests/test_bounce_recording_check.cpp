@@ -136,6 +136,13 @@ TEST_CASE("bounce check: a drop of too few times is left out whole, and nothing 
   nothing.drops = {short_drop, {"e", {1.0, 0.5, 0.2}, {"x:1", "x:2", "x:3"}, 0.0}};  // e: decreasing, one usable time
   CHECK_THROWS_AS(check_bounce_recording(nothing), DataError);
   CHECK_THROWS_WITH(check_bounce_recording(nothing), Catch::Contains("nothing.csv") && Catch::Contains("nothing usable"));
+  // The refusal gives each flag's reason, not only their count (issue 45: "9 flagged" and no
+  // reason printed): drop e's times 0.5 and 0.2 go backwards from 1.0 (x:2, x:3), then both
+  // drops are too short.
+  CHECK_THROWS_WITH(check_bounce_recording(nothing),
+                    Catch::Contains("(4 flagged):") && Catch::Contains("non_monotonic: x:2: time 0.5 s is out of order") &&
+                        Catch::Contains("non_monotonic: x:3") && Catch::Contains("too_few: synthetic.csv:40: drop 'd'") &&
+                        Catch::Contains("too_few: x:1: drop 'e'"));
 }
 
 // A mistyped or shifted time the local check cannot place: drop c's interval between its times 3

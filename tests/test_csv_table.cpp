@@ -115,3 +115,41 @@ TEST_CASE("CSV: LF, CR LF and lone CR line ends are read alike, line numbers inc
     CHECK_THROWS_WITH(t.number(1, "force_N"), Catch::StartsWith(f.string() + ":4:5: "));
   }
 }
+
+TEST_CASE("CSV: bytes that are not UTF-8 text are refused at their line and column when read", "[csv]") {
+  // Before, a Latin-1 "été" in a recording's "# source:" was read, the fit ran, and the JSON
+  // writer threw after it (exit 1, empty stdout). A table is UTF-8 text (RFC 3629), so each
+  // refused sequence below names the byte where it starts; the valid ones are read.
+  const ScratchDir s;
+  struct Case {
+    const char* name;
+    std::string text;
+    const char* where;  // "LINE:COL: " of the first bad byte, or "" for a table that reads
+    const char* what;
+  };
+  const Case cases[] = {
+      // "# source: " is 10 bytes, so the Latin-1 é (0xE9) is byte 11 of line 1.
+      {"latin1_comment.csv", "# source: \xE9t\xE9\ndrop,impact_time_s\na,0.1\n", "1:11: ", "byte 0xE9"},
+      // A Windows-1252 label in a data row: "a" then 0x92 (a curly apostrophe) at byte 2 of line 3.
+      {"cp1252_label.csv", "drop,impact_time_s\nx,0.1\na\x92,0.2\n", "3:2: ", "byte 0x92"},
+      // A NUL byte would end a C string: the message says so instead of stopping short.
+      {"nul.csv", std::string("drop,impact_time_s\na") + '\0' + "b,0.1\n", "2:2: ", "a NUL byte"},
+      // Overlong "/" (C0 AF), a UTF-16 surrogate (ED A0 80), beyond U+10FFFF (F4 90 80 80), a
+      // sequence cut by the line's end (E2 82).
+      {"overlong.csv", "a,b\n\xC0\xAF,1\n", "2:1: ", "byte 0xC0"},
+      {"surrogate.csv", "a,b\nx\xED\xA0\x80,1\n", "2:2: ", "byte 0xED"},
+      {"beyond.csv", "a,b\n\xF4\x90\x80\x80,1\n", "2:1: ", "byte 0xF4"},
+      {"cut.csv", "a,b\n1,\xE2\x82\n", "2:3: ", "byte 0xE2"},
+      // UTF-8 itself: é (C3 A9), € (E2 82 AC), an emoji (F0 9F 8E BE), after a byte order mark.
+      {"utf8.csv", "\xEF\xBB\xBF# source: \xC3\xA9t\xC3\xA9 \xE2\x82\xAC\ndrop,impact_time_s\n\xF0\x9F\x8E\xBE,0.1\n", "", ""},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    const std::string message = message_of(s.write(c.name, c.text));
+    if (std::string(c.where).empty()) {
+      CHECK(message.empty());
+      continue;
+    }
+    CHECK(message.find(std::string(c.name) + ":" + c.where + c.what + ", not UTF-8 text") != std::string::npos);
+  }
+}

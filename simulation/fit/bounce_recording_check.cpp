@@ -245,9 +245,14 @@ CheckedRecording check_bounce_recording(const BounceRecording& recording) {
     });
     out.flagged.insert(out.flagged.end(), flags.begin(), flags.end());
   }
-  if (out.drops.empty())
-    throw DataError(fmt::format("{}: nothing usable: no drop has {} increasing impact times ({} flagged)",
-                                recording.path.string(), min_bounce_times, out.flagged.size()));
+  if (out.drops.empty()) {  // the reasons, not only their count: the first ten, then how many more
+    std::string reasons;
+    for (std::size_t i = 0; i < std::min<std::size_t>(out.flagged.size(), 10); ++i)
+      reasons += fmt::format("\n  {}: {}", out.flagged[i].kind, out.flagged[i].reason);
+    if (out.flagged.size() > 10) reasons += fmt::format("\n  and {} more", out.flagged.size() - 10);
+    throw DataError(fmt::format("{}: nothing usable: no drop has {} increasing impact times ({} flagged):{}",
+                                recording.path.string(), min_bounce_times, out.flagged.size(), reasons));
+  }
   return out;
 }
 

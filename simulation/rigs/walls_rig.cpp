@@ -39,13 +39,13 @@ void refuse(const RunOptions& options, const RigInputs& in) {
   const TwoWallsRig variant = parse_two_walls_rig(in.text("rig").value_or(std::string(p::rig.default_value)));
   const bool box = variant == TwoWallsRig::box;
   const std::string_view rig = to_string(variant);
-  for (const ParameterDecl* d : {&s::amplitude, &s::gamma}) refuse_unless(box, in, *d, rig);
+  for (const ParameterDecl* d : {&s::amplitude, &p::gamma}) refuse_unless(box, in, *d, rig);
   for (const ParameterDecl* d : {&p::primary_mass, &p::primary_stiffness, &p::primary_damping_ratio, &p::force_amplitude})
     refuse_unless(!box, in, *d, rig);
   if (in.number("amplitude") && in.number("gamma"))
     throw InvalidParameter("gamma", format_value(*in.number("gamma")), "omitted with `amplitude` (one sets the other)");
   if (box && !in.number("amplitude") && options.gravity_mps2 && *options.gravity_mps2 == 0)
-    throw InvalidParameter("gamma", format_value(in.number_or_default(s::gamma)),
+    throw InvalidParameter("gamma", format_value(in.number_or_default(p::gamma)),
                            "omitted with `gravity` 0 (gamma is in units of g): give `amplitude`");
   refuse_trace_only_options(options, "hertzdash walls");
   const std::string model = in.text("impact-model").value_or(std::string(s::impact_model.default_value));
@@ -99,7 +99,7 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   r.law = options.damping;
   const SolverSettings solver = resolve_solver(options);
   if (box && !in.number("amplitude"))
-    o.drive.amplitude_m = shaker_amplitude_m(in.number_or_default(s::gamma), o.drive.frequency_Hz, r.setup.gravity_mps2);
+    o.drive.amplitude_m = shaker_amplitude_m(in.number_or_default(p::gamma), o.drive.frequency_Hz, r.setup.gravity_mps2);
   o.impacts = static_cast<int>(in.number_or_default(s::impacts));
   o.transient = static_cast<int>(in.number_or_default(s::transient));
   o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value)));
@@ -185,7 +185,7 @@ constexpr RigColumnOf<TwoWallsImpact> table[] = {
 };
 
 constexpr ParameterDecl inputs[] = {p::rig,           p::gap,         s::frequency,       s::amplitude,
-                                    s::gamma,         p::primary_mass, p::primary_stiffness, p::primary_damping_ratio,
+                                    p::gamma,         p::primary_mass, p::primary_stiffness, p::primary_damping_ratio,
                                     p::force_amplitude, s::impacts,   s::transient,       s::impact_model};
 constexpr RigOptionNote notes[] = {shaker_integrator_note};
 

@@ -10,6 +10,7 @@
 #include "hertzdash/simulation/run/soft_contact.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -44,11 +45,13 @@ template <DampingLaw Law, class Env, class Row>
 class SoftContactOf final : public SoftContact<Env> {
  public:
   SoftContactOf(const DropTestSetup& setup, const SolverSettings& solver)
-      : K_(hertz_stiffness(setup)), mass_kg_(setup.mass_kg), e_(setup.restitution), damping_(setup.damping),
-        solver_(solver) {}
+      : K_(hertz_stiffness(setup)), mass_kg_(setup.mass_kg), e_(setup.restitution),
+        speed_limit_mps_(std::sqrt(4.0 * K_ * std::pow(setup.ball_radius_m, 2.5) / (5.0 * mass_kg_))),
+        damping_(setup.damping), solver_(solver) {}
 
   SoftContactOutcome<Env> run(const Env& env, double v0_mps, double t_obs_s) override {
     SoftContactOutcome<Env> out;
+    out.hertz_speed_limit_mps = speed_limit_mps_;
     ContactSystem<Law, Env> sys(ImpactConditions{K_, mass_kg_, v0_mps, e_}, damping_, env, t_obs_s);
     SoftContactObserver<ContactSystem<Law, Env>, Env> observer{&sys, &out};
     auto y = sys.initial_state();
@@ -61,7 +64,7 @@ class SoftContactOf final : public SoftContact<Env> {
   IntegratorKind integrator_used() const override { return Row::traits.kind; }
 
  private:
-  double K_, mass_kg_, e_;
+  double K_, mass_kg_, e_, speed_limit_mps_;
   DampingSettings damping_;
   SolverSettings solver_;
   IntegratorWorkspace workspace_;

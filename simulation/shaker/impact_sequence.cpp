@@ -80,6 +80,12 @@ class SequenceRun {
     while (out_.impacts_run < total && (!carried_ || release()) && next_impact()) {
     }
     if (out_.end_reason.empty()) out_.end_reason = fmt::format("{} impacts run ({} transient)", total, s_.transient);
+    if (beyond_hertz_ > 0)  // the drop test's refusal (model/drop_test_setup.hpp, HertzScale) as a warning
+      out_.warnings.push_back(fmt::format(
+          "{} soft impact{} came at up to {:.4g} m/s, beyond {:.4g} m/s, where the undamped Hertz deformation "
+          "reaches the ball radius: at or above the ball radius the small-deformation Hertz contact does not hold "
+          "(`simulate` refuses such an impact)",
+          beyond_hertz_, beyond_hertz_ == 1 ? "" : "s", fastest_, speed_limit_));
     out_.end_time_s = t_now_;
     if (s_.energy) out_.energy.final_J = energy_now();
     // The soft contacts' own work (the drive, the dashpots and the law's dissipation while in
@@ -305,6 +311,11 @@ class SequenceRun {
       const double t_obs = 2.0 / s_.frequency_Hz;
       const SoftImpact c = s_.soft(hit, ti, impact.impact_speed_mps, X, V, t_obs);
       out_.work.add_work(c.work);
+      if (!(impact.impact_speed_mps < c.hertz_speed_limit_mps)) {
+        ++beyond_hertz_;
+        fastest_ = std::max(fastest_, impact.impact_speed_mps);
+        speed_limit_ = c.hertz_speed_limit_mps;
+      }
       impact.contact_time_s = c.contact_time_s;
       impact.peak_force_N = c.peak_force_N;
       if (!c.separated) {
@@ -360,6 +371,8 @@ class SequenceRun {
   double t_now_ = 0;
   std::array<double, 2> search_from_{0.0, 0.0};
   long cycle_ = -1, in_cycle_ = 0;
+  long beyond_hertz_ = 0;  // soft impacts faster than the Hertz scale allows, the fastest, the limit
+  double fastest_ = 0, speed_limit_ = 0;
   double x_min_ = INFINITY, x_max_ = -INFINITY, t_max_ = 0;
 };
 

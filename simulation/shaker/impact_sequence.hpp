@@ -52,6 +52,7 @@
 #include "hertzdash/simulation/shaker/impact_pattern.hpp"
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -89,12 +90,14 @@ struct SoftImpact {
   double peak_force_N = 0;
   double X_m = 0, V_mps = 0;  ///< a box of mass M: its state at separation
   IntegrationStats work;
+  double hertz_speed_limit_mps = std::numeric_limits<double>::infinity();  ///< where the contact model ends (SoftContactOutcome) [m/s]
 };
 /// One soft contact's outcome (simulation/run/soft_contact.hpp) as the sequence takes it (a box's
 /// state at separation is the caller's to set).
 template <class Env> SoftImpact soft_impact(const SoftContactOutcome<Env>& c) {
   return SoftImpact{.separated = c.separated, .contact_time_s = c.contact_time_s,
-                    .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work};
+                    .rebound_speed_mps = c.rebound_speed_mps, .peak_force_N = c.peak_force_N, .work = c.work,
+                    .hertz_speed_limit_mps = c.hertz_speed_limit_mps};
 }
 /// The contact with wall `wall` beginning at t_onset [s] at relative speed v0 > 0 [m/s], the box at
 /// X [m], V [m/s], followed for at most t_obs [s].
