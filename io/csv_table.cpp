@@ -26,30 +26,19 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(blanks) - b + 1);
 }
 
-// The offset of the first byte of `line` that is not UTF-8 text (RFC 3629: no overlong forms, no
-// surrogates, nothing above U+10FFFF) or is a NUL, or npos. A table is text: a Latin-1 "é" in a
-// label would otherwise reach the JSON writer, which refuses it after the whole fit.
+// The offset of the first byte of `line` that is a NUL or not UTF-8 text (RFC 3629: no overlong
+// forms, surrogates or code points above U+10FFFF), or npos: a Latin-1 "é" in a label would
+// otherwise reach the JSON writer, which refuses it after the whole fit.
 std::size_t first_non_text_byte(std::string_view line) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(line[i]); };
   for (std::size_t i = 0; i < line.size();) {
-    const auto b = static_cast<unsigned char>(line[i]);
-    if (b == 0) return i;
-    if (b < 0x80) {
-      ++i;
-      continue;
-    }
-    // The sequence's length and the range of its second byte (the rest are 0x80-0xBF).
-    std::size_t length = 0;
-    unsigned char lo = 0x80, hi = 0xBF;
-    if (b >= 0xC2 && b <= 0xDF) length = 2;
-    else if (b >= 0xE0 && b <= 0xEF) length = 3, lo = b == 0xE0 ? 0xA0 : 0x80, hi = b == 0xED ? 0x9F : 0xBF;
-    else if (b >= 0xF0 && b <= 0xF4) length = 4, lo = b == 0xF0 ? 0x90 : 0x80, hi = b == 0xF4 ? 0x8F : 0xBF;
-    else return i;
-    if (i + length > line.size()) return i;
-    for (std::size_t k = 1; k < length; ++k) {
-      const auto c = static_cast<unsigned char>(line[i + k]);
-      if (c < (k == 1 ? lo : 0x80) || c > (k == 1 ? hi : 0xBF)) return i;
-    }
-    i += length;
+    const unsigned b = byte(i);  // a sequence's length from its first byte; its second byte's range
+    const std::size_t n = b == 0 ? 0 : b < 0x80 ? 1 : b < 0xC2 ? 0 : b < 0xE0 ? 2 : b < 0xF0 ? 3 : b < 0xF5 ? 4 : 0;
+    const unsigned lo = b == 0xE0 ? 0xA0 : b == 0xF0 ? 0x90 : 0x80, hi = b == 0xED ? 0x9F : b == 0xF4 ? 0x8F : 0xBF;
+    if (n == 0 || i + n > line.size()) return i;
+    for (std::size_t k = 1; k < n; ++k)
+      if (byte(i + k) < (k == 1 ? lo : 0x80) || byte(i + k) > (k == 1 ? hi : 0xBF)) return i;
+    i += n;
   }
   return std::string_view::npos;
 }
@@ -147,10 +136,9 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
     ++n;
     if (n == 1 && line.rfind(byte_order_mark, 0) == 0) line.erase(0, byte_order_mark.size());
     if (const std::size_t bad = first_non_text_byte(line); bad != std::string_view::npos)
-      throw DataError(t.path_ + ":" + std::to_string(n) + ":" + std::to_string(bad + 1) + ": " +
-                      (line[bad] == '\0' ? std::string("a NUL byte")
-                                          : fmt::format("byte 0x{:02X}", static_cast<unsigned char>(line[bad]))) +
-                      ", not UTF-8 text; save the file as UTF-8 (a Latin-1 or Windows-1252 file is not)");
+      throw DataError(fmt::format("{}:{}:{}: {}, not UTF-8 text; save the file as UTF-8 (a Latin-1 or Windows-1252 file "
+                                  "is not)", t.path_, n, bad + 1, line[bad] == '\0' ? std::string("a NUL byte")
+                                  : fmt::format("byte 0x{:02X}", static_cast<unsigned char>(line[bad]))));
     const std::string s = trim(line);
     if (s.empty()) continue;
     if (s[0] == '#') {

@@ -25,8 +25,6 @@ struct LoadCell {
   double damping_N_s_per_m;    ///< c_cell [N s/m]
 
   bool rigid_base() const { return std::isinf(stiffness_N_per_m); }
-  /// sqrt(k_cell / m_h) [rad/s]: the hemisphere's frequency on the cell (+inf on a rigid base).
-  double natural_frequency_rad_per_s() const { return std::sqrt(stiffness_N_per_m / hemisphere_mass_kg); }
   /// Force transmitted to the base beyond the preload [N], at hemisphere state (w, w').
   /// On a rigid base the cell carries the contact force itself: callers use that (this returns 0).
   double force_N(double w_m, double wdot_mps) const {

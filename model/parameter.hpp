@@ -68,6 +68,12 @@ struct ParameterDecl {
   bool fittable = false;            ///< a continuous input `fit --fit` may estimate
 };
 
+/// `d` with another default, for an input two rigs share with different defaults.
+constexpr ParameterDecl with_default(ParameterDecl d, std::string_view value, double number, std::string_view source) {
+  d.default_value = value, d.default_number = number, d.default_source = source;
+  return d;
+}
+
 /// Throws InvalidParameter{p.key, v, p.range} unless p.range contains v.
 void require_in_range(const ParameterDecl& p, double v);
 

@@ -3,8 +3,10 @@
 // the rig (a harmonically driven box, or the impact damper: the box on a primary oscillator under
 // a harmonic force), and the primary, each declared once (model/parameter.hpp). The body, the
 // contact, the law and e are the drop test's; the drive's frequency, the box's amplitude or
-// gamma, the impact counts and the impact model are the shaker's (model/shaker_parameters.hpp).
+// gamma (with a default of its own), the impact counts and the impact model are the shaker's
+// (model/shaker_parameters.hpp).
 #include "hertzdash/model/parameter.hpp"
+#include "hertzdash/model/shaker_parameters.hpp"
 
 namespace hertzdash::two_walls_parameters {
 
@@ -37,10 +39,7 @@ inline constexpr ParameterDecl force_amplitude{
     .default_number = 100.0, .default_source = "chosen: a bare resonant amplitude of 16 mm",
     .help = "Amplitude F0 of the harmonic force F0 sin(2 pi f t) on the primary [N] (`rig` damper)"};
 
-inline constexpr ParameterDecl gamma{
-    .key = "gamma", .range = R::non_negative(), .default_value = "1.3", .default_number = 1.3,
-    .default_source = "chosen", .help = "The box's peak acceleration in units of gravity, gamma = A (2 pi f)^2 / g, "
-                                        "instead of `amplitude` (`rig` box)"};
+inline constexpr ParameterDecl gamma = with_default(shaker_parameters::gamma, "1.3", 1.3, "chosen");
 
 /// The two-wall inputs, in the order of the options.
 inline constexpr ParameterDecl all[] = {rig, gap, primary_mass, primary_stiffness, primary_damping_ratio,

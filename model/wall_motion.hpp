@@ -55,18 +55,13 @@ inline double shaker_amplitude_m(double gamma, double frequency_Hz, double gravi
   return gamma * gravity_mps2 / (w * w);
 }
 
-/// The window of Gamma in which the bouncing-ball map with restitution e has a stable period-1
-/// orbit (one impact per wall period; Holmes 1982, Luck and Mehta 1993): it appears at
-///   gamma_1 = pi (1 - e)/(1 + e)
-/// and doubles its period at
-///   gamma_2 = sqrt(gamma_1^2 + (2 (1 + e^2)/(1 + e)^2)^2)     (1.0472 and 1.5268 for e = 0.5).
-struct PeriodOneWindow {
-  double gamma_1, gamma_2;
-  double middle() const { return 0.5 * (gamma_1 + gamma_2); }
-};
-inline PeriodOneWindow period_one_window(double e) {
+/// The middle of the window of Gamma in which the bouncing-ball map with restitution e has a
+/// stable period-1 orbit (one impact per wall period; Holmes 1982, Luck and Mehta 1993): the
+/// orbit appears at gamma_1 = pi (1 - e)/(1 + e) and doubles its period at
+/// gamma_2 = sqrt(gamma_1^2 + (2 (1 + e^2)/(1 + e)^2)^2); (gamma_1 + gamma_2)/2.
+inline double period_one_middle_gamma(double e) {
   const double g1 = std::numbers::pi * (1 - e) / (1 + e), s = 2 * (1 + e * e) / ((1 + e) * (1 + e));
-  return {g1, std::sqrt(g1 * g1 + s * s)};
+  return 0.5 * (g1 + std::sqrt(g1 * g1 + s * s));
 }
 
 }  // namespace hertzdash

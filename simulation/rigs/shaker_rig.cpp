@@ -46,8 +46,7 @@ ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperPa
   namespace p = shaker_parameters;
   refuse_shaker_inputs(options, in);
   ShakerCommandRun r;
-  // `height` is the start's height above the wall, 0 at rest on it: a set-up of its own height
-  // (where a viscoelastic law is calibrated, docs/shaker.md) unless that is 0, the drop test's default then.
+  // `height` (the start's, 0: at rest on the wall) is where a viscoelastic law is calibrated, unless 0.
   RunOptions body = options;
   if (body.height_m == 0.0) body.height_m.reset();
   r.setup = resolve_setup(body, paper);
@@ -57,7 +56,7 @@ ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperPa
   o.wall.frequency_Hz = in.number_or_default(p::frequency);
   o.wall.amplitude_m = in.number("amplitude")
                            ? in.number_or_default(p::amplitude)
-                           : shaker_amplitude_m(in.number("gamma").value_or(period_one_window(r.setup.restitution).middle()),
+                           : shaker_amplitude_m(in.number("gamma").value_or(period_one_middle_gamma(r.setup.restitution)),
                                                 o.wall.frequency_Hz, r.setup.gravity_mps2);
   o.impacts = static_cast<int>(in.number_or_default(p::impacts));
   o.transient = static_cast<int>(in.number_or_default(p::transient));

@@ -33,9 +33,8 @@ struct SoftContactOutcome {
   double peak_force_N = 0;       ///< the largest contact force [N]
   std::array<double, Env::extra_dimension> environment{};  ///< the environment's state z at the end
   IntegrationStats work;
-  /// The impact speed at which the undamped Hertz deformation X = (5 m v0^2/(4K))^{2/5} reaches the
-  /// ball radius R, v = sqrt(4 K R^{5/2}/(5 m)) [m/s]: the small-deformation contact holds below it
-  /// (model/drop_test_setup.hpp, HertzScale; `simulate` refuses an impact above it).
+  /// The speed v = sqrt(4 K R^{5/2}/(5 m)) [m/s] at which the undamped Hertz deformation reaches the
+  /// ball radius R: the contact model holds below it (HertzScale; `simulate` refuses one above it).
   double hertz_speed_limit_mps = 0;
 };
 

@@ -311,11 +311,8 @@ class SequenceRun {
       const double t_obs = 2.0 / s_.frequency_Hz;
       const SoftImpact c = s_.soft(hit, ti, impact.impact_speed_mps, X, V, t_obs);
       out_.work.add_work(c.work);
-      if (!(impact.impact_speed_mps < c.hertz_speed_limit_mps)) {
-        ++beyond_hertz_;
-        fastest_ = std::max(fastest_, impact.impact_speed_mps);
-        speed_limit_ = c.hertz_speed_limit_mps;
-      }
+      if (!(impact.impact_speed_mps < c.hertz_speed_limit_mps))
+        ++beyond_hertz_, fastest_ = std::max(fastest_, impact.impact_speed_mps), speed_limit_ = c.hertz_speed_limit_mps;
       impact.contact_time_s = c.contact_time_s;
       impact.peak_force_N = c.peak_force_N;
       if (!c.separated) {
@@ -371,7 +368,7 @@ class SequenceRun {
   double t_now_ = 0;
   std::array<double, 2> search_from_{0.0, 0.0};
   long cycle_ = -1, in_cycle_ = 0;
-  long beyond_hertz_ = 0;  // soft impacts faster than the Hertz scale allows, the fastest, the limit
+  long beyond_hertz_ = 0;  // soft impacts beyond the Hertz scale, the fastest, the scale's limit
   double fastest_ = 0, speed_limit_ = 0;
   double x_min_ = INFINITY, x_max_ = -INFINITY, t_max_ = 0;
 };
