@@ -306,6 +306,8 @@ py::dict py_fit_kind(const FitFunction& f, const std::string& path, const py::kw
   std::map<std::string, std::string> values{{std::string(fit_kind_option(f.kind)), path}};
   RunOptions options;
   std::vector<std::string> given;  // even at a default value (rod="steel"): a trace may not contradict it
+  std::string names;  // the own keywords, as an unknown keyword's refusal lists them
+  for (const ParameterDecl* p : own) names += (names.empty() ? "" : ", ") + python_keyword(p->key);
   for (const auto& [key, value] : kwargs) {
     const std::string keyword = key.cast<std::string>();
     const auto d = std::ranges::find_if(own, [&](const ParameterDecl* p) { return python_keyword(p->key) == keyword; });
@@ -313,8 +315,6 @@ py::dict py_fit_kind(const FitFunction& f, const std::string& path, const py::kw
       if (std::string text = fit_option_text(**d, value); !text.empty()) values[std::string((*d)->key)] = text;
       continue;
     }
-    std::string names;
-    for (const ParameterDecl* p : own) names += (names.empty() ? "" : ", ") + python_keyword(p->key);
     const RunOption& o = option_named(keyword, f.name, names);
     given.push_back(o.name);
     if (o.group != RunOption::Group::setup)
