@@ -8,6 +8,7 @@
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/reports/rig_report.hpp"
+#include "hertzdash/simulation/rigs/rig_work_bound.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -179,4 +180,59 @@ TEST_CASE("a rig's refusal names its command as `hertzdash RIG`, not as an optio
   CHECK(r.exit_code == 2);
   CHECK(r.err.find("not given for `hertzdash oscillator`") != std::string::npos);
   CHECK(r.err.find("--oscillator") == std::string::npos);
+}
+
+TEST_CASE("a rig's work bound: N (c + L/S) from its time scales, the refusal naming the input given", "[rigs]") {
+  using hertzdash::RigTimeScale;
+  // W = N (c + L/S), c = rig_work_per_impact = 500, limit max_rig_work = 5e8 (rig_work_bound.hpp).
+  // S = 1e-3 s and L = 1 s: 1,500 per impact, so 333,333 impacts fit and 400,000 (6e8) do not.
+  const auto scales = [](bool short_given, bool long_given) {
+    return std::vector<RigTimeScale>{{.what = "short", .seconds = 1e-3, .key = "frequency", .value = 1e3, .given = short_given},
+                                     {.what = "long", .seconds = 1.0, .key = "gap", .value = 5, .given = long_given}};
+  };
+  CHECK_NOTHROW(hertzdash::require_bounded_rig_work(scales(true, true), 300000, 33333, true));
+  const auto blamed = [&](bool short_given, bool long_given, bool impacts_given) {
+    try {
+      hertzdash::require_bounded_rig_work(scales(short_given, long_given), 390000, 10000, impacts_given);
+    } catch (const hertzdash::InvalidParameter& e) {
+      CHECK(e.valid_range.find("6e+08 steps") != std::string::npos);
+      return e.key;
+    }
+    return std::string("nothing");
+  };
+  CHECK(blamed(true, true, true) == "frequency");   // the shortest resolved scale, given
+  CHECK(blamed(false, true, true) == "gap");        // else the longest, given
+  CHECK(blamed(false, false, true) == "impacts");   // else the count of impacts
+  CHECK(blamed(false, false, false) == "frequency");
+  // A duration the run does not resolve (a contact) is no S: 1e-9 s against 1 s costs nothing.
+  const std::vector<RigTimeScale> contact{{.what = "drive", .seconds = 1.0, .key = "frequency", .value = 1},
+                                          {.what = "contact", .seconds = 1e-9, .key = "mass", .value = 1, .resolved = false}};
+  CHECK_NOTHROW(hertzdash::require_bounded_rig_work(contact, 100, 1000, false));
+}
+
+TEST_CASE("rigs whose time scales cannot be resolved are refused before they run, naming what was given", "[rigs]") {
+  // The reproducers of issue 45: each hung for over a minute, or exited 1, or ran in silence.
+  const std::pair<std::string, std::string> cases[] = {
+      {"walls --rig damper --frequency 1e9", "--frequency"},
+      {"walls --rig damper --frequency 1e9 --impact-model instantaneous", "--frequency"},
+      {"walls --rig damper --primary-stiffness 1e20", "--primary-stiffness"},
+      {"walls --rig damper --primary-stiffness 1e-25", "--primary-stiffness"},
+      {"walls --rig damper --primary-stiffness 1e30", "--primary-stiffness"},
+      {"walls --rig box --gap 1e-300", "--gap"},
+      {"walls --rig damper --impact-model instantaneous --primary-mass 1e-20", "--primary-mass"},
+      {"shaker --gamma 1e9", "--gamma"},
+      {"shaker --frequency 1e9", "--frequency"},
+      {"shaker --impacts 10000000 --transient 0", "--impacts"},
+      {"oscillator --stiffness 1e25", "--stiffness"},
+      // The wall's amplitude A = gamma g / (2 pi f)^2 under- or overflows: the frequency is named.
+      {"shaker --impact-model instantaneous --frequency 1e300", "--frequency"},
+      {"shaker --impact-model instantaneous --frequency 1e-300", "--frequency"},
+      {"walls --frequency 1e-300", "--frequency"}};
+  for (const auto& [args, option] : cases) {
+    const auto r = run_cli(args);
+    INFO(args << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("invalid " + option + " =") != std::string::npos);
+    CHECK(r.out.empty());
+  }
 }

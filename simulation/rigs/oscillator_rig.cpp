@@ -3,14 +3,17 @@
 
 #include "hertzdash/model/shaker_parameters.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/rigs/rig_work_bound.hpp"
 #include "hertzdash/simulation/rigs/shaker_rig.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/run/soft_contact.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 namespace hertzdash {
 
@@ -77,6 +80,19 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   r.inputs.emplace_back(input_column(s::impacts), std::to_string(o.impacts));
   r.inputs.emplace_back(input_column(s::transient), std::to_string(o.transient));
   r.inputs.emplace_back(input_column(s::impact_model), to_string(o.impact_model));
+  // The work bound (rig_work_bound.hpp): the drive period, the body's natural period, the soft
+  // contact at the spec's speed scale (F + k d)/(m f).
+  const double m = r.setup.mass_kg;
+  std::vector<RigTimeScale> scales{
+      {.what = "the drive period 1/f", .seconds = 1 / o.frequency_Hz, .key = "frequency", .value = o.frequency_Hz,
+       .given = in.number("frequency").has_value()},
+      {.what = "the body's natural period 2 pi sqrt(m/k)", .seconds = 2 * std::numbers::pi * std::sqrt(m / o.stiffness_N_per_m),
+       .key = "stiffness", .value = o.stiffness_N_per_m, .given = in.number("stiffness").has_value()}};
+  if (o.impact_model == ShakerImpactModel::soft)
+    scales.push_back(hertz_contact_time_scale(
+        r.setup, (o.force_amplitude_N + o.stiffness_N_per_m * o.stop_distance_m) / (m * o.frequency_Hz),
+        options.mass_kg.has_value()));
+  require_bounded_rig_work(scales, o.impacts, o.transient, in.number("impacts").has_value());
   r.run = run_oscillator(r.setup, r.law, solver, o);
   return r;
 }

@@ -3,9 +3,14 @@
 
 #include "hertzdash/model/shaker_parameters.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/rigs/rig_work_bound.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
 
 namespace hertzdash {
 
@@ -56,8 +61,8 @@ ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperPa
   o.wall.frequency_Hz = in.number_or_default(p::frequency);
   o.wall.amplitude_m = in.number("amplitude")
                            ? in.number_or_default(p::amplitude)
-                           : shaker_amplitude_m(in.number("gamma").value_or(period_one_middle_gamma(r.setup.restitution)),
-                                                o.wall.frequency_Hz, r.setup.gravity_mps2);
+                           : amplitude_from_gamma(in.number("gamma").value_or(period_one_middle_gamma(r.setup.restitution)),
+                                                  o.wall.frequency_Hz, r.setup.gravity_mps2);
   o.impacts = static_cast<int>(in.number_or_default(p::impacts));
   o.transient = static_cast<int>(in.number_or_default(p::transient));
   o.start_height_m = options.height_m;
@@ -69,6 +74,19 @@ ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperPa
   r.inputs.emplace_back("impacts", std::to_string(o.impacts));
   r.inputs.emplace_back("transient", std::to_string(o.transient));
   r.inputs.emplace_back("impact_model", to_string(o.impact_model));
+  // The work bound (rig_work_bound.hpp): the drive period, a flight after a take-off at the
+  // wall's peak speed, the soft contact at the speed one drive period of fall gives.
+  const double T = o.wall.period_s(), g = r.setup.gravity_mps2, take_off_mps = o.wall.amplitude_m * o.wall.omega_rad_per_s();
+  const bool amplitude = in.number("amplitude").has_value();
+  std::vector<RigTimeScale> scales{
+      {.what = "the drive period 1/f", .seconds = T, .key = "frequency", .value = o.wall.frequency_Hz,
+       .given = in.number("frequency").has_value()},
+      {.what = "a flight after a take-off at the wall's peak speed, 2 A (2 pi f)/g", .seconds = 2 * take_off_mps / g,
+       .key = amplitude ? "amplitude" : "gamma", .value = amplitude ? o.wall.amplitude_m : shaker_gamma(o.wall, g),
+       .given = amplitude || in.number("gamma"), .resolved = false}};
+  if (o.impact_model == ShakerImpactModel::soft)
+    scales.push_back(hertz_contact_time_scale(r.setup, g * T, options.mass_kg.has_value()));
+  require_bounded_rig_work(scales, o.impacts, o.transient, in.number("impacts").has_value());
   const ShakerStart start = shaker_start(o, r.setup.restitution, r.setup.gravity_mps2);
   r.inputs.emplace_back("start_height_m", fmt::format("{}", start.height_m));
   r.inputs.emplace_back("start_phase", fmt::format("{}", start.phase));
@@ -105,6 +123,16 @@ constexpr RigOptionNote notes[] = {
                "0: at rest on the wall (default: the apex of the instantaneous map's period-1 orbit, docs/shaker.md)"}};
 
 }  // namespace
+
+double amplitude_from_gamma(double gamma, double frequency_Hz, double gravity_mps2) {
+  const double A = shaker_amplitude_m(gamma, frequency_Hz, gravity_mps2);
+  if (std::isfinite(A) && (A >= std::numeric_limits<double>::min() || gamma * gravity_mps2 == 0)) return A;
+  throw InvalidParameter(
+      "frequency", format_value(frequency_Hz),
+      fmt::format("such that the amplitude A = gamma g / (2 pi f)^2 is a number double precision holds: with gamma = "
+                  "{:.6g} it is {} m",
+                  gamma, A == 0 ? "below 1e-308" : format_value(A)));
+}
 
 const Rig& shaker_rig() {
   static const Rig rig = make_rig<Run, ShakerImpact>(

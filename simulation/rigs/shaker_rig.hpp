@@ -65,6 +65,10 @@ struct SequenceFields {
                                                [](const Run& r) -> RigValue { return r.run.impacts_run; }};
 };
 
+/// A wall's amplitude A = gamma g / (2 pi f)^2 (model/wall_motion.hpp), refused naming `frequency`
+/// where double precision cannot hold it (f = 1e300 Hz: A underflows; 1e-300 Hz: A overflows).
+double amplitude_from_gamma(double gamma, double frequency_Hz, double gravity_mps2);
+
 /// The rig `shaker`: inputs frequency, amplitude or gamma, impacts, transient, impact-model,
 /// start-phase and every run option but impact-velocity (`height` is the start's height above the
 /// wall's mean position); results gamma, frequency_Hz, amplitude_m, impact_model, damping,

@@ -4,11 +4,17 @@
 #include "hertzdash/model/shaker_parameters.hpp"
 #include "hertzdash/model/two_walls_parameters.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/rigs/rig_work_bound.hpp"
 #include "hertzdash/simulation/rigs/shaker_rig.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/shaker/two_walls.hpp"
 
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
 
 namespace hertzdash {
 
@@ -99,10 +105,32 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   r.law = options.damping;
   const SolverSettings solver = resolve_solver(options);
   if (box && !in.number("amplitude"))
-    o.drive.amplitude_m = shaker_amplitude_m(in.number_or_default(p::gamma), o.drive.frequency_Hz, r.setup.gravity_mps2);
+    o.drive.amplitude_m = amplitude_from_gamma(in.number_or_default(p::gamma), o.drive.frequency_Hz, r.setup.gravity_mps2);
   o.impacts = static_cast<int>(in.number_or_default(s::impacts));
   o.transient = static_cast<int>(in.number_or_default(s::transient));
   o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value)));
+  // The work bound (rig_work_bound.hpp): the drive period, the fall across the gap (at the box's
+  // speed scale with g = 0), the primary's natural period, the soft contact at the speed scale.
+  const double g = r.setup.gravity_mps2;
+  if (box) speed_scale_mps = o.drive.amplitude_m * w;
+  std::vector<RigTimeScale> scales{
+      {.what = "the drive period 1/f", .seconds = 1 / o.drive.frequency_Hz, .key = "frequency",
+       .value = o.drive.frequency_Hz, .given = in.number("frequency").has_value()},
+      {.what = g > 0 ? "the fall across the gap sqrt(2 gap / g)" : "the crossing of the gap at the box's speed",
+       .seconds = g > 0 ? std::sqrt(2 * o.gap_m / g) : o.gap_m / speed_scale_mps, .key = "gap", .value = o.gap_m,
+       .given = in.number("gap").has_value()}};
+  if (!box) {
+    const bool mass = in.number("primary-mass") && !in.number("primary-stiffness");
+    scales.push_back({.what = "the primary's natural period 2 pi sqrt(M/k)",
+                      .seconds = 2 * std::numbers::pi * std::sqrt(o.primary.mass_kg / o.primary.stiffness_N_per_m),
+                      .key = mass ? "primary-mass" : "primary-stiffness",
+                      .value = mass ? o.primary.mass_kg : o.primary.stiffness_N_per_m,
+                      .given = in.number("primary-mass") || in.number("primary-stiffness")});
+  }
+  if (o.impact_model == ShakerImpactModel::soft)
+    scales.push_back(hertz_contact_time_scale(r.setup, std::max(speed_scale_mps, g / o.drive.frequency_Hz),
+                                              options.mass_kg.has_value()));
+  require_bounded_rig_work(scales, o.impacts, o.transient, in.number("impacts").has_value());
   r.inputs = describe_rig_run(r.setup, r.law, solver, not_read);
   r.inputs.emplace_back("rig", std::string(rig));
   r.inputs.emplace_back("gap_m", fmt::format("{}", o.gap_m));
