@@ -252,3 +252,46 @@ TEST_CASE("fit --bounce-times --profile-intervals: a nearly linear problem's int
   CHECK(p["profile_interval"][1].get<double>() == Approx(e.profile->upper).epsilon(1e-6));
   CHECK_FALSE(j["fits"][0]["drops"][0]["first_impact_speed_mps"].contains("profile_interval"));
 }
+
+// Issue 45: a refusal names what the user gave (an option, or the file, its drop and what the
+// speed came from), never an option the user could not even give with --bounce-times. Each of
+// these blamed `--impact-velocity` (which --bounce-times refuses), `--fit` (not given) or the
+// default `--height`.
+TEST_CASE("fit --bounce-times: refusals name the option or the drop that was given", "[bounce_fit][cli]") {
+  ScratchDir dir;
+  const BounceRecording clean = synthetic_recording(hongo_truth(), three_drops(), 8, 1e-4, 45);
+  const auto good = dir.path / "good.csv";
+  write_bounce_recording(good, clean, "tests/test_bounce_recording_fit.cpp", {});
+  BounceRecording high = clean;
+  high.drops[0].drop_height_m = 1e9;  // sqrt(2 g h) = 1.4e5 m/s, beyond the 81 m/s of the Hertz scale
+  const auto tall = dir.path / "tall.csv";
+  write_bounce_recording(tall, high, "tests/test_bounce_recording_fit.cpp", {});
+  BounceRecording fast = clean;  // every time 1e-10 of itself: flights of about 1e-11 s
+  for (RecordedDrop& d : fast.drops)
+    for (double& t : d.impact_time_s) t *= 1e-10;
+  const auto tiny = dir.path / "tiny.csv";
+  write_bounce_recording(tiny, fast, "tests/test_bounce_recording_fit.cpp", {});
+
+  struct Case {
+    std::string args, names;
+  };
+  const std::string label = "drop '" + clean.drops[0].label + "'";
+  for (const Case& c : {Case{tall.string(), label + " of " + tall.string() + " (from its drop_height_m 1e+09)"},
+                        Case{good.string() + " --mass 1e-30", "invalid --mass = 1e-30"},
+                        Case{good.string() + " --gravity 0", "invalid --gravity = 0"},
+                        Case{good.string() + " --fit height", "invalid --fit = height"},
+                        Case{good.string() + " --air-density 1e9", "the fit's starting values"},
+                        Case{tiny.string(), label + " of " + tiny.string()}}) {
+    const auto r = run_cli("fit --bounce-times " + c.args);
+    CAPTURE(c.args, r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.names) != std::string::npos);
+    CHECK(r.err.find("invalid --impact-velocity") == std::string::npos);
+    CHECK(r.err.find("invalid --height") == std::string::npos);
+    CHECK(r.out.empty());
+  }
+  // The drag, not the default height, keeps the fall from reaching the ball fast enough.
+  const auto b = run_cli("bounce --air-density 1e300");
+  CHECK(b.exit_code == 2);
+  CHECK(b.err.find("invalid --air-density = 1e+300") != std::string::npos);
+}

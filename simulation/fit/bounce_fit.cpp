@@ -49,15 +49,22 @@ class RecordingData final : public FitData {
     }
     ratio_ = std::clamp(ratios.empty() ? 0.8 : median(ratios), 0.01, 0.99);
     if (!start_.empty()) return;
-    RunOptions o = flying(base_);
-    o.impact_velocity_mps = 1.0;
-    const double g = resolve_setup(o, paper).gravity_mps2;
+    const double g = base_.gravity_mps2.value_or(paper.gravity_mps2);
     for (const CheckedDrop& d : data_.drops) {
       const double r = d.interval_ratio > 0 && d.interval_ratio < 1 ? d.interval_ratio : ratio_;
-      start_.push_back(d.drop_height_m > 0 ? std::sqrt(2.0 * g * d.drop_height_m)
-                                           : g * (d.impact_time_s[1] - d.impact_time_s[0]) /
-                                                 (2.0 * r * span(d.impact_number[1], r)));
-      start_.push_back(d.impact_time_s[0]);
+      const bool height = d.drop_height_m > 0;
+      const double v0 = height ? std::sqrt(2.0 * g * d.drop_height_m)
+                               : g * (d.impact_time_s[1] - d.impact_time_s[0]) / (2.0 * r * span(d.impact_number[1], r));
+      // The set-up at the drop's own speed: a speed outside the Hertz contact is the drop's, named
+      // with where it comes from, unless an option the user gave sets the bound (hertz_scale_refusal.hpp).
+      RunOptions o = base_;
+      o.impact_velocity_mps = v0;
+      o.impact_velocity_origin =
+          fmt::format("the first impact speed of drop '{}' of {} ({})", d.label, path_,
+                      height ? fmt::format("from its drop_height_m {:g}", d.drop_height_m)
+                             : fmt::format("from its first interval, {:.6g} s", d.impact_time_s[1] - d.impact_time_s[0]));
+      resolve_setup(o, paper);
+      start_.insert(start_.end(), {v0, d.impact_time_s[0]});
     }
   }
 
@@ -91,12 +98,16 @@ class RecordingData final : public FitData {
     for (std::size_t d = 0, row = 0; d < data_.drops.size(); ++d) {
       const CheckedDrop& drop = data_.drops[d];
       const auto* m = model_.impacts(law, nuisances[2 * d], drop.impact_number.back() + 1);
-      if (!m) return false;
+      if (!m) {
+        outside_ = fmt::format("drop '{}' of {}: {}", drop.label, path_, model_.outside_domain());
+        return false;
+      }
       for (std::size_t k = 0; k < drop.impact_time_s.size(); ++k, ++row)
         r[row] = drop.impact_time_s[k] - (nuisances[2 * d + 1] + (*m)[static_cast<std::size_t>(drop.impact_number[k])].onset_s);
     }
     return true;
   }
+  std::string outside_domain() const override { return outside_; }
   bool sd_known() const override { return false; }
   double least_variance() const override { return 1e-10 * 1e-10; }  // the model's accuracy in time [s^2]
   std::string too_few(std::size_t n, std::size_t p) const override {
@@ -149,6 +160,7 @@ class RecordingData final : public FitData {
   std::vector<double> start_;  // v0 and t0 of each drop
   std::vector<std::pair<std::size_t, std::size_t>> rows_;  // drop, time in it
   double ratio_ = 0.8;         // the drops' median interval ratio
+  std::string outside_;        // the drop and the model's reason, the last time it could not run
 };
 
 std::vector<std::string> names_of(const std::vector<FitParameter>& parameters) {
@@ -160,11 +172,14 @@ std::vector<std::string> names_of(const std::vector<FitParameter>& parameters) {
 // The options checked and flying, the settings with the law's own parameters where none are given.
 std::pair<RunOptions, FitSettings> prepared(const RunOptions& given, const PaperParameters& paper,
                                                   FitSettings settings) {
-  check_bounce_fit_options(given);
+  check_bounce_fit_setup(given, paper);
   const RunOptions base = flying(given);
-  RunOptions probe = base;
-  probe.impact_velocity_mps = 1.0;
-  resolve_setup(probe, paper);  // the options' own refusals first
+  for (const FitParameter& p : settings.parameters)
+    if (p.option == "height" || p.option == "impact-velocity")
+      throw InvalidParameter("fit", p.option,
+                             "names of the law's parameters or the set-up's, not `height` or `impact-velocity` with "
+                             "`bounce-times` (each drop's first impact speed is fitted already, from its "
+                             "`drop_height_m` where the recording gives it)");
   if (settings.parameters.empty()) settings.parameters = law_fit_parameters(base);
   if (settings.parameters.empty())
     throw InvalidParameter("damping", base.damping,
@@ -185,7 +200,7 @@ FitResult fit_bounce_recording(const CheckedRecording& data, const std::string& 
 LawComparison compare_laws_on_bounces(const CheckedRecording& data, const std::string& path,
                                             const RunOptions& base, const PaperParameters& paper,
                                             const FitSettings& settings) {
-  check_bounce_fit_options(base);
+  check_bounce_fit_setup(base, paper);
   return compare_laws(
       [&](const RunOptions& o, const std::vector<FitParameter>& parameters) {
         return std::make_unique<RecordingData>(data, path, o, paper, names_of(parameters));

@@ -49,12 +49,15 @@
 namespace hertzdash {
 
 /// Refuses (InvalidParameter) the options a bounce-recording fit cannot use: `impact-velocity`
-/// or `height` (each drop's first impact speed is fitted), an elastic rod (flights integrated:
-/// too slow to fit), an iterated omega_n, an option read only into a trace.
-void check_bounce_fit_options(const RunOptions& o);
+/// or `height` (each drop's first impact speed is fitted), `gravity` 0, an elastic rod (flights
+/// integrated: too slow to fit), an iterated omega_n, an option read only into a trace; then the
+/// set-up's own refusals (resolve_setup) but for the Hertz scale of the speed, which each drop's
+/// first impact speed sets (named after the drop, or after the option the user gave that sets
+/// the bound, when the recording is fitted).
+void check_bounce_fit_setup(const RunOptions& o, const PaperParameters& paper);
 
 /// Fit the checked recording (`path`: for messages). Validates the options
-/// (check_bounce_fit_options, resolve_setup); throws DataError for fewer times than parameters.
+/// (check_bounce_fit_setup); throws DataError for fewer times than parameters.
 /// The result has a group per drop.
 FitResult fit_bounce_recording(const CheckedRecording& data, const std::string& path, const RunOptions& base,
                                const PaperParameters& paper, const FitSettings& settings);

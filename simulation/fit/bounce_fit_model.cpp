@@ -14,6 +14,8 @@
 
 namespace hertzdash {
 
+namespace {
+
 void check_bounce_fit_options(const RunOptions& o) {
   const std::string given = "omitted with `bounce-times` (each drop's first impact speed is fitted)";
   if (o.impact_velocity_mps) throw InvalidParameter("impact-velocity", format_value(*o.impact_velocity_mps), given);
@@ -22,11 +24,29 @@ void check_bounce_fit_options(const RunOptions& o) {
     throw InvalidParameter("rod-model", o.rod_model,
                            "rigid with `bounce-times` (its flights are closed forms; the elastic rod's are integrated, "
                            "too slow to fit)");
+  if (o.gravity_mps2 && !(*o.gravity_mps2 > 0))
+    throw InvalidParameter("gravity", format_value(*o.gravity_mps2),
+                           "> 0 with `bounce-times` (the flights between a recording's impacts fall under gravity; "
+                           "without it the body never comes back)");
   refuse_trace_only_options(o, "hertzdash fit --bounce-times");
   if (o.omega_n && is_iterated(parse_omega_n_variant(*o.omega_n)))
     throw InvalidParameter("omega-n", *o.omega_n,
                            "a closed-form variant with `bounce-times`: paper, impact-energy, rebound-energy or "
                            "as-printed (the iterated variants need hertzdash simulate)");
+}
+
+}  // namespace
+
+void check_bounce_fit_setup(const RunOptions& o, const PaperParameters& paper) {
+  check_bounce_fit_options(o);
+  RunOptions probe = o;
+  probe.follows_flights = true;  // the model's flights read the air drag
+  probe.impact_velocity_mps = 1.0;
+  try {
+    resolve_setup(probe, paper);
+  } catch (const InvalidParameter& e) {
+    if (e.key != "impact-velocity") throw;  // the probe's speed: each drop's own is checked (bounce_fit.cpp)
+  }
 }
 
 }  // namespace hertzdash
@@ -56,9 +76,14 @@ const std::vector<ModelImpact>* BounceModel::impacts(const std::vector<double>& 
     if (static_cast<int>(b.impacts.size()) == count) {
       value.emplace();
       for (const BounceImpact& i : b.impacts) value->push_back({i.onset_time_s, i.approach_speed_mps, i.rebound_speed_mps});
+    } else {
+      outside_domain_ = fmt::format("from {:.6g} m/s the model's bounce sequence has {} of the {} impacts ({})", v0,
+                                    b.impacts.size(), count, b.end_reason);
     }
-  } catch (const InvalidParameter&) {
-  } catch (const std::runtime_error&) {  // a run that failed its checks: outside the model's domain
+  } catch (const InvalidParameter& e) {
+    outside_domain_ = e.message(KeySpelling::key);
+  } catch (const std::runtime_error& e) {  // a run that failed its checks: outside the model's domain
+    outside_domain_ = e.what();
   }
   auto it = cache_.emplace(std::move(key), std::move(value)).first;
   return it->second ? &*it->second : nullptr;

@@ -28,10 +28,12 @@ class BounceModel : public fit_detail::FitModel {
   /// The first `count` impacts at (law, v0), or nullptr where the values leave the model's domain
   /// (the set-up refuses them, a run fails, the body comes to rest before impact count - 1).
   const std::vector<ModelImpact>* impacts(const std::vector<double>& law, double v0, int count);
-
+  /// Why the last run outside the model's domain was (the refusal, or the sequence's end).
+  const std::string& outside_domain() const { return outside_domain_; }
 
  private:
   std::map<std::vector<double>, std::optional<std::vector<ModelImpact>>> cache_;
+  std::string outside_domain_;
 };
 
 }  // namespace hertzdash::bounce_fit_detail

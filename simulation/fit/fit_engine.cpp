@@ -330,8 +330,14 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& settings
   {
     std::vector<double> r(n);
     problem.residuals(problem.z.data(), r.data());
-    if (std::any_of(r.begin(), r.end(), [](double v) { return v >= outside_residual; }))
-      throw InvalidParameter("fit", "the starting values", "values inside the model's domain");
+    if (std::any_of(r.begin(), r.end(), [](double v) { return v >= outside_residual; })) {
+      std::string values;
+      for (std::size_t j = 0; j < pl; ++j)
+        values += fmt::format("{}{} {:.6g}", j ? ", " : "", parameters[j].option, initial[j]);
+      const std::string why = data.outside_domain();
+      throw InvalidParameter("the fit's starting values", values,
+                             "values at which the model runs" + (why.empty() ? std::string() : ": " + why));
+    }
   }
   const Solution s = solve(problem, problem.z, settings);
   const std::vector<double> v = s.z;

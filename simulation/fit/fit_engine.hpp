@@ -220,6 +220,9 @@ class FitData {
   virtual double least_variance() const { return 0; }
   /// The work so far, bounded by FitSettings::max_work (a trace's RK4 steps and interpolations).
   virtual double work() const { return 0; }
+  /// Why the model could not be evaluated the last time residuals() returned false (empty: no
+  /// reason kept): the refusal of the starting values quotes it.
+  virtual std::string outside_domain() const { return {}; }
   /// Why n values cannot determine p variables (a DataError's message).
   virtual std::string too_few(std::size_t n, std::size_t p) const = 0;
   /// The number of folds; throws DataError below two.

@@ -74,6 +74,10 @@ struct RunOptions {
   /// Not an option: whether the front end follows the body's flights (`hertzdash bounce`, `fit
   /// --bounce-times`), where the options read only in flight (air drag) are read; others refuse them.
   bool follows_flights = false;
+  /// Not an option: where impact_velocity_mps comes from when a front end sets it, not the user
+  /// (`fit --bounce-times`: "the first impact speed of drop 'a' of FILE"); a refusal of the
+  /// set-up names it, or an option the user gave, never `impact-velocity`.
+  std::string impact_velocity_origin;
 };
 
 /// Who reads an option, besides every command that takes it: all runs, or only some laws, only

@@ -178,12 +178,8 @@ FitRun run_fit(const FitRequest& request, const PaperParameters& paper) {
     RunOptions probe = base;
     if (request.compare_laws) probe.damping = RunOptions{}.damping;
     if (r.kind == FitDataKind::restitution_table) check_restitution_fit_options(base);
-    if (r.kind == FitDataKind::bounce_times) {
-      check_bounce_fit_options(base);
-      probe.follows_flights = true;  // the model's flights read the air drag
-      probe.impact_velocity_mps = 1.0;
-    }
-    resolve_setup(probe, paper);
+    if (r.kind == FitDataKind::bounce_times) check_bounce_fit_setup(probe, paper);
+    else resolve_setup(probe, paper);
   }
   const std::string fit = request.fit.empty() && r.kind == FitDataKind::trace ? "ball-E,restitution" : request.fit;
   r.settings.parameters = fit.empty() ? std::vector<FitParameter>{} : parse_fit_parameters(fit);
