@@ -235,6 +235,7 @@ Command add_fit_command(CLI::App& app) {
             if (opt->flags["mkdir"]) given["mkdir"] = "true";
             FitRequest request = fit_request(given, opt->run);
             request.given = given_options(*sub);
+            request.settings.progress = [](const std::string& line) { std::cerr << "hertzdash: fit: " << line << "\n"; };
             const std::string& curves = opt->text["curves"];
             if (request.kind == FitDataKind::trace) {
               prepare_output_file("--curves", curves, opt->flags["mkdir"]);

@@ -107,7 +107,10 @@ py::object to_python(const nlohmann::ordered_json& j) {
     case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
     case nlohmann::json::value_t::number_integer: return py::int_(j.get<long long>());
     case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
-    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+    case nlohmann::json::value_t::number_float: {  // the program's JSON writes inf and NaN as null
+      const double v = j.get<double>();
+      return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());
+    }
     case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
     case nlohmann::json::value_t::array: {
       py::list list;
@@ -219,10 +222,16 @@ py::dict py_bounce(double bounces, double min_rebound_velocity, std::optional<do
   return to_python(to_json(run));
 }
 
+// A file name with a NUL in it is refused as open() refuses it: C++ would cut it at the NUL.
+void require_path(const std::string& path, const char* keyword) {
+  if (path.find('\0') != std::string::npos) throw py::value_error(fmt::format("{}: embedded null byte", keyword));
+}
+
 // virtual_measurement: `hertzdash simulate --trace PATH --trace-format measured`; the chain's
 // settings are keywords of their own, the rest are the run's.
 py::dict py_virtual_measurement(const std::string& path, double sample_rate, double anti_alias, double noise,
                                 std::uint64_t seed, const std::string& channels, const py::kwargs& kwargs) {
+  require_path(path, "path");
   const RunOptions options = run_options_from(kwargs, "virtual_measurement");
   MeasurementChain chain{.sample_rate_Hz = sample_rate, .anti_alias_cutoff_Hz = anti_alias, .noise_fraction = noise,
                          .seed = seed};
@@ -301,6 +310,54 @@ std::string fit_option_text(const ParameterDecl& d, py::handle value) {
   return fmt::format("{}", value.cast<double>());
 }
 
+// Runs `work` with the GIL released on a thread of its own while this thread checks for signals
+// ten times a second: Python handles a signal (Ctrl-C) only between its own bytecodes, so a
+// sweep of minutes ignored it until done. On a signal whose handler raises, sets `cancel` (the
+// sweep stops handing out work), waits for `work` to return and returns false with the Python
+// error set. Rethrows what `work` threw.
+template <class Work>
+bool run_watching_signals(Work& work, std::atomic<bool>& cancel) {
+  std::mutex mutex;
+  std::condition_variable finished_cv;
+  bool finished = false, interrupted = false;
+  std::exception_ptr failure;
+  {
+    py::gil_scoped_release release;
+    std::thread runner;
+    try {
+      runner = std::thread([&] {
+        try {
+          work();
+        } catch (...) {
+          failure = std::current_exception();
+        }
+        std::lock_guard lock(mutex);
+        finished = true;
+        finished_cv.notify_one();
+      });
+    } catch (const std::system_error&) {  // no thread to spare: run here, without the checks
+      work();
+      return true;
+    }
+    std::unique_lock lock(mutex);
+    while (!finished_cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; })) {
+      if (interrupted) continue;  // the error is set; wait for the sweep to stop
+      lock.unlock();
+      {
+        py::gil_scoped_acquire acquire;
+        interrupted = PyErr_CheckSignals() != 0;
+      }
+      if (interrupted) cancel = true;
+      lock.lock();
+    }
+    lock.unlock();
+    runner.join();
+  }
+  if (interrupted) return false;
+  if (failure) std::rethrow_exception(failure);
+  return true;
+}
+
 py::dict py_fit_kind(const FitFunction& f, const std::string& path, const py::kwargs& kwargs) {
   const std::vector<const ParameterDecl*> own = fit_keywords(f);
   std::map<std::string, std::string> values{{std::string(fit_kind_option(f.kind)), path}};
@@ -326,14 +383,18 @@ py::dict py_fit_kind(const FitFunction& f, const std::string& path, const py::kw
   FitRequest request = fit_request(values, options);
   request.given = given;
   const std::string curves = values.contains("curves") ? values.at("curves") : "";
+  require_path(path, "path");
+  require_path(curves, "curves");
   if (find_shared_file({request.path}, {curves}))  // curves= would replace the trace it fits (issue 31)
     throw InvalidParameter("curves", curves, "another file than trace (" + request.path + "), which is read: they are the same file");
   FitRun run;
-  {
-    py::gil_scoped_release release;
+  std::atomic<bool> cancel = false;
+  request.settings.cancel = &cancel;  // Ctrl-C stops the fit at its next model run
+  auto fit_all = [&] {
     run = run_fit(request, paper());
     if (!curves.empty() && !run.fits.empty()) write_fit_curves(run.fits.front(), run.trace, curves);
-  }
+  };
+  if (!run_watching_signals(fit_all, cancel)) throw py::error_already_set();  // KeyboardInterrupt (Ctrl-C)
   warn_about(fit_diagnostics(run, paper()));
   return to_python(to_json(run, paper()));
 }
@@ -422,54 +483,6 @@ py::list warning_codes(const std::vector<ImpactSummary>& results) {
                      count, results.size(), d.name));
   }
   return codes;
-}
-
-// Runs `work` with the GIL released on a thread of its own while this thread checks for signals
-// ten times a second: Python handles a signal (Ctrl-C) only between its own bytecodes, so a
-// sweep of minutes ignored it until done. On a signal whose handler raises, sets `cancel` (the
-// sweep stops handing out work), waits for `work` to return and returns false with the Python
-// error set. Rethrows what `work` threw.
-template <class Work>
-bool run_watching_signals(Work& work, std::atomic<bool>& cancel) {
-  std::mutex mutex;
-  std::condition_variable finished_cv;
-  bool finished = false, interrupted = false;
-  std::exception_ptr failure;
-  {
-    py::gil_scoped_release release;
-    std::thread runner;
-    try {
-      runner = std::thread([&] {
-        try {
-          work();
-        } catch (...) {
-          failure = std::current_exception();
-        }
-        std::lock_guard lock(mutex);
-        finished = true;
-        finished_cv.notify_one();
-      });
-    } catch (const std::system_error&) {  // no thread to spare: run here, without the checks
-      work();
-      return true;
-    }
-    std::unique_lock lock(mutex);
-    while (!finished_cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; })) {
-      if (interrupted) continue;  // the error is set; wait for the sweep to stop
-      lock.unlock();
-      {
-        py::gil_scoped_acquire acquire;
-        interrupted = PyErr_CheckSignals() != 0;
-      }
-      if (interrupted) cancel = true;
-      lock.lock();
-    }
-    lock.unlock();
-    runner.join();
-  }
-  if (interrupted) return false;
-  if (failure) std::rethrow_exception(failure);
-  return true;
 }
 
 py::dict py_simulate_many(unsigned threads, const py::kwargs& kwargs) {

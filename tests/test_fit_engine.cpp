@@ -69,6 +69,8 @@ class FreeFall final : public FitData {
     return std::make_unique<FreeFall>(std::move(drops), std::move(start));
   }
   void finish(FitResult&, const std::vector<double>&, const std::vector<double>&) override {}
+  FitWork predicted_work(std::size_t) const override { return {predicted_units, "free fall"}; }
+  double predicted_units = 0;  ///< what predicted_work() says one fit costs
 
  private:
   std::vector<std::vector<double>> drops_;
@@ -114,4 +116,45 @@ TEST_CASE("fit engine: a fold whose rest cannot be fitted is that fold's failure
   CHECK(f.cross_validation->failure == "the fit without drop 1: 2 rows cannot determine 3 parameters");
   FreeFall too_small(Drops{{0.1, 0.2}, {0.1, 0.2, 0.3}});
   CHECK_THROWS_AS(fit(too_small, "free fall", gravity_settings()), DataError);
+}
+
+// The work bound (fit_engine.hpp, "Work"): a request is its fit, each cross-validation fold (one
+// per drop) and each profile (20 refits a parameter), each at the kind's predicted cost of one
+// fit. Three drops, cross-validated: 4 fits. 1e6 each (4e6) runs quietly; 1e7 for the fit alone
+// reaches progress_fit_work (1e7) and reports each iteration; 2e7 cross-validated (8e7) exceeds
+// max_predicted_fit_work (6e7) and is refused before any model run, naming the data and the folds.
+TEST_CASE("fit engine: a request's predicted work bounds it, reports its progress, and Ctrl-C stops it", "[fit_engine]") {
+  const Drops drops{{0.1, 0.2, 0.3}, {0.1, 0.2, 0.3, 0.4}, {0.05, 0.15, 0.25}};
+  std::vector<std::string> lines;
+  FitSettings s = gravity_settings();
+  s.progress = [&](const std::string& line) { lines.push_back(line); };
+
+  FreeFall quiet(drops);
+  quiet.predicted_units = 1e6;
+  CHECK_FALSE(fit(quiet, "free-fall", s).failed);
+  CHECK(lines.empty());
+
+  FreeFall long_fit(drops);
+  long_fit.predicted_units = 1e7;
+  FitSettings alone = s;
+  alone.cross_validate = false;
+  CHECK(fit(long_fit, "free-fall", alone).parameters[0].estimate == Approx(g_true).epsilon(1e-8));
+  REQUIRE_FALSE(lines.empty());
+  CHECK(lines.front().rfind("iteration 1: chi-square ", 0) == 0);
+
+  FreeFall too_long(drops);
+  too_long.predicted_units = 2e7;
+  try {
+    (void)fit(too_long, "free-fall", s);
+    FAIL("a request predicted at 8e7 ran");
+  } catch (const DataError& e) {
+    const std::string why = e.what();
+    CHECK(why.find("free fall: the fit and its 3 cross-validation folds is predicted at about 8e+07") != std::string::npos);
+  }
+
+  const std::atomic<bool> cancel = true;
+  FitSettings cancelled = gravity_settings();
+  cancelled.cancel = &cancel;
+  FreeFall any(drops);
+  CHECK_THROWS_AS(fit(any, "free-fall", cancelled), FitCancelled);
 }

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <exception>
 #include <stdexcept>
+#include <utility>
 
 namespace hertzdash {
 
@@ -44,6 +45,7 @@ struct Problem {
   std::vector<double> z;
   std::vector<std::size_t> free;
   std::exception_ptr error;
+  const std::atomic<bool>* cancel = nullptr;  // FitSettings::cancel
 
   std::size_t n() const { return data->rows(); }
   std::size_t p() const { return free.size(); }
@@ -67,6 +69,7 @@ struct Problem {
     return j < law.size() ? law[j].dp_dz(v[j]) : nuisances[j - law.size()].dvalue_dz(v[j]);
   }
   void residuals(const double* zf, double* r) {
+    if (cancel && cancel->load()) throw FitCancelled();
     const std::vector<double> v = full(zf);
     if (!data->residuals(law_values(v), nuisance_values(v), r)) std::fill(r, r + n(), outside_residual);
   }
@@ -138,6 +141,7 @@ Solution solve(Problem& problem, const std::vector<double>& z0, const FitSetting
   const gsl_ptr<gsl_multifit_nlinear_workspace> w(gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, p),
                                                   gsl_multifit_nlinear_free);
   if (!w) throw std::bad_alloc();
+  problem.cancel = settings.cancel;
   gsl_multifit_nlinear_fdf fdf{};
   fdf.f = residuals_thunk;
   fdf.df = jacobian_thunk;
@@ -155,6 +159,12 @@ Solution solve(Problem& problem, const std::vector<double>& z0, const FitSetting
     if (problem.error) std::rethrow_exception(problem.error);
     if (status == GSL_ENOPROG && iteration == 0) break;  // no step from the start lowers the cost
     status = gsl_multifit_nlinear_test(1e-10, 1e-10, 0.0, &s.info, w.get());
+    if (settings.progress) {
+      const gsl_vector* f = gsl_multifit_nlinear_residual(w.get());
+      double chi2 = 0;
+      gsl_blas_ddot(f, f, &chi2);
+      settings.progress(fmt::format("iteration {}: chi-square {:.6g}", iteration + 1, chi2));
+    }
     if (status != GSL_CONTINUE) break;
     if (iteration + 1 >= settings.max_iterations) {
       status = GSL_EMAXITER;
@@ -248,6 +258,8 @@ std::optional<double> profile_chi_square(Problem problem, std::size_t j, double 
     const Solution s = solve(problem, z0, settings);
     if (!std::isfinite(s.rss) || s.rss >= outside_residual || s.work_limit) return std::nullopt;
     return s.rss;
+  } catch (const FitCancelled&) {
+    throw;
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -269,9 +281,11 @@ CrossValidation cross_validate(const FitData& data, const FitSettings& settings,
   }
   FitSettings fold = settings;
   fold.profile_intervals = fold.cross_validate = false;
+  fold.progress = {};
   const bool standardized = data.mixed_units();
   double sum_sq = 0, dof = 0;
   for (std::size_t k = 0; k < cv.folds; ++k) {
+    if (settings.progress) settings.progress(fmt::format("cross-validation: fold {} of {}, without {}", k + 1, cv.folds, data.fold_name(k)));
     try {
       const std::unique_ptr<FitData> rest = data.part(k, false, nuisances), held = data.part(k, true, nuisances);
       const FitResult f = hertzdash::fit(*rest, fit.law, fold, law);
@@ -289,6 +303,8 @@ CrossValidation cross_validate(const FitData& data, const FitSettings& settings,
       if (!(s.rss < outside_residual)) throw std::runtime_error("the model cannot be evaluated on the left-out data");
       for (std::size_t i = 0; i < held->rows(); ++i) sum_sq += std::pow(standardized ? s.f[i] : s.f[i] * held->row(i).unit, 2);
       dof += static_cast<double>(held->rows()) - static_cast<double>(problem.nuisances.size());
+    } catch (const FitCancelled&) {
+      throw;
     } catch (const std::exception& e) {  // a DataError too: a fold too small to fit, the full fit stands
       cv.failure = fmt::format("the fit without {}: {}", data.fold_name(k), e.what());
       return cv;
@@ -308,6 +324,24 @@ CrossValidation cross_validate(const FitData& data, const FitSettings& settings,
   return cv;
 }
 
+// A request's predicted work: one fit (with two or more law parameters, its nested fits and
+// restarts), its folds and its profiles (about 20 refits a parameter).
+double request_work(const FitWork& one, const FitData& data, const FitSettings& settings) {
+  const double folds = settings.cross_validate ? static_cast<double>(data.folds()) : 0.0;
+  const double pl = static_cast<double>(settings.parameters.size());
+  const double profiles = settings.profile_intervals ? 20.0 * pl : 0.0, nested = pl >= 2 ? 1.0 + 2.0 * pl : 1.0;  // in doubt
+  return one.units * nested * (1.0 + folds + profiles);
+}
+
+// Refuses a request predicted above max_predicted_fit_work (see the header, "Work").
+void require_bounded_fit_work(const FitWork& one, double total, const std::string& what) {
+  if (!(total > max_predicted_fit_work)) return;
+  throw DataError(fmt::format("{}: {} is predicted at about {:.3g} units of work (one fit {:.3g}; a unit is about 1 us "
+                              "on one core of the development machine), above the {:.3g} (about a minute) a fit may "
+                              "take: fit fewer data at a time, or ask for less",
+                              one.size, what, total, one.units, max_predicted_fit_work));
+}
+
 }  // namespace
 
 const FittedParameter& FitResult::parameter(const std::string& name) const {
@@ -316,9 +350,19 @@ const FittedParameter& FitResult::parameter(const std::string& name) const {
   throw std::out_of_range("fit: no fitted parameter " + name);
 }
 
-FitResult fit(FitData& data, const std::string& law, const FitSettings& settings,
+FitResult fit(FitData& data, const std::string& law, const FitSettings& request,
               const std::optional<std::vector<double>>& start) {
   use_gsl_return_codes();
+  FitSettings settings = request;
+  settings.progress = {};  // only for a request predicted long
+  if (const FitWork one = data.predicted_work(request.parameters.size()); one.units > 0) {
+    const double total = request_work(one, data, request);
+    std::string what = "the fit";
+    if (request.cross_validate) what += fmt::format(" and its {} cross-validation folds", data.folds());
+    if (request.profile_intervals) what += " and its profile intervals";
+    require_bounded_fit_work(one, total, what);
+    if (total >= progress_fit_work) settings.progress = request.progress;
+  }
   const std::vector<FitParameter>& parameters = settings.parameters;
   Problem problem = problem_of(data, parameters);
   const std::size_t pl = parameters.size(), n = problem.n(), p = pl + problem.nuisances.size();
@@ -339,7 +383,30 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& settings
                              "values at which the model runs" + (why.empty() ? std::string() : ": " + why));
     }
   }
-  const Solution s = solve(problem, problem.z, settings);
+  Solution s = solve(problem, problem.z, settings);
+  // A fit with more parameters is never worse than one with fewer at its optimum: where the fit
+  // is in doubt (not converged, or ill-conditioned), each law parameter in turn is held at its
+  // start (the fit without it); a lower chi-square there means the full fit stopped short (a far
+  // start, a flat valley), and it is restarted from there, which a trust region cannot leave uphill.
+  std::string restarted;
+  const bool doubtful = pl >= 2 && !s.work_limit &&
+                        (s.status != GSL_SUCCESS ||
+                         !(scaled_condition_number(s.J.get(), problem, s.z) < identifiable_condition_limit));
+  for (std::size_t j = 0; doubtful && j < pl; ++j) {
+    Problem nested = problem;
+    std::erase(nested.free, j);
+    std::vector<double> z0;
+    for (std::size_t k : nested.free) z0.push_back(nested.z[k]);
+    const Solution fewer = solve(nested, z0, settings);
+    if (!(fewer.rss < s.rss * (1.0 - 1e-9))) continue;
+    Solution again = solve(problem, fewer.z, settings);
+    if (again.rss < s.rss) {
+      restarted = fmt::format("restarted from the fit with {} held at its start ({:.6g}), whose chi-square {:.6g} was below "
+                              "the first fit's {:.6g}",
+                              parameters[j].option, initial[j], fewer.rss, s.rss);
+      s = std::move(again);
+    }
+  }
   const std::vector<double> v = s.z;
   problem.z = v;
 
@@ -349,13 +416,18 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& settings
   fit.p = p;
   fit.stop_reason = s.work_limit ? fmt::format("work limit reached ({:.3g} RK4 steps and interpolations)", settings.max_work)
                                  : stop_reason(s.status, s.info);
+  if (!restarted.empty()) fit.stop_reason += "; " + restarted;
   fit.converged = s.status == GSL_SUCCESS;
   fit.iterations = s.iterations;
   fit.chi_square = s.rss;
-  const double s2 = s.rss / static_cast<double>(n - p);
+  const double s2_fit = s.rss / static_cast<double>(n - p);
   fit.sigma_estimated = !data.sd_known();
-  fit.sigma = fit.sigma_estimated ? std::sqrt(s2) : 0.0;
-  fit.reduced_chi_square = fit.sigma_estimated ? NAN : s2;
+  fit.sigma = fit.sigma_estimated ? std::sqrt(s2_fit) : 0.0;
+  fit.reduced_chi_square = fit.sigma_estimated ? NAN : s2_fit;
+  // The scale of the covariance and of the profiles' rise: with sd known never below 1 (the stated
+  // scatter is not scaled away by data that agree better than it: six identical rows), with sigma
+  // estimated never below the model's accuracy (noise-free data).
+  const double s2 = fit.sigma_estimated ? std::max(s2_fit, data.least_variance()) : std::max(s2_fit, 1.0);
   const std::vector<std::vector<double>> C = covariance(s.J.get(), s2, difference_noise(data, s.rss));
   fit.condition_number = scaled_condition_number(s.J.get(), problem, v);
 
@@ -405,7 +477,11 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& settings
     why.push_back("the model could not be evaluated at the estimate");
   fit.failed = !why.empty();
   for (const std::string& reason : why) fit.failure += (fit.failure.empty() ? "" : "; ") + reason;
-  fit.identifiable = !fit.failed && finite_errors && fit.condition_number < identifiable_condition_limit &&
+  const bool determined = std::all_of(fit.parameters.begin(), fit.parameters.begin() + static_cast<std::ptrdiff_t>(pl),
+                                     [](const FittedParameter& fp) {
+                                       return fp.standard_error < identifiable_relative_error_limit * std::abs(fp.estimate);
+                                     });
+  fit.identifiable = !fit.failed && finite_errors && determined && fit.condition_number < identifiable_condition_limit &&
                      largest_correlation < identifiable_correlation_limit;
 
   const double k = static_cast<double>(p), nn = static_cast<double>(n);
@@ -482,9 +558,33 @@ LawTrial law_trial(const RunOptions& base, std::string_view law, const std::vect
   return t;
 }
 
-LawComparison compare_laws(const FitDataMaker& make, const RunOptions& base, const FitSettings& settings) {
+namespace {
+
+// Every law's fit predicted at the default law's (see the header, "Work"): refused above the
+// bound, the progress kept only above progress_fit_work.
+void bound_comparison_work(const FitDataMaker& make, const RunOptions& base, FitSettings& settings) {
+  const auto progress = std::exchange(settings.progress, {});  // only for a request predicted long
+  const LawTrial trial = law_trial(base, RunOptions{}.damping, settings.parameters);
+  if (!trial.refusal.empty()) return;
+  const std::vector<FitParameter> parameters = trial.parameters.empty() ? law_fit_parameters(trial.options) : trial.parameters;
+  const std::unique_ptr<FitData> data = make(trial.options, parameters);
+  const FitWork one = data->predicted_work(parameters.size());
+  if (!(one.units > 0)) return;
+  const double total = request_work(one, *data, settings) * static_cast<double>(registered_laws().size());
+  require_bounded_fit_work(one, total, fmt::format("fitting every one of the {} laws", registered_laws().size()));
+  if (total >= progress_fit_work) settings.progress = progress;
+}
+
+}  // namespace
+
+LawComparison compare_laws(const FitDataMaker& make, const RunOptions& base, const FitSettings& request) {
   LawComparison out;
-  for (const LawInfo& law : registered_laws()) {
+  FitSettings settings = request;
+  bound_comparison_work(make, base, settings);
+  const std::vector<LawInfo> laws = registered_laws();
+  for (const LawInfo& law : laws) {
+    if (settings.progress)
+      settings.progress(fmt::format("law {} of {}: {}", static_cast<std::size_t>(&law - laws.data()) + 1, laws.size(), law.name));
     const LawTrial trial = law_trial(base, law.name, settings.parameters);
     const RunOptions& o = trial.options;
     if (!trial.refusal.empty()) {
@@ -500,6 +600,8 @@ LawComparison compare_laws(const FitDataMaker& make, const RunOptions& base, con
       out.fits.push_back(std::move(f));
     } catch (const DataError&) {
       throw;  // the data's fault, the same for every law
+    } catch (const FitCancelled&) {
+      throw;
     } catch (const std::exception& e) {
       out.failures.emplace_back(o.damping, e.what());
     }

@@ -17,13 +17,17 @@
 // estimated). Outside the model's domain every residual is `outside_residual`: the trust region
 // rejects the step and shrinks.
 //
-// Covariance s^2 (J^T J)^-1 with s^2 = chi^2 / (n - p) (gsl_multifit_nlinear_covar), mapped to
+// Covariance s^2 (J^T J)^-1 with s^2 = chi^2 / (n - p) (gsl_multifit_nlinear_covar), with sd
+// known at least 1 (the stated scatter is inflated where the model does not explain the data to
+// it, never deflated: the Particle Data Group's scale factor), with sigma estimated at least the
+// kind's least_variance; mapped to
 // the parameters by the transforms' derivatives; a column of J no larger than the central
 // difference's rounding noise (about 1e3 eps (|y / sd| + |r|) / h: the data do not see that
 // variable), or a variance GSL's pivoting sets to zero, is an infinite standard error. Condition number: of J with the law's
 // columns scaled to relative changes (d r / d ln p) and the nuisances' to their variables.
 // Identifiable: not failed, condition number below identifiable_condition_limit, no
-// correlation beyond identifiable_correlation_limit, every standard error finite.
+// correlation beyond identifiable_correlation_limit, every standard error finite, every law
+// parameter's below identifiable_relative_error_limit times its estimate.
 //
 // Criteria, k = p (every variable, nuisances included: each law of a comparison has the same
 // ones). sd known: chi^2 = sum r^2, AIC = chi^2 + 2k, BIC = chi^2 + k ln n, reduced chi-square
@@ -31,6 +35,12 @@
 // BIC = n ln(RSS / n) + (k + 1) ln n, RSS / n at least the kind's least_variance (the model's
 // accuracy: a noise-free synthetic data set otherwise gives ln 0); sigma = s, the reduced
 // chi-square NaN (1 by construction).
+//
+// Nested fits: with two or more law parameters and a fit in doubt (not converged, or its condition
+// number at or above identifiable_condition_limit), each law parameter is held at its start in
+// turn and the rest fitted; a lower chi-square there means the full fit stopped short, and it is
+// restarted from that point (a fit with more parameters is never worse than one with fewer;
+// `stop_reason` says so).
 //
 // Failure: a fit that determined nothing is `failed`, with the reason: a law parameter at a bound
 // (within 1e-3 of the range in its variable), no law parameter with a finite standard error, the
@@ -48,15 +58,25 @@
 // (FitData::mixed_units: a trace's channels in N, m/s^2, m) the standardized r_i, dimensionless;
 // the data's own scatter is then 1, else the RMS of sd_i where known, else the fit's sigma; a
 // ratio about 1 for a law that predicts new data as well as the data allow.
+//
+// Work (issue 45). A kind predicts the work of one fit from its size (FitData::predicted_work,
+// in units of about 1 us on one core of the development machine); a request (a fit, its
+// cross-validation's folds, its profiles; every law of a comparison) predicted above
+// max_predicted_fit_work (about a minute) is refused before it starts (DataError), one above
+// progress_fit_work reports its progress (FitSettings::progress: each iteration, fold and law),
+// and a front end stops a fit by setting FitSettings::cancel (FitCancelled at the next model
+// evaluation: Python's Ctrl-C).
 #include "hertzdash/simulation/fit/profile_interval.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/run/impact_summary.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <exception>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -185,6 +205,9 @@ struct FitResult {
 inline constexpr double identifiable_condition_limit = 1e6;
 /// Largest correlation between two estimates of an identifiable fit.
 inline constexpr double identifiable_correlation_limit = 0.999;
+/// Largest standard error of an identifiable fit's law parameter, relative to its estimate: an
+/// estimate within one standard error of 0 is not determined.
+inline constexpr double identifiable_relative_error_limit = 1.0;
 /// A residual where the model cannot be evaluated.
 inline constexpr double outside_residual = 1e30;
 
@@ -195,6 +218,29 @@ struct FitSettings {
   double max_work = std::numeric_limits<double>::infinity();  ///< the kind's work() bound
   bool profile_intervals = false;
   bool cross_validate = false;
+  /// Set by a front end: once true, the fit stops at its next model evaluation (FitCancelled).
+  const std::atomic<bool>* cancel = nullptr;
+  /// Given a line of progress (an iteration, a fold, a law) on a request predicted above
+  /// progress_fit_work; a front end shows it.
+  std::function<void(const std::string&)> progress{};
+};
+
+/// The most predicted work of one request (a fit with its folds and profiles, or every law of a
+/// comparison), in FitData::predicted_work's units: about a minute.
+inline constexpr double max_predicted_fit_work = 6e7;
+/// A request predicted above this (about 10 s) reports its progress.
+inline constexpr double progress_fit_work = 1e7;
+
+/// Thrown when FitSettings::cancel is set; no std::runtime_error, which the engine and the kinds
+/// take for a model outside its domain.
+struct FitCancelled : std::exception {
+  const char* what() const noexcept override { return "the fit was cancelled"; }
+};
+
+/// One fit's predicted work and what it comes from.
+struct FitWork {
+  double units = 0;   ///< about 1 us each on one core of the development machine (0: not predicted)
+  std::string size;   ///< "rec.csv: 2000 drops, 16000 times, 4001 parameters"
 };
 
 /// A kind of data, prepared for one law (its options and fitted parameters).
@@ -220,6 +266,8 @@ class FitData {
   virtual double least_variance() const { return 0; }
   /// The work so far, bounded by FitSettings::max_work (a trace's RK4 steps and interpolations).
   virtual double work() const { return 0; }
+  /// The predicted work of one fit of `law_parameters` of the law's parameters (see above).
+  virtual FitWork predicted_work(std::size_t law_parameters) const { (void)law_parameters; return {}; }
   /// Why the model could not be evaluated the last time residuals() returned false (empty: no
   /// reason kept): the refusal of the starting values quotes it.
   virtual std::string outside_domain() const { return {}; }

@@ -44,6 +44,15 @@ class TableData final : public FitData {
   }
   bool sd_known() const override { return table_.has_sd(); }
   double least_variance() const override { return 1e-9 * 1e-9; }  // the model's accuracy in e
+  // A model evaluation runs one contact per distinct speed, about 17 us each; a fit makes about
+  // 10 iterations of 2 p + 2 evaluations (measured: 200 speeds, p = 1, 0.14 s; leave-one-out
+  // over 100 speeds 6.6 s).
+  FitWork predicted_work(std::size_t p) const override {
+    const double speeds_n = static_cast<double>(speeds().size());
+    return {17.0 * speeds_n * 10.0 * (2.0 * static_cast<double>(p) + 2.0),
+            fmt::format("{}: {} rows at {} distinct speeds, {} parameter{}", table_.path.string(), rows(), speeds().size(), p,
+                        p == 1 ? "" : "s")};
+  }
   std::string too_few(std::size_t n, std::size_t p) const override {
     return fmt::format("{}: {} rows cannot determine {} parameters", table_.path.string(), n, p);
   }

@@ -25,7 +25,9 @@
 // Residuals and uncertainty. r_i = (e_i - e_model(v_i)) / sd_i with sd_i the row's e_sd; a table
 // without e_sd has one common, unknown sigma: sd_i = 1, and sigma^2 is estimated by
 // s^2 = RSS / (n - p). The covariance is s^2 (J^T J)^-1 in both cases, s^2 = chi^2 / (n - p)
-// (as the trace fit's), mapped to the parameters by the transforms' derivatives.
+// (as the trace fit's), with e_sd at least 1 (the stated e_sd is inflated where the law does not
+// explain the table to it, never scaled away: six identical rows), mapped to the parameters by
+// the transforms' derivatives.
 //
 // Criteria. With e_sd: chi^2 = sum r_i^2, reduced chi-square chi^2 / (n - p) (about 1 if the law
 // explains the table to its scatter), AIC = chi^2 + 2k, BIC = chi^2 + k ln n (k the fitted

@@ -243,7 +243,7 @@ std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const FitResult& f
       warn("at_bound", fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law, p.estimate));
   if (!f.sigma_estimated && f.reduced_chi_square > 2)
     warn("poor_fit", fmt::format("the model{} does not explain the {} to its noise: reduced chi-square {:.3g} (about 1 "
-                                 "if it did); the standard errors are scaled by it",
+                                 "if it did); the standard errors are scaled up by it",
                                  law, kw.data, f.reduced_chi_square));
   if (f.cross_validation && !f.cross_validation->failure.empty())
     warn("cross_validation_failed", fmt::format("the cross-validation{} failed: {}", law, f.cross_validation->failure));

@@ -678,3 +678,74 @@ def test_simulate_many_stops_at_ctrl_c():
     assert "KeyboardInterrupt" in err
     assert "finished" not in out
     assert p.returncode != 0
+
+
+@pytest.mark.parametrize("kind", ["fit_bounce_times", "fit_restitution_table"])
+def test_fits_stop_at_ctrl_c(kind, tmp_path):
+    # Issue 45: Ctrl-C stops a fit as it stops simulate_many. Each fit below runs for about half a
+    # minute (a SYNTHETIC recording of 60 drops, or a table of 250 distinct speeds, cross-validated
+    # drop by drop, speed by speed); SIGINT three seconds in must end it with KeyboardInterrupt at
+    # its next model evaluation: a cross-validation fold's evaluations take milliseconds, and the
+    # child's own exit well under a second more. The bound below (5 s) leaves room for a loaded
+    # machine; a fit that ignored the signal would run on for half a minute.
+    import signal
+    import time
+    data = tmp_path / "data.csv"
+    if kind == "fit_bounce_times":
+        lines = ["drop,impact_time_s", "# source: SYNTHETIC, tests/python/test_python_module.py", "# synthetic: true"]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # the paper's rod on nylon: yield and large-deformation notes
+            onsets = [hertzdash.bounce(bounces=7, height=h)["onset_times_s"] for h in (0.2, 0.3, 0.4)]
+        for d in range(60):
+            lines += [f"d{d},{10.0 * d + x + (1e-5 if i % 2 else -1e-5)!r}" for i, x in enumerate(onsets[d % 3])]
+    else:
+        lines = ["impact_speed_m_per_s,e,e_sd", "# source: SYNTHETIC, tests/python/test_python_module.py"]
+        lines += [f"{0.2 + 0.01 * i!r},{0.8 - 0.03 * (0.2 + 0.01 * i) + (0.01 if i % 2 else -0.01)!r},0.01"
+                  for i in range(250)]
+    data.write_text("\n".join(lines) + "\n")
+    code = ("import warnings, hertzdash\n"
+            "warnings.simplefilter('ignore')\n"
+            "print('running', flush=True)\n"
+            f"hertzdash.{kind}({str(data)!r}, cross_validate=True)\n"
+            "print('finished', flush=True)\n")
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert p.stdout.readline().strip() == "running"
+    time.sleep(3.0)
+    p.send_signal(signal.SIGINT)
+    sent = time.monotonic()
+    try:
+        out, err = p.communicate(timeout=30)
+    finally:
+        p.kill()
+    stopped_after = time.monotonic() - sent
+    assert "KeyboardInterrupt" in err, err
+    assert "finished" not in out
+    assert stopped_after < 5.0
+
+
+def test_a_number_the_program_writes_as_null_is_none(tmp_path):
+    # Issue 45: Python returned inf where the program's JSON has null (JSON has no inf or NaN): a
+    # result is the program's JSON, key for key, with None for null.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = hertzdash.simulate(ball_yield_stress=math.inf)
+    assert r == cli_json("simulate", "--ball-yield-stress=inf")
+    assert all(v is None or math.isfinite(v) for v in numbers_in(r))
+
+
+def numbers_in(value):
+    if isinstance(value, dict):
+        return [x for v in value.values() for x in numbers_in(v)]
+    if isinstance(value, list):
+        return [x for v in value for x in numbers_in(v)]
+    return [value] if isinstance(value, float) or value is None else []
+
+
+def test_a_path_with_a_nul_is_refused_as_open_refuses_it(tmp_path):
+    # Issue 45: C++ cut such a path at the NUL and read or wrote another file.
+    for call in (lambda: hertzdash.fit_restitution_table(str(tmp_path / "table.csv") + "\0.txt"),
+                 lambda: hertzdash.fit_bounce_times(str(tmp_path / "r.csv\0")),
+                 lambda: hertzdash.virtual_measurement(str(tmp_path / "t\0.csv"))):
+        with pytest.raises(ValueError, match="embedded null byte"):
+            call()
+    assert list(tmp_path.iterdir()) == []
