@@ -53,7 +53,11 @@ Command add_rig_command(CLI::App& app, const Rig& rig) {
             for (const std::string& w : r.warnings) std::cerr << "hertzdash: warning: " << w << "\n";
             if (opt->json) std::cout << to_json(rig, r).dump(2) << "\n";
             else std::cout << rig_text(rig, r);
-            return 0;
+            if (!r.rows.empty()) return 0;
+            // The run ended before any of the impacts asked for (a contact that never ends, a body
+            // at rest for good): its output stands, incomplete, as a failed fit's does.
+            std::cerr << "hertzdash: the run kept none of the impacts asked for: " << r.end_reason << "\n";
+            return 3;
           }};
 }
 

@@ -153,3 +153,21 @@ TEST_CASE("CLI shaker: soft impacts beyond the Hertz scale are flagged, as simul
   REQUIRE(usual.exit_code == 0);
   CHECK(usual.err.find("small-deformation") == std::string::npos);
 }
+
+// Issue 45: a run that kept none of the impacts asked for exited 0. With gamma 0 the wall never
+// moves: within the default transient (1000 impacts) the instantaneous body comes to rest on it
+// for good, the soft one stays in a contact that never ends. Each prints its output (no impact kept: period 0, e_effective null) and exits
+// with code 3, naming why it ended.
+TEST_CASE("CLI shaker: a run that keeps none of the impacts asked for exits 3", "[shaker]") {
+  for (const std::string& model : {"soft", "instantaneous"}) {
+    const auto r = run_cli("shaker --gamma 0 --impacts 5 --json --impact-model " + model);
+    INFO(model << ": " << r.err);
+    CHECK(r.exit_code == 3);
+    CHECK(r.err.find("hertzdash: the run kept none of the impacts asked for: ") != std::string::npos);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["period"] == 0);
+    CHECK(j["e_effective"].is_null());
+  }
+  const auto kept = run_cli("shaker --impacts 3 --transient 20");
+  CHECK(kept.exit_code == 0);
+}
