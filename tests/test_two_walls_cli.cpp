@@ -84,3 +84,21 @@ TEST_CASE("CLI walls: bad input exits 2 naming the option", "[walls]") {
        {"--impact-model instantaneous --ball-E 9e9", "--ball-E"}, {"--impact-model instantaneous --mass 0.1", "--mass"},
        {"--rig damper --impact-model instantaneous --rtol 1e-3", "--rtol"}});
 }
+
+// Issue 45: the classic undamped impact damper (instantaneous impacts, gravity 0, primary
+// damping 0) was refused by a Hertz speed limit (the bare primary's resonant speed, 38,000 m/s)
+// that Newton's law does not have. It runs now; with no dashpot, the drive's work goes into the
+// impacts' loss and the energy: W - L = E(end) - E(0), D = 0 (the 8-point Gauss-Legendre pieces
+// of the drive's work are exact to rounding here, 1e-9 of W allowed as above).
+TEST_CASE("CLI walls: the undamped impact damper with instantaneous impacts and no gravity runs", "[walls]") {
+  const auto r = run_cli("walls --rig damper --impact-model instantaneous --gravity 0 --primary-damping-ratio 0 "
+                         "--impacts 50 --transient 200 --json");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["floor_impacts"].get<int>() + j["ceiling_impacts"].get<int>() == 50);
+  const nlohmann::json& E = j["energy_J"];
+  CHECK(E["damping_dissipation"].get<double>() == 0.0);
+  CHECK(E["drive_work"].get<double>() - E["impact_loss"].get<double>() ==
+        Approx(E["final"].get<double>() - E["initial"].get<double>()).margin(1e-9 * E["drive_work"].get<double>()));
+}

@@ -99,7 +99,15 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
       throw InvalidParameter(box ? "amplitude" : "force-amplitude",
                              format_value(box ? o.drive.amplitude_m : o.primary.force_amplitude_N),
                              "> 0 with `gravity` 0 (nothing would move the body)");
-    set_up.impact_velocity_mps = speed_scale_mps;
+    // Soft impacts: the box's speed scale is the set-up's approach speed (its Hertz-scale check, a
+    // viscoelastic law's calibration). Newton's law has no contact scale: a nominal 1 m/s carries
+    // the set-up (the undamped damper at resonance is a classic, not a contact beyond Hertz).
+    const bool soft = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value))) ==
+                      ShakerImpactModel::soft;
+    set_up.impact_velocity_mps = soft ? speed_scale_mps : 1.0;
+    set_up.impact_velocity_origin =
+        soft ? fmt::format("the box's speed scale {} with `gravity` 0", box ? "A (2 pi f)" : "(the bare primary's steady amplitude) (2 pi f)")
+             : "a nominal 1 m/s (instantaneous impacts have no contact scale)";
   }
   r.setup = resolve_setup(set_up, paper);
   r.law = options.damping;
