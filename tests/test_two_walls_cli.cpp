@@ -102,3 +102,15 @@ TEST_CASE("CLI walls: the undamped impact damper with instantaneous impacts and 
   CHECK(E["drive_work"].get<double>() - E["impact_loss"].get<double>() ==
         Approx(E["final"].get<double>() - E["initial"].get<double>()).margin(1e-9 * E["drive_work"].get<double>()));
 }
+
+// Issue 45: `walls --rig damper --force-amplitude 1e12` reported e_effective 1 with "0 steps" and
+// nothing said: the box moves at thousands of m/s, so every impact was below the driver's
+// touch threshold (1e-6 of the rig's speed scale) and no contact ran. A touch is checked
+// against the Hertz scale as a contact is (the steel rod on nylon: 81.34 m/s), in the words of
+// `simulate`'s refusal.
+TEST_CASE("CLI walls: impacts far beyond the Hertz scale are flagged even where no contact runs", "[walls]") {
+  const auto r = run_cli("walls --rig damper --force-amplitude 1e12 --impacts 5 --transient 10");
+  INFO(r.err);
+  CHECK(r.err.find("soft impacts came at up to") != std::string::npos);
+  CHECK(r.err.find("beyond 81.34 m/s, where the undamped Hertz deformation reaches the ball radius") != std::string::npos);
+}

@@ -144,6 +144,7 @@ OscillatorRun run_oscillator(const DropTestSetup& setup, std::string_view law, c
   std::unique_ptr<SoftContact<HarmonicForcing>> contact;
   if (o.impact_model == ShakerImpactModel::soft) {  // the stop's contact (model/contact_environments.hpp)
     contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash oscillator");
+    spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
     const HarmonicForcing stop{k, body.damping_N_s_per_m(), o.force_amplitude_N, w, d};
     spec.soft = [&contact, stop](Wall, double t, double v0, double, double, double t_obs) {
       HarmonicForcing at = stop;

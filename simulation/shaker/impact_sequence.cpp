@@ -307,6 +307,8 @@ class SequenceRun {
       }
     } else if (impact.impact_speed_mps < stick_speed_) {
       impact.rebound_speed_mps = impact.impact_speed_mps;  // a touch too slow for a contact: carried below
+      if (!(impact.impact_speed_mps < s_.hertz_speed_limit_mps))  // a touch of a scale far beyond the contact's
+        ++beyond_hertz_, fastest_ = std::max(fastest_, impact.impact_speed_mps), speed_limit_ = s_.hertz_speed_limit_mps;
     } else {
       const double t_obs = 2.0 / s_.frequency_Hz;
       const SoftImpact c = s_.soft(hit, ti, impact.impact_speed_mps, X, V, t_obs);

@@ -117,6 +117,10 @@ struct ImpactSequenceSpec {
   int impacts = 100, transient = 1000;
   double restitution = 1;   ///< instantaneous impacts' e
   SoftImpactRun soft{};    ///< set: soft impacts
+  /// Soft impacts: the speed at which the undamped Hertz deformation reaches the ball radius
+  /// (HertzScale::speed_at_bound_mps of a valid set-up) [m/s]; impacts at or beyond it are counted
+  /// in the warning, touches too slow for a contact run (below stick_speed) included.
+  double hertz_speed_limit_mps = std::numeric_limits<double>::infinity();
   PatternTolerance pattern{};
   bool energy = false;      ///< keep the energy account (a box of mass M or at rest)
   enum class Sampled { none, box, body } sampled = Sampled::none;

@@ -58,6 +58,7 @@ ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const Sol
   std::unique_ptr<SoftContact<HarmonicForcing>> contact;
   if (options.impact_model == ShakerImpactModel::soft) {
     contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash shaker");
+    spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
     spec.soft = [&contact, &wall, g](Wall, double t, double v0, double, double, double t_obs) {
       return soft_impact(contact->run(harmonic_wall(wall, g, 1.0, t), v0, t_obs));
     };
