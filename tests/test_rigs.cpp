@@ -235,4 +235,9 @@ TEST_CASE("rigs whose time scales cannot be resolved are refused before they run
     CHECK(r.err.find("invalid " + option + " =") != std::string::npos);
     CHECK(r.out.empty());
   }
+  // `shaker --sweep ''` ran one shaker: a rig sweeps through a case file, and the option is none.
+  const auto sweep = run_cli("shaker --sweep ''");
+  CHECK(sweep.exit_code == 2);
+  CHECK(sweep.err.find("unknown option --sweep") != std::string::npos);
+  CHECK(sweep.out.empty());
 }
