@@ -192,8 +192,9 @@ void print_text(const FitRun& r) {
                                r.table.has_sd() ? ", weighted by e_sd" : "", r.table.synthetic ? ", SYNTHETIC" : "");
       break;
     case FitDataKind::bounce_times:
-      std::cout << fmt::format("hertzdash fit: {} ({} drops, {} impacts, {} used, {} flagged{})\n",
-                               r.recording.path.string(), r.recording.drops.size(), r.recording.impacts(),
+      std::cout << fmt::format("hertzdash fit: {} ({} drop{}, {} impacts, {} used, {} flagged{})\n",
+                               r.recording.path.string(), r.recording.drops.size(),
+                               r.recording.drops.size() == 1 ? "" : "s", r.recording.impacts(),
                                r.checked.times(), r.checked.flagged.size(), r.recording.synthetic ? ", SYNTHETIC" : "");
       break;
   }

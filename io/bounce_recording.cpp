@@ -17,7 +17,10 @@ namespace hertzdash {
 
 namespace {
 
-const std::string drop_column = "drop", time_column = "impact_time_s", height_column = "drop_height_m";
+const std::string drop_column = "drop", time_column = "impact_time_s", time_ms_column = "impact_time_ms",
+                  height_column = "drop_height_m";
+/// The label of a recording's one drop when it has no `drop` column.
+const std::string only_drop = "1";
 
 bool finite(double v) { return std::isfinite(v); }
 bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
@@ -53,7 +56,7 @@ std::size_t BounceRecording::impacts() const {
 }
 
 const std::vector<std::string>& bounce_recording_columns() {
-  static const std::vector<std::string> columns{drop_column, time_column, height_column};
+  static const std::vector<std::string> columns{drop_column, time_column, time_ms_column, height_column};
   return columns;
 }
 
@@ -75,15 +78,20 @@ BounceRecording read_bounce_recording(const std::filesystem::path& path) {
   for (const std::string& c : t.columns())
     if (std::find(known.begin(), known.end(), c) == known.end())
       throw DataError(file + ": unknown column '" + c + "' (allowed: " + allowed_columns() +
-                      "; units are in the names: the times in s, the height in m)");
-  t.require_columns({drop_column, time_column});
-  if (t.rows() < 1) throw DataError(file + ": no impacts (one row per detected impact)");
+                      "; units are in the names: the times in s or ms, the height in m)");
   const auto& columns = t.columns();
-  const bool has_height = std::find(columns.begin(), columns.end(), height_column) != columns.end();
+  auto has = [&](const std::string& c) { return std::find(columns.begin(), columns.end(), c) != columns.end(); };
+  if (has(time_column) && has(time_ms_column))
+    throw DataError(file + ": both " + time_column + " and " + time_ms_column + " (one time column, in s or in ms)");
+  const bool ms = has(time_ms_column);
+  const std::string& times = ms ? time_ms_column : time_column;
+  t.require_columns({times});
+  if (t.rows() < 1) throw DataError(file + ": no impacts (one row per detected impact)");
+  const bool has_height = has(height_column), has_drop = has(drop_column);
   std::map<std::string, std::size_t> index;  // label -> position in out.drops
   std::vector<std::string> height_where;     // where each drop's height was first given
   for (std::size_t r = 0; r < t.rows(); ++r) {
-    const std::string label = trimmed(t.text(r, drop_column));
+    const std::string label = has_drop ? trimmed(t.text(r, drop_column)) : only_drop;
     if (label.empty()) throw DataError(t.field_location(r, drop_column) + ": empty drop label");
     if (!plain_label(label))
       throw DataError(t.field_location(r, drop_column) +
@@ -96,7 +104,7 @@ BounceRecording read_bounce_recording(const std::filesystem::path& path) {
       height_where.emplace_back();
     }
     RecordedDrop& d = out.drops[it->second];
-    d.impact_time_s.push_back(t.number(r, time_column, time_range));
+    d.impact_time_s.push_back(ms ? t.number(r, times, time_range) / 1000.0 : t.number(r, times, time_range));
     d.where.push_back(t.row_location(r));
     if (!has_height) continue;
     const double h = t.number_or(r, height_column, 0.0, height_range);

@@ -1,7 +1,8 @@
 #pragma once
 // Bounce recordings: the times of the successive impacts of a dropped body (issue 33), as an
 // acoustic stopwatch or a phone app detects them; the format of data/measurements/README.md
-// ("Bounce recordings"): the columns drop and impact_time_s, optionally drop_height_m; header
+// ("Bounce recordings"): the columns impact_time_s (or impact_time_ms, read into seconds),
+// optionally drop (without it the file is one drop, labelled "1") and drop_height_m; header
 // lines "# source: ..." (required: provenance) and "# synthetic: true|false" (default false),
 // above or below the column names (io/csv_table.hpp); one row per detected impact. A file may
 // hold many drops (heights, trials), each named by its `drop` label, each on a clock of its own
@@ -38,11 +39,12 @@ struct BounceRecording {
 /// characters (written as it is, every CSV reader reads it back the same).
 bool plain_label(const std::string& label);
 
-/// The columns of the format: the two required, then the optional one.
+/// The columns of the format: drop, the two time columns (one of them required), the height.
 const std::vector<std::string>& bounce_recording_columns();
 
 /// Read and check one file; throws DataError naming the file (and FILE:LINE:COL of a bad field):
-/// a missing `source`, a `synthetic` other than true or false, an unknown or missing column, a
+/// a missing `source`, a `synthetic` other than true or false, an unknown or missing column (no
+/// time column, or both), a
 /// `drop` label that is empty or not plain_label (after trimming blanks), an impact time that is not a finite decimal number, a drop_height_m that
 /// is not a finite number > 0 or differs between two rows of one drop (an empty field is
 /// allowed: not given), no rows.

@@ -70,9 +70,8 @@ TEST_CASE("malformed bounce recordings are refused naming the file, the line and
   const std::string cols = "drop,impact_time_s\n";
   rejects(cols + "1,0.1\n1,0.5\n", "missing header line '# source: ...'");
   rejects("# source: x\n# synthetic: maybe\n" + cols + "1,0.1\n", "'synthetic: maybe' must be true or false");
-  rejects(header + "drop,impact_time_ms\n1,100\n", "unknown column 'impact_time_ms'");
+  rejects(header + "drop,impact_time_ms,impact_time_s\n1,100,0.1\n", "both impact_time_s and impact_time_ms");
   rejects(header + "drop,impact_time_s,height_m\n1,0.1,0.5\n", "unknown column 'height_m'");
-  rejects(header + "impact_time_s\n0.1\n", "missing column 'drop'");
   rejects(header + "drop\n1\n", "missing column 'impact_time_s'");
   rejects(header + cols, "no impacts");
   // A bad field: FILE:LINE:COL and the column (the header is lines 1-3).
@@ -90,4 +89,18 @@ TEST_CASE("malformed bounce recordings are refused naming the file, the line and
           "bad.csv:6:7: column 'drop_height_m': drop '1' has drop_height_m 0.3 here and 0.5 at " +
               (dir.path / "bad.csv").string() + ":4");
   rejects(header + cols + "1,0.1\n1,0.2,3\n", "bad.csv:5");  // a row with too many fields
+}
+
+// Issue 46: a single drop needs no `drop` column (it is drop "1"), and times may be given in ms
+// (`impact_time_ms`, as traces take t_ms), read into seconds: 412.5 ms is 0.4125 s.
+TEST_CASE("a bounce recording of one drop needs no drop column, and its times may be in ms", "[bounce_recording]") {
+  ScratchDir dir;
+  const auto path = dir.write("one.csv", header + "impact_time_ms\n0\n412.5\n740.1\n");
+  const BounceRecording r = read_bounce_recording(path);
+  REQUIRE(r.drops.size() == 1);
+  CHECK(r.drops[0].label == "1");
+  REQUIRE(r.drops[0].impact_time_s.size() == 3);
+  CHECK(r.drops[0].impact_time_s[0] == 0.0);
+  CHECK(r.drops[0].impact_time_s[1] == 0.4125);  // 412.5 / 1000, both exact in binary up to the quotient's rounding
+  CHECK(r.drops[0].impact_time_s[2] == Approx(0.7401).epsilon(1e-15));
 }
