@@ -246,7 +246,7 @@ TEST_CASE("rigs whose time scales cannot be resolved are refused before they run
 // Issue 46: `shaker --help` listed --impact-velocity, --air-density, --rod-model and rk4, each
 // refused when given, and ran past 60 lines. A rig's help lists what its runs read; the options
 // it never reads are still refused with their reason, not as unknown.
-TEST_CASE("a rig's help lists what it reads; what it never reads is refused with the reason", "[rigs]") {
+TEST_CASE("a rig's help lists what it reads, and what it never reads is refused with its reason", "[rigs]") {
   for (const hertzdash::Rig& rig : hertzdash::rigs()) {
     INFO(rig.name);
     const auto help = run_cli(std::string(rig.name) + " --help");
