@@ -21,7 +21,7 @@
 // Tolerance. The count of covering intervals over N independent draws is binomial(N, P): its
 // fraction has standard deviation sqrt(P (1 - P) / N), about 0.021 for N = 500; the pool of all
 // four cases (1000 draws at each P, each case with its own seeds, so independent) has mean
-// (P_sd + P_t) / 2 and standard deviation sqrt(500 (P_sd (1 - P_sd) + P_t (1 - P_t))) / 2000,
+// (P_sd + P_t) / 2 and standard deviation sqrt(1000 (P_sd (1 - P_sd) + P_t (1 - P_t))) / 2000,
 // about 0.010. Each case must lie within 3 of its standard deviations of its P, and so must the
 // pool (a correct fit fails one of these five checks with probability about 5 x 0.0027).
 // The with-e_sd cases draw each row's noise with its own e_sd (0.005 to 0.02, so the weights
@@ -132,7 +132,7 @@ TEST_CASE("restitution table fits: the 1-sigma intervals cover the truth as ofte
   for (int c : {h_sd, k_sd}) CHECK(std::abs(static_cast<double>(c) / draws - P_sd) <= 3 * sd(P_sd));
   for (int c : {h_est, k_est}) CHECK(std::abs(static_cast<double>(c) / draws - P_t) <= 3 * sd(P_t));
   const double pooled = static_cast<double>(h_sd + h_est + k_sd + k_est) / (4 * draws);
-  const double pooled_sd = std::sqrt(draws * (P_sd * (1 - P_sd) + P_t * (1 - P_t))) / (2 * draws);
+  const double pooled_sd = std::sqrt(2.0 * draws * (P_sd * (1 - P_sd) + P_t * (1 - P_t))) / (4.0 * draws);
   CAPTURE(pooled);
   CHECK(std::abs(pooled - (P_sd + P_t) / 2) <= 3 * pooled_sd);
 }

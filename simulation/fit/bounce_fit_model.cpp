@@ -62,8 +62,11 @@ const std::vector<ModelImpact>* BounceModel::impacts(const std::vector<double>& 
   std::vector<double> key = law;
   key.push_back(v0);
   key.push_back(count);
-  if (auto it = cache_.find(key); it != cache_.end()) return it->second ? &*it->second : nullptr;
-  if (cache_.size() > 4096) cache_.clear();
+  if (auto it = cache_.find(key); it != cache_.end()) {
+    if (!it->second) outside_domain_ = outside_[key];
+    return it->second ? &*it->second : nullptr;
+  }
+  if (cache_.size() > 4096) cache_.clear(), outside_.clear();
   std::optional<std::vector<ModelImpact>> value;
   try {
     RunOptions o = options_at(law);
@@ -85,6 +88,7 @@ const std::vector<ModelImpact>* BounceModel::impacts(const std::vector<double>& 
   } catch (const std::runtime_error& e) {  // a run that failed its checks: outside the model's domain
     outside_domain_ = e.what();
   }
+  if (!value) outside_[key] = outside_domain_;
   auto it = cache_.emplace(std::move(key), std::move(value)).first;
   return it->second ? &*it->second : nullptr;
 }

@@ -33,6 +33,7 @@ class BounceModel : public fit_detail::FitModel {
 
  private:
   std::map<std::vector<double>, std::optional<std::vector<ModelImpact>>> cache_;
+  std::map<std::vector<double>, std::string> outside_;  ///< why each cached run outside the domain was
   std::string outside_domain_;
 };
 

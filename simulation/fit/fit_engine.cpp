@@ -383,6 +383,7 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& request,
                              "values at which the model runs" + (why.empty() ? std::string() : ": " + why));
     }
   }
+  const double work_start = data.work();
   Solution s = solve(problem, problem.z, settings);
   // A fit with more parameters is never worse than one with fewer at its optimum: where the fit
   // is in doubt (not converged, or ill-conditioned), each law parameter in turn is held at its
@@ -393,13 +394,20 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& request,
                         (s.status != GSL_SUCCESS ||
                          !(scaled_condition_number(s.J.get(), problem, s.z) < identifiable_condition_limit));
   for (std::size_t j = 0; doubtful && j < pl; ++j) {
+    FitSettings rest = settings;  // one work budget for the fit and its nested fits
+    rest.max_work = settings.max_work - (data.work() - work_start);
+    if (!(rest.max_work > 0)) break;
     Problem nested = problem;
     std::erase(nested.free, j);
     std::vector<double> z0;
     for (std::size_t k : nested.free) z0.push_back(nested.z[k]);
-    const Solution fewer = solve(nested, z0, settings);
+    const Solution fewer = solve(nested, z0, rest);
     if (!(fewer.rss < s.rss * (1.0 - 1e-9))) continue;
-    Solution again = solve(problem, fewer.z, settings);
+    std::vector<double> from = nested.z;  // every variable: the nested fit's free ones, parameter j at its start
+    for (std::size_t k = 0; k < nested.free.size(); ++k) from[nested.free[k]] = fewer.z[k];
+    rest.max_work = settings.max_work - (data.work() - work_start);
+    if (!(rest.max_work > 0)) break;
+    Solution again = solve(problem, from, rest);
     if (again.rss < s.rss) {
       restarted = fmt::format("restarted from the fit with {} held at its start ({:.6g}), whose chi-square {:.6g} was below "
                               "the first fit's {:.6g}",

@@ -40,7 +40,7 @@ void require_bounded_rig_work(std::span<const RigTimeScale> scales, int impacts,
       "\"Work bounds\")",
       scales_text, n, work, rig_work_per_impact, max_rig_work);
   if (!blamed->given && impacts_given) throw InvalidParameter("impacts", format_value(impacts), why);
-  throw InvalidParameter(std::string(blamed->key), format_value(blamed->value), why);
+  throw InvalidParameter(std::string(blamed->key), format_value(blamed->value) + (blamed->given ? "" : " (default)"), why);
 }
 
 }  // namespace hertzdash

@@ -731,6 +731,13 @@ def test_a_number_the_program_writes_as_null_is_none(tmp_path):
         r = hertzdash.simulate(ball_yield_stress=math.inf)
     assert r == cli_json("simulate", "--ball-yield-stress=inf")
     assert all(v is None or math.isfinite(v) for v in numbers_in(r))
+    # A rig keeps a number it has none of as NaN, which the program writes as null (docs/shaker.md:
+    # e_effective "null: none"): with gamma 0 the body comes to rest and no impact is kept.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rest = hertzdash.shaker(gamma=0, impacts=5)
+    assert rest["e_effective"] is None
+    assert all(v is None or math.isfinite(v) for v in numbers_in(rest))
 
 
 def numbers_in(value):
