@@ -10,7 +10,6 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -84,10 +83,9 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   // contact at the spec's speed scale (F + k d)/(m f).
   const double m = r.setup.mass_kg;
   std::vector<RigTimeScale> scales{
-      {.what = "the drive period 1/f", .seconds = 1 / o.frequency_Hz, .key = "frequency", .value = o.frequency_Hz,
-       .given = in.number("frequency").has_value()},
-      {.what = "the body's natural period 2 pi sqrt(m/k)", .seconds = 2 * std::numbers::pi * std::sqrt(m / o.stiffness_N_per_m),
-       .key = "stiffness", .value = o.stiffness_N_per_m, .given = in.number("stiffness").has_value()}};
+      drive_period_scale(o.frequency_Hz, in.number("frequency").has_value()),
+      natural_period_scale("the body's", m, o.stiffness_N_per_m, "stiffness", o.stiffness_N_per_m,
+                           in.number("stiffness").has_value())};
   if (o.impact_model == ShakerImpactModel::soft)
     scales.push_back(hertz_contact_time_scale(
         r.setup, (o.force_amplitude_N + o.stiffness_N_per_m * o.stop_distance_m) / (m * o.frequency_Hz),

@@ -8,8 +8,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace hertzdash {
+
+RigTimeScale drive_period_scale(double frequency_Hz, bool given) {
+  return {.what = "the drive period 1/f", .seconds = 1 / frequency_Hz, .key = "frequency", .value = frequency_Hz,
+          .given = given};
+}
+
+RigTimeScale natural_period_scale(std::string_view what, double mass_kg, double stiffness_N_per_m, std::string_view key,
+                                  double value, bool given) {
+  return {.what = fmt::format("{} natural period 2 pi sqrt(mass/stiffness)", what),
+          .seconds = 2 * std::numbers::pi * std::sqrt(mass_kg / stiffness_N_per_m), .key = key, .value = value,
+          .given = given};
+}
 
 RigTimeScale hertz_contact_time_scale(const DropTestSetup& setup, double speed_mps, bool mass_given) {
   return {.what = fmt::format("the Hertz contact time at {:.3g} m/s", speed_mps),

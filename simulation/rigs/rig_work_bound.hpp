@@ -30,6 +30,13 @@ struct RigTimeScale {
   bool resolved = true;      ///< a scale the run resolves (S above); false: a duration only (a contact, a flight)
 };
 
+/// The drive period 1/f, set by `frequency` (resolved).
+RigTimeScale drive_period_scale(double frequency_Hz, bool given);
+/// A natural period 2 pi sqrt(mass / stiffness) of `what` ("the primary's"), set by the input
+/// `key` of value `value` (resolved).
+RigTimeScale natural_period_scale(std::string_view what, double mass_kg, double stiffness_N_per_m, std::string_view key,
+                                  double value, bool given);
+
 /// The soft contact's time scale: the undamped Hertz contact time (model/hertz.hpp) of the set-up's
 /// body at `speed_mps`, set by `mass` (a duration: not resolved).
 RigTimeScale hertz_contact_time_scale(const DropTestSetup& setup, double speed_mps, bool mass_given);

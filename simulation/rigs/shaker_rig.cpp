@@ -79,8 +79,7 @@ ShakerCommandRun resolve_shaker_command(const RunOptions& options, const PaperPa
   const double T = o.wall.period_s(), g = r.setup.gravity_mps2, take_off_mps = o.wall.amplitude_m * o.wall.omega_rad_per_s();
   const bool amplitude = in.number("amplitude").has_value();
   std::vector<RigTimeScale> scales{
-      {.what = "the drive period 1/f", .seconds = T, .key = "frequency", .value = o.wall.frequency_Hz,
-       .given = in.number("frequency").has_value()},
+      drive_period_scale(o.wall.frequency_Hz, in.number("frequency").has_value()),
       {.what = "a flight after a take-off at the wall's peak speed, 2 A (2 pi f)/g", .seconds = 2 * take_off_mps / g,
        .key = amplitude ? "amplitude" : "gamma", .value = amplitude ? o.wall.amplitude_m : shaker_gamma(o.wall, g),
        .given = amplitude || in.number("gamma"), .resolved = false}};

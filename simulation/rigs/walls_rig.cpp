@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 namespace hertzdash {
@@ -74,6 +73,7 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   const bool box = o.rig == TwoWallsRig::box;
   const std::string_view rig = to_string(o.rig);
   o.gap_m = in.number_or_default(p::gap);
+  o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value)));
   o.drive.frequency_Hz = in.number_or_default(s::frequency);
   const double w = o.drive.omega_rad_per_s();
   // The set-up's representative approach speed (its Hertz-scale check; a viscoelastic law's
@@ -102,8 +102,7 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
     // Soft impacts: the box's speed scale is the set-up's approach speed (its Hertz-scale check, a
     // viscoelastic law's calibration). Newton's law has no contact scale: a nominal 1 m/s carries
     // the set-up (the undamped damper at resonance is a classic, not a contact beyond Hertz).
-    const bool soft = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value))) ==
-                      ShakerImpactModel::soft;
+    const bool soft = o.impact_model == ShakerImpactModel::soft;
     set_up.impact_velocity_mps = soft ? speed_scale_mps : 1.0;
     set_up.impact_velocity_origin =
         soft ? fmt::format("the box's speed scale {} with `gravity` 0", box ? "A (2 pi f)" : "(the bare primary's steady amplitude) (2 pi f)")
@@ -116,24 +115,21 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
     o.drive.amplitude_m = amplitude_from_gamma(in.number_or_default(p::gamma), o.drive.frequency_Hz, r.setup.gravity_mps2);
   o.impacts = static_cast<int>(in.number_or_default(s::impacts));
   o.transient = static_cast<int>(in.number_or_default(s::transient));
-  o.impact_model = parse_shaker_impact_model(in.text("impact-model").value_or(std::string(s::impact_model.default_value)));
   // The work bound (rig_work_bound.hpp): the drive period, the fall across the gap (at the box's
   // speed scale with g = 0), the primary's natural period, the soft contact at the speed scale.
   const double g = r.setup.gravity_mps2;
   if (box) speed_scale_mps = o.drive.amplitude_m * w;
   std::vector<RigTimeScale> scales{
-      {.what = "the drive period 1/f", .seconds = 1 / o.drive.frequency_Hz, .key = "frequency",
-       .value = o.drive.frequency_Hz, .given = in.number("frequency").has_value()},
+      drive_period_scale(o.drive.frequency_Hz, in.number("frequency").has_value()),
       {.what = g > 0 ? "the fall across the gap sqrt(2 gap / g)" : "the crossing of the gap at the box's speed",
        .seconds = g > 0 ? std::sqrt(2 * o.gap_m / g) : o.gap_m / speed_scale_mps, .key = "gap", .value = o.gap_m,
        .given = in.number("gap").has_value()}};
   if (!box) {
     const bool mass = in.number("primary-mass") && !in.number("primary-stiffness");
-    scales.push_back({.what = "the primary's natural period 2 pi sqrt(M/k)",
-                      .seconds = 2 * std::numbers::pi * std::sqrt(o.primary.mass_kg / o.primary.stiffness_N_per_m),
-                      .key = mass ? "primary-mass" : "primary-stiffness",
-                      .value = mass ? o.primary.mass_kg : o.primary.stiffness_N_per_m,
-                      .given = in.number("primary-mass") || in.number("primary-stiffness")});
+    scales.push_back(natural_period_scale("the primary's", o.primary.mass_kg, o.primary.stiffness_N_per_m,
+                                          mass ? "primary-mass" : "primary-stiffness",
+                                          mass ? o.primary.mass_kg : o.primary.stiffness_N_per_m,
+                                          in.number("primary-mass") || in.number("primary-stiffness")));
   }
   if (o.impact_model == ShakerImpactModel::soft)
     scales.push_back(hertz_contact_time_scale(r.setup, std::max(speed_scale_mps, g / o.drive.frequency_Hz),

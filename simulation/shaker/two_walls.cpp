@@ -65,9 +65,9 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
   std::unique_ptr<SoftContact<SprungPrimary>> damper_contact;
   IntegratorKind integrator_used = IntegratorKind::gbs8_regularized;
   auto sigma = [](Wall wall) { return wall == Wall::floor ? 1.0 : -1.0; };
+  if (options.impact_model == ShakerImpactModel::soft) spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
   if (options.impact_model == ShakerImpactModel::soft && damper) {
     damper_contact = make_soft_contact<SprungPrimary>(law, setup, solver, "hertzdash walls");
-    spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
     integrator_used = damper_contact->integrator_used();
     spec.soft = [&](Wall wall, double t, double v0, double X, double V, double t_obs) {
       const auto c = damper_contact->run(SprungPrimary{free, g, sigma(wall), t, X, V}, v0, t_obs);
@@ -77,7 +77,6 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
     };
   } else if (options.impact_model == ShakerImpactModel::soft) {
     contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash walls");
-    spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
     integrator_used = contact->integrator_used();
     spec.soft = [&](Wall wall, double t, double v0, double, double, double t_obs) {
       return soft_impact(contact->run(harmonic_wall(options.drive, g, sigma(wall), t), v0, t_obs));
