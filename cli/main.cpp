@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 2 invalid input (the message names the parameter and
 // its valid range), 1 any other failure. No output file is left half-written.
 #include "cli/command.hpp"
+#include "cli/help_formatter.hpp"
 #include "cli/number_options.hpp"
 #include "cli/option_suggestion.hpp"
 #include "hertzdash/io/csv_table.hpp"
@@ -9,6 +10,7 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("hertzdash ") + hertzdash::version() + " (git " +
                                          hertzdash::git_revision() + ")");
   app.require_subcommand(1);
+  app.formatter(std::make_shared<hertzdash::cli::ShortHelpFormatter>());  // before the subcommands: they copy it
   std::vector<hertzdash::cli::Command> commands{
       hertzdash::cli::add_simulate_command(app),
       hertzdash::cli::add_models_command(app),

@@ -75,6 +75,7 @@ Command add_simulate_command(CLI::App& app) {
   add_number_option(*sub, o("noise").flag, opt->chain.noise_fraction, o("noise").help);
   add_integer_option(*sub, o("seed").flag, opt->chain.seed, o("seed").help);
   sub->add_option(o("channels").flag, opt->channels, o("channels").help);
+  for (const char* flag : measurement_options) sub->get_option(flag)->group("Virtual measurement (--trace-format measured)");
   sub->add_flag(o("json").flag, opt->json, o("json").help);
   add_mkdir_flag(*sub, opt->mkdir);
 
