@@ -8,14 +8,18 @@
 // model and the residuals for a figure (validation/identification/identification_fit.gp draws
 // two). The options are declared in simulation/reports/fit_request.hpp.
 #include "cli/command.hpp"
+#include "cli/figure_file.hpp"
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/setup_options.hpp"
+#include "hertzdash/simulation/reports/fit_curves.hpp"
 #include "hertzdash/simulation/reports/fit_request.hpp"
+#include "hertzdash/simulation/reports/fit_verdict.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -43,11 +47,10 @@ std::vector<std::string> given_options(const CLI::App& sub) {
   return given;
 }
 
-// AIC differences below 2 do not prefer one model over another (Burnham and Anderson).
-constexpr double aic_tie = 2.0;
-// cv_rms values that agree to this relative difference share a cv_rank (the model's accuracy:
-// laws that make the same e agree to about it, not to the last bit).
-constexpr double cv_tie = 1e-9;
+// cv_rms values within this relative difference of the first of a group share its cv_rank: laws
+// that make the same e predict to within about 1e-4 of each other, and a prediction error is
+// itself uncertain by far more.
+constexpr double cv_tie = 1e-3;
 
 // The profile-likelihood intervals, where computed (--profile-intervals).
 void print_profile_intervals(const std::vector<FittedParameter>& parameters) {
@@ -90,15 +93,15 @@ void print_fit(const FitRun& r, const FitResult& f) {
       std::cout << fmt::format("  {:<16} {:>7} {:>12.6g} {:>11.3g} {:>14.9g} {:>11.3g}\n", d.label, d.rows,
                                d.nuisances[0].estimate, d.nuisances[0].standard_error, d.nuisances[1].estimate,
                                d.nuisances[1].standard_error);
-    std::cout << fmt::format("  model e over the data's impacts: {:.6f} to {:.6f}\n", f.e_min, f.e_max);
-    std::cout << fmt::format("  timing sigma {:.4g} s (estimated), {} times, {} parameters, AIC {:.6g}, BIC {:.6g}, {}\n",
-                             f.sigma, f.n, f.p, f.aic, f.bic,
+    std::cout << (f.sigma_estimated ? fmt::format("  timing sigma {:.4g} s (estimated)", f.sigma)
+                                    : fmt::format("  timing sd {:.4g} s (stated), reduced chi-square {:.4g}",
+                                                  r.checked.timing_sd_s, f.reduced_chi_square))
+              << fmt::format(", {} times, {} parameters, AIC {:.6g}, BIC {:.6g}, {}\n", f.n, f.p, f.aic, f.bic,
                              f.failed ? "fit failed" : f.identifiable ? "identifiable" : "NOT identifiable");
   } else {
     std::cout << fmt::format("  {:>12} {:>10} {:>10} {:>11}\n", "speed_mps", "e", "model", "residual");
     for (const FitPoint& p : f.points)
       std::cout << fmt::format("  {:>12.6g} {:>10.6f} {:>10.6f} {:>11.3e}\n", p.x, p.measured, p.model, p.residual);
-    std::cout << fmt::format("  model e over the table's speeds: {:.6f} to {:.6f}\n", f.e_min, f.e_max);
     std::cout << (f.sigma_estimated ? fmt::format("  sigma {:.4g} (estimated: no e_sd), {} rows", f.sigma, f.n)
                                     : fmt::format("  reduced chi-square {:.4g} ({} rows)", f.reduced_chi_square, f.n))
               << fmt::format(", AIC {:.6g}, BIC {:.6g}, {}\n", f.aic, f.bic,
@@ -143,24 +146,25 @@ void print_law_ranking(const FitRun& r) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return r.fits[a].cross_validation->rms_prediction_error < r.fits[b].cross_validation->rms_prediction_error;
     });
-    // Laws whose cv_rms agree to a relative 1e-9 share a rank (1, 1, 3).
+    // Laws whose cv_rms is within cv_tie of the first of a group share its rank (1, 1, 3).
     const auto rms = [&](std::size_t k) { return r.fits[order[k]].cross_validation->rms_prediction_error; };
-    for (std::size_t k = 0; k < order.size(); ++k)
-      cv_rank[order[k]] = k > 0 && std::abs(rms(k) - rms(k - 1)) <= cv_tie * std::max(std::abs(rms(k)), std::abs(rms(k - 1)))
-                              ? cv_rank[order[k - 1]]
-                              : k + 1;
+    for (std::size_t k = 0, first = 0; k < order.size(); ++k) {
+      if (k == 0 || !(rms(k) - rms(first) <= cv_tie * rms(first))) first = k;
+      cv_rank[order[k]] = first + 1;
+    }
   }
   std::string ties;
+  const std::vector<std::size_t> rank = aic_ranks(r.fits);
   for (std::size_t i = 0; i < r.fits.size(); ++i) {
     const FitResult& f = r.fits[i];
     const double gap = f.aic - r.fits.front().aic;
-    if (i > 0 && gap < aic_tie) ties += (ties.empty() ? "" : ", ") + f.law;
+    if (i > 0 && gap < aic_preference) ties += (ties.empty() ? "" : ", ") + f.law;
     if (trace)
-      std::cout << fmt::format("  {:>3} {:<22} {:>12.6g} {:>12.4g} {:>12.6g} {:>10.4g} {:>10.3g}", i + 1, f.law, f.aic,
+      std::cout << fmt::format("  {:>3} {:<22} {:>12.6g} {:>12.4g} {:>12.6g} {:>10.4g} {:>10.3g}", rank[i], f.law, f.aic,
                                gap, f.bic, f.reduced_chi_square, f.condition_number);
     else
-      std::cout << fmt::format("  {:>3} {:<22} {:>12.6g} {:>10.4g} {:>12.6g} {:>10.6f}-{:<10.6f}", i + 1, f.law, f.aic,
-                               gap, f.bic, f.e_min, f.e_max);
+      std::cout << fmt::format("  {:>3} {:<22} {:>12.6g} {:>10.4g} {:>12.6g} {:>10.6f}-{:<10.6f}", rank[i], f.law, f.aic,
+                               gap, f.bic, f.e_effective.min, f.e_effective.max);
     if (cv)
       std::cout << (cv_rank[i] ? fmt::format(" {:>12.4g} {:>8}", f.cross_validation->rms_prediction_error, cv_rank[i])
                                : fmt::format(" {:>12} {:>8}", "-", "-"));
@@ -176,34 +180,84 @@ void print_law_ranking(const FitRun& r) {
   }
   if (r.fits.front().failed) std::cout << "  best: none, every fit failed\n";
   else std::cout << fmt::format("  best: '{}'{}\n", r.fits.front().law,
-                           ties.empty() ? "" : fmt::format(" (tied within dAIC < {:g}: {})", aic_tie, ties));
+                           ties.empty() ? "" : fmt::format(" (tied within dAIC < {:g}: {})", aic_preference, ties));
   if (!trace) std::cout << fmt::format("  damping law '{}'\n", r.fits.front().law);
   print_fit(r, r.fits.front());
 }
 
-void print_text(const FitRun& r) {
+// The physical e first (issue 46): the fitted model's mean e over the data's impacts and its error,
+// with its range over their speeds where it has one.
+void print_effective_restitution(const FitRun& r, const FitResult& f) {
+  const EffectiveRestitution& e = f.e_effective;
+  if (!std::isfinite(e.value)) {
+    std::cout << "  e_effective: none (the fitted model's impacts do not separate, or it has none)\n";
+    return;
+  }
+  const std::string over = r.kind == FitDataKind::trace
+                               ? std::string("the fitted model's impact")
+                               : fmt::format("the fitted model's mean over the data's {} impact{}", e.impacts.size(), e.impacts.size() == 1 ? "" : "s");
+  std::cout << fmt::format("  e_effective {:.4f} +- {:.2g} (1 sigma), {}", e.value, e.standard_error, over)
+            << (constant_e(e) ? std::string()
+                                                : fmt::format(": {:.4f} at {:.3g} m/s to {:.4f} at {:.3g} m/s", e.min,
+                                                              e.speed_at_min_mps, e.max, e.speed_at_max_mps))
+            << "\n";
+}
+
+void print_text(const FitRun& r, const PaperParameters& paper) {
+  const std::string body = default_body_notice(r, paper);
+  const std::string on = body.empty() ? "" : "; " + spell_key_references(body, KeySpelling::command_line);
   switch (r.kind) {
     case FitDataKind::trace:
       std::cout << fmt::format("hertzdash fit: {} ({} samples{}; rod {}, h = {:g} m)\n", r.trace.path.string(),
                                r.trace.t_s.size(), r.trace.synthetic ? ", SYNTHETIC" : "", r.trace.rod, r.trace.height_m);
       break;
     case FitDataKind::restitution_table:
-      std::cout << fmt::format("hertzdash fit: {} ({} rows{}{})\n", r.table.path.string(), r.table.rows(),
-                               r.table.has_sd() ? ", weighted by e_sd" : "", r.table.synthetic ? ", SYNTHETIC" : "");
+      std::cout << fmt::format("hertzdash fit: {} ({} rows{}{}){}\n", r.table.path.string(), r.table.rows(),
+                               r.table.has_sd() ? ", weighted by e_sd" : "", r.table.synthetic ? ", SYNTHETIC" : "", on);
       break;
     case FitDataKind::bounce_times:
-      std::cout << fmt::format("hertzdash fit: {} ({} drop{}, {} impacts, {} used, {} flagged{})\n",
+      std::cout << fmt::format("hertzdash fit: {} ({} drop{}, {} impacts, {} used, {} flagged{}){}\n",
                                r.recording.path.string(), r.recording.drops.size(),
                                r.recording.drops.size() == 1 ? "" : "s", r.recording.impacts(),
-                               r.checked.times(), r.checked.flagged.size(), r.recording.synthetic ? ", SYNTHETIC" : "");
+                               r.checked.times(), r.checked.flagged.size(), r.recording.synthetic ? ", SYNTHETIC" : "", on);
       break;
   }
+  if (!r.fits.empty()) print_effective_restitution(r, r.fits.front());
+  std::cout << "  verdict: " << spell_key_references(fit_verdict(r, paper), KeySpelling::command_line) << "\n";
   if (r.fits.size() == 1 && r.failures.empty()) {
     std::cout << fmt::format("  damping law '{}'\n", r.fits[0].law);
     print_fit(r, r.fits[0]);
     return;
   }
   print_law_ranking(r);
+}
+
+// --curves and --figure of the best fit (cli/figure_file.hpp; simulation/reports/fit_curves.hpp).
+void write_fit_outputs(const FitRun& r, const PaperParameters& paper, const std::string& curves,
+                       const std::string& figure, bool mkdir) {
+  const FitResult& f = r.fits.front();
+  const bool trace = r.kind == FitDataKind::trace;
+  const CsvWriter points = trace ? fit_curves_csv(f, r.trace) : restitution_curves_csv(r, f, paper);
+  if (!curves.empty()) {
+    create_output_directories(curves, mkdir);
+    points.save(curves);
+  }
+  if (figure.empty()) return;
+  create_output_directories(figure, mkdir);
+  const std::filesystem::path data = trace ? r.trace.path : r.kind == FitDataKind::bounce_times ? r.recording.path : r.table.path;
+  if (trace) {
+    std::string channels;
+    for (const FitGroup& g : f.groups) channels += (channels.empty() ? "" : " ") + g.label;
+    draw_figure("fit_figure.gp", "trace", {&points}, {fmt::format("fitted model, '{}'", f.law), channels}, figure);
+    return;
+  }
+  const CsvWriter law = law_curve_csv(r, f);
+  const std::string title = fmt::format("{}{}: '{}', e_effective {:.4f} ± {:.2g}", data.filename().string(),
+                                        r.kind == FitDataKind::bounce_times ? (r.recording.synthetic ? " (SYNTHETIC)" : "")
+                                                                            : (r.table.synthetic ? " (SYNTHETIC)" : ""),
+                                        f.law, f.e_effective.value, f.e_effective.standard_error);
+  draw_figure("fit_figure.gp", "e", {&points, &law},
+              {title, r.kind == FitDataKind::bounce_times ? "e per bounce (drag-corrected)" : "the table's e"}, figure);
 }
 
 }  // namespace
@@ -218,7 +272,7 @@ Command add_fit_command(CLI::App& app) {
     const std::string key(o.decl.key), help(o.decl.help);
     if (key == "fit" && !setup_added) add_run_options(*sub, opt->run, RunOption::Group::setup), setup_added = true;
     if (o.decl.type == ParameterType::flag) sub->add_flag("--" + key, opt->flags[key], help);
-    else if (key == "curves") add_output_file_option(*sub, "--curves", opt->text[key], help);
+    else if (key == "curves" || key == "figure") add_output_file_option(*sub, "--" + key, opt->text[key], help);
     else sub->add_option("--" + key, opt->text[key], help + (o.decl.default_value.empty() ? "" : " (default: " + std::string(o.decl.default_value) + ")"));
   }
 
@@ -237,22 +291,21 @@ Command add_fit_command(CLI::App& app) {
             FitRequest request = fit_request(given, opt->run);
             request.given = given_options(*sub);
             request.settings.progress = [](const std::string& line) { std::cerr << "hertzdash: fit: " << line << "\n"; };
-            const std::string& curves = opt->text["curves"];
-            if (request.kind == FitDataKind::trace) {
-              prepare_output_file("--curves", curves, opt->flags["mkdir"]);
-              refuse_shared_files({{"--trace", request.path}}, {{"--curves", curves}});
-            }
+            const std::string &curves = opt->text["curves"], &figure = opt->text["figure"];
+            const bool mkdir = opt->flags["mkdir"];
+            if (!figure.empty()) figure_format("figure", figure);
+            prepare_output_file("--curves", curves, mkdir);
+            prepare_output_file("--figure", figure, mkdir);
+            refuse_shared_files({{"--" + std::string(fit_kind_option(request.kind)), request.path}},
+                                {{"--curves", curves}, {"--figure", figure}});
             const PaperParameters paper = load_paper_parameters();
             const FitRun r = run_fit(request, paper);
             if (r.fits.empty() && r.kind == FitDataKind::trace)
               throw std::runtime_error("no damping law could be fitted to the trace");
             report_diagnostics(fit_diagnostics(r, paper));
-            if (!curves.empty()) {
-              create_output_directories(curves, opt->flags["mkdir"]);
-              write_fit_curves(r.fits.front(), r.trace, curves);
-            }
+            if (!r.fits.empty()) write_fit_outputs(r, paper, curves, figure, mkdir);
             if (opt->flags["json"]) std::cout << to_json(r, paper).dump(2) << "\n";
-            else print_text(r);
+            else print_text(r, paper);
             if (r.fits.empty()) return exit_fit_failed;
             return r.fits.front().failed ? exit_fit_failed : 0;
           }};

@@ -105,17 +105,18 @@ std::string ShortHelpFormatter::make_help(const CLI::App* app, std::string name,
     for (char c : g.options) g.lines += c == '\n';
     groups.push_back(std::move(g));
   }
-  const std::string head = make_description(app) + make_usage(app, name);
-  const std::string footer = "Each option in full (unit, valid values, default and its source): hertzdash parameters\n";
+  std::string usage = make_usage(app, name);
+  usage.insert(usage.find('\n'), "    (each option in full: hertzdash parameters)");
+  const std::string head = make_description(app) + usage;
   std::size_t lines = 0;
-  for (char c : head + footer) lines += c == '\n';
+  for (char c : head) lines += c == '\n';
   for (const Group& g : groups) lines += 2 + g.lines;  // a blank line and the heading
   for (auto g = groups.rbegin(); g != groups.rend() && lines > max_help_lines; ++g)
     if (g->switched_on) g->collapsed = true, lines -= g->lines - 1;
   std::string out = head;
   for (const Group& g : groups)
     out += "\n" + g.heading + (g.collapsed ? ": " + g.names + "\n" : ":\n" + g.options);
-  return out + "\n" + footer;
+  return out;
 }
 
 }  // namespace hertzdash::cli

@@ -2,8 +2,8 @@
 // A command's --help in one screen (issue 46): each option on one line with a short description
 // and its default, cut from its declared help (simulation/options: the sentence up to its first
 // "; " or ": ", the valid values of a text option, the default without its source); groups
-// separated by one blank line; a footer pointing to `hertzdash parameters`, which prints every
-// option's declaration in full (docs/parameters.md). A help longer than max_help_lines lists a
+// separated by one blank line; the usage line points to `hertzdash parameters`, which prints
+// every option's declaration in full (docs/parameters.md). A help longer than max_help_lines lists a
 // group that another option switches on (its heading names it: "Elastic rod and load cell
 // (--rod-model elastic)") by its options' names on one line, the last such group first.
 #include <CLI/CLI.hpp>

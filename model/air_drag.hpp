@@ -57,6 +57,10 @@ inline constexpr ParameterDecl all[] = {air_density, drag_coefficient};
 /// Throws InvalidParameter naming `air-density` or `drag-coefficient`.
 void validate(const AirDrag& d);
 
+/// Air at 20 C and 1 atm [kg/m^3]: what a verdict takes for the air a recording flew through
+/// when no --air-density is given (simulation/reports/fit_verdict.hpp).
+inline constexpr double standard_air_density_kg_per_m3 = 1.204;
+
 /// v_t = sqrt(2 m g / (rho C_d pi R^2)) [m/s]; +inf without air or without gravity's pull
 /// being resisted (rho = 0). mass_kg, radius_m, gravity_mps2 > 0.
 double terminal_speed_mps(const AirDrag& d, double mass_kg, double radius_m, double gravity_mps2);

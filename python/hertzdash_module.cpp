@@ -272,14 +272,14 @@ constexpr FitFunction fit_functions[] = {
      "Fit a damping law's own parameters to a restitution table (e against the impact speed, "
      "data/measurements/README.md), exactly `hertzdash fit --restitution-table PATH --json` (docs/fit.md): table, "
      "fits (parameters with estimate, standard_error, profile_interval; correlation; sigma; reduced_chi_square; "
-     "aic, bic; e_effective_range; points; cross_validation), failures. Warnings (a synthetic table, sigma "
+     "aic, bic; e_effective; points; cross_validation), failures. Warnings (a synthetic table, sigma "
      "estimated, a failed fit) are UserWarnings."},
     {"fit_bounce_times", FitDataKind::bounce_times, "path",
      "Fit a damping law's own parameters, and each drop's first impact speed and clock offset, to a bounce "
      "recording (the detected impact times of one or more drops, data/measurements/README.md), exactly `hertzdash "
      "fit --bounce-times PATH --json` (docs/fit.md): recording, flagged (the doubled, missed, out-of-order and "
      "non-shrinking detections left out, by drop and index), fits (parameters, drops, sigma_s, aic, bic, "
-     "e_effective_range, points, cross_validation, profile_interval), failures. air_density and drag_coefficient "
+     "e_effective, points, cross_validation, profile_interval), failures. air_density and drag_coefficient "
      "add air drag to the model's flights. Warnings (each flag, a synthetic recording) are UserWarnings."},
 };
 

@@ -56,9 +56,9 @@ TEST_CASE("bounce recording: the law that made a noise-free recording gives back
   // The paper's law: e_eff about 0.83 at input e = 0.80 (docs/bounce.md); with gravity on during
   // contact the velocity ratio falls a little as the impacts slow (`hertzdash bounce`: 0.829 at
   // 0.6 m/s, 0.816 at 0.1 m/s), so the range is narrow but not a point.
-  CHECK(f.e_min > 0.80);
-  CHECK(f.e_max < 0.84);
-  CHECK(f.e_max > f.e_min);
+  CHECK(f.e_effective.min > 0.80);
+  CHECK(f.e_effective.max < 0.84);
+  CHECK(f.e_effective.max > f.e_effective.min);
 }
 
 // Jitter sigma = 1e-4 s: the fit's timing sigma estimates it (n - p = 24 - 7 = 17 degrees of
@@ -130,7 +130,7 @@ TEST_CASE("bounce recording: every law compared and cross-validated, the true on
   const FitResult k = fit(r, "kuwabara-kono", true), h = fit(r, "hongo", true);
   CHECK(k.parameter("viscous-time-constant").estimate == Approx(7.7e-5).epsilon(0.05));
   CHECK(k.aic < h.aic - 10);
-  CHECK(k.e_max - k.e_min > 0.02);  // its e varies over the data's speeds
+  CHECK(k.e_effective.max - k.e_effective.min > 0.02);  // its e varies over the data's speeds
   REQUIRE(k.cross_validation);
   REQUIRE(h.cross_validation);
   CHECK(k.cross_validation->failure.empty());
@@ -172,10 +172,10 @@ TEST_CASE("fit --bounce-times: JSON keys, flagged glitches on stderr, refusals w
     CHECK(j["fits"][i - 1]["aic"].get<double>() <= j["fits"][i]["aic"].get<double>());
   const auto& f = j["fits"][0];
   for (const char* key : {"law", "parameters", "drops", "reduced_chi_square", "aic", "bic", "warnings",
-                          "e_effective_range", "points", "sigma_s"})
+                          "e_effective", "points", "sigma_s"})
     CHECK(f.contains(key));
   for (const char* key : {"name", "estimate", "standard_error"}) CHECK(f["parameters"][0].contains(key));
-  CHECK(f["e_effective_range"].size() == 2);
+  CHECK(f["e_effective"]["range"].size() == 2);
   REQUIRE(f["drops"].size() == 3);
   for (const char* key : {"drop", "first_impact_speed_mps", "clock_offset_s"}) CHECK(f["drops"][0].contains(key));
   CHECK(f["drops"][0]["first_impact_speed_mps"].contains("standard_error"));

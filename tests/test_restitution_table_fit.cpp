@@ -103,14 +103,14 @@ TEST_CASE("restitution table: a speed-independent table is the paper's law's, a 
   // depend on the speed: the fitted model's range over the table's speeds is the model's accuracy.
   const RestitutionTable flat = synthetic_table(hongo_truth(), six_speeds);
   const FitResult h = fit(flat, "hongo");
-  CHECK(h.e_max - h.e_min < 1e-8);
+  CHECK(h.e_effective.max - h.e_effective.min < 1e-8);
   // Kuwabara-Kono's e rises towards 1 as the speed falls: its own law fits its table far better.
   const RestitutionTable falling = synthetic_table(kuwabara_kono_truth(), six_speeds);
   CHECK(falling.e.front() - falling.e.back() > 0.05);
   const FitResult kk = fit(falling, "kuwabara-kono"), hk = fit(falling, "hongo");
   CHECK(kk.aic < hk.aic - 10);
-  CHECK(hk.e_max - hk.e_min < 1e-8);  // hongo cannot follow it: flat at the table's mean
-  CHECK(kk.e_max - kk.e_min > 0.05);
+  CHECK(hk.e_effective.max - hk.e_effective.min < 1e-8);  // hongo cannot follow it: flat at the table's mean
+  CHECK(kk.e_effective.max - kk.e_effective.min > 0.05);
 }
 
 // Known e_sd: chi^2 of the true law's fit follows the chi-square distribution with n - p
@@ -177,9 +177,9 @@ TEST_CASE("fit --restitution-table: JSON keys, the synthetic label, refusals wit
   CHECK(f["law"] == "kuwabara-kono");
   for (const char* key : {"name", "estimate", "standard_error", "lower", "upper"}) CHECK(f["parameters"][0].contains(key));
   CHECK(f["parameters"][0]["name"] == "viscous-time-constant");
-  for (const char* key : {"reduced_chi_square", "aic", "bic", "warnings", "e_effective_range", "points", "cross_validation"})
+  for (const char* key : {"reduced_chi_square", "aic", "bic", "warnings", "e_effective", "points", "cross_validation"})
     CHECK(f.contains(key));
-  CHECK(f["e_effective_range"].size() == 2);
+  CHECK(f["e_effective"]["range"].size() == 2);
   REQUIRE(f["points"].size() == 4);
   for (const char* key : {"impact_speed_mps", "measured", "model", "residual"}) CHECK(f["points"][0].contains(key));
   CHECK(f["cross_validation"].contains("rms_prediction_error"));
@@ -247,8 +247,8 @@ TEST_CASE("restitution table: a parameter the law's e does not depend on is not 
   s.parameters = parse_fit_parameters("ball-E");
   const FitResult f =
       fit_restitution_table(synthetic_table(hongo_truth(), six_speeds), o, load_paper_parameters(), s);
-  CHECK(f.e_max == Approx(1.0).margin(1e-9));
-  CHECK(f.e_min == Approx(1.0).margin(1e-9));
+  CHECK(f.e_effective.max == Approx(1.0).margin(1e-9));
+  CHECK(f.e_effective.min == Approx(1.0).margin(1e-9));
   CHECK(std::isinf(f.parameter("ball-E").standard_error));
   CHECK_FALSE(f.identifiable);
   CHECK(f.failed);

@@ -72,7 +72,7 @@ class RecordingData final : public FitData {
   FitPoint row(std::size_t i) const override {
     const auto [d, k] = rows_[i];
     const CheckedDrop& drop = data_.drops[d];
-    return {d, drop.index[k], drop.impact_number[k], NAN, drop.impact_time_s[k], 0, 0, 1.0};
+    return {d, drop.index[k], drop.impact_number[k], NAN, drop.impact_time_s[k], 0, 0, sd_known() ? data_.timing_sd_s : 1.0};
   }
   std::vector<std::string> groups() const override {
     std::vector<std::string> labels;
@@ -95,6 +95,7 @@ class RecordingData final : public FitData {
     return v;
   }
   bool residuals(const std::vector<double>& law, const std::vector<double>& nuisances, double* r) override {
+    const double unit = sd_known() ? data_.timing_sd_s : 1.0;
     for (std::size_t d = 0, row = 0; d < data_.drops.size(); ++d) {
       const CheckedDrop& drop = data_.drops[d];
       const auto* m = model_.impacts(law, nuisances[2 * d], drop.impact_number.back() + 1);
@@ -103,7 +104,8 @@ class RecordingData final : public FitData {
         return false;
       }
       for (std::size_t k = 0; k < drop.impact_time_s.size(); ++k, ++row)
-        r[row] = drop.impact_time_s[k] - (nuisances[2 * d + 1] + (*m)[static_cast<std::size_t>(drop.impact_number[k])].onset_s);
+        r[row] = (drop.impact_time_s[k] - (nuisances[2 * d + 1] + (*m)[static_cast<std::size_t>(drop.impact_number[k])].onset_s)) /
+                 unit;
     }
     return true;
   }
@@ -118,7 +120,7 @@ class RecordingData final : public FitData {
             fmt::format("{}: {} drops, {} times, {} parameters (the law's {} and two per drop)", path_,
                         data_.drops.size(), rows(), p + 2 * data_.drops.size(), p)};
   }
-  bool sd_known() const override { return false; }
+  bool sd_known() const override { return data_.timing_sd_s > 0; }
   double least_variance() const override { return 1e-10 * 1e-10; }  // the model's accuracy in time [s^2]
   std::string too_few(std::size_t n, std::size_t p) const override {
     return fmt::format("{}: {} usable impact times cannot determine {} parameters (the law's {} and two per drop)",
@@ -134,6 +136,7 @@ class RecordingData final : public FitData {
   std::string fold_name(std::size_t k) const override { return fmt::format("drop '{}'", data_.drops[k].label); }
   std::unique_ptr<FitData> part(std::size_t k, bool held, const std::vector<double>& nuisances) const override {
     CheckedRecording part;
+    part.timing_sd_s = data_.timing_sd_s;
     std::vector<double> start;
     for (std::size_t d = 0; d < data_.drops.size(); ++d)
       if ((d == k) == held) {
@@ -143,24 +146,31 @@ class RecordingData final : public FitData {
     return std::make_unique<RecordingData>(std::move(part), path_, base_, *paper_, names_, std::move(start));
   }
   void finish(FitResult& fit, const std::vector<double>& law, const std::vector<double>& nuisances) override {
-    fit.e_min = std::numeric_limits<double>::infinity(), fit.e_max = -fit.e_min;
-    for (std::size_t i = 0; i < rows(); ++i) {
-      const CheckedDrop& drop = data_.drops[rows_[i].first];
-      const auto* m = model_.impacts(law, nuisances[2 * rows_[i].first], drop.impact_number.back() + 1);
-      if (!m) continue;
-      const ModelImpact& mi = (*m)[static_cast<std::size_t>(fit.points[i].number)];
-      fit.points[i].x = mi.approach_mps;
-      if (mi.rebound_mps > 0) fit.e_min = std::min(fit.e_min, mi.rebound_mps / mi.approach_mps),
-                              fit.e_max = std::max(fit.e_max, mi.rebound_mps / mi.approach_mps);
-    }
-    if (!(fit.e_min <= fit.e_max)) fit.e_min = fit.e_max = NAN;
+    estimate_nuisances_ = nuisances;
+    for (std::size_t i = 0; i < rows(); ++i)
+      if (const ModelImpact* mi = model_impact(law, i)) fit.points[i].x = mi->approach_mps;
     fit.model_runs = model_.runs();
     fit.integrator_used = model_.integrator_used();
     fit.model_solver = restitution_fit_detail::restitution_model_solver();
     fit.fitted_options = model_.options_at(law);
   }
+  std::vector<ImpactRestitution> restitution_at(const std::vector<double>& law) override {
+    std::vector<ImpactRestitution> at;
+    for (std::size_t i = 0; i < rows(); ++i)
+      if (const ModelImpact* mi = model_impact(law, i); mi && mi->rebound_mps > 0)
+        at.push_back({i, mi->approach_mps, mi->rebound_mps / mi->approach_mps});
+    return at;
+  }
 
  private:
+  // The model's impact of row i at the law's values and the estimate's nuisances; nullptr outside its domain.
+  const ModelImpact* model_impact(const std::vector<double>& law, std::size_t i) {
+    const auto [d, k] = rows_[i];
+    const CheckedDrop& drop = data_.drops[d];
+    const auto* m = model_.impacts(law, estimate_nuisances_[2 * d], drop.impact_number.back() + 1);
+    return m ? &(*m)[static_cast<std::size_t>(drop.impact_number[k])] : nullptr;
+  }
+
   CheckedRecording data_;
   std::string path_;
   RunOptions base_;
@@ -171,6 +181,7 @@ class RecordingData final : public FitData {
   std::vector<std::pair<std::size_t, std::size_t>> rows_;  // drop, time in it
   double ratio_ = 0.8;         // the drops' median interval ratio
   std::string outside_;        // the drop and the model's reason, the last time it could not run
+  std::vector<double> estimate_nuisances_;  // finish()'s
 };
 
 std::vector<std::string> names_of(const std::vector<FitParameter>& parameters) {

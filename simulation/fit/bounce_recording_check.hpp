@@ -84,6 +84,9 @@ struct CheckedRecording {
   std::vector<CheckedDrop> drops;     ///< the drops fitted, in the file's order
   std::vector<BounceFlag> flagged;    ///< in the file's order of drops, then by index
   std::vector<std::string> notes;     ///< drops too short for the glitch check
+  /// The detector's timing precision, 1 sigma [s] (`fit --timing-sd`); 0: unknown, one common
+  /// scatter is fitted. Known, it weighs the times and the fit is judged against it (poor_fit).
+  double timing_sd_s = 0;
 
   std::size_t times() const;          ///< usable times over every drop
 };

@@ -89,6 +89,52 @@ struct Problem {
   }
 };
 
+// FitResult::e_effective at the estimate v, C the covariance of the variables (fit_engine.hpp):
+// each impact's e and the mean, their gradients over the law's variables by central differences.
+EffectiveRestitution effective_restitution(FitData& data, const Problem& problem, const std::vector<double>& v,
+                                           const std::vector<std::vector<double>>& C) {
+  EffectiveRestitution r;
+  r.impacts = data.restitution_at(problem.law_values(v));
+  const std::size_t n = r.impacts.size(), pl = problem.law.size();
+  if (n == 0) return r;
+  r.value = 0;
+  r.min = inf, r.max = -inf;
+  for (const ImpactRestitution& i : r.impacts) {
+    r.value += i.e / static_cast<double>(n);
+    if (i.e < r.min) r.min = i.e, r.speed_at_min_mps = i.speed_mps;
+    if (i.e > r.max) r.max = i.e, r.speed_at_max_mps = i.speed_mps;
+  }
+  // g[i][j] = d e_i / d z_j; row n the mean's. An impact lost at a step (it no longer separates)
+  // leaves the errors NaN.
+  std::vector<std::vector<double>> g(n + 1, std::vector<double>(pl, 0.0));
+  bool same_impacts = true;
+  for (std::size_t j = 0; j < pl && same_impacts; ++j) {
+    std::vector<double> plus = v, minus = v;
+    plus[j] += effective_restitution_step, minus[j] -= effective_restitution_step;
+    const std::vector<ImpactRestitution> up = data.restitution_at(problem.law_values(plus));
+    const std::vector<ImpactRestitution> down = data.restitution_at(problem.law_values(minus));
+    same_impacts = up.size() == n && down.size() == n;
+    for (std::size_t i = 0; i < n && same_impacts; ++i) {
+      same_impacts = up[i].row == r.impacts[i].row && down[i].row == r.impacts[i].row;
+      g[i][j] = (up[i].e - down[i].e) / (2 * effective_restitution_step);
+      g[n][j] += g[i][j] / static_cast<double>(n);
+    }
+  }
+  data.restitution_at(problem.law_values(v));  // the model's last runs at the estimate again
+  if (!same_impacts) return r;
+  // g^T C g over the law's block; a variable e does not depend on adds nothing, even at an infinite variance.
+  const auto error = [&](const std::vector<double>& gi) {
+    double variance = 0;
+    for (std::size_t a = 0; a < pl; ++a)
+      for (std::size_t b = 0; b < pl; ++b)
+        if (gi[a] != 0 && gi[b] != 0) variance += gi[a] * C[a][b] * gi[b];
+    return std::sqrt(variance);
+  };
+  for (std::size_t i = 0; i < n; ++i) r.impacts[i].standard_error = error(g[i]);
+  r.standard_error = error(g[n]);
+  return r;
+}
+
 // GSL's f and df: an exception is stored (rethrown once GSL has returned) and GSL told GSL_EBADFUNC.
 int residuals_thunk(const gsl_vector* z, void* params, gsl_vector* f) {
   auto* problem = static_cast<Problem*>(params);
@@ -520,6 +566,7 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& request,
   for (std::size_t g = 0; g < fit.groups.size(); ++g)
     fit.groups[g].residual_rms = std::sqrt(sum_sq[g] / static_cast<double>(fit.groups[g].rows));
   data.finish(fit, problem.law_values(v), problem.nuisance_values(v));
+  fit.e_effective = effective_restitution(data, problem, v, C);
   fit.work = data.work();
 
   if (settings.profile_intervals && !fit.failed)

@@ -169,6 +169,34 @@ struct CrossValidation {
   std::string failure;              ///< why a fold could not be fitted (the values above then unset), else empty
 };
 
+/// The fitted model's e at one impact of the data.
+struct ImpactRestitution {
+  std::size_t row = 0;          ///< the data's row of the impact (a table's, a recording's; a trace's one: 0)
+  double speed_mps = 0;         ///< the impact's approach speed (the model's)
+  double e = 0;                 ///< its effective restitution, rebound / approach speed
+  double standard_error = NAN;  ///< its 1-sigma error, as the mean's below (set by the engine)
+};
+
+/// The physical e a fit reports first (issue 46): the fitted model's effective restitution over
+/// the data's impacts (a table's rows, a recording's impacts, a trace's one), not the law's input
+/// e. `value` is their mean; `standard_error` its 1-sigma error, g^T C g with g the gradient of the
+/// mean over the law's variables (central differences, step effective_restitution_step) and C
+/// their block of the fit's covariance (the impacts' speeds held at the estimate's); the range and
+/// the speeds at its ends show a dependence on speed; each impact's e with its error draws the
+/// fitted law and its band (a fit's figure). NaN where the kind has no impact or the model none
+/// that separates.
+struct EffectiveRestitution {
+  double value = NAN, standard_error = NAN;
+  double min = NAN, max = NAN;                      ///< over the impacts
+  double speed_at_min_mps = NAN, speed_at_max_mps = NAN;
+  std::vector<ImpactRestitution> impacts;           ///< those that separate, in the data's order
+};
+
+/// The step in the law's variables of effective restitution's gradient: the models' e are
+/// accurate to about 1e-9, so the difference's rounding error is about 1e-5 relative, its
+/// truncation error h^2 = 1e-8.
+inline constexpr double effective_restitution_step = 1e-4;
+
 /// The one result of every fit.
 struct FitResult {
   std::string law;
@@ -184,7 +212,7 @@ struct FitResult {
   double condition_number = 0;
   bool identifiable = false;
   double aic = 0, bic = 0;
-  double e_min = NAN, e_max = NAN;               ///< the fitted model's e over the data's impacts (tables, recordings)
+  EffectiveRestitution e_effective;             ///< the fitted model's e over the data's impacts
   int iterations = 0, model_runs = 0;
   double work = 0;                               ///< the kind's work measure, all runs (a trace's RK4 steps and interpolations)
   std::string stop_reason;                       ///< GSL's: small step, small gradient, or why not converged
@@ -280,8 +308,12 @@ class FitData {
   /// The data without fold k (held false) or fold k alone (held true), its nuisances starting
   /// from `nuisances`, this data's nuisance values.
   virtual std::unique_ptr<FitData> part(std::size_t k, bool held, const std::vector<double>& nuisances) const = 0;
-  /// The kind's outputs at the estimate: model runs, integrator, the e range, points' x where the model gives it, ...
+  /// The kind's outputs at the estimate: model runs, integrator, points' x where the model gives it, ...
   virtual void finish(FitResult& fit, const std::vector<double>& law, const std::vector<double>& nuisances) = 0;
+  /// The model's e at each impact of the data (row, speed, e) at the law's values `law`, the
+  /// nuisances at the values finish() was given (an impact that does not separate left out);
+  /// empty outside the model's domain or for a kind without impacts. Called after finish().
+  virtual std::vector<ImpactRestitution> restitution_at(const std::vector<double>& law) { (void)law; return {}; }
 };
 
 /// Fit `data` (the law's parameters settings.parameters, `start` their starting values or

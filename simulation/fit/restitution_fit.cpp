@@ -79,16 +79,20 @@ class TableData final : public FitData {
     return std::make_unique<TableData>(std::move(t), base_, *paper_, names_);
   }
   void finish(FitResult& fit, const std::vector<double>& law, const std::vector<double>&) override {
-    fit.e_min = inf, fit.e_max = -inf;
-    for (const FitPoint& pt : fit.points) fit.e_min = std::min(fit.e_min, pt.model), fit.e_max = std::max(fit.e_max, pt.model);
     fit.model_runs = model_.runs();
     fit.integrator_used = model_.integrator_used();
     fit.model_solver = restitution_model_solver();
     fit.fitted_options = model_.options_at(law);
   }
+  std::vector<ImpactRestitution> restitution_at(const std::vector<double>& law) override {
+    std::vector<ImpactRestitution> at;
+    if (const auto m = model_.e_at(law, table_.impact_speed_mps))
+      for (std::size_t i = 0; i < rows(); ++i)
+        if ((*m)[i] > 0) at.push_back({i, table_.impact_speed_mps[i], (*m)[i]});
+    return at;
+  }
 
  private:
-  static constexpr double inf = std::numeric_limits<double>::infinity();
   std::set<double> speeds() const { return {table_.impact_speed_mps.begin(), table_.impact_speed_mps.end()}; }
 
   RestitutionTable table_;

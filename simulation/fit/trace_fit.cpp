@@ -196,6 +196,10 @@ class TraceData final : public FitData {
     fit.integrator_used = to_string(model_.solver().integrator);
     fit.fitted_options = model_.options_at(law);
   }
+  std::vector<ImpactRestitution> restitution_at(const std::vector<double>& law) override {
+    if (!model_.history(law) || !(model_.summary().rebound_velocity_mps > 0)) return {};
+    return {{0, model_.summary().impact_velocity_mps, model_.summary().e_effective}};
+  }
 
  private:
   std::shared_ptr<const TraceSetup> setup_;

@@ -7,6 +7,7 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/fit/trace_setup.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/reports/fit_verdict.hpp"
 #include "hertzdash/simulation/reports/report_json.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
@@ -61,31 +62,25 @@ bool synthetic(const FitRun& run) {
   return false;
 }
 
-// Whether the user gave the preset's pair a mass, modulus, Poisson ratio or radius of its own:
-// one of those set in the fitted options that the fit did not estimate.
-bool pair_given(const FitResult& f) {
-  const RunOptions& o = f.fitted_options;
-  const std::pair<const char*, bool> pair_options[] = {
-      {"mass", o.mass_kg.has_value()},     {"ball-E", o.ball_E_Pa.has_value()}, {"ball-nu", o.ball_nu.has_value()},
-      {"ball-radius", o.ball_radius_m.has_value()}, {"rod-E", o.rod_E_Pa.has_value()}, {"rod-nu", o.rod_nu.has_value()}};
-  for (const auto& option : pair_options) {  // no structured binding: clang 14 (make fuzz) cannot capture one
-    const bool fitted = std::any_of(f.parameters.begin(), f.parameters.end(),
-                                    [&](const FittedParameter& p) { return p.name == option.first; });
-    if (option.second && !fitted) return true;
-  }
-  return false;
-}
-
 json nuisance_json(const FittedParameter& p) {
   return {{"estimate", number_or_null(p.estimate)},
           {"standard_error", number_or_null(p.standard_error)},
           {"initial", number_or_null(p.initial)}};
 }
 
+json effective_restitution_json(const EffectiveRestitution& e) {
+  return {{"value", number_or_null(e.value)},
+          {"standard_error", number_or_null(e.standard_error)},
+          {"range", {number_or_null(e.min), number_or_null(e.max)}},
+          {"speeds_mps", {number_or_null(e.speed_at_min_mps), number_or_null(e.speed_at_max_mps)}},
+          {"impacts", e.impacts.size()}};
+}
+
 json fit_json(const FitRun& run, const FitResult& f, const PaperParameters& paper) {
   const KindWords& w = words(run.kind);
   const bool trace = run.kind == FitDataKind::trace, bounce = run.kind == FitDataKind::bounce_times;
   json j;
+  j["e_effective"] = effective_restitution_json(f.e_effective);
   j["law"] = f.law;
   if (!f.left_out.empty()) j["left_out"] = f.left_out;  // compare_laws: options this law does not read
   j["parameters"] = report_detail::to_json(f.parameters);
@@ -122,7 +117,6 @@ json fit_json(const FitRun& run, const FitResult& f, const PaperParameters& pape
   j["identifiable"] = f.identifiable;
   j["aic"] = f.aic;
   j["bic"] = f.bic;
-  if (!trace) j["e_effective_range"] = {number_or_null(f.e_min), number_or_null(f.e_max)};
   j["iterations"] = f.iterations;
   j["model_runs"] = f.model_runs;
   if (!trace) j["integrator_used"] = f.integrator_used;
@@ -200,6 +194,7 @@ FitRun run_fit(const FitRequest& request, const PaperParameters& paper) {
     case FitDataKind::bounce_times: {
       r.recording = read_bounce_recording(request.path);
       r.checked = check_bounce_recording(r.recording);
+      r.checked.timing_sd_s = request.timing_sd_s;
       const std::string path = r.recording.path.string();
       if (request.compare_laws) c = compare_laws_on_bounces(r.checked, path, base, paper, r.settings);
       else c.fits.push_back(fit_bounce_recording(r.checked, path, base, paper, r.settings));
@@ -241,10 +236,11 @@ std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const FitResult& f
   for (const FittedParameter& p : f.parameters)
     if (p.at_bound)
       warn("at_bound", fmt::format("{}{} ended at a bound ({:.6g}); its standard error does not hold", p.name, law, p.estimate));
-  if (!f.sigma_estimated && f.reduced_chi_square > 2)
-    warn("poor_fit", fmt::format("the model{} does not explain the {} to its noise: reduced chi-square {:.3g} (about 1 "
-                                 "if it did); the standard errors are scaled up by it",
-                                 law, kw.data, f.reduced_chi_square));
+  if (poor_fit(f))
+    warn("poor_fit", fmt::format("the model{} does not explain the {} to its stated precision: reduced chi-square {:.3g} "
+                                 "(about 1 if it did; the probability of one as large from that scatter alone is below "
+                                 "{:g}); the standard errors are scaled up by it",
+                                 law, kw.data, f.reduced_chi_square, poor_fit_probability));
   if (f.cross_validation && !f.cross_validation->failure.empty())
     warn("cross_validation_failed", fmt::format("the cross-validation{} failed: {}", law, f.cross_validation->failure));
   if (f.model_impact) {  // a trace's fitted impact, from contact onset
@@ -252,7 +248,7 @@ std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const FitResult& f
     s.impact_velocity_mps = approach_speed(s);
     for (RunDiagnostic& d : impact_diagnostic_list(*f.model_impact, s, f.model_solver, {})) {
       // A fitted modulus or radius estimates the pair the trace was measured on; it does not change it.
-      if (d.code == diagnostic_info(Diagnostic::preset_restitution).name && !pair_given(f)) continue;
+      if (d.code == diagnostic_info(Diagnostic::preset_restitution).name && !own_body(f)) continue;
       d.message = "the fitted model" + law + ": " + d.message;
       w.push_back(std::move(d));
     }
@@ -277,6 +273,7 @@ std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParamet
                                f.reason),
                    {}});
   for (const std::string& note : run.checked.notes) all.push_back({"note", "bounce_check", note, {}});
+  for (RunDiagnostic& d : unit_diagnostics(run, paper)) all.push_back(std::move(d));
   for (const FitResult& f : run.fits)
     for (RunDiagnostic& d : fit_diagnostics(run, f, paper)) {
       const bool once = d.code == kw.synthetic || d.code == "sigma_estimated";
@@ -292,6 +289,11 @@ std::vector<RunDiagnostic> fit_diagnostics(const FitRun& run, const PaperParamet
 json to_json(const FitRun& run, const PaperParameters& paper) {
   json j;
   j["schema_version"] = json_schema_version;
+  // What the fit means, first (issue 46): the best fit's physical e, the verdict, the body.
+  j["e_effective"] = run.fits.empty() ? json(nullptr) : effective_restitution_json(run.fits.front().e_effective);
+  j["verdict"] = fit_verdict(run, paper);
+  const std::string body = default_body_notice(run, paper);
+  j["default_body"] = body.empty() ? json(nullptr) : json(body);
   switch (run.kind) {
     case FitDataKind::trace:
       j["trace"] = {{"path", run.trace.path.string()}, {"source", run.trace.source},
@@ -315,7 +317,11 @@ json to_json(const FitRun& run, const PaperParameters& paper) {
     }
   }
   json fits = json::array();
-  for (const FitResult& f : run.fits) fits.push_back(fit_json(run, f, paper));
+  const std::vector<std::size_t> ranks = aic_ranks(run.fits);
+  for (std::size_t i = 0; i < run.fits.size(); ++i) {
+    fits.push_back(fit_json(run, run.fits[i], paper));
+    fits.back()["aic_rank"] = ranks[i];
+  }
   j["fits"] = fits;
   json failures = json::array();
   for (const auto& [law, why] : run.failures) failures.push_back({{"law", law}, {"error", why}});
@@ -326,6 +332,10 @@ json to_json(const FitRun& run, const PaperParameters& paper) {
 }
 
 void write_fit_curves(const FitResult& f, const MeasuredTrace& trace, const std::filesystem::path& path) {
+  fit_curves_csv(f, trace).save(path);
+}
+
+CsvWriter fit_curves_csv(const FitResult& f, const MeasuredTrace& trace) {
   std::vector<std::string> columns{"t_s"};
   for (const FitGroup& g : f.groups)
     for (const char* what : {"measured", "model", "residual"}) columns.push_back(g.label + "_" + what);
@@ -344,7 +354,7 @@ void write_fit_curves(const FitResult& f, const MeasuredTrace& trace, const std:
     row[3 + 3 * *p.group] = p.measured - p.model;
   }
   for (const auto& [t, row] : rows) csv.add_row(row);
-  csv.save(path);
+  return csv;
 }
 
 }  // namespace hertzdash

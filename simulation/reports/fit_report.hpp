@@ -3,6 +3,7 @@
 // a restitution table, a bounce recording; simulation/fit/fit_engine.hpp): read the data, fit one
 // law or every law (docs/fit.md), the warnings, the JSON (docs/json-output.md) and the curves.
 #include "hertzdash/io/bounce_recording.hpp"
+#include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/io/measured_trace.hpp"
 #include "hertzdash/io/restitution_table.hpp"
 #include "hertzdash/simulation/fit/bounce_fit.hpp"
@@ -34,6 +35,7 @@ struct FitRequest {
   TraceFitSettings settings;  ///< the parameters replaced by `fit`'s; a trace's own settings apply to traces only
   bool compare_laws = false;
   std::vector<std::string> given;  ///< options given even at their default value (a trace's rod may not contradict them)
+  double timing_sd_s = 0;          ///< a recording's timing precision [s] (CheckedRecording::timing_sd_s); 0: unknown
 };
 
 /// A fit: the data as read, one law or every law ranked.
@@ -73,5 +75,7 @@ nlohmann::ordered_json to_json(const FitRun& run, const PaperParameters& paper);
 /// row per sample time (t_s, then <channel>_measured, _model, _residual), written atomically
 /// under a header naming the trace and the estimates.
 void write_fit_curves(const FitResult& fit, const MeasuredTrace& trace, const std::filesystem::path& path);
+/// The same table, not yet written.
+CsvWriter fit_curves_csv(const FitResult& fit, const MeasuredTrace& trace);
 
 }  // namespace hertzdash

@@ -39,6 +39,10 @@ const FitOption options[] = {
           "offset): NAME or NAME:LOWER:UPPER, comma-separated, NAME a fittable set-up option (docs/parameters.md); "
           "the starting values are the run options (or the paper's)"),
      every},
+    {{.key = "timing-sd", .unit = "s", .range = NumberRange::positive(), .default_value = "unknown (fitted)",
+      .help = "The detector's timing precision, 1 sigma [s]: weighs the times, and a fit whose scatter is far above it "
+              "is a poor fit (docs/fit.md); unknown, one common scatter is fitted"},
+     bounce},
     {text("channels", "all the trace has", "Channels of the trace to fit, comma-separated"), trace},
     {{.key = "resample", .unit = "Hz", .range = NumberRange::non_negative(), .default_value = "0",
       .help = "Average the trace into bins of 1/RATE first [Hz]; 0 = as sampled"},
@@ -51,9 +55,16 @@ const FitOption options[] = {
     {flag("profile-intervals",
           "Each fitted parameter's profile-likelihood 1-sigma interval too (a re-fit per point; docs/fit.md)"),
      every},
-    {text("curves", "", "Write the trace, the fitted model and the residuals to this CSV file"), trace},
+    {text("curves", "",
+          "Write the data, the fitted model and the residuals to this CSV file, a row per sample, table row or "
+          "impact (docs/fit.md)"),
+     every},
+    {text("figure", "",
+          "Draw the fit to this PNG, PDF or SVG file (by its extension): e against the impact speed with the fitted "
+          "law and its band, or a trace's overlay, and the residuals (docs/fit.md)"),
+     every},
     {flag("json", "Print the result as one JSON object"), every},
-    {flag("mkdir", "Create the missing directories of --curves"), trace},
+    {flag("mkdir", "Create the missing directories of --curves and --figure"), every},
 };
 
 constexpr const char* kind_option[] = {"trace", "restitution-table", "bounce-times"};
@@ -91,6 +102,11 @@ FitRequest fit_request(const std::map<std::string, std::string>& values, const R
       const std::optional<double> x = parse_option_number(v);  // its range is checked with the trace (prepare_trace)
       if (!x) throw InvalidParameter("resample", v, o.decl.range.text(o.decl.unit));
       r.settings.resample_Hz = *x;
+    } else if (o.decl.key == "timing-sd") {
+      const std::optional<double> x = parse_option_number(v);
+      if (!x) throw InvalidParameter("timing-sd", v, o.decl.range.text(o.decl.unit));
+      require_in_range(o.decl, *x);
+      r.timing_sd_s = *x;
     } else if (o.decl.key == "compare-laws") r.compare_laws = v == "true";
     else if (o.decl.key == "cross-validate") r.settings.cross_validate = v == "true";
     else if (o.decl.key == "profile-intervals") r.settings.profile_intervals = v == "true";

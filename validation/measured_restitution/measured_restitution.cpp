@@ -170,7 +170,7 @@ int main(int argc, char** argv) try {
     if (f.law == viscoelastic) kk_fit = &f;
   }
   if (!hongo || !kk_fit || kk_fit->failed) throw std::runtime_error("the paper's or the viscoelastic law was not fitted");
-  auto speed_independent = [](const FitResult& f) { return f.e_max - f.e_min < speed_independent_span; };
+  auto speed_independent = [](const FitResult& f) { return f.e_effective.max - f.e_effective.min < speed_independent_span; };
   int constant_laws = 0, not_converged_constant = 0;
   std::vector<std::string> not_converged;
   for (const FitResult& f : comparison.fits) {
@@ -191,13 +191,13 @@ int main(int argc, char** argv) try {
   for (const FitResult& f : comparison.fits) {
     const CrossValidation& cv = *f.cross_validation;
     for (const FittedParameter& p : f.parameters)
-      laws_csv.add_row({f.law, f.aic, f.aic - best.aic, f.bic, f.sigma, p.name, p.estimate, p.standard_error, f.e_min,
-                        f.e_max, cv.rms_prediction_error, cv.ratio, static_cast<long>(f.converged),
+      laws_csv.add_row({f.law, f.aic, f.aic - best.aic, f.bic, f.sigma, p.name, p.estimate, p.standard_error, f.e_effective.min,
+                        f.e_effective.max, cv.rms_prediction_error, cv.ratio, static_cast<long>(f.converged),
                         static_cast<long>(f.identifiable)});
     std::string cells;
     for (const FittedParameter& p : f.parameters) cells += (cells.empty() ? "" : ", ") + parameter_cell(p);
-    const std::string range = speed_independent(f) ? fmt::format("{:.4f}", f.e_min)
-                                                    : fmt::format("{:.4f}--{:.4f}", f.e_max, f.e_min);
+    const std::string range = speed_independent(f) ? fmt::format("{:.4f}", f.e_effective.min)
+                                                    : fmt::format("{:.4f}--{:.4f}", f.e_effective.max, f.e_effective.min);
     tex += fmt::format("{}{} & {} & {} & {:.1f} & {:.4f} & {:.4f} \\\\\n", law_tt(f.law), f.converged ? "" : "$^*$",
                        cells, range, f.aic - best.aic, f.sigma, cv.rms_prediction_error);
   }
@@ -287,7 +287,7 @@ int main(int argc, char** argv) try {
   macros.add("measuredBestCvRms", best_cv->cross_validation->rms_prediction_error, "{:.4f}");
   macros.add("measuredViscoelasticCvRatio", kk_fit->cross_validation->ratio, "{:.2f}");
   macros.add("measuredViscoelasticEHigh", kk_fit->e_max, "{:.3f}");
-  macros.add("measuredViscoelasticELow", kk_fit->e_min, "{:.3f}");
+  macros.add("measuredViscoelasticELow", kk_fit->e_effective.min, "{:.3f}");
   macros.add_text("measuredViscoelasticSignChangesPhrase", sign_changes == 1   ? "once"
                                                            : sign_changes == 2 ? "twice"
                                                                                : number_in_words(sign_changes) + " times");
@@ -295,7 +295,7 @@ int main(int argc, char** argv) try {
   const FittedParameter& A = kk_fit->parameter("viscous-time-constant");
   macros.add("measuredViscoelasticTimeConstantMicrosecond", 1e6 * A.estimate, "{:.1f}");
   macros.add("measuredViscoelasticTimeConstantErrorMicrosecond", 1e6 * A.standard_error, "{:.1f}");
-  macros.add("measuredHongoE", hongo->e_min, "{:.4f}");
+  macros.add("measuredHongoE", hongo->e_effective.min, "{:.4f}");
   macros.add("measuredHongoInputE", hongo->parameter("restitution").estimate, "{:.4f}");
   macros.add("measuredHongoSigma", hongo->sigma, "{:.4f}");
   macros.add("measuredHongoDeltaAic", hongo->aic - best.aic, "{:.1f}");
@@ -323,7 +323,7 @@ int main(int argc, char** argv) try {
                            E_star, T, U_T, johnson_constant, E_ball);
   for (const FitResult& f : comparison.fits)
     std::cout << fmt::format("{:20} AIC {:9.3f}  dAIC {:6.2f}  sigma {:.5f}  e {:.4f}-{:.4f}  cv_rms {:.5f}{}\n", f.law,
-                             f.aic, f.aic - best.aic, f.sigma, f.e_min, f.e_max, f.cross_validation->rms_prediction_error,
+                             f.aic, f.aic - best.aic, f.sigma, f.e_effective.min, f.e_effective.max, f.cross_validation->rms_prediction_error,
                              f.converged ? "" : "  (not converged: " + f.stop_reason + ")");
   std::cout << fmt::format("best by AIC {}, by cross-validation {}; residual sign changes of {}: {}\n", best.law,
                            best_cv->law, viscoelastic, sign_changes)

@@ -1,0 +1,25 @@
+#pragma once
+// `--figure FILE` (issue 46): a figure drawn by gnuplot with one of the embedded scripts
+// (validation/fit_figure.gp, in the house style of validation/style.gnuplot and output.gnuplot,
+// embedded by cli/CMakeLists.txt so an installed program needs no source tree), in the format
+// the file's extension names (png, pdf, svg), written atomically: gnuplot draws under a temporary
+// name beside FILE, which replaces FILE only once gnuplot has succeeded.
+#include "hertzdash/io/csv_writer.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace hertzdash::cli {
+
+/// "png", "pdf" or "svg" from `path`'s extension (any case); InvalidParameter naming `option` otherwise.
+std::string figure_format(const std::string& option, const std::filesystem::path& path);
+
+/// Draw `script` (an embedded script's name) with `data` written to CSV files in a temporary
+/// directory, given to the script as its first arguments after `kind`, then the output's base
+/// and format, then `arguments`; gnuplot's failure (it cannot be run, or exits non-zero) throws
+/// std::runtime_error with its messages, and leaves no file.
+void draw_figure(const std::string& script, const std::string& kind, const std::vector<const CsvWriter*>& data,
+                 const std::vector<std::string>& arguments, const std::filesystem::path& path);
+
+}  // namespace hertzdash::cli

@@ -1,0 +1,87 @@
+# `hertzdash fit --figure FILE` (issue 46), embedded in the program (cli/CMakeLists.txt) with
+# style.gnuplot and output.gnuplot beside it:
+#   gnuplot -c fit_figure.gp KIND POINTS CURVE OUT_BASE FORMAT TITLE EXTRA
+# KIND 'e' (a restitution table, a bounce recording; simulation/reports/fit_curves.hpp):
+# (a) e against the impact speed: the data's e (EXTRA says what: a table's rows, or a
+# recording's e per bounce, drag-corrected) and the fitted law at the data's impacts with its
+# 1-sigma band (CURVE); (b) the residuals e_measured - e_model.
+# KIND 'trace' (`fit --curves` columns, write_fit_curves): per channel (EXTRA: their names,
+# space-separated) the trace and the fitted model against time, and below it the residuals.
+# Draws OUT_BASE.FORMAT (png, pdf or svg), under figure_suffix until the program renames it.
+here = system('dirname "'.ARG0.'"')
+kind = ARG1
+points = ARG2
+curve = ARG3
+load here.'/style.gnuplot'
+# About three ticks over a range r: 1, 2 or 5 times a power of ten.
+nice_step(r) = (r <= 0 ? 1 : (r / 3 / 10**floor(log10(r / 3)) < 1.5 ? 1 : r / 3 / 10**floor(log10(r / 3)) < 3.5 ? 2 : 5) \
+               * 10**floor(log10(r / 3)))
+if (kind eq 'e') {
+  call here.'/output.gnuplot' ARG4 ARG5 full_width_in 4.2
+  stats points using 'speed_measured_mps' nooutput
+  lo = STATS_min
+  hi = STATS_max
+  stats curve using 'impact_speed_mps' nooutput
+  lo = STATS_min < lo ? STATS_min : lo
+  hi = STATS_max > hi ? STATS_max : hi
+  pad = hi > lo ? 0.05 * (hi - lo) : 0.05 * hi
+  set xrange [lo - pad : hi + pad]
+  stats points using 'e_measured' nooutput
+  e_lo = STATS_min
+  e_hi = STATS_max
+  stats curve using 'e_low':'e_high' nooutput
+  e_lo = STATS_min_x < e_lo ? STATS_min_x : e_lo
+  e_hi = STATS_max_y > e_hi ? STATS_max_y : e_hi
+  set ytics nice_step(e_hi - e_lo)
+  set multiplot
+  # The two panels share their x axis: the same margins, the key to the right of the upper one.
+  set lmargin at screen 0.18
+  set rmargin at screen 0.64
+  set tmargin at screen 0.88
+  set bmargin at screen 0.45
+  set label 1 ARG6 at screen 0.02, 0.955 left noenhanced
+  set format x ''
+  set ylabel 'Coefficient of restitution'
+  set key outside right top Left reverse font ',8' nobox
+  plot curve using 'impact_speed_mps':'e_low':'e_high' with filledcurves ls 11 title 'fitted law, 1-sigma band', \
+       curve using 'impact_speed_mps':'e_model' with lines ls 1 title 'fitted law', \
+       points using 'speed_measured_mps':'e_measured' with points ls 3 ps 0.6 title ARG7
+  unset label 1
+  set tmargin at screen 0.41
+  set bmargin at screen 0.16
+  stats points using 'residual_e' nooutput
+  set ytics nice_step(STATS_max - STATS_min)
+  set format x '%g'
+  set xlabel 'Impact speed (m/s)'
+  set ylabel 'Residual' offset 0, 0
+  set key off
+  plot 0 with lines ls 2, points using 'speed_measured_mps':'residual_e' with points ls 3 ps 0.6
+  unset multiplot
+} else {
+  n = words(ARG7)
+  call here.'/output.gnuplot' ARG4 ARG5 narrow_width_in (1.5 * 2 * n + 0.7)
+  ms(c) = 1e3 * column(c)
+  set multiplot
+  set lmargin 11
+  set autoscale xfix
+  set key off
+  do for [k = 1:n] {
+    channel = word(ARG7, k)
+    eval stack_panel(2 * k - 1, 2 * n)
+    set format x ''
+    unset xlabel
+    set ylabel channel.' (trace, model)' noenhanced
+    plot points using (ms('t_s')):channel.'_measured' with points ls 3 ps 0.2, \
+         points using (ms('t_s')):channel.'_model' with lines ls 1
+    eval stack_panel(2 * k, 2 * n)
+    set format x '%g'
+    set xlabel k == n ? 'Time (ms)' : ''
+    set ylabel channel.' residual' noenhanced
+    plot 0 with lines ls 2, points using (ms('t_s')):channel.'_residual' with lines ls 3
+  }
+  eval quad_key_row
+  eval key_panel
+  eval key_row
+  plot NaN with points ls 3 ps 0.5 title 'trace', NaN with lines ls 1 title ARG6
+  unset multiplot
+}
