@@ -66,18 +66,16 @@ void draw_figure(const std::string& script, const std::string& kind, const std::
   const std::string format = figure_format("figure", path);
   TemporaryDirectory dir;
   for (const auto& [name, text] : scripts) write_text(dir.path / name, text);
+  std::filesystem::path base = path;
+  base.replace_extension();
   std::vector<std::string> args{"gnuplot", "-e", fmt::format("figure_suffix = '.tmp.{}'", getpid()), "-c",
-                                (dir.path / script).string(), kind};
+                                (dir.path / script).string(), kind, base.string(), format};
+  args.insert(args.end(), arguments.begin(), arguments.end());
   for (std::size_t k = 0; k < data.size(); ++k) {
     const std::filesystem::path csv = dir.path / fmt::format("data{}.csv", k);
     data[k]->save(csv);
     args.push_back(csv.string());
   }
-  std::filesystem::path base = path;
-  base.replace_extension();
-  args.push_back(base.string());
-  args.push_back(format);
-  args.insert(args.end(), arguments.begin(), arguments.end());
   const std::filesystem::path drawn = base.string() + "." + format + fmt::format(".tmp.{}", getpid());
   const std::filesystem::path messages = dir.path / "gnuplot.err";
 

@@ -15,9 +15,8 @@ namespace hertzdash::cli {
 /// "png", "pdf" or "svg" from `path`'s extension (any case); InvalidParameter naming `option` otherwise.
 std::string figure_format(const std::string& option, const std::filesystem::path& path);
 
-/// Draw `script` (an embedded script's name) with `data` written to CSV files in a temporary
-/// directory, given to the script as its first arguments after `kind`, then the output's base
-/// and format, then `arguments`; gnuplot's failure (it cannot be run, or exits non-zero) throws
+/// Draw `script` (an embedded script's name) with the arguments `kind`, the output's base and
+/// format, `arguments`, then the CSV files of `data` (written to a temporary directory); gnuplot's failure (it cannot be run, or exits non-zero) throws
 /// std::runtime_error with its messages, and leaves no file.
 void draw_figure(const std::string& script, const std::string& kind, const std::vector<const CsvWriter*>& data,
                  const std::vector<std::string>& arguments, const std::filesystem::path& path);
