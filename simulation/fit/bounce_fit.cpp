@@ -30,6 +30,15 @@ double span(int g, double r) {
   return s;
 }
 
+// Where a drop's first speed comes from without a height, with a hint where the interval is
+// longer than any bounce's (times in ms written in the column of seconds).
+std::string first_interval_words(double interval_s) {
+  return fmt::format("from its first interval, {:.6g} s{}", interval_s,
+                     interval_s > 10 ? "; an interval that long is times in ms in the column impact_time_s? name it "
+                                       "impact_time_ms"
+                                     : "");
+}
+
 RunOptions flying(RunOptions o) {
   o.follows_flights = true;  // the model's flights read the air drag
   return o;
@@ -62,7 +71,7 @@ class RecordingData final : public FitData {
       o.impact_velocity_origin =
           fmt::format("the first impact speed of drop '{}' of {} ({})", d.label, path_,
                       height ? fmt::format("from its drop_height_m {:g}", d.drop_height_m)
-                             : fmt::format("from its first interval, {:.6g} s", d.impact_time_s[1] - d.impact_time_s[0]));
+                             : first_interval_words(d.impact_time_s[1] - d.impact_time_s[0]));
       resolve_setup(o, paper);
       start_.insert(start_.end(), {v0, d.impact_time_s[0]});
     }

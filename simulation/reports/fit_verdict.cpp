@@ -173,10 +173,12 @@ std::vector<RunDiagnostic> unit_diagnostics(const FitRun& run, const PaperParame
   for (std::size_t d = 0; d < f.groups.size() && d < run.checked.drops.size(); ++d) {
     const double h = run.checked.drops[d].drop_height_m, v0 = f.groups[d].nuisances[0].estimate;
     if (!(h > 0) || !(v0 > 0)) continue;
-    // The stated height's landing speed (with the run's drag) against the fitted one: their
-    // squared ratio is the ratio of the heights in vacuum.
-    const double stated_speed = fall_from_rest(h, s.gravity_mps2, v_t).speed_mps;
-    const double ratio = (stated_speed / v0) * (stated_speed / v0);  // about h / h_fitted
+    // The height the fitted speed falls from, with the run's drag: v0 = v_t sqrt(1 - exp(-2 g h /
+    // v_t^2)) (model/air_drag.hpp) solved for h; in vacuum v0^2 / 2g.
+    const double g = s.gravity_mps2, stated_speed = fall_from_rest(h, g, v_t).speed_mps;
+    const double fall = std::isfinite(v_t) ? (v0 < v_t ? -v_t * v_t / (2 * g) * std::log1p(-(v0 / v_t) * (v0 / v_t)) : INFINITY)
+                                           : v0 * v0 / (2 * g);
+    const double ratio = h / fall;
     if (ratio > 0.5 && ratio < 2) continue;
     const double decades = std::log10(ratio), nearest = std::round(decades);
     std::string hint = "check the drop's height and its times";
@@ -188,7 +190,7 @@ std::vector<RunDiagnostic> unit_diagnostics(const FitRun& run, const PaperParame
     w.push_back({"warning", "drop_height_units",
                  fmt::format("drop '{}': its drop_height_m {:g} gives a first impact speed of {:.4g} m/s, the times "
                              "{:.4g} m/s (a fall of {:.3g} m): {}",
-                             run.checked.drops[d].label, h, stated_speed, v0, h / ratio, hint),
+                             run.checked.drops[d].label, h, stated_speed, v0, fall, hint),
                  {}});
   }
   return w;

@@ -286,7 +286,7 @@ int main(int argc, char** argv) try {
   macros.add("measuredDropOverBestSigma", (*e_hi - *e_lo) / best.sigma, "{:.0f}");
   macros.add("measuredBestCvRms", best_cv->cross_validation->rms_prediction_error, "{:.4f}");
   macros.add("measuredViscoelasticCvRatio", kk_fit->cross_validation->ratio, "{:.2f}");
-  macros.add("measuredViscoelasticEHigh", kk_fit->e_max, "{:.3f}");
+  macros.add("measuredViscoelasticEHigh", kk_fit->e_effective.max, "{:.3f}");
   macros.add("measuredViscoelasticELow", kk_fit->e_effective.min, "{:.3f}");
   macros.add_text("measuredViscoelasticSignChangesPhrase", sign_changes == 1   ? "once"
                                                            : sign_changes == 2 ? "twice"
