@@ -11,6 +11,7 @@
 #include "hertzdash/io/file_identity.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/reports/fit_curves.hpp"
 #include "hertzdash/simulation/reports/fit_request.hpp"
 #include "hertzdash/simulation/reports/rig_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -288,8 +289,10 @@ constexpr FitFunction fit_functions[] = {
 std::vector<const ParameterDecl*> fit_keywords(const FitFunction& f) {
   std::vector<const ParameterDecl*> keywords;
   for (const FitOption& o : fit_command_options())
+    // Not "figure": the program draws with gnuplot (cli/figure_file.hpp); from Python, curves=
+    // writes the same data for matplotlib.
     if ((o.kinds & (1u << static_cast<int>(f.kind))) && o.decl.key != fit_kind_option(f.kind) &&
-        o.decl.key != "json" && o.decl.key != "mkdir")
+        o.decl.key != "json" && o.decl.key != "mkdir" && o.decl.key != "figure")
       keywords.push_back(&o.decl);
   return keywords;
 }
@@ -386,13 +389,15 @@ py::dict py_fit_kind(const FitFunction& f, const std::string& path, const py::kw
   require_path(path, "path");
   require_path(curves, "curves");
   if (find_shared_file({request.path}, {curves}))  // curves= would replace the trace it fits (issue 31)
-    throw InvalidParameter("curves", curves, "another file than trace (" + request.path + "), which is read: they are the same file");
+    throw InvalidParameter("curves", curves, "another file than " + python_keyword(fit_kind_option(f.kind)) + " (" + request.path + "), which is read: they are the same file");
   FitRun run;
   std::atomic<bool> cancel = false;
   request.settings.cancel = &cancel;  // Ctrl-C stops the fit at its next model run
   auto fit_all = [&] {
     run = run_fit(request, paper());
-    if (!curves.empty() && !run.fits.empty()) write_fit_curves(run.fits.front(), run.trace, curves);
+    if (curves.empty() || run.fits.empty()) return;
+    if (run.kind == FitDataKind::trace) write_fit_curves(run.fits.front(), run.trace, curves);
+    else restitution_curves_csv(run, run.fits.front(), paper()).save(curves);
   };
   if (!run_watching_signals(fit_all, cancel)) throw py::error_already_set();  // KeyboardInterrupt (Ctrl-C)
   warn_about(fit_diagnostics(run, paper()));

@@ -570,6 +570,18 @@ def test_fit_bounce_times_is_the_programs(tmp_path):
     assert abs(e["estimate"] - 0.9) < 3 * e["standard_error"]
     with pytest.raises(TypeError, match="solver option 'rtol'"):
         hertzdash.fit_bounce_times(recording, rtol=1e-9)
+    # The physical e first, the verdict, and curves= writing e per bounce as the program does
+    # (issue 46); the program's --figure is its own (gnuplot), not a keyword.
+    assert r["e_effective"] == r["fits"][0]["e_effective"]
+    assert r["verdict"] and r["default_body"] is None
+    curves = tmp_path / "bounces.csv"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        hertzdash.fit_bounce_times(recording, air_density=1.204, curves=str(curves), timing_sd=2e-4, **LIGHT_BALL)
+    columns = curves.read_text().splitlines()[0].split(",")
+    assert columns[:2] == ["drop", "impact_number"] and "e_measured" in columns
+    with pytest.raises(TypeError):
+        hertzdash.fit_bounce_times(recording, figure=str(tmp_path / "e.png"))
 
 
 @pytest.fixture(scope="module")
