@@ -63,6 +63,17 @@ std::string figure_format(const std::string& option, const std::filesystem::path
 
 void draw_figure(const std::string& script, const std::string& kind, const std::vector<const CsvWriter*>& data,
                  const std::vector<std::string>& arguments, const std::filesystem::path& path) {
+  TemporaryDirectory dir;
+  std::vector<std::filesystem::path> files;
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    files.push_back(dir.path / fmt::format("data{}.csv", k));
+    data[k]->save(files.back());
+  }
+  draw_figure_from_files(script, kind, files, arguments, path);
+}
+
+void draw_figure_from_files(const std::string& script, const std::string& kind, const std::vector<std::filesystem::path>& files,
+                 const std::vector<std::string>& arguments, const std::filesystem::path& path) {
   const std::string format = figure_format("figure", path);
   TemporaryDirectory dir;
   for (const auto& [name, text] : scripts) write_text(dir.path / name, text);
@@ -71,11 +82,7 @@ void draw_figure(const std::string& script, const std::string& kind, const std::
   std::vector<std::string> args{"gnuplot", "-e", fmt::format("figure_suffix = '.tmp.{}'", getpid()), "-c",
                                 (dir.path / script).string(), kind, base.string(), format};
   args.insert(args.end(), arguments.begin(), arguments.end());
-  for (std::size_t k = 0; k < data.size(); ++k) {
-    const std::filesystem::path csv = dir.path / fmt::format("data{}.csv", k);
-    data[k]->save(csv);
-    args.push_back(csv.string());
-  }
+  for (const std::filesystem::path& f : files) args.push_back(f.string());
   const std::filesystem::path drawn = base.string() + "." + format + fmt::format(".tmp.{}", getpid());
   const std::filesystem::path messages = dir.path / "gnuplot.err";
 

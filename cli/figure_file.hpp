@@ -21,4 +21,8 @@ std::string figure_format(const std::string& option, const std::filesystem::path
 void draw_figure(const std::string& script, const std::string& kind, const std::vector<const CsvWriter*>& data,
                  const std::vector<std::string>& arguments, const std::filesystem::path& path);
 
+/// The same with data files already written (a sweep's outputs).
+void draw_figure_from_files(const std::string& script, const std::string& kind, const std::vector<std::filesystem::path>& files,
+                 const std::vector<std::string>& arguments, const std::filesystem::path& path);
+
 }  // namespace hertzdash::cli

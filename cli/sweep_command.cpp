@@ -5,6 +5,7 @@
 // over the ranks); rank 0 gathers the outputs and errors and writes the same files the threaded
 // run writes, byte for byte apart from the timing line.
 #include "cli/command.hpp"
+#include "cli/figure_file.hpp"
 #include "cli/number_options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/process_group.hpp"
@@ -15,6 +16,7 @@
 #include "hertzdash/simulation/sweep/sweep_run.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <atomic>
 #include <chrono>
@@ -32,7 +34,7 @@ namespace hertzdash::cli {
 namespace {
 
 struct SweepCommandOptions {
-  std::string case_path, out, summary;
+  std::string case_path, out, summary, figure;
   unsigned threads = 0;
   bool quiet = false, mkdir = false;
 };
@@ -118,6 +120,28 @@ SweepResults assemble(const std::vector<std::vector<double>>& values, const std:
   return all;
 }
 
+// --figure draws a sweep of one varied key (validation/sweep_figure.gp): refused before any run
+// for a case that varies more.
+void check_sweep_figure(const SweepCase& c, const std::string& figure) {
+  figure_format("figure", figure);
+  if (const std::vector<std::string> varied = c.parameter_columns(); varied.size() != 1)
+    throw InvalidParameter("figure", figure,
+                           fmt::format("given for a sweep of one varied key, its axis (this case varies {}: {})",
+                                       varied.size(), fmt::join(varied, ", ")));
+}
+
+// A rig's bifurcation diagram from its per-impact table, or simulate's outputs from the rows.
+void draw_sweep_figure(const SweepCase& c, const std::filesystem::path& out, const std::filesystem::path& impacts,
+                       const std::string& figure) {
+  const std::string key = c.parameter_columns().front();
+  const std::string title = fmt::format("{}: {}", std::filesystem::path(c.source).filename().string(),
+                                        c.rig ? std::string(c.rig->name) + " rig" : "simulate runs");
+  if (c.rig) draw_figure_from_files("sweep_figure.gp", "rig", {impacts}, {title, key}, figure);
+  else
+    draw_figure_from_files("sweep_figure.gp", "rows", {out},
+                {title, key, fmt::format("{}", fmt::join(c.outputs, " "))}, figure);
+}
+
 int run_sweep_command(const SweepCommandOptions& opt) {
   const ProcessGroup group;
   const SweepCase c = read_sweep_case(opt.case_path);
@@ -128,6 +152,8 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   const std::filesystem::path impacts_out = std::filesystem::path(out).replace_extension(".impacts.csv");
   const std::string out_option = opt.out.empty() ? "[output] file" : "--out";
   const std::string summary_option = opt.summary.empty() ? "[output] summary" : "--summary";
+  if (!opt.figure.empty()) check_sweep_figure(c, opt.figure);
+  prepare_output_file("--figure", opt.figure, opt.mkdir);
   prepare_output_file(out_option, out.string(), opt.mkdir);
   if (summary) prepare_output_file(summary_option, summary_out.string(), opt.mkdir);
   const std::string impacts_option = "the rig's per-impact tables";
@@ -135,7 +161,8 @@ int run_sweep_command(const SweepCommandOptions& opt) {
   refuse_shared_files({{"the case file", opt.case_path}},
                       {{out_option, out.string()},
                        {summary_option, summary ? summary_out.string() : ""},
-                       {impacts_option, c.rig ? impacts_out.string() : ""}});
+                       {impacts_option, c.rig ? impacts_out.string() : ""},
+                       {"--figure", opt.figure}});
   // One sweep at a time per output, held from before the runs until both files are written (an
   // output whose directory --mkdir makes is locked once that is made, right before the write).
   std::vector<std::filesystem::path> outputs{out};
@@ -218,6 +245,10 @@ int run_sweep_command(const SweepCommandOptions& opt) {
     files.emplace_back(impacts_out, [&](const std::function<void(std::string_view)>& write) { write_sweep_impacts(c, all, write); });
   write_files_atomically(files);
 
+  if (!opt.figure.empty()) {
+    create_output_directories(opt.figure, opt.mkdir);
+    draw_sweep_figure(c, out, impacts_out, opt.figure);
+  }
   std::size_t failed = 0;
   for (const std::string& e : all.errors) failed += e.empty() ? 0 : 1;
   std::cout << fmt::format("hertzdash sweep: {} runs, {} failed; wrote {}{}{}\n", c.size(), failed, out.string(),
@@ -245,6 +276,7 @@ Command add_sweep_command(CLI::App& app) {
   sub->add_option("case", opt->case_path, o("case").help)->required();
   add_output_file_option(*sub, o("out").flag, opt->out, o("out").help);
   add_output_file_option(*sub, o("summary").flag, opt->summary, o("summary").help);
+  add_output_file_option(*sub, o("figure").flag, opt->figure, o("figure").help);
   add_integer_option(*sub, o("threads").flag, opt->threads, o("threads").help);
   sub->add_flag(o("quiet").flag, opt->quiet, o("quiet").help);
   add_mkdir_flag(*sub, opt->mkdir);

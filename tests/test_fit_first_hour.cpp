@@ -198,6 +198,43 @@ TEST_CASE("fits tied in AIC share a rank, failed fits come last", "[fit][first_h
   CHECK(aic_ranks(fits) == std::vector<std::size_t>{1, 2, 2, 4, 5});
 }
 
+// --figure on every fit kind and on a sweep of one key: the file is the format its extension
+// names (PNG, PDF, SVG signatures), drawn whole or not at all; another extension, or a sweep of
+// two keys, is refused before any work (exit 2) and leaves no file.
+TEST_CASE("every fit kind and a one-key sweep draw their figure, in the format the extension names",
+          "[fit][sweep][first_hour]") {
+  ScratchDir dir;
+  const auto trace = dir.path / "trace.csv";
+  REQUIRE(run_cli("simulate --trace " + trace.string() + " --trace-format measured --noise 0.01 --integrator rk4 --dt 2e-7")
+              .exit_code == 0);
+  const CliResult t = run_cli("fit --trace " + trace.string() + " --figure " + (dir.path / "trace.pdf").string());
+  CHECK(t.exit_code == 0);
+  CHECK(slurp(dir.path / "trace.pdf").rfind("%PDF", 0) == 0);
+  const auto table = dir.write("table.csv", "impact_speed_m_per_s,e\n# synthetic: true\n# source: SYNTHETIC, written by "
+                                            "tests/test_fit_first_hour.cpp\n0.5,0.86\n1,0.84\n2,0.83\n4,0.80\n");
+  const CliResult e = run_cli("fit --restitution-table " + table.string() + " --damping kuwabara-kono --figure " +
+                              (dir.path / "table.svg").string());
+  CHECK(e.exit_code == 0);
+  CHECK(slurp(dir.path / "table.svg").find("<svg") != std::string::npos);
+  const CliResult jpg = run_cli("fit --restitution-table " + table.string() + " --figure " + (dir.path / "t.jpg").string());
+  CHECK(jpg.exit_code == 2);
+  CHECK(jpg.err.find("must be a file ending in .png, .pdf or .svg") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir.path / "t.jpg"));
+
+  const auto diagram = dir.write("diagram.toml", "[base]\nrig = \"shaker\"\nimpact-model = \"instantaneous\"\nrestitution = "
+                                                 "0.5\ntransient = 200\nimpacts = 8\n[grid]\ngamma = { from = 1.2, to = "
+                                                 "2.0, count = 9 }\n");
+  const CliResult d = run_cli("sweep " + diagram.string() + " --quiet --figure " + (dir.path / "diagram.png").string());
+  CHECK(d.exit_code == 0);
+  CHECK(slurp(dir.path / "diagram.png").rfind("\x89PNG", 0) == 0);
+  const auto two = dir.write("two.toml", "[base]\nrestitution = 0.8\n[grid]\nheight = { from = 0.01, to = 0.02, count = "
+                                         "2 }\nmass = { from = 0.5, to = 1, count = 2 }\n");
+  const CliResult refused = run_cli("sweep " + two.string() + " --quiet --figure " + (dir.path / "two.png").string());
+  CHECK(refused.exit_code == 2);
+  CHECK(refused.err.find("given for a sweep of one varied key") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir.path / "two.csv"));
+}
+
 // The README's first screen is a user's own bodies: a ball on a plate, the pages they need.
 TEST_CASE("the README's first screen shows a ball on a plate and links the user's pages", "[docs][first_hour]") {
   const std::string readme = slurp(std::filesystem::path(HERTZDASH_SOURCE_DIR) / "README.md");

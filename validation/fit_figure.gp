@@ -15,9 +15,6 @@ extra = ARG5
 points = ARG6
 curve = ARG7
 load here.'/style.gnuplot'
-# About three ticks over a range r: 1, 2 or 5 times a power of ten.
-nice_step(r) = (r <= 0 ? 1 : (r / 3 / 10**floor(log10(r / 3)) < 1.5 ? 1 : r / 3 / 10**floor(log10(r / 3)) < 3.5 ? 2 : 5) \
-               * 10**floor(log10(r / 3)))
 if (kind eq 'e') {
   call here.'/output.gnuplot' ARG2 ARG3 full_width_in 4.2
   stats points using 'speed_measured_mps' nooutput

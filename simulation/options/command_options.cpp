@@ -62,6 +62,9 @@ constexpr ParameterDecl sweep[] = {
     {.key = "threads", .range = R::integer(0, 4294967295.0), .default_value = "0",
      .default_source = "the machine's cores shared among the job's processes on it", .help = "Threads per process"},
     {.key = "quiet", .type = T::flag, .default_value = "off", .help = "No progress line"},
+    file("figure",
+         "Draw the sweep of one varied key to this PNG, PDF or SVG file (by its extension): a rig's bifurcation "
+         "diagram (each kept impact's phase and speed against the key), or each output against it (docs/sweep.md)"),
     mkdir};
 constexpr ParameterDecl models[] = {{.key = "json", .type = T::flag, .default_value = "off", .help = "Print the list as a JSON array"}};
 
