@@ -1,5 +1,6 @@
 #include "cli/figure_file.hpp"
 
+#include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
@@ -77,13 +78,12 @@ void draw_figure_from_files(const std::string& script, const std::string& kind, 
   const std::string format = figure_format("figure", path);
   TemporaryDirectory dir;
   for (const auto& [name, text] : scripts) write_text(dir.path / name, text);
-  std::filesystem::path base = path;
-  base.replace_extension();
-  std::vector<std::string> args{"gnuplot", "-e", fmt::format("figure_suffix = '.tmp.{}'", getpid()), "-c",
-                                (dir.path / script).string(), kind, base.string(), format};
+  // gnuplot draws in the temporary directory; the figure is then written to `path` as every
+  // output is (io/atomic_file.hpp: whole or not at all, a link followed, a FIFO written through).
+  const std::filesystem::path base = dir.path / "figure", drawn = dir.path / ("figure." + format);
+  std::vector<std::string> args{"gnuplot", "-c", (dir.path / script).string(), kind, base.string(), format};
   args.insert(args.end(), arguments.begin(), arguments.end());
   for (const std::filesystem::path& f : files) args.push_back(f.string());
-  const std::filesystem::path drawn = base.string() + "." + format + fmt::format(".tmp.{}", getpid());
   const std::filesystem::path messages = dir.path / "gnuplot.err";
 
   posix_spawn_file_actions_t actions;
@@ -106,15 +106,11 @@ void draw_figure_from_files(const std::string& script, const std::string& kind, 
   std::ostringstream said;
   said << std::ifstream(messages).rdbuf();
   std::error_code ec;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !std::filesystem::is_regular_file(drawn, ec)) {
-    std::filesystem::remove(drawn, ec);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !(std::filesystem::file_size(drawn, ec) > 0))
     throw std::runtime_error(fmt::format("gnuplot could not draw the figure {}: {}", path.string(), said.str()));
-  }
-  std::filesystem::rename(drawn, path, ec);
-  if (ec) {
-    std::filesystem::remove(drawn, ec);
-    throw std::runtime_error(fmt::format("cannot write the figure {}: {}", path.string(), ec.message()));
-  }
+  std::ostringstream figure;
+  figure << std::ifstream(drawn, std::ios::binary).rdbuf();
+  write_file_atomically(path, figure.str());
 }
 
 }  // namespace hertzdash::cli

@@ -2,8 +2,8 @@
 // `--figure FILE` (issue 46): a figure drawn by gnuplot with one of the embedded scripts
 // (validation/fit_figure.gp, in the house style of validation/style.gnuplot and output.gnuplot,
 // embedded by cli/CMakeLists.txt so an installed program needs no source tree), in the format
-// the file's extension names (png, pdf, svg), written atomically: gnuplot draws under a temporary
-// name beside FILE, which replaces FILE only once gnuplot has succeeded.
+// the file's extension names (png, pdf, svg): gnuplot draws in a temporary directory, and the
+// figure is written to FILE as every output is (io/atomic_file.hpp), only once gnuplot has succeeded.
 #include "hertzdash/io/csv_writer.hpp"
 
 #include <filesystem>

@@ -273,7 +273,10 @@ Command add_fit_command(CLI::App& app) {
     if (key == "fit" && !setup_added) add_run_options(*sub, opt->run, RunOption::Group::setup), setup_added = true;
     if (o.decl.type == ParameterType::flag) sub->add_flag("--" + key, opt->flags[key], help);
     else if (key == "curves" || key == "figure") add_output_file_option(*sub, "--" + key, opt->text[key], help);
-    else sub->add_option("--" + key, opt->text[key], help + (o.decl.default_value.empty() ? "" : " (default: " + std::string(o.decl.default_value) + ")"));
+    else
+      sub->add_option("--" + key, opt->text[key],
+                      help + (o.decl.default_value.empty() ? "" : " (default: " + std::string(o.decl.default_value) + ")"))
+          ->type_name(o.decl.type == ParameterType::number ? "FLOAT" : "TEXT");
   }
 
   return {sub, [opt, sub]() {

@@ -7,7 +7,7 @@
 # 1-sigma band (CURVE); (b) the residuals e_measured - e_model.
 # KIND 'trace' (`fit --curves` columns, write_fit_curves): per channel (EXTRA: their names,
 # space-separated) the trace and the fitted model against time, and below it the residuals.
-# Draws OUT_BASE.FORMAT (png, pdf or svg), under figure_suffix until the program renames it.
+# Draws OUT_BASE.FORMAT (png, pdf or svg), in a temporary directory the program copies it from.
 here = system('dirname "'.ARG0.'"')
 kind = ARG1
 title_text = ARG4

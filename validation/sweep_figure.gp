@@ -5,7 +5,7 @@
 # rig: the bifurcation diagram of a rig's sweep over KEY, from its per-impact table
 # (CSV.impacts.csv, docs/sweep.md): (a) every kept impact's phase of the drive, (b) its impact
 # speed, against KEY. rows: each of OUTPUTS (space-separated columns of the rows) against KEY.
-# Draws OUT_BASE.FORMAT (png, pdf or svg), under figure_suffix until the program renames it.
+# Draws OUT_BASE.FORMAT (png, pdf or svg), in a temporary directory the program copies it from.
 here = system('dirname "'.ARG0.'"')
 load here.'/style.gnuplot'
 key_column = ARG5
