@@ -1,6 +1,7 @@
 #include "cli/figure_file.hpp"
 
 #include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/remove_on_signal.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
@@ -62,8 +63,18 @@ std::string figure_format(const std::string& option, const std::filesystem::path
   return ext.substr(1);
 }
 
+void require_gnuplot(const std::string& option, const std::filesystem::path& path) {
+  figure_format(option, path);
+  const char* env = std::getenv("PATH");
+  std::istringstream dirs(env ? env : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (!dir.empty() && access((std::filesystem::path(dir) / "gnuplot").c_str(), X_OK) == 0) return;
+  throw InvalidParameter(option, path.string(), "given where gnuplot is installed (it draws the figure; debian-packages.txt)");
+}
+
 void draw_figure(const std::string& script, const std::string& kind, const std::vector<const CsvWriter*>& data,
                  const std::vector<std::string>& arguments, const std::filesystem::path& path) {
+  const SignalHold hold;  // as below: the data's directory too
   TemporaryDirectory dir;
   std::vector<std::filesystem::path> files;
   for (std::size_t k = 0; k < data.size(); ++k) {
@@ -76,20 +87,25 @@ void draw_figure(const std::string& script, const std::string& kind, const std::
 void draw_figure_from_files(const std::string& script, const std::string& kind, const std::vector<std::filesystem::path>& files,
                  const std::vector<std::string>& arguments, const std::filesystem::path& path) {
   const std::string format = figure_format("figure", path);
+  // Signals wait until the temporary directory is gone (a figure takes a second; gnuplot itself,
+  // in the terminal's process group, takes a Ctrl-C at once).
+  const SignalHold hold;
   TemporaryDirectory dir;
   for (const auto& [name, text] : scripts) write_text(dir.path / name, text);
   // gnuplot draws in the temporary directory; the figure is then written to `path` as every
   // output is (io/atomic_file.hpp: whole or not at all, a link followed, a FIFO written through).
   const std::filesystem::path base = dir.path / "figure", drawn = dir.path / ("figure." + format);
-  std::vector<std::string> args{"gnuplot", "-c", (dir.path / script).string(), kind, base.string(), format};
+  // -d: the house style only, not the user's ~/.gnuplot.
+  std::vector<std::string> args{"gnuplot", "-d", "-c", (dir.path / script).string(), kind, base.string(), format};
   args.insert(args.end(), arguments.begin(), arguments.end());
   for (const std::filesystem::path& f : files) args.push_back(f.string());
   const std::filesystem::path messages = dir.path / "gnuplot.err";
 
   posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  if (posix_spawn_file_actions_init(&actions) != 0 ||
+      posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0) != 0 ||
+      posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600) != 0)
+    throw std::runtime_error("cannot prepare gnuplot's output for the figure " + path.string());
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -106,7 +122,9 @@ void draw_figure_from_files(const std::string& script, const std::string& kind, 
   std::ostringstream said;
   said << std::ifstream(messages).rdbuf();
   std::error_code ec;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !(std::filesystem::file_size(drawn, ec) > 0))
+  // gnuplot only warns of a data file it cannot read, and draws an empty plot: a failure here.
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !(std::filesystem::file_size(drawn, ec) > 0) ||
+      said.str().find("Cannot find or open file") != std::string::npos)
     throw std::runtime_error(fmt::format("gnuplot could not draw the figure {}: {}", path.string(), said.str()));
   std::ostringstream figure;
   figure << std::ifstream(drawn, std::ios::binary).rdbuf();

@@ -15,6 +15,10 @@ namespace hertzdash::cli {
 /// "png", "pdf" or "svg" from `path`'s extension (any case); InvalidParameter naming `option` otherwise.
 std::string figure_format(const std::string& option, const std::filesystem::path& path);
 
+/// figure_format, and gnuplot on the PATH (before any work: a figure asked for is not lost at
+/// the end of a long run); InvalidParameter naming `option` and debian-packages.txt otherwise.
+void require_gnuplot(const std::string& option, const std::filesystem::path& path);
+
 /// Draw `script` (an embedded script's name) with the arguments `kind`, the output's base and
 /// format, `arguments`, then the CSV files of `data` (written to a temporary directory); gnuplot's failure (it cannot be run, or exits non-zero) throws
 /// std::runtime_error with its messages, and leaves no file.

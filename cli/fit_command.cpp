@@ -47,11 +47,6 @@ std::vector<std::string> given_options(const CLI::App& sub) {
   return given;
 }
 
-// cv_rms values within this relative difference of the first of a group share its cv_rank: laws
-// that make the same e predict to within about 1e-4 of each other, and a prediction error is
-// itself uncertain by far more.
-constexpr double cv_tie = 1e-3;
-
 // The profile-likelihood intervals, where computed (--profile-intervals).
 void print_profile_intervals(const std::vector<FittedParameter>& parameters) {
   for (const FittedParameter& p : parameters)
@@ -138,21 +133,7 @@ void print_law_ranking(const FitRun& r) {
     std::cout << fmt::format("  {:>3} {:<22} {:>12} {:>10} {:>12} {:>21}", "", "law (best first)", "AIC", "dAIC", "BIC",
                              "model e range");
   std::cout << (cv ? fmt::format(" {:>12} {:>8}", cv_header, "cv_rank") : "") << "\n";
-  std::vector<std::size_t> cv_rank(r.fits.size(), 0);
-  if (cv) {
-    std::vector<std::size_t> order;
-    for (std::size_t i = 0; i < r.fits.size(); ++i)
-      if (r.fits[i].cross_validation && r.fits[i].cross_validation->failure.empty()) order.push_back(i);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return r.fits[a].cross_validation->rms_prediction_error < r.fits[b].cross_validation->rms_prediction_error;
-    });
-    // Laws whose cv_rms is within cv_tie of the first of a group share its rank (1, 1, 3).
-    const auto rms = [&](std::size_t k) { return r.fits[order[k]].cross_validation->rms_prediction_error; };
-    for (std::size_t k = 0, first = 0; k < order.size(); ++k) {
-      if (k == 0 || !(rms(k) - rms(first) <= cv_tie * rms(first))) first = k;
-      cv_rank[order[k]] = first + 1;
-    }
-  }
+  const std::vector<std::size_t> cv_rank = cv_ranks(r.fits);
   std::string ties;
   const std::vector<std::size_t> rank = aic_ranks(r.fits);
   for (std::size_t i = 0; i < r.fits.size(); ++i) {
@@ -180,7 +161,7 @@ void print_law_ranking(const FitRun& r) {
   }
   if (r.fits.front().failed) std::cout << "  best: none, every fit failed\n";
   else std::cout << fmt::format("  best: '{}'{}\n", r.fits.front().law,
-                           ties.empty() ? "" : fmt::format(" (tied within dAIC < {:g}: {})", aic_preference, ties));
+                           ties.empty() ? "" : fmt::format(" (not preferred by AIC over: {}, within dAIC < {:g})", ties, aic_preference));
   if (!trace) std::cout << fmt::format("  damping law '{}'\n", r.fits.front().law);
   print_fit(r, r.fits.front());
 }
@@ -257,7 +238,7 @@ void write_fit_outputs(const FitRun& r, const PaperParameters& paper, const std:
                                                                             : (r.table.synthetic ? " (SYNTHETIC)" : ""),
                                         f.law, f.e_effective.value, f.e_effective.standard_error);
   draw_figure("fit_figure.gp", "e", {&points, &law},
-              {title, r.kind == FitDataKind::bounce_times ? "e per bounce (drag-corrected)" : "the table's e"}, figure);
+              {title, r.kind == FitDataKind::bounce_times ? "each bounce, drag-corrected" : "the table's rows"}, figure);
 }
 
 }  // namespace
@@ -273,10 +254,12 @@ Command add_fit_command(CLI::App& app) {
     if (key == "fit" && !setup_added) add_run_options(*sub, opt->run, RunOption::Group::setup), setup_added = true;
     if (o.decl.type == ParameterType::flag) sub->add_flag("--" + key, opt->flags[key], help);
     else if (key == "curves" || key == "figure") add_output_file_option(*sub, "--" + key, opt->text[key], help);
+    else if (o.decl.type == ParameterType::number)  // read as decimal text, its range checked by fit_request
+      add_number_option(*sub, "--" + key, [opt, key](double v) { opt->text[key] = fmt::format("{}", v); },
+                        help + (o.decl.default_value.empty() ? "" : " (default: " + std::string(o.decl.default_value) + ")"));
     else
       sub->add_option("--" + key, opt->text[key],
-                      help + (o.decl.default_value.empty() ? "" : " (default: " + std::string(o.decl.default_value) + ")"))
-          ->type_name(o.decl.type == ParameterType::number ? "FLOAT" : "TEXT");
+                      help + (o.decl.default_value.empty() ? "" : " (default: " + std::string(o.decl.default_value) + ")"));
   }
 
   return {sub, [opt, sub]() {
@@ -296,7 +279,7 @@ Command add_fit_command(CLI::App& app) {
             request.settings.progress = [](const std::string& line) { std::cerr << "hertzdash: fit: " << line << "\n"; };
             const std::string &curves = opt->text["curves"], &figure = opt->text["figure"];
             const bool mkdir = opt->flags["mkdir"];
-            if (!figure.empty()) figure_format("figure", figure);
+            if (!figure.empty()) require_gnuplot("figure", figure);
             prepare_output_file("--curves", curves, mkdir);
             prepare_output_file("--figure", figure, mkdir);
             refuse_shared_files({{"--" + std::string(fit_kind_option(request.kind)), request.path}},
@@ -306,9 +289,10 @@ Command add_fit_command(CLI::App& app) {
             if (r.fits.empty() && r.kind == FitDataKind::trace)
               throw std::runtime_error("no damping law could be fitted to the trace");
             report_diagnostics(fit_diagnostics(r, paper));
-            if (!r.fits.empty()) write_fit_outputs(r, paper, curves, figure, mkdir);
             if (opt->flags["json"]) std::cout << to_json(r, paper).dump(2) << "\n";
             else print_text(r, paper);
+            std::cout.flush();  // the result stands even if its figure cannot be drawn
+            if (!r.fits.empty()) write_fit_outputs(r, paper, curves, figure, mkdir);
             if (r.fits.empty()) return exit_fit_failed;
             return r.fits.front().failed ? exit_fit_failed : 0;
           }};

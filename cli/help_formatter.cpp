@@ -1,5 +1,6 @@
 #include "cli/help_formatter.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <sstream>
 #include <string_view>
@@ -68,6 +69,14 @@ std::string short_help(const std::string& help) {
     const std::size_t end = find_outside_brackets(body, {"; ", ": "}, rest);
     summary = choice_name ? std::string("One of") : summary + ": " + body.substr(rest, end - rest);
   }
+  // A long list of values or a long default is left to `hertzdash parameters`: one line each.
+  constexpr std::size_t longest_choices = 60, longest_default = 32;
+  if (choices.size() > longest_choices) {
+    const std::size_t n = 1 + static_cast<std::size_t>(std::count(choices.begin(), choices.end(), ','));
+    return summary + (summary == "One of" ? " " : " (one of ") + std::to_string(n) + " values" + (summary == "One of" ? "" : ")") +
+           (default_value.empty() || default_value.size() > longest_default ? "" : " (default: " + default_value + ")");
+  }
+  if (default_value.size() > longest_default) default_value.clear();
   std::ostringstream out;
   out << summary;
   if (choices.find(',') != std::string::npos) out << (summary == "One of" ? ": " : " (one of: ") << choices << (summary == "One of" ? "" : ")");
@@ -75,10 +84,14 @@ std::string short_help(const std::string& help) {
   return out.str();
 }
 
-ShortHelpFormatter::ShortHelpFormatter() { column_width(36); }
+ShortHelpFormatter::ShortHelpFormatter() { column_width(32); }
 
 std::string ShortHelpFormatter::make_option_desc(const CLI::Option* opt) const {
-  return short_help(opt->get_description());
+  std::string text = short_help(opt->get_description());
+  // "--bounces INT=5": CLI11 shows the default already.
+  if (const std::size_t at = text.rfind(" (default: "); at != std::string::npos && !opt->get_default_str().empty())
+    text.erase(at);
+  return text;
 }
 
 std::string ShortHelpFormatter::make_help(const CLI::App* app, std::string name, CLI::AppFormatMode mode) const {

@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -28,6 +29,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string_view>
+#include <variant>
 
 namespace hertzdash::cli {
 
@@ -123,11 +125,17 @@ SweepResults assemble(const std::vector<std::vector<double>>& values, const std:
 // --figure draws a sweep of one varied key (validation/sweep_figure.gp): refused before any run
 // for a case that varies more.
 void check_sweep_figure(const SweepCase& c, const std::string& figure) {
-  figure_format("figure", figure);
+  require_gnuplot("figure", figure);
   if (const std::vector<std::string> varied = c.parameter_columns(); varied.size() != 1)
     throw InvalidParameter("figure", figure,
                            fmt::format("given for a sweep of one varied key, its axis (this case varies {}: {})",
                                        varied.size(), fmt::join(varied, ", ")));
+  const bool numeric = c.grid.empty() || std::all_of(c.grid.front().values.begin(), c.grid.front().values.end(),
+                                                     [](const SweepValue& v) { return std::holds_alternative<double>(v); });
+  if (!numeric)
+    throw InvalidParameter("figure", figure,
+                           fmt::format("given for a sweep over a number, its axis (this case varies {}, a choice)",
+                                       c.parameter_columns().front()));
 }
 
 // A rig's bifurcation diagram from its per-impact table, or simulate's outputs from the rows.

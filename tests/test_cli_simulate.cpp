@@ -48,7 +48,7 @@ TEST_CASE("CLI simulate --json: fields, units and inputs", "[cli]") {
                                          "impact_velocity_mps", "rebound_velocity_mps", "separated", "K_N_per_m_1_5",
                                          "law_coefficients", "steps", "rhs_evaluations", "events", "integrator_used",
                                          "warnings", "inputs", "git_revision"});
-  CHECK(j["schema_version"].get<int>() == 1);
+  CHECK(j["schema_version"].get<int>() == 2);
   const auto& law = j["law_coefficients"];
   CHECK(law.contains("zeta"));
   CHECK(law.contains("omega_n_rad_per_s"));

@@ -323,8 +323,8 @@ TEST_CASE("CLI fit --curves and --compare-laws", "[fit][cli]") {
     CHECK(j["fits"].size() + j["failures"].size() == registered_laws().size());
     for (std::size_t i = 1; i < j["fits"].size(); ++i) CHECK(j["fits"][i]["aic"] >= j["fits"][i - 1]["aic"]);
     const auto text = run_cli("fit --trace " + trace.string() + " --compare-laws");
-    CHECK((text.out.find("best: 'hongo' (tied within dAIC < 2: kuwabara-kono)") != std::string::npos ||
-           text.out.find("best: 'kuwabara-kono' (tied within dAIC < 2: hongo)") != std::string::npos));
+    CHECK((text.out.find("best: 'hongo' (not preferred by AIC over: kuwabara-kono, within dAIC < 2)") != std::string::npos ||
+           text.out.find("best: 'kuwabara-kono' (not preferred by AIC over: hongo, within dAIC < 2)") != std::string::npos));
   }
   SECTION("--compare-laws with a --fit the start lies outside of is the user's error") {
     const auto r = run_cli("fit --trace " + trace.string() + " --compare-laws --fit restitution:0.9:1");

@@ -28,20 +28,20 @@ if (kind eq 'e') {
   stats points using 'e_measured' nooutput
   e_lo = STATS_min
   e_hi = STATS_max
-  stats curve using 'e_low':'e_high' nooutput
-  e_lo = STATS_min_x < e_lo ? STATS_min_x : e_lo
-  e_hi = STATS_max_y > e_hi ? STATS_max_y : e_hi
+  stats curve using 'e_model' nooutput
+  e_lo = STATS_min < e_lo ? STATS_min : e_lo
+  e_hi = STATS_max > e_hi ? STATS_max : e_hi
   set ytics nice_step(e_hi - e_lo)
   set multiplot
   # The two panels share their x axis: the same margins, the key to the right of the upper one.
   set lmargin at screen 0.18
-  set rmargin at screen 0.64
+  set rmargin at screen 0.57
   set tmargin at screen 0.88
   set bmargin at screen 0.45
   set label 1 title_text at screen 0.02, 0.955 left noenhanced
   set format x ''
   set ylabel 'Coefficient of restitution'
-  set key outside right top Left reverse font ',8' nobox
+  set key at screen 0.585, 0.88 left top Left reverse samplen 1.2 width -2 font ',8' nobox noopaque
   plot curve using 'impact_speed_mps':'e_low':'e_high' with filledcurves ls 11 title 'fitted law, 1-sigma band', \
        curve using 'impact_speed_mps':'e_model' with lines ls 1 title 'fitted law', \
        points using 'speed_measured_mps':'e_measured' with points ls 3 ps 0.6 title extra
@@ -65,7 +65,7 @@ if (kind eq 'e') {
   channel_label(c) = c eq 'force_N' ? 'Force (N)' : c eq 'accel_mps2' ? 'Acceleration (m/s^2)' : \
                      c eq 'displacement_m' ? 'Displacement (m)' : c eq 'velocity_mps' ? 'Velocity (m/s)' : c
   set multiplot
-  set lmargin at screen 0.18
+  set lmargin at screen 0.2
   set rmargin at screen 0.97
   set autoscale xfix
   set format y '%g'

@@ -51,7 +51,7 @@ key_panel = "unset logscale; unset border; unset tics; unset grid; unset xlabel;
             "samplen 2 spacing 1.0 width 0"
 # Read a "# name: value" provenance line from a CSV written by CsvWriter.
 csv_parameter(file, name) = system(sprintf("sed -n 's/^# %s: //p' '%s' | head -n 1", name, file))
-# A tick step for about three ticks over a range r (1, 2 or 5 times a power of ten): panels too
-# short for gnuplot's own choice (`fit --figure`, `sweep --figure`).
-nice_step(r) = (r <= 0 ? 1 : (r / 3 / 10**floor(log10(r / 3)) < 1.5 ? 1 : r / 3 / 10**floor(log10(r / 3)) < 3.5 ? 2 : 5) \
-               * 10**floor(log10(r / 3)))
+# A tick step for at most four ticks over a range r: the least of 1, 2, 5 or 10 times a power of
+# ten at or above r / 3 (panels too short for gnuplot's own choice: `fit --figure`, `sweep --figure`).
+nice_mantissa(m) = m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10
+nice_step(r) = r <= 0 ? 1 : nice_mantissa(r / 3 / 10**floor(log10(r / 3))) * 10**floor(log10(r / 3))

@@ -179,7 +179,7 @@ struct ImpactRestitution {
 
 /// The physical e a fit reports first (issue 46): the fitted model's effective restitution over
 /// the data's impacts (a table's rows, a recording's impacts, a trace's one), not the law's input
-/// e. `value` is their mean; `standard_error` its 1-sigma error, g^T C g with g the gradient of the
+/// e. `value` is their mean; `standard_error` its 1-sigma error, sqrt(g^T C g) with g the gradient of the
 /// mean over the law's variables (central differences, step effective_restitution_step) and C
 /// their block of the fit's covariance (the impacts' speeds held at the estimate's); the range and
 /// the speeds at its ends show a dependence on speed; each impact's e with its error draws the

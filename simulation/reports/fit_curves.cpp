@@ -113,8 +113,10 @@ CsvWriter law_curve_csv(const FitRun& run, const FitResult& fit) {
                 curves_header(run, fit), {"impact_speed_mps", "e_model", "e_low", "e_high"});
   std::vector<ImpactRestitution> at = fit.e_effective.impacts;
   std::sort(at.begin(), at.end(), [](const ImpactRestitution& a, const ImpactRestitution& b) { return a.speed_mps < b.speed_mps; });
-  for (const ImpactRestitution& i : at)
-    csv.add_row({i.speed_mps, i.e, i.e - i.standard_error, i.e + i.standard_error});
+  for (const ImpactRestitution& i : at) {  // no band where the error is unknown or infinite (a failed fit)
+    const double se = std::isfinite(i.standard_error) ? i.standard_error : NAN;
+    csv.add_row({i.speed_mps, i.e, i.e - se, i.e + se});
+  }
   return csv;
 }
 

@@ -317,10 +317,11 @@ json to_json(const FitRun& run, const PaperParameters& paper) {
     }
   }
   json fits = json::array();
-  const std::vector<std::size_t> ranks = aic_ranks(run.fits);
+  const std::vector<std::size_t> ranks = aic_ranks(run.fits), cv = cv_ranks(run.fits);
   for (std::size_t i = 0; i < run.fits.size(); ++i) {
     fits.push_back(fit_json(run, run.fits[i], paper));
     fits.back()["aic_rank"] = ranks[i];
+    if (run.fits[i].cross_validation) fits.back()["cv_rank"] = cv[i] ? json(cv[i]) : json(nullptr);
   }
   j["fits"] = fits;
   json failures = json::array();

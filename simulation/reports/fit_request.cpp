@@ -92,9 +92,13 @@ FitRequest fit_request(const std::map<std::string, std::string>& values, const R
   for (const FitOption& o : options) {
     const auto it = values.find(std::string(o.decl.key));
     if (it == values.end()) continue;
-    if (!(o.kinds & (1u << named)))
+    if (!(o.kinds & (1u << named))) {
+      std::string readers;
+      for (int k = 0; k < 3; ++k)
+        if (o.kinds & (1u << k)) readers += fmt::format("{}`{}`", readers.empty() ? "" : " or ", kind_option[k]);
       throw InvalidParameter(std::string(o.decl.key), it->second,
-                             fmt::format("omitted with `{}` (it is read with `trace` only)", kind_option[named]));
+                             fmt::format("omitted with `{}` (it is read with {} only)", kind_option[named], readers));
+    }
     const std::string& v = it->second;
     if (o.decl.key == "fit") r.fit = v;
     else if (o.decl.key == "channels") r.settings.channels = parse_channels(v, "channels");

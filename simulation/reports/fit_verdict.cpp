@@ -80,6 +80,9 @@ std::string drag(const FitRun& run, const PaperParameters& paper) {
   const Rise rise = rise_to_apex(rebound, s.gravity_mps2, v_t);
   const double change = best.e_effective.value * (1.0 - fall_from_rest(rise.height_m, s.gravity_mps2, v_t).speed_mps / rebound);
   const double error = best.e_effective.standard_error;
+  if (!std::isfinite(error))
+    return fmt::format("air drag {}: it lowers the apparent e by up to {:.2g} (e's error unknown)",
+                       given > 0 ? "modelled" : "not modelled (`air-density`)", change);
   if (given > 0)
     return fmt::format("air drag modelled (`air-density` {:g}): it lowers the apparent e by up to {:.2g} ({:.3g} times "
                        "e's error)",
@@ -136,6 +139,19 @@ std::vector<std::size_t> aic_ranks(const std::vector<FitResult>& fits) {
   return rank;
 }
 
+std::vector<std::size_t> cv_ranks(const std::vector<FitResult>& fits) {
+  std::vector<std::size_t> rank(fits.size(), 0), order;
+  for (std::size_t i = 0; i < fits.size(); ++i)
+    if (fits[i].cross_validation && fits[i].cross_validation->failure.empty()) order.push_back(i);
+  const auto rms = [&fits](std::size_t i) { return fits[i].cross_validation->rms_prediction_error; };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rms(a) < rms(b); });
+  for (std::size_t k = 0, first = 0; k < order.size(); ++k) {
+    if (k == 0 || !(rms(order[k]) - rms(order[first]) <= cv_rank_tie * rms(order[first]))) first = k;
+    rank[order[k]] = first + 1;
+  }
+  return rank;
+}
+
 bool poor_fit(const FitResult& f) {
   if (f.sigma_estimated || f.n <= f.p || !(f.reduced_chi_square > poor_fit_reduced_chi_square)) return false;
   return gsl_cdf_chisq_Q(f.chi_square, static_cast<double>(f.n - f.p)) < poor_fit_probability;
@@ -185,8 +201,10 @@ std::vector<RunDiagnostic> unit_diagnostics(const FitRun& run, const PaperParame
     if (std::abs(decades - nearest) < 0.2 && nearest >= 1 && nearest <= 3)
       hint = fmt::format("a height in {} written in drop_height_m (the column is in metres)?",
                          nearest == 1 ? "dm" : nearest == 2 ? "cm" : "mm");
-    else if (std::abs(decades - nearest) < 0.2 && nearest <= -1)
-      hint = "the times in the wrong unit, or the height of another drop?";
+    else if (std::abs(decades - nearest) < 0.3 && nearest == -6)
+      hint = "times in ms in the column impact_time_s (a fall a million times too long)? name it impact_time_ms";
+    else if (nearest <= -1)
+      hint = "the times in the wrong unit (ms in impact_time_s: name it impact_time_ms), or the height of another drop?";
     w.push_back({"warning", "drop_height_units",
                  fmt::format("drop '{}': its drop_height_m {:g} gives a first impact speed of {:.4g} m/s, the times "
                              "{:.4g} m/s (a fall of {:.3g} m): {}",

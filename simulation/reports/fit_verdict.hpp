@@ -31,6 +31,15 @@ inline constexpr double poor_fit_probability = 1e-3;
 /// first two's AIC differ by less than aic_rank_tie; failed fits after every other.
 std::vector<std::size_t> aic_ranks(const std::vector<FitResult>& fits);
 
+/// Cross-validated prediction errors within this relative difference of the first of a group
+/// share its cv_rank: laws that make the same e predict to within about 1e-4 of each other, and a
+/// prediction error is itself uncertain by far more.
+inline constexpr double cv_rank_tie = 1e-3;
+
+/// The rank of each fit by its cross-validated prediction error, ties as above (1, 1, 3); 0 for
+/// a fit not cross-validated, or whose cross-validation failed.
+std::vector<std::size_t> cv_ranks(const std::vector<FitResult>& fits);
+
 /// Whether the user gave fit `f` a body of their own: a mass, modulus, Poisson ratio or radius
 /// set in its options that it did not estimate.
 bool own_body(const FitResult& f);
@@ -47,8 +56,9 @@ std::string default_body_notice(const FitRun& run, const PaperParameters& paper)
 std::string fit_verdict(const FitRun& run, const PaperParameters& paper);
 
 /// Warnings of likely unit mistakes (drop_height_units): a drop whose fitted first impact speed
-/// gives a height (v0^2 / 2g) more than twice or less than half its drop_height_m; the hint
-/// names the column and the factor (a height in cm or mm written as m).
+/// falls from a height (with the run's drag) more than twice or less than half its
+/// drop_height_m; the hint names the column and the factor (a height in cm or mm written as m),
+/// or impact_time_ms where the fall is far too long (times in ms: a million times the height).
 std::vector<RunDiagnostic> unit_diagnostics(const FitRun& run, const PaperParameters& paper);
 
 }  // namespace hertzdash

@@ -20,7 +20,7 @@
 namespace hertzdash {
 
 /// Version of the JSON reports below ("schema_version"); see docs/json-output.md.
-inline constexpr int json_schema_version = 1;
+inline constexpr int json_schema_version = 2;
 
 /// One drop test as asked for.
 struct SimulateRun {

@@ -26,7 +26,8 @@
 //     table has no e_sd), AIC = n ln(RSS/n) + 2(k+1), BIC, leave-one-speed-out cross-validation.
 //     The law with the least AIC fits best; the one with the least cross-validated RMS
 //     prediction error predicts best. A law whose fitted e is the same at every speed of the
-//     table (max - min < 1e-6, the model's accuracy being ~1e-10) is speed-independent.
+//     table is speed-independent, as `fit`'s verdict says it (constant_e, fit_verdict.hpp: its
+//     range below 1e-3; the laws calibrated at each impact's own speed vary by ~1e-10 here).
 //  3. Each law's fitted e on a dense grid of speeds (0.3-7 m/s) for the figure, and the
 //     viscoelastic law's residuals: their sign changes along the speed axis (about (n - 1)/2 for
 //     random scatter, few for a systematic misfit).
@@ -51,6 +52,7 @@
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/simulation/fit/restitution_fit.hpp"
 #include "hertzdash/simulation/run/calibrate_restitution.hpp"
+#include "hertzdash/simulation/reports/fit_verdict.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "validation/common/study_args.hpp"
 
@@ -67,7 +69,6 @@ using namespace hertzdash;
 namespace {
 
 constexpr const char* viscoelastic = "kuwabara-kono";
-constexpr double speed_independent_span = 1e-6;  // fitted e max - min below it: one e at every speed
 constexpr double dense_min_mps = 0.3, dense_max_mps = 7.0;
 
 /// A value of a `parameter,value,unit,provenance` table (ball.csv).
@@ -170,7 +171,7 @@ int main(int argc, char** argv) try {
     if (f.law == viscoelastic) kk_fit = &f;
   }
   if (!hongo || !kk_fit || kk_fit->failed) throw std::runtime_error("the paper's or the viscoelastic law was not fitted");
-  auto speed_independent = [](const FitResult& f) { return f.e_effective.max - f.e_effective.min < speed_independent_span; };
+  auto speed_independent = [](const FitResult& f) { return constant_e(f.e_effective); };
   int constant_laws = 0, not_converged_constant = 0;
   std::vector<std::string> not_converged;
   for (const FitResult& f : comparison.fits) {
