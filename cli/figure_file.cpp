@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <cstdlib>
 #include <fstream>
@@ -123,7 +124,8 @@ void draw_figure_from_files(const std::string& script, const std::string& kind, 
   said << std::ifstream(messages).rdbuf();
   std::error_code ec;
   // gnuplot only warns of a data file it cannot read, and draws an empty plot: a failure here.
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !(std::filesystem::file_size(drawn, ec) > 0) ||
+  const std::uintmax_t size = std::filesystem::file_size(drawn, ec);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || ec || size == 0 ||
       said.str().find("Cannot find or open file") != std::string::npos)
     throw std::runtime_error(fmt::format("gnuplot could not draw the figure {}: {}", path.string(), said.str()));
   std::ostringstream figure;
