@@ -259,4 +259,12 @@ TEST_CASE("a rig's help lists what it reads, and what it never reads is refused 
     CHECK(given.exit_code == 2);
     CHECK(given.err.find("invalid --air-density = 1.2: must be given only with") != std::string::npos);
   }
+  // The shaker's help said --gravity "0 allowed" and its refusal of 0 named --impact-velocity,
+  // an option the shaker does not take: both are the shaker's own now.
+  const auto help = run_cli("shaker --help");
+  CHECK(help.out.find("0 allowed") == std::string::npos);
+  const auto zero = run_cli("shaker --gravity 0");
+  CHECK(zero.exit_code == 2);
+  CHECK(zero.err.find("invalid --gravity = 0: must be > 0 for the shaker") != std::string::npos);
+  CHECK(zero.err.find("impact-velocity") == std::string::npos);
 }

@@ -36,6 +36,11 @@ void refuse_shaker_inputs(const RunOptions& options, const RigInputs& in) {
   if (in.number("amplitude") && in.number("gamma"))
     throw InvalidParameter("gamma", format_value(*in.number("gamma")), "omitted with `amplitude` (one sets the other)");
   refuse_trace_only_options(options, "hertzdash shaker");
+  // Without gravity a body the wall throws off never comes back (the drop test's own refusal
+  // would name `impact-velocity`, which the shaker does not read).
+  if (options.gravity_mps2 && !(*options.gravity_mps2 > 0))
+    throw InvalidParameter("gravity", format_value(*options.gravity_mps2),
+                           "> 0 for the shaker: gravity returns the body to the wall, without it no impact follows");
   const std::string model = in.text("impact-model").value_or(std::string(p::impact_model.default_value));
   if (parse_shaker_impact_model(model) == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g
     RunOptions defaults;
@@ -118,6 +123,7 @@ constexpr RigFieldOf<Run> results[] = {
 
 constexpr RigOptionNote notes[] = {
     shaker_integrator_note,
+    {"gravity", "Gravity g [m/s^2] > 0, which returns the body to the wall (default: 9.80665; standard gravity)"},
     {"height", "Height [m] above the wall's mean position from which the body is released at rest at --start-phase; "
                "0: at rest on the wall (default: the apex of the instantaneous map's period-1 orbit, docs/shaker.md)"}};
 
