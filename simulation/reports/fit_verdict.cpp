@@ -127,7 +127,6 @@ bool own_body(const FitResult& f) {
   return false;
 }
 
-
 std::vector<std::size_t> aic_ranks(const std::vector<FitResult>& fits) {
   std::vector<std::size_t> rank(fits.size());
   for (std::size_t i = 0, first = 0; i < fits.size(); ++i) {
