@@ -19,20 +19,31 @@ inline RunOptions hongo_truth() {
   return o;
 }
 
-/// The onset times [s] of `impacts` impacts of `truth` from first approach speed v0, from 0.
-inline std::vector<double> bounce_onsets(RunOptions truth, double v0, int impacts) {
+/// The sequence of `impacts` impacts of `truth` from first approach speed v0, onsets from 0.
+inline BounceSequence bounce_truth(RunOptions truth, double v0, int impacts) {
   truth.impact_velocity_mps = v0;
   truth.rtol = 1e-12;
   BounceOptions b;
   b.impacts = impacts;
   b.min_rebound_velocity_mps = 0;
-  return run_bounce(truth, load_paper_parameters(), b).sequence.onset_times_s;
+  return run_bounce(truth, load_paper_parameters(), b).sequence;
 }
 
 struct SyntheticDrop {
   std::string label;
   double v0_mps, clock_offset_s;
 };
+
+/// The truth's e_effective over a recording of `drops` of `impacts` impacts each: the mean of
+/// rebound / approach speed over every impact of every drop, as the recording's runs made them.
+inline double true_e_effective(const RunOptions& truth, const std::vector<SyntheticDrop>& drops, int impacts) {
+  double sum = 0;
+  int n = 0;
+  for (const SyntheticDrop& d : drops)
+    for (const BounceImpact& i : bounce_truth(truth, d.v0_mps, impacts).impacts)
+      sum += i.rebound_speed_mps / i.approach_speed_mps, ++n;
+  return sum / n;
+}
 
 /// Three drops (0.4, 0.6, 0.8 m/s; clock offsets 1.25 s, -3 s, 100.5 s) of `impacts` impacts.
 inline std::vector<SyntheticDrop> three_drops() {
@@ -50,7 +61,7 @@ inline BounceRecording synthetic_recording(const RunOptions& truth, const std::v
   std::normal_distribution<double> jitter(0.0, sigma_s > 0 ? sigma_s : 1.0);
   for (const SyntheticDrop& d : drops) {
     RecordedDrop rd{d.label, {}, {}, 0.0};
-    for (double t : bounce_onsets(truth, d.v0_mps, impacts)) {
+    for (double t : bounce_truth(truth, d.v0_mps, impacts).onset_times_s) {
       rd.impact_time_s.push_back(d.clock_offset_s + t + (sigma_s > 0 ? jitter(rng) : 0.0));
       rd.where.push_back("synthetic.csv:" + std::to_string(rd.where.size() + 1));
     }

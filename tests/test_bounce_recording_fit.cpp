@@ -88,17 +88,7 @@ TEST_CASE("bounce recording: timing jitter is estimated, the truth lies within t
 // impacts) as often; the speeds it is taken at move with the drops' fitted v0 by ~1e-4 m/s, which
 // moves the paper's law's e by ~1e-9, far below its standard error.
 TEST_CASE("bounce recording: the 1-sigma intervals cover the truth about 68 % of the time", "[bounce_fit]") {
-  double e_effective_true = 0;
-  int impacts = 0;
-  for (const SyntheticDrop& d : three_drops()) {
-    RunOptions o = hongo_truth();
-    o.impact_velocity_mps = d.v0_mps, o.rtol = 1e-12;
-    BounceOptions b;
-    b.impacts = 8, b.min_rebound_velocity_mps = 0;
-    for (const BounceImpact& i : run_bounce(o, load_paper_parameters(), b).sequence.impacts)
-      e_effective_true += i.rebound_speed_mps / i.approach_speed_mps, ++impacts;
-  }
-  e_effective_true /= impacts;
+  const double e_effective_true = true_e_effective(hongo_truth(), three_drops(), 8);
   int covered = 0, covered_e_effective = 0;
   const int seeds = 50;
   for (int seed = 100; seed < 100 + seeds; ++seed) {

@@ -43,22 +43,6 @@ const std::string ball_options = "--mass 2.7e-3 --ball-radius 0.02 --ball-E 2.4e
 // Five drops of eight impacts from 0.9 to 3.1 m/s (drops of 4 to 50 cm).
 const std::vector<SyntheticDrop> five_drops{{"1", 0.9, 0.1}, {"2", 1.5, 0.2}, {"3", 2.0, 0.3}, {"4", 2.6, 0.4}, {"5", 3.1, 0.5}};
 
-// The truth's e_effective over those impacts: the mean of rebound / approach speed of each
-// impact of each drop, as the synthetic recording's run made them (CVODE at rtol 1e-12).
-double true_e_effective() {
-  double sum = 0;
-  int n = 0;
-  for (const SyntheticDrop& d : five_drops) {
-    RunOptions o = ping_pong();
-    o.impact_velocity_mps = d.v0_mps, o.rtol = 1e-12;
-    BounceOptions b;
-    b.impacts = 8, b.min_rebound_velocity_mps = 0;
-    for (const BounceImpact& i : run_bounce(o, load_paper_parameters(), b).sequence.impacts)
-      sum += i.rebound_speed_mps / i.approach_speed_mps, ++n;
-  }
-  return sum / n;
-}
-
 // The five drops, timing jitter sigma_s.
 std::string five_drops_csv(double sigma_s, unsigned seed, const std::string& height_column = "") {
   const std::vector<SyntheticDrop>& drops = five_drops;
@@ -118,7 +102,7 @@ TEST_CASE("a recording's fit says the physical e with its error first, a verdict
   // the fit's accuracy: the input e to ~1e-8 (test_bounce_recording_fit's derivation), which
   // moves e by about as much; the model's gbs8 and the truth's CVODE agree to ~1e-10. And the
   // physical e is not the input e a student would otherwise report.
-  CHECK(e == Approx(true_e_effective()).margin(1e-7));
+  CHECK(e == Approx(true_e_effective(ping_pong(), five_drops, 8)).margin(1e-7));
   CHECK(std::abs(j["fits"][0]["parameters"][0]["estimate"].get<double>() - 0.9) < 1e-7);
   CHECK(e - 0.9 > 0.01);
 
