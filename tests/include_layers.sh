@@ -7,7 +7,7 @@
 #   rank 1  model/  integrators/
 #   rank 2  simulation/run/  simulation/uncertainty/
 #   rank 3  simulation/paper/  simulation/shaker/
-#   rank 4  simulation/options/
+#   rank 4  simulation/options/  simulation/orbits/
 #   rank 5  simulation/rigs/
 #   rank 6  simulation/fit/  simulation/sweep/
 #   rank 7  simulation/reports/
@@ -23,7 +23,7 @@ rank() {
     model|integrators) echo 1 ;;
     simulation/run|simulation/uncertainty) echo 2 ;;
     simulation/paper|simulation/shaker) echo 3 ;;
-    simulation/options) echo 4 ;;
+    simulation/options|simulation/orbits) echo 4 ;;
     simulation/rigs) echo 5 ;;
     simulation/fit|simulation/sweep) echo 6 ;;
     simulation/reports) echo 7 ;;

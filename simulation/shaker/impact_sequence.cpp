@@ -87,6 +87,9 @@ class SequenceRun {
           "(`simulate` refuses such an impact)",
           beyond_hertz_, beyond_hertz_ == 1 ? "" : "s", fastest_, speed_limit_));
     out_.end_time_s = t_now_;
+    out_.end_position_m = body_position(t_now_);
+    out_.end_velocity_mps = body_velocity(t_now_);
+    out_.end_carried = carried_;
     if (s_.energy) out_.energy.final_J = energy_now();
     // The soft contacts' own work (the drive, the dashpots and the law's dissipation while in
     // contact) is not integrated: no balance to report.
@@ -233,6 +236,7 @@ class SequenceRun {
       }
       t_release = r.time_s;
     }
+    if (s_.end_time_s && t_release > *s_.end_time_s) return reach_end_time();
     segment(t_now_, t_release);
     const double X = box_.position_m(t_release), V = box_.velocity_mps(t_release);
     if (dynamic_) box_ = OscillatorMotion(s_.box, t_release, X, V);
@@ -256,7 +260,7 @@ class SequenceRun {
     std::array<SafeRoot, 2> root;
     int hit = -1;
     double limit = t_now_;
-    const double end = t_now_ + max_flight_cycles / s_.frequency_Hz;
+    const double end = std::min(t_now_ + max_flight_cycles / s_.frequency_Hz, s_.end_time_s.value_or(INFINITY));
     for (bool capped = false; hit < 0 && !capped && limit < end;) {
       limit += span_s_;
       double until = limit;
@@ -270,6 +274,12 @@ class SequenceRun {
       }
       for (std::size_t j = 0; j < s_.walls.size(); ++j) search_from_[j] = root[j].root_free_to_s;
     }
+    // The end time comes first: the impact found is after it, or every gap is certified free up to it.
+    if (s_.end_time_s &&
+        (hit >= 0 ? root[static_cast<std::size_t>(hit)].time_s > *s_.end_time_s
+                  : *std::min_element(search_from_.begin(), search_from_.begin() + static_cast<long>(s_.walls.size())) >=
+                        *s_.end_time_s))
+      return reach_end_time();
     if (hit < 0) {
       std::string names = s_.walls[0].name;
       if (s_.walls.size() > 1) names += fmt::format(" or the {}", s_.walls[1].name);
@@ -282,6 +292,14 @@ class SequenceRun {
       return false;
     }
     return impact(static_cast<Wall>(hit), root[static_cast<std::size_t>(hit)].time_s);
+  }
+
+  /// The run reaches end_time_s before the next impact or release: the state there ends it.
+  bool reach_end_time() {
+    segment(t_now_, *s_.end_time_s);
+    t_now_ = *s_.end_time_s;
+    out_.end_reason = fmt::format("the end time {:.9g} s reached", t_now_);
+    return false;
   }
 
   /// The impact on wall `hit` at ti, instantaneous or soft; false: the run ends.

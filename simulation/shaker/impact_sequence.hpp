@@ -35,6 +35,8 @@
 // conserving common velocity. The body leaves where N changes sign (a safe root, |N''| bounded by
 // the closed forms' bounds), and the search for the next impact on that wall starts where the gap's
 // h'' = sigma (y'' - X'') changes sign (before it h = h' = 0 and h'' >= 0 keep the body clear).
+// End: after `transient` plus `impacts` impacts, or at `end_time_s` if set (the state then, in
+// flight or carried, is the result's end state: the stroboscopic map of simulation/orbits/).
 // Kept window: the impacts after the first `transient`, from the transient-th impact (the start if
 // transient = 0) to the end of the run. Its period: simulation/shaker/impact_pattern.hpp.
 // Energy account (a box of mass M or at rest; instantaneous impacts; NaN with soft ones): the drive's
@@ -115,6 +117,7 @@ struct ImpactSequenceSpec {
   double t0_s = 0, y0_m = 0, u0_mps = 0, X0_m = 0, V0_mps = 0;  ///< the start: in flight at (y0, u0), or
   int carried_by = -1;                                         ///< >= 0: carried by that wall
   int impacts = 100, transient = 1000;
+  std::optional<double> end_time_s{};  ///< set: the run also ends there [s] (> t0)
   double restitution = 1;   ///< instantaneous impacts' e
   SoftImpactRun soft{};    ///< set: soft impacts
   /// Soft impacts: the speed at which the undamped Hertz deformation reaches the ball radius
@@ -152,6 +155,8 @@ struct ImpactSequence {
   double peak_phase = 0;   ///< the drive phase of its maximum (NaN: none)
   EnergyAccount energy;    ///< zero without an account, NaN with soft impacts
   double end_time_s = 0;
+  double end_position_m = 0, end_velocity_mps = 0;  ///< the body's state at end_time_s
+  bool end_carried = false;                         ///< the body was on a wall at end_time_s
   std::vector<std::string> warnings;  ///< chatter caps, a body that never leaves, a flight without impact
   std::string end_reason;
   IntegratorKind integrator_used = IntegratorKind::gbs8_regularized;  ///< soft impacts only

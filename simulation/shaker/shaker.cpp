@@ -32,8 +32,8 @@ ShakerStart shaker_start(const ShakerOptions& o, double e, double g) {
   return {o.start_height_m.value_or(start.height_m), o.start_phase.value_or(start.phase)};
 }
 
-ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
-                     const ShakerOptions& options) {
+ShakerSequence make_shaker_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                                    const ShakerOptions& options) {
   validate(setup);
   validate(solver);
   validate(options);
@@ -49,24 +49,32 @@ ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const Sol
                            fmt::format("0 (at rest on the wall) or above the wall at the start, > A sin(2 pi phi0) = "
                                        "{:.6g} m (`start-phase` {:.6g})",
                                        wall.position_m(t0), start.phase));
-  ImpactSequenceSpec spec{
-      .body = {.mass_kg = m, .stiffness_N_per_m = 0, .omega_rad_per_s = w, .constant_force_N = -m * g},
-      .prescribed = OscillatorMotion::prescribed(wall.amplitude_m, w), .walls = {{.name = "wall"}},
-      .frequency_Hz = wall.frequency_Hz, .speed_scale_mps = g * T, .t0_s = t0, .y0_m = start.height_m,
-      .carried_by = start.height_m > 0 ? -1 : 0, .impacts = options.impacts, .transient = options.transient,
-      .restitution = setup.restitution, .pattern = options.pattern};
-  std::unique_ptr<SoftContact<HarmonicForcing>> contact;
+  ShakerSequence out{
+      .spec = {.body = {.mass_kg = m, .stiffness_N_per_m = 0, .omega_rad_per_s = w, .constant_force_N = -m * g},
+               .prescribed = OscillatorMotion::prescribed(wall.amplitude_m, w), .walls = {{.name = "wall"}},
+               .frequency_Hz = wall.frequency_Hz, .speed_scale_mps = g * T, .t0_s = t0, .y0_m = start.height_m,
+               .carried_by = start.height_m > 0 ? -1 : 0, .impacts = options.impacts, .transient = options.transient,
+               .restitution = setup.restitution, .pattern = options.pattern},
+      .integrator_used = std::nullopt};
   if (options.impact_model == ShakerImpactModel::soft) {
-    contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash shaker");
-    spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
-    spec.soft = [&contact, &wall, g](Wall, double t, double v0, double, double, double t_obs) {
+    std::shared_ptr<SoftContact<HarmonicForcing>> contact =
+        make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash shaker");
+    out.integrator_used = contact->integrator_used();
+    out.spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
+    out.spec.soft = [contact, wall, g](Wall, double t, double v0, double, double, double t_obs) {
       return soft_impact(contact->run(harmonic_wall(wall, g, 1.0, t), v0, t_obs));
     };
   }
-  ShakerRun out{run_impact_sequence(spec)};
-  out.gamma = shaker_gamma(wall, g);
+  return out;
+}
+
+ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                     const ShakerOptions& options) {
+  const ShakerSequence sequence = make_shaker_sequence(setup, law, solver, options);
+  ShakerRun out{run_impact_sequence(sequence.spec)};
+  out.gamma = shaker_gamma(options.wall, setup.gravity_mps2);
   out.impact_model = options.impact_model;
-  if (contact) out.integrator_used = contact->integrator_used();
+  if (sequence.integrator_used) out.integrator_used = *sequence.integrator_used;
   return out;
 }
 

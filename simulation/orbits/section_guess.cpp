@@ -1,0 +1,64 @@
+// The brute-force guess of shooting (simulation/orbits/section_guess.hpp).
+#include "hertzdash/simulation/orbits/section_guess.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace hertzdash {
+
+double widest_gap_middle(std::span<const double> phases) {
+  if (phases.empty()) return 0.5;
+  std::vector<double> p(phases.begin(), phases.end());
+  std::ranges::sort(p);
+  // The arc from the last phase round to the first, then each arc between neighbours.
+  double widest = p.front() + 1 - p.back(), middle = p.back() + 0.5 * widest;
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (p[i] - p[i - 1] > widest) widest = p[i] - p[i - 1], middle = p[i - 1] + 0.5 * widest;
+  return middle - std::floor(middle);
+}
+
+SectionGuess section_guess(const ImpactSequenceSpec& spec, std::optional<double> section_phase, std::optional<int> period) {
+  SectionGuess guess;
+  const ImpactSequence run = run_impact_sequence(spec);
+  guess.period = run.pattern.period;
+  guess.impacts_per_period = run.pattern.impacts_per_period;
+  if (run.end_carried || run.impacts.empty()) {
+    guess.failure = fmt::format("the brute-force run ends with the body {}: {}",
+                                run.end_carried ? "on the wall" : "without impacts", run.end_reason);
+    return guess;
+  }
+  if (!period && guess.period == 0) {
+    guess.failure = fmt::format("the brute-force run ({} transient and {} kept impacts) settles on no period: give "
+                                "`period` (and a guess) to look for an orbit",
+                                spec.transient, spec.impacts);
+    return guess;
+  }
+  if (period) guess.period = *period;
+  std::vector<double> phases;
+  for (const SequenceImpact& i : run.impacts) phases.push_back(i.phase);
+  guess.section_phase = section_phase.value_or(widest_gap_middle(phases));
+  // From the end state (just after the last impact) to the next time at the section phase.
+  const double f = spec.frequency_Hz, t_end = run.end_time_s;
+  double t_s = (std::floor(t_end * f) + guess.section_phase) / f;
+  if (t_s <= t_end) t_s += 1 / f;
+  ImpactSequenceSpec flow = spec;
+  flow.t0_s = t_end;
+  flow.y0_m = run.end_position_m;
+  flow.u0_mps = run.end_velocity_mps;
+  flow.carried_by = -1;
+  flow.transient = 0;
+  flow.impacts = max_shaker_impacts;
+  flow.end_time_s = t_s;
+  const ImpactSequence to_section = run_impact_sequence(flow);
+  if (to_section.end_carried || to_section.sticking_episodes > 0) {
+    guess.failure = "the brute-force attractor sticks to the wall (a sticking orbit: the map is not smooth there)";
+    return guess;
+  }
+  guess.state = Eigen::Vector2d(to_section.end_position_m, to_section.end_velocity_mps);
+  return guess;
+}
+
+}  // namespace hertzdash

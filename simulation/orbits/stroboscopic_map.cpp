@@ -1,0 +1,102 @@
+// The stroboscopic map and its monodromy matrix (simulation/orbits/stroboscopic_map.hpp).
+#include "hertzdash/simulation/orbits/stroboscopic_map.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace hertzdash {
+
+namespace {
+
+/// Phi(tau): the flight's fundamental matrix, the free responses from (1, 0) and (0, 1).
+Eigen::Matrix2d flight_matrix(const ForcedOscillator& body, double tau_s) {
+  ForcedOscillator free = body;
+  free.force_amplitude_N = 0;
+  free.constant_force_N = 0;
+  const OscillatorMotion from_position(free, 0, 1, 0), from_velocity(free, 0, 0, 1);
+  Eigen::Matrix2d phi;
+  phi << from_position.position_m(tau_s), from_velocity.position_m(tau_s), from_position.velocity_mps(tau_s),
+      from_velocity.velocity_mps(tau_s);
+  return phi;
+}
+
+/// The body's acceleration a(t, y, u) in flight [m/s^2].
+double acceleration(const ForcedOscillator& b, double t, double y, double u) {
+  return (b.force_derivative(0, t) + b.constant_force_N - b.stiffness_N_per_m * y - b.damping_N_s_per_m() * u) / b.mass_kg;
+}
+
+}  // namespace
+
+StroboscopicMap::StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles)
+    : spec_(std::move(spec)), t_s_(section_phase / spec_.frequency_Hz), cycles_(cycles) {
+  if (!spec_.prescribed || spec_.soft)
+    throw std::invalid_argument("StroboscopicMap: a prescribed box and instantaneous impacts only");
+  if (cycles < 1) throw std::invalid_argument("StroboscopicMap: cycles >= 1");
+  spec_.t0_s = t_s_;
+  spec_.carried_by = -1;
+  spec_.transient = 0;
+  spec_.impacts = max_shaker_impacts;
+  spec_.end_time_s = t_s_ + cycles / spec_.frequency_Hz;
+  spec_.energy = false;
+  spec_.sampled = ImpactSequenceSpec::Sampled::none;
+}
+
+double StroboscopicMap::smallest_gap_m(const Eigen::VectorXd& z) const {
+  double gap = std::numeric_limits<double>::infinity();
+  for (const SequenceWall& w : spec_.walls)
+    gap = std::min(gap, w.sigma * (z(0) - spec_.prescribed->position_m(t_s_) - w.offset_m));
+  return gap;
+}
+
+SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
+  SectionImage image{.state = z, .monodromy = Eigen::MatrixXd::Identity(2, 2), .impacts = {},
+                     .min_impact_speed_mps = std::numeric_limits<double>::infinity(), .failure = {}};
+  if (!(smallest_gap_m(z) > 0)) {
+    image.failure = fmt::format("the state (y = {:.9g} m, u = {:.9g} m/s) is not above the wall", z(0), z(1));
+    return image;
+  }
+  ImpactSequenceSpec spec = spec_;
+  spec.y0_m = z(0);
+  spec.u0_mps = z(1);
+  ImpactSequence run = run_impact_sequence(spec);
+  if (run.sticking_episodes > 0 || run.end_carried) {
+    image.failure = "the body is carried by a wall on the way (a sticking orbit: the map is not smooth there)";
+    return image;
+  }
+  if (!(run.end_time_s == *spec_.end_time_s)) {
+    image.failure = run.end_reason;
+    return image;
+  }
+  const ForcedOscillator& body = spec_.body;
+  const OscillatorMotion& box = *spec_.prescribed;
+  const double e = spec_.restitution;
+  Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+  double t_prev = t_s_;
+  for (const SequenceImpact& i : run.impacts) {
+    const double t = i.time_s, V = box.velocity_mps(t), A = box.acceleration_mps2(t);
+    const SequenceWall& w = spec_.walls[static_cast<std::size_t>(i.wall)];
+    const double y = box.position_m(t) + w.offset_m;
+    const double u_minus = V - w.sigma * i.impact_speed_mps, u_plus = V + w.sigma * i.rebound_speed_mps;
+    // S = R + (f+ - R f- - dr/dt) n^T / (n.f- + dh/dt); n/(n.f- + dh/dt) = (1, 0)/(u- - V).
+    Eigen::Matrix2d R;
+    R << 1, 0, 0, -e;
+    const Eigen::Vector2d f_minus(u_minus, acceleration(body, t, y, u_minus)),
+        f_plus(u_plus, acceleration(body, t, y, u_plus)), r_t(0, (1 + e) * A);
+    Eigen::Matrix2d S = R;
+    S.col(0) += (f_plus - R * f_minus - r_t) / (u_minus - V);
+    M = S * flight_matrix(body, t - t_prev) * M;
+    t_prev = t;
+    image.min_impact_speed_mps = std::min(image.min_impact_speed_mps, i.impact_speed_mps);
+  }
+  M = flight_matrix(body, *spec_.end_time_s - t_prev) * M;
+  image.state = Eigen::Vector2d(run.end_position_m, run.end_velocity_mps);
+  image.monodromy = M;
+  image.impacts = std::move(run.impacts);
+  return image;
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,60 @@
+#pragma once
+// The stroboscopic map of a rig whose box moves as prescribed (the shaker's wall, the driven box,
+// the impact oscillator's stop at rest) and whose impacts are instantaneous: the body's state
+// z = (y [m], u [m/s]) at the drive phase phi_s is carried over N drive periods by the
+// impact-sequence driver (simulation/shaker/impact_sequence.hpp, its `end_time_s`), and its
+// Jacobian, the monodromy matrix, follows from the flights' fundamental matrices and the impacts'
+// saltation matrices (no finite differences):
+//   M = Phi(t_end - t_k) S_k Phi(t_k - t_{k-1}) ... S_1 Phi(t_1 - t_s).
+// Flight: m y'' + c y' + k y = F(t), linear, so its variational equation is dz' = A dz with A
+// constant, and Phi(tau) = exp(A tau) has as columns the free responses (no force) from (1, 0) and
+// (0, 1) (model/forced_oscillator.hpp).
+// Impact at t_i on a wall at X(t) + offset, the body on side sigma: the gap h = sigma (y - X -
+// offset) reaches 0, and Newton's law resets z to r(t, z) = (y, (1 + e) V(t) - e u), V = X'. The
+// impact time moves with the state, dt_i = -n.dz / (n.f- + dh/dt), so (di Bernardo et al.,
+// Piecewise-smooth Dynamical Systems, 2008, sec. 2.5; Leine and Nijmeijer 2004)
+//   S = R + (f+ - R f- - dr/dt) n^T / (n.f- + dh/dt),
+//   R = dr/dz = [[1, 0], [0, -e]],  n = sigma (1, 0),  dh/dt = -sigma V,  dr/dt = (0, (1 + e) X''),
+// with f-+ = (u-+, a(t, y, u-+)) the flight's vector field before and after. For a free flight
+// (a = -g) this is S = [[-e, 0], [(1 + e)(g + X'')/(V - u-), -e]], det S = e^2; det Phi =
+// exp(-c tau/m); so det M = e^(2k) exp(-c N T/m) for k impacts in N periods.
+// Refused (as a failed image, not an exception: Newton steps back from it) are a state inside a
+// wall, a body carried by a wall (a sticking orbit: the map is not smooth there) and a chatter cap.
+#include "hertzdash/simulation/shaker/impact_sequence.hpp"
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace hertzdash {
+
+/// The image of one state under the map.
+struct SectionImage {
+  Eigen::VectorXd state;                 ///< (y [m], u [m/s]) N periods later
+  Eigen::MatrixXd monodromy;             ///< d state / d start
+  std::vector<SequenceImpact> impacts;   ///< the impacts on the way, in order
+  double min_impact_speed_mps = 0;       ///< the slowest of them (0 near grazing); inf: none
+  std::string failure;                   ///< empty: a valid image; else why not
+};
+
+/// The map P^N from phase phi_s of a prescribed-box, instantaneous-impact sequence `spec`.
+class StroboscopicMap {
+ public:
+  /// Throws std::invalid_argument if `spec` has a box of its own or soft impacts, or cycles < 1.
+  StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles);
+  SectionImage operator()(const Eigen::VectorXd& state) const;
+  /// The section's time in the first drive period [s], phi_s / f.
+  double section_time_s() const { return t_s_; }
+  int cycles() const { return cycles_; }
+  const ImpactSequenceSpec& spec() const { return spec_; }
+  /// The gap of `state` to each wall at the section time [m] (< 0: inside it).
+  double smallest_gap_m(const Eigen::VectorXd& state) const;
+
+ private:
+  ImpactSequenceSpec spec_;
+  double t_s_;
+  int cycles_;
+};
+
+}  // namespace hertzdash
