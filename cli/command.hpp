@@ -36,6 +36,9 @@ Command add_fit_command(CLI::App& app);
 /// `hertzdash RIG` for a registered rig (simulation/rigs/rig.hpp): `shaker`, `walls`, ...
 Command add_rig_command(CLI::App& app, const Rig& rig);
 
+/// `hertzdash orbit RIG`: a rig's periodic orbit and its Floquet multipliers.
+Command add_orbit_command(CLI::App& app);
+
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);
 

@@ -129,6 +129,9 @@ std::string ShortHelpFormatter::make_help(const CLI::App* app, std::string name,
   std::string out = head;
   for (const Group& g : groups)
     out += "\n" + g.heading + (g.collapsed ? ": " + g.names + "\n" : ":\n" + g.options);
+  // A command of subcommands (`orbit RIG`): each, with its description.
+  if (const std::vector<const CLI::App*> subs = app->get_subcommands([](const CLI::App*) { return true; }); !subs.empty())
+    out += make_subcommands(app, mode);
   return out;
 }
 

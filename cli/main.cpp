@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
       hertzdash::cli::add_bounce_command(app),
   };
   for (const hertzdash::Rig& rig : hertzdash::rigs()) commands.push_back(hertzdash::cli::add_rig_command(app, rig));
+  commands.push_back(hertzdash::cli::add_orbit_command(app));
   commands.push_back(hertzdash::cli::add_fit_command(app));
   commands.push_back(hertzdash::cli::add_sweep_command(app));
 
@@ -61,7 +62,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::RequiredError& e) {
-    if (!app.get_subcommands().empty()) {
+    const std::vector<CLI::App*> parsed = app.get_subcommands();
+    if (!parsed.empty() && !parsed.front()->get_subcommands([](const CLI::App*) { return true; }).empty()) {
+      // A command of subcommands (`orbit RIG`) given none of them, or one it does not have.
+      const CLI::App& command = *parsed.front();
+      std::cerr << "hertzdash: `hertzdash " << command.get_name() << "` takes one of: " << subcommand_names(command)
+                << " (hertzdash " << command.get_name() << " --help)\n";
+    } else if (!parsed.empty()) {
       std::cerr << "hertzdash: " << e.what() << "\n";
     } else if (const std::string word = first_word(argc, argv); !word.empty()) {
       std::cerr << "hertzdash: unknown subcommand '" << word << "': the subcommands are " << subcommand_names(app)

@@ -13,6 +13,8 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/reports/fit_curves.hpp"
 #include "hertzdash/simulation/reports/fit_request.hpp"
+#include "hertzdash/simulation/options/command_options.hpp"
+#include "hertzdash/simulation/reports/orbit_report.hpp"
 #include "hertzdash/simulation/reports/rig_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
@@ -585,24 +587,37 @@ std::string result_names(bool ResultReports::*report) {
 
 // ---- rigs: run("RIG", **options) and one function per registered rig (simulation/rigs/rig.hpp) ----
 
-py::dict py_run_rig(const Rig& rig, const py::kwargs& kwargs) {
-  RunOptions options;
+// The keywords of a rig's run into its options and inputs: its own inputs (and `extra`'s, the
+// orbit's, into `extra_inputs`), else an option of a run; an unknown one is refused naming
+// `function`.
+void read_rig_keywords(const Rig& rig, const char* function, const py::kwargs& kwargs, RunOptions& options,
+                       RigInputs& inputs, ParameterDecls extra = {}, RigInputs* extra_inputs = nullptr) {
   if (!rig.default_integrator.empty()) options.integrator = rig.default_integrator;
-  RigInputs inputs;
+  auto named = [](ParameterDecls decls, const std::string& keyword) {
+    return std::find_if(decls.begin(), decls.end(), [&](const ParameterDecl& d) { return python_keyword(d.key) == keyword; });
+  };
   for (const auto& [key, value] : kwargs) {
     const std::string keyword = key.cast<std::string>();
-    const auto own = std::find_if(rig.inputs.begin(), rig.inputs.end(),
-                                  [&](const ParameterDecl& d) { return python_keyword(d.key) == keyword; });
+    auto own = named(rig.inputs, keyword);
+    RigInputs* target = &inputs;
+    if (own == rig.inputs.end() && named(extra, keyword) != extra.end()) own = named(extra, keyword), target = extra_inputs;
     if (own == rig.inputs.end()) {
       std::string names;
-      for (const ParameterDecl& d : rig.inputs) names += (names.empty() ? "" : ", ") + python_keyword(d.key);
-      set_option(options, option_named(keyword, rig.name.data(), names), value);
+      for (const ParameterDecls decls : {rig.inputs, extra})
+        for (const ParameterDecl& d : decls) names += (names.empty() ? "" : ", ") + python_keyword(d.key);
+      set_option(options, option_named(keyword, function, names), value);
     }
     else if (value.is_none()) continue;  // None: the default
-    else if (own->type == ParameterType::text) inputs.texts[std::string(own->key)] = py::str(value).cast<std::string>();
+    else if (own->type == ParameterType::text) target->texts[std::string(own->key)] = py::str(value).cast<std::string>();
     else if (py::isinstance<py::bool_>(value) || !py::hasattr(value, "__float__")) throw py::type_error(keyword + ": expected a number");
-    else inputs.numbers[std::string(own->key)] = value.cast<double>();
+    else target->numbers[std::string(own->key)] = value.cast<double>();
   }
+}
+
+py::dict py_run_rig(const Rig& rig, const py::kwargs& kwargs) {
+  RunOptions options;
+  RigInputs inputs;
+  read_rig_keywords(rig, rig.name.data(), kwargs, options, inputs);
   RigResult r;
   {
     py::gil_scoped_release release;
@@ -610,6 +625,35 @@ py::dict py_run_rig(const Rig& rig, const py::kwargs& kwargs) {
   }
   for (const std::string& w : r.warnings) warn(w);
   return to_python(to_json(rig, r));
+}
+
+// The numeric options of `hertzdash orbit` (its --json aside).
+std::vector<ParameterDecl> orbit_options() {
+  std::vector<ParameterDecl> decls;
+  for (const ParameterDecl& d : options_of_command("orbit"))
+    if (d.type == ParameterType::number) decls.push_back(d);
+  return decls;
+}
+
+py::dict py_orbit(const std::string& name, const py::kwargs& kwargs) {
+  const Rig* rig = find_rig(name);
+  if (!rig || !rig->sequence) {
+    std::string names;
+    for (const Rig& r : rigs())
+      if (r.sequence) names += (names.empty() ? "" : ", ") + std::string(r.name);
+    throw InvalidParameter("rig", name, "one of: " + names);
+  }
+  RunOptions options;
+  RigInputs inputs, given;
+  static const std::vector<ParameterDecl> decls = orbit_options();
+  read_rig_keywords(*rig, "orbit", kwargs, options, inputs, decls, &given);
+  OrbitResult r;
+  {
+    py::gil_scoped_release release;
+    r = run_orbit(*rig, options, paper(), inputs, orbit_request(given));
+  }
+  if (!r.orbit.converged) warn("no periodic orbit found: " + r.orbit.failure);
+  return to_python(to_json(*rig, r));
 }
 
 std::string rig_doc(const Rig& rig) {
@@ -760,6 +804,14 @@ PYBIND11_MODULE(hertzdash, m) {
       },
       py::arg("name"), py::pos_only(),
       "run(name, /, **options) -> dict\n\nThe registered rig `name` (see rigs()), as hertzdash.NAME(**options).");
+  std::string orbit_doc = "orbit(rig, /, **options) -> dict\n\nA rig's periodic orbit by shooting, exactly `hertzdash "
+                          "orbit RIG --json` (docs/orbits.md): converged, period, section_phase, section_state, "
+                          "multipliers ([re, im] pairs), multiplier_moduli, stable, newton_residual, the orbit's "
+                          "impacts, inputs. Not converged: converged False, failure, and a UserWarning. The rig's "
+                          "options, and:\n";
+  for (const ParameterDecl& d : orbit_options())
+    orbit_doc += fmt::format("  {}: {}\n", python_keyword(d.key), help_text(d, KeySpelling::python));
+  m.def("orbit", &py_orbit, py::arg("rig"), py::pos_only(), orbit_doc.c_str());
   m.def(
       "rigs",
       [] {

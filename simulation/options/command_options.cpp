@@ -1,6 +1,7 @@
 // The commands' own options (simulation/options/command_options.hpp).
 #include "hertzdash/simulation/options/command_options.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -66,12 +67,27 @@ constexpr ParameterDecl sweep[] = {
          "Draw the sweep of one varied key to this PNG, PDF or SVG file (by its extension): a rig's bifurcation "
          "diagram (each kept impact's phase and speed against the key), or each output against it (docs/sweep.md)"),
     mkdir};
+constexpr double infinity = std::numeric_limits<double>::infinity();
+// `hertzdash orbit RIG` (simulation/rigs/rig_orbit.hpp, docs/orbits.md).
+constexpr ParameterDecl orbit[] = {
+    {.key = "period", .range = R::integer(1, 1000), .default_value = "the rig's own run's", .default_number = 1,
+     .default_source = "the period the rig's run settles on (1 with a guess)",
+     .help = "Drive cycles N of the orbit sought, the fixed point of the map over N cycles"},
+    {.key = "section-phase", .range = R::closed_open(0, 1), .default_value = "mid-gap",
+     .default_source = "the middle of the widest impact-free arc of the rig's run's impact phases",
+     .help = "Drive phase of the section in [0, 1), where the orbit's state is taken"},
+    {.key = "guess-position", .unit = "m", .range = R::open(-infinity, infinity), .default_value = "none",
+     .help = "Newton's start instead of the rig's own run: the body's position [m] at the section phase (with "
+             "guess-velocity and section-phase)"},
+    {.key = "guess-velocity", .unit = "m/s", .range = R::open(-infinity, infinity), .default_value = "none",
+     .help = "Newton's start: the body's velocity [m/s] at the section phase"},
+    json};
 constexpr ParameterDecl models[] = {{.key = "json", .type = T::flag, .default_value = "off", .help = "Print the list as a JSON array"}};
 
 constexpr CommandOptions table[] = {
     {"simulate", simulate}, {"models", models},       {"restitution", restitution},
     {"bounce", bounce},     {"RIG", rig},             {"fit", {}},
-    {"sweep", sweep}};
+    {"orbit", orbit},       {"sweep", sweep}};
 
 }  // namespace
 

@@ -46,6 +46,8 @@ constexpr std::string_view not_read[] = {"height", "impact-velocity", "gravity"}
 struct Run {
   DropTestSetup setup;
   std::string law;
+  SolverSettings solver;
+  OscillatorOptions options;
   Parameters inputs;  ///< describe_run() and the oscillator's options
   OscillatorRun run;
 };
@@ -62,10 +64,12 @@ void refuse(const RunOptions& options, const RigInputs& in) {
   }
 }
 
-Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
-  Run r{.setup = resolve_setup(options, paper), .law = options.damping, .inputs = {}, .run = {}};
-  const SolverSettings solver = resolve_solver(options);
-  OscillatorOptions o;
+// Resolve and validate, without running (`run` left empty but for its impact model).
+Run resolve(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  Run r{.setup = resolve_setup(options, paper), .law = options.damping, .solver = resolve_solver(options),
+        .options = {}, .inputs = {}, .run = {}};
+  const SolverSettings& solver = r.solver;
+  OscillatorOptions& o = r.options;
   double* numbers[] = {&o.stiffness_N_per_m, &o.damping_ratio,   &o.force_amplitude_N, &o.frequency_Hz,
                        &o.stop_distance_m,   &o.start_position_m, &o.start_velocity_mps};
   r.inputs = describe_rig_run(r.setup, r.law, solver, not_read);
@@ -91,8 +95,19 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
         r.setup, (o.force_amplitude_N + o.stiffness_N_per_m * o.stop_distance_m) / (m * o.frequency_Hz),
         options.mass_kg.has_value()));
   require_bounded_rig_work(scales, o.impacts, o.transient, in.number("impacts").has_value());
-  r.run = run_oscillator(r.setup, r.law, solver, o);
+  r.run.impact_model = o.impact_model;
   return r;
+}
+
+Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  Run r = resolve(options, paper, in);
+  r.run = run_oscillator(r.setup, r.law, r.solver, r.options);
+  return r;
+}
+
+RigSequence sequence(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  const Run r = resolve(options, paper, in);
+  return {make_oscillator_sequence(r.setup, r.law, r.solver, r.options), sequence_outcome(r).heading, r.inputs};
 }
 
 RigResult outcome(const Run& r) { return sequence_outcome(r); }
@@ -118,8 +133,8 @@ constexpr RigOptionNote notes[] = {shaker_integrator_note};
 
 }  // namespace
 
-OscillatorRun run_oscillator(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
-                             const OscillatorOptions& o) {
+SequenceSetUp make_oscillator_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                                       const OscillatorOptions& o) {
   for (const auto& [decl, value] : {std::pair{stiffness, o.stiffness_N_per_m}, {damping_ratio, o.damping_ratio},
                                     {force_amplitude, o.force_amplitude_N}, {frequency, o.frequency_Hz},
                                     {stop_distance, o.stop_distance_m}, {start_velocity, o.start_velocity_mps}})
@@ -133,27 +148,36 @@ OscillatorRun run_oscillator(const DropTestSetup& setup, std::string_view law, c
   const ForcedOscillator body{.mass_kg = m, .stiffness_N_per_m = k, .damping_ratio = o.damping_ratio,
                               .force_amplitude_N = o.force_amplitude_N, .omega_rad_per_s = w,
                               .force_phase_rad = std::numbers::pi / 2};
-  ImpactSequenceSpec spec{.body = body, .prescribed = OscillatorMotion::prescribed(0, w),
-                          .walls = {{.name = "stop", .sigma = -1, .offset_m = d}}, .frequency_Hz = o.frequency_Hz,
-                          .speed_scale_mps = (o.force_amplitude_N + k * d) / (m * o.frequency_Hz),
-                          .y0_m = o.start_position_m, .u0_mps = o.start_velocity_mps, .impacts = o.impacts,
-                          .transient = o.transient, .restitution = setup.restitution, .pattern = o.pattern,
-                          .energy = true, .sampled = ImpactSequenceSpec::Sampled::body};
-  std::unique_ptr<SoftContact<HarmonicForcing>> contact;
+  SequenceSetUp out{
+      .spec = {.body = body, .prescribed = OscillatorMotion::prescribed(0, w),
+               .walls = {{.name = "stop", .sigma = -1, .offset_m = d}}, .frequency_Hz = o.frequency_Hz,
+               .speed_scale_mps = (o.force_amplitude_N + k * d) / (m * o.frequency_Hz), .y0_m = o.start_position_m,
+               .u0_mps = o.start_velocity_mps, .impacts = o.impacts, .transient = o.transient,
+               .restitution = setup.restitution, .pattern = o.pattern, .energy = true,
+               .sampled = ImpactSequenceSpec::Sampled::body},
+      .integrator_used = std::nullopt};
   if (o.impact_model == ShakerImpactModel::soft) {  // the stop's contact (model/contact_environments.hpp)
-    contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash oscillator");
-    spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
+    std::shared_ptr<SoftContact<HarmonicForcing>> contact =
+        make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash oscillator");
+    out.integrator_used = contact->integrator_used();
+    out.spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
     const HarmonicForcing stop{k, body.damping_N_s_per_m(), o.force_amplitude_N, w, d};
-    spec.soft = [&contact, stop](Wall, double t, double v0, double, double, double t_obs) {
+    out.spec.soft = [contact, stop](Wall, double t, double v0, double, double, double t_obs) {
       HarmonicForcing at = stop;
       at.t_onset_s = t;
       return soft_impact(contact->run(at, v0, t_obs));
     };
   }
-  OscillatorRun out{run_impact_sequence(spec)};
+  return out;
+}
+
+OscillatorRun run_oscillator(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                             const OscillatorOptions& o) {
+  const SequenceSetUp sequence = make_oscillator_sequence(setup, law, solver, o);
+  OscillatorRun out{run_impact_sequence(sequence.spec)};
   out.impact_model = o.impact_model;
-  if (contact) out.integrator_used = contact->integrator_used();
-  out.steady_amplitude_m = body.steady_amplitude_m();
+  if (sequence.integrator_used) out.integrator_used = *sequence.integrator_used;
+  out.steady_amplitude_m = sequence.spec.body.steady_amplitude_m();
   return out;
 }
 
@@ -166,7 +190,7 @@ const Rig& oscillator_rig() {
        .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse, .results = results,
        .table_description = "one row per kept impact (time from the start; phase of the drive F cos(2 pi f t) in "
                             "[0,1); speeds relative to the stop)",
-       .table = one_wall_impact_table, .run = run, .outcome = outcome});
+       .table = one_wall_impact_table, .run = run, .outcome = outcome, .sequence = sequence});
   return rig;
 }
 

@@ -33,6 +33,10 @@ struct OscillatorRun : ImpactSequence {
 OscillatorRun run_oscillator(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
                              const OscillatorOptions& options);
 
+/// The sequence of a run_oscillator() call, validated as it validates.
+SequenceSetUp make_oscillator_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                                       const OscillatorOptions& options);
+
 /// The rig `oscillator`: inputs the options above and the drop test's body, contact and law;
 /// results period, impacts_per_period, e_effective, amplitude_m, peak_phase, steady_amplitude_m,
 /// energy_J, sticking_episodes, impacts_run; the shaker's per-impact table.

@@ -13,6 +13,7 @@
 #include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
+#include "hertzdash/simulation/shaker/impact_sequence.hpp"
 
 #include <functional>
 #include <map>
@@ -85,6 +86,15 @@ std::string input_column(const ParameterDecl& d);
 Parameters describe_rig_run(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
                             std::span<const std::string_view> not_read);
 
+/// A rig's impact sequence as its run would start it, for its periodic orbits
+/// (simulation/rigs/rig_orbit.hpp): the sequence, the text report's heading and the run's inputs.
+struct RigSequence {
+  SequenceSetUp sequence;
+  std::string heading;
+  Parameters inputs;
+};
+using RigSequenceMaker = RigSequence (*)(const RunOptions&, const PaperParameters&, const RigInputs&);
+
 /// A registered rig, its schemas and its run, as every front end sees it.
 struct Rig {
   std::string_view name, summary;
@@ -102,6 +112,8 @@ struct Rig {
   std::vector<RigColumn> table;
   /// Validated inputs -> result: refuses bad input with InvalidParameter naming the key.
   std::function<RigResult(const RunOptions&, const PaperParameters&, const RigInputs&)> run;
+  /// Its impact sequence from validated inputs (null: the rig has none to analyse).
+  RigSequenceMaker sequence = nullptr;
 };
 
 /// Every registered rig (simulation/rigs/rig_table.cpp), in the order of the CLI's commands.
@@ -150,6 +162,7 @@ struct RigDefinition {
   std::span<const RigColumnOf<Impact>> table;
   Run (*run)(const RunOptions&, const PaperParameters&, const RigInputs&);
   RigResult (*outcome)(const Run&);
+  RigSequenceMaker sequence = nullptr;
 };
 
 /// The Rig of a definition: its schemas without accessors, its run tabulated through them.
@@ -158,7 +171,7 @@ Rig make_rig(const RigDefinition<Run, Impact>& d) {
   Rig rig{.name = d.name, .summary = d.summary, .inputs = d.inputs, .run_options_not_read = d.run_options_not_read,
           .not_read_because = d.not_read_because, .run_option_notes = d.run_option_notes,
           .default_integrator = d.default_integrator, .refuse = d.refuse, .results = {}, .table_description = d.table_description,
-          .table = {}, .run = {}};
+          .table = {}, .run = {}, .sequence = d.sequence};
   for (const auto& f : d.results) rig.results.push_back(f.field);
   for (const auto& c : d.table) rig.table.push_back(c.column);
   rig.run = [d](const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs) {

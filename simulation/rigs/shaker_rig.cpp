@@ -107,6 +107,12 @@ ShakerCommandRun run(const RunOptions& options, const PaperParameters& paper, co
 
 RigResult outcome(const Run& r) { return sequence_outcome(r); }
 
+RigSequence sequence(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  ShakerCommandRun r = resolve_shaker_command(options, paper, in);
+  r.run.impact_model = r.options.impact_model;
+  return {make_shaker_sequence(r.setup, r.law, r.solver, r.options), sequence_outcome(r).heading, r.inputs};
+}
+
 constexpr RigFieldOf<Run> results[] = {
     {{"gamma", "1", "the wall's peak acceleration over g, A (2 pi f)^2 / g"}, [](const Run& r) -> RigValue { return r.run.gamma; }},
     {{"frequency_Hz", "Hz", "the wall's frequency f"}, [](const Run& r) -> RigValue { return r.options.wall.frequency_Hz; }},
@@ -147,7 +153,7 @@ const Rig& shaker_rig() {
        .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse_shaker_inputs, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest on the wall; phase of "
                             "s(t) = A sin(2 pi f t) in [0,1); speeds relative to the wall)",
-       .table = one_wall_impact_table, .run = run, .outcome = outcome});
+       .table = one_wall_impact_table, .run = run, .outcome = outcome, .sequence = sequence});
   return rig;
 }
 

@@ -165,4 +165,12 @@ struct ImpactSequence {
 
 ImpactSequence run_impact_sequence(const ImpactSequenceSpec& spec);
 
+/// A rig's sequence and, with soft impacts, the integrator its contacts use. The spec's
+/// soft-contact callback owns its contact, so copies of the spec run alone (simulation/orbits/
+/// runs one many times).
+struct SequenceSetUp {
+  ImpactSequenceSpec spec;
+  std::optional<IntegratorKind> integrator_used;
+};
+
 }  // namespace hertzdash

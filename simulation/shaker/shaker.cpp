@@ -32,8 +32,8 @@ ShakerStart shaker_start(const ShakerOptions& o, double e, double g) {
   return {o.start_height_m.value_or(start.height_m), o.start_phase.value_or(start.phase)};
 }
 
-ShakerSequence make_shaker_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
-                                    const ShakerOptions& options) {
+SequenceSetUp make_shaker_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                                   const ShakerOptions& options) {
   validate(setup);
   validate(solver);
   validate(options);
@@ -49,7 +49,7 @@ ShakerSequence make_shaker_sequence(const DropTestSetup& setup, std::string_view
                            fmt::format("0 (at rest on the wall) or above the wall at the start, > A sin(2 pi phi0) = "
                                        "{:.6g} m (`start-phase` {:.6g})",
                                        wall.position_m(t0), start.phase));
-  ShakerSequence out{
+  SequenceSetUp out{
       .spec = {.body = {.mass_kg = m, .stiffness_N_per_m = 0, .omega_rad_per_s = w, .constant_force_N = -m * g},
                .prescribed = OscillatorMotion::prescribed(wall.amplitude_m, w), .walls = {{.name = "wall"}},
                .frequency_Hz = wall.frequency_Hz, .speed_scale_mps = g * T, .t0_s = t0, .y0_m = start.height_m,
@@ -70,7 +70,7 @@ ShakerSequence make_shaker_sequence(const DropTestSetup& setup, std::string_view
 
 ShakerRun run_shaker(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
                      const ShakerOptions& options) {
-  const ShakerSequence sequence = make_shaker_sequence(setup, law, solver, options);
+  const SequenceSetUp sequence = make_shaker_sequence(setup, law, solver, options);
   ShakerRun out{run_impact_sequence(sequence.spec)};
   out.gamma = shaker_gamma(options.wall, setup.gravity_mps2);
   out.impact_model = options.impact_model;

@@ -71,15 +71,8 @@ struct ShakerStart {
 };
 ShakerStart shaker_start(const ShakerOptions& options, double e, double gravity_mps2);
 
-/// A shaker's sequence (the impact-sequence driver's spec) and, with soft impacts, the integrator
-/// its contacts use; the spec's soft-contact callback owns its contact, so copies of the spec run
-/// alone (simulation/orbits/ runs it many times).
-struct ShakerSequence {
-  ImpactSequenceSpec spec;
-  std::optional<IntegratorKind> integrator_used;
-};
 /// The sequence of a run_shaker() call, validated as it validates.
-ShakerSequence make_shaker_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+SequenceSetUp make_shaker_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
                                     const ShakerOptions& options);
 
 /// The run of the validated `setup` (its body, contact, law inputs, restitution e and gravity

@@ -91,3 +91,24 @@ def test_bad_rig_input_is_a_value_error_naming_the_keyword():
         hertzdash.shaker(bogus=1)
     with pytest.raises(ValueError, match="impacts"):
         hertzdash.walls(impacts=2.5)
+
+
+def test_orbit_is_the_programs_orbit():
+    # hertzdash.orbit("RIG", ...) is `hertzdash orbit RIG --json` (docs/orbits.md). The bouncing
+    # ball's stable period-1 orbit at e = 0.5, Gamma = 1.3 has the multipliers
+    # -0.24159860 +- 0.43775577i (tests/test_orbits.cpp derives them), modulus e.
+    kw = dict(impact_model="instantaneous", restitution=0.5, gamma=1.3)
+    d = hertzdash.orbit("shaker", **kw)
+    assert d == cli_json("orbit", "shaker", "--impact-model", "instantaneous", "--restitution", "0.5", "--gamma", "1.3")
+    assert d["converged"] and d["stable"] and d["period"] == 1
+    assert d["multipliers"][0][0] == pytest.approx(-0.24159860, abs=1e-8)
+    assert abs(d["multipliers"][0][1]) == pytest.approx(0.43775577, abs=1e-8)
+    # The orbit's own options are keywords; a guess needs both halves, refused naming the missing one.
+    with pytest.raises(ValueError, match="guess_velocity"):
+        hertzdash.orbit("shaker", section_phase=0.5, guess_position=0.003, **kw)
+    with pytest.raises(ValueError, match="shaker, oscillator"):
+        hertzdash.orbit("walls")
+    # No orbit to find (the body sticks to the wall once a period): a warning, and the dict says why.
+    with pytest.warns(UserWarning, match="no periodic orbit found"):
+        stuck = hertzdash.orbit("shaker", impact_model="instantaneous", restitution=0.5, gamma=1.02)
+    assert not stuck["converged"] and "sticks to the wall" in stuck["failure"]

@@ -1,6 +1,7 @@
-// Periodic orbits of the instantaneous shaker (simulation/orbits/): the stroboscopic map's
-// monodromy from saltation matrices against the bouncing ball's closed forms, against central
-// differences of the map itself, and shooting onto stable and unstable orbits.
+// Periodic orbits (simulation/orbits/): the stroboscopic map's monodromy from saltation matrices
+// against the bouncing ball's closed forms (the instantaneous shaker), against the impact
+// oscillator's determinant, against central differences of the map itself, and shooting onto
+// stable and unstable orbits.
 //
 // The closed forms (derived in tests/test_shaker.cpp for the exact flights): the period-1 orbit
 // leaves the wall at phase theta*/(2 pi) with u+ = g T/2 and meets it one period later, where
@@ -14,6 +15,7 @@
 #include "hertzdash/simulation/orbits/periodic_orbit.hpp"
 #include "hertzdash/simulation/orbits/section_guess.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/rigs/oscillator_rig.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
 
 #include <catch2/catch.hpp>
@@ -80,6 +82,26 @@ PeriodicOrbit shoot(double gamma, double sign, int cycles = 1) {
   const ClosedFormOrbit exact = closed_form(gamma, sign);
   const StroboscopicMap map(shaker_spec(gamma), std::fmod(exact.impact_phase + 0.5, 1.0), cycles);
   return find_periodic_orbit(map, exact.apex + 0.01 * scales(), scales());
+}
+
+/// The map's monodromy at z against central differences of the map, entry (i, j) in the scales,
+/// d(z_i/s_i)/d(z_j/s_j). Step h = 1e-6 of the scales: the differences err by O(h^2 P''') plus
+/// round-off O(eps/h), both below 1e-7 of M's entries, which are O(1) in scaled units; 1e-6 checks it.
+void require_monodromy_matches_differences(const StroboscopicMap& map, const Eigen::Vector2d& z, const Eigen::Vector2d& s) {
+  const SectionImage image = map(z);
+  REQUIRE(image.failure.empty());
+  REQUIRE(image.impacts.size() >= 2);
+  for (int j = 0; j < 2; ++j) {
+    Eigen::Vector2d dz = Eigen::Vector2d::Zero();
+    dz(j) = 1e-6 * s(j);
+    const SectionImage plus = map(z + dz), minus = map(z - dz);
+    REQUIRE(plus.impacts.size() == image.impacts.size());
+    REQUIRE(minus.impacts.size() == image.impacts.size());
+    for (int i = 0; i < 2; ++i) {
+      const double fd = (plus.state(i) - minus.state(i)) / (2 * dz(j)) * s(j) / s(i);
+      CHECK(std::abs(image.monodromy(i, j) * s(j) / s(i) - fd) < 1e-6 * (1 + std::abs(fd)));
+    }
+  }
 }
 
 // lambda sorted by modulus, compared as complex numbers (a conjugate pair in either order).
@@ -173,27 +195,12 @@ TEST_CASE("orbit: the monodromy's determinant is e^(2k) for k impacts, to round-
 }
 
 TEST_CASE("orbit: the saltation monodromy equals central differences of the map", "[orbit]") {
-  // Central differences with step h err by O(h^2 P''') plus round-off O(eps/h): with h = 1e-6 of
-  // the scales both stay below 1e-7 of M's entries, which are O(1) in scaled units; 1e-6 checks it.
+  // Over 3 periods from a state off the orbit, with at least two impacts on the way.
   const double gamma = 1.3;
   const ClosedFormOrbit exact = closed_form(gamma, +1);
   const StroboscopicMap map(shaker_spec(gamma), std::fmod(exact.impact_phase + 0.5, 1.0), 3);
-  const Eigen::Vector2d s = scales(), z = exact.apex + Eigen::Vector2d(0.02 * s(0), -0.01 * s(1));
-  const SectionImage image = map(z);
-  REQUIRE(image.failure.empty());
-  REQUIRE(image.impacts.size() >= 2);
-  for (int j = 0; j < 2; ++j) {
-    Eigen::Vector2d dz = Eigen::Vector2d::Zero();
-    dz(j) = 1e-6 * s(j);
-    const SectionImage plus = map(z + dz), minus = map(z - dz);
-    REQUIRE(plus.impacts.size() == image.impacts.size());
-    REQUIRE(minus.impacts.size() == image.impacts.size());
-    for (int i = 0; i < 2; ++i) {
-      // Entry (i, j) in the scales: d(z_i/s_i)/d(z_j/s_j).
-      const double fd = (plus.state(i) - minus.state(i)) / (2 * dz(j)) * s(j) / s(i);
-      CHECK(std::abs(image.monodromy(i, j) * s(j) / s(i) - fd) < 1e-6 * (1 + std::abs(fd)));
-    }
-  }
+  const Eigen::Vector2d s = scales();
+  require_monodromy_matches_differences(map, exact.apex + Eigen::Vector2d(0.02 * s(0), -0.01 * s(1)), s);
 }
 
 TEST_CASE("orbit: the brute-force guess puts the section in the middle of the widest impact-free arc", "[orbit]") {
@@ -223,4 +230,35 @@ TEST_CASE("orbit: a sticking attractor or a state inside the wall is refused, no
   const PeriodicOrbit o = find_periodic_orbit(map, Eigen::Vector2d(-1.0, 0.0), scales());
   CHECK_FALSE(o.converged);
   CHECK_THAT(o.failure, Catch::Contains("not above the wall"));
+}
+
+TEST_CASE("orbit: the impact oscillator's monodromy has det e^(2k) exp(-2 zeta wn N T) and matches central differences",
+          "[orbit]") {
+  // The flight m y'' + c y' + k y = F(t) has the constant variational matrix A = [[0, 1], [-k/m, -c/m]],
+  // so det Phi(tau) = exp(trace A tau) = exp(-2 zeta wn tau) (Liouville); at the stop at rest
+  // (V = X'' = 0) the saltation matrix's first column is (1, 0) + (f+ - R f-)/u-, whose first
+  // entry is 1 + (u+ - u-)/u- = 1 - (1 + e) = -e (u+ = -e u-); its second column is R's (0, -e).
+  // So S = [[-e, 0], [., -e]], det S = e^2, whatever the force and the spring. Over N periods with k impacts,
+  // det M = e^(2k) exp(-2 zeta wn N T). The rig's defaults (k = 1e4 N/m, zeta = 0.05, F = 10 N,
+  // f = 20 Hz, d = 2 mm) with e = 0.7 settle on a period-1 orbit with one impact (brute force).
+  DropTestSetup s = setup();
+  s.restitution = 0.7;
+  OscillatorOptions o;
+  o.impact_model = ShakerImpactModel::instantaneous;
+  const ImpactSequenceSpec spec = make_oscillator_sequence(s, "hongo-paper", {}, o).spec;
+  const SectionGuess guess = section_guess(spec, std::nullopt, std::nullopt);
+  REQUIRE(guess.failure.empty());
+  const double v = spec.speed_scale_mps;
+  const Eigen::Vector2d scale(v / o.frequency_Hz, v);
+  const PeriodicOrbit orbit = find_periodic_orbit(StroboscopicMap(spec, guess.section_phase, guess.period), guess.state, scale);
+  REQUIRE(orbit.converged);
+  REQUIRE(guess.period == 1);
+  REQUIRE(orbit.impacts.size() == 1);
+  const double wn = std::sqrt(o.stiffness_N_per_m / s.mass_kg);
+  const double expected = 0.49 * std::exp(-2 * o.damping_ratio * wn / o.frequency_Hz);
+  CHECK(std::abs(orbit.monodromy.determinant() - expected) < 1e-12);
+  // Central differences of the map over 2 periods from a state off the orbit: they check the
+  // spring's Phi and the force in the saltation matrix.
+  require_monodromy_matches_differences(StroboscopicMap(spec, guess.section_phase, 2),
+                                        orbit.state + Eigen::Vector2d(0.01 * scale(0), 0.02 * scale(1)), scale);
 }

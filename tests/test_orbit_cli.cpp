@@ -1,0 +1,108 @@
+// `hertzdash orbit RIG` (cli/orbit_command.cpp, simulation/rigs/rig_orbit.hpp): the bouncing
+// ball's stable orbit from the rig's own run and its saddle from a guess, through the command
+// line's JSON; bad input (exit 2, the option named) and an orbit that cannot be found (exit 3,
+// the output standing).
+#include "cli_runner.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <string>
+
+using hertzdash::test::run_cli;
+
+namespace {
+
+const std::string ball = "orbit shaker --impact-model instantaneous --restitution 0.5 --frequency 20 ";
+
+nlohmann::json orbit_json(const std::string& args) {
+  const auto r = run_cli(ball + args + " --json");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  return nlohmann::json::parse(r.out);
+}
+
+std::complex<double> multiplier(const nlohmann::json& j, int k) {
+  return {j["multipliers"][k][0].get<double>(), j["multipliers"][k][1].get<double>()};
+}
+
+}  // namespace
+
+TEST_CASE("CLI orbit: the shaker's stable period-1 orbit from its own run, with the closed-form multipliers", "[orbit]") {
+  // e = 0.5, Gamma = 1.3 (tests/test_orbits.cpp derives them): the impact phase 0.10093859,
+  // the relative impact speed g T/(1 + e) = 9.80665/20/1.5 = 0.32688833 m/s and
+  // lambda = -0.24159860 +- 0.43775577 i, |lambda| = e.
+  const nlohmann::json j = orbit_json("--gamma 1.3");
+  for (const char* key : {"schema_version", "rig", "method", "converged", "period", "section_phase", "guess",
+                          "impacts_per_period", "section_state", "multipliers", "multiplier_moduli", "stable",
+                          "newton_residual", "newton_iterations", "min_impact_speed_mps", "impact_time_s",
+                          "impact_phase", "impact_speed_mps", "rebound_speed_mps", "inputs", "git_revision"})
+    CHECK(j.contains(key));
+  CHECK(j["converged"] == true);
+  CHECK(j["period"] == 1);
+  CHECK(j["impacts_per_period"] == 1);
+  CHECK(j["stable"] == true);
+  CHECK(j["newton_residual"].get<double>() <= 1e-11);
+  CHECK(j["impact_phase"][0].get<double>() == Approx(0.10093859).margin(1e-8));
+  CHECK(j["impact_speed_mps"][0].get<double>() == Approx(9.80665 / 20 / 1.5).epsilon(1e-10));
+  CHECK(std::abs(multiplier(j, 0).real() + 0.24159860) < 1e-8);
+  CHECK(std::abs(std::abs(multiplier(j, 0).imag()) - 0.43775577) < 1e-8);
+  CHECK(j["multiplier_moduli"][1].get<double>() == Approx(0.5).epsilon(1e-12));
+  CHECK(j["inputs"]["period"] == 1);
+  CHECK(j["inputs"]["amplitude_m"].get<double>() > 0);
+}
+
+TEST_CASE("CLI orbit: the saddle from a guess, unstable, which the rig's own run never shows", "[orbit]") {
+  // The saddle leaves the wall at theta = -theta* (sin theta < 0), impact phase 1 - 0.10093859;
+  // half a period later the body is at its apex, y = A sin theta + g T^2/8, u = 0, at the section
+  // phase 0.5 - 0.10093859. Its multipliers are 2.89689799 and 0.08629921.
+  const double g = 9.80665, T = 1.0 / 20, gamma = 1.3, A = gamma * g / std::pow(2 * std::numbers::pi / T, 2);
+  const double c = std::numbers::pi / 3 / gamma, apex = -A * std::sqrt(1 - c * c) + g * T * T / 8;
+  // Guessed 2 % of g T^2 high and 1 % of g T fast: Newton's start, not the answer.
+  const nlohmann::json j = orbit_json("--gamma 1.3 --section-phase 0.39906141 --guess-position " +
+                                      std::to_string(apex + 0.02 * g * T * T) + " --guess-velocity " +
+                                      std::to_string(0.01 * g * T));
+  CHECK(j["guess"] == "the given guess");
+  CHECK(j["stable"] == false);
+  CHECK(j["newton_iterations"].get<int>() >= 1);
+  CHECK(j["impact_phase"][0].get<double>() == Approx(0.89906141).margin(1e-8));
+  CHECK(multiplier(j, 0).real() == Approx(2.89689799).epsilon(1e-8));
+  CHECK(multiplier(j, 1).real() == Approx(0.08629921).epsilon(1e-7));
+}
+
+TEST_CASE("CLI orbit: bad input exits 2 naming the option", "[orbit]") {
+  // The shaker's default impact model is soft, whose multipliers are not built yet.
+  const auto soft = run_cli("orbit shaker --gamma 1.3");
+  CHECK(soft.exit_code == 2);
+  CHECK_THAT(soft.err, Catch::Contains("--impact-model") && Catch::Contains("instantaneous"));
+  const auto half = run_cli(ball + "--gamma 1.3 --section-phase 0.5 --guess-position 0.01");
+  CHECK(half.exit_code == 2);
+  CHECK_THAT(half.err, Catch::Contains("--guess-velocity"));
+  const auto phase = run_cli(ball + "--gamma 1.3 --guess-position 0.01 --guess-velocity 0");
+  CHECK(phase.exit_code == 2);
+  CHECK_THAT(phase.err, Catch::Contains("--section-phase"));
+  const auto period = run_cli(ball + "--gamma 1.3 --period 0");
+  CHECK(period.exit_code == 2);
+  CHECK_THAT(period.err, Catch::Contains("--period"));
+  // A rig without an orbit analysis, or none: the rigs `orbit` takes are listed.
+  for (const char* args : {"orbit walls --impact-model instantaneous", "orbit"}) {
+    const auto rig = run_cli(args);
+    CHECK(rig.exit_code == 2);
+    CHECK(rig.out.empty());
+    CHECK(rig.err == "hertzdash: `hertzdash orbit` takes one of: shaker, oscillator (hertzdash orbit --help)\n");
+  }
+}
+
+TEST_CASE("CLI orbit: no orbit to find exits 3 with the reason, the output standing", "[orbit]") {
+  // Gamma = 1.02 < Gamma_1 = pi/3 for e = 0.5: no bouncing period-1 orbit; the body chatters and
+  // sticks to the wall once a period, where the map is not smooth: the rig's own run shows it.
+  const auto r = run_cli(ball + "--gamma 1.02 --json");
+  CHECK(r.exit_code == 3);
+  CHECK_THAT(r.err, Catch::Contains("no periodic orbit found"));
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["converged"] == false);
+  CHECK_THAT(j["failure"].get<std::string>(), Catch::Contains("sticks to the wall"));
+}
