@@ -74,6 +74,7 @@ PeriodicOrbit find_periodic_orbit(const StroboscopicMap& map, const Eigen::Vecto
   orbit.residual = residual;
   orbit.impacts = std::move(image.impacts);
   orbit.min_impact_speed_mps = image.min_impact_speed_mps;
+  orbit.min_flight_gap_m = image.min_flight_gap_m;
   return orbit;
 }
 

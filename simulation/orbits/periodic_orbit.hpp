@@ -32,6 +32,7 @@ struct PeriodicOrbit {
   int iterations = 0;                        ///< Newton steps taken
   std::vector<SequenceImpact> impacts;       ///< the orbit's impacts over its N periods
   double min_impact_speed_mps = 0;           ///< the slowest of them
+  double min_flight_gap_m = 0;               ///< its closest approach to a wall in flight (SectionImage)
 };
 
 /// The Floquet multipliers of `monodromy`, largest modulus first.
