@@ -135,3 +135,62 @@ TEST_CASE("continuation: the oscillator's non-impacting orbit grazes the stop at
   CHECK(std::abs(grazing[0].parameter - F_g) < 1e-7 * F_g);
   for (const BranchPoint& p : branch.points) CHECK(p.impacts == 0);
 }
+
+TEST_CASE("continuation: the oscillator's impacting orbit folds far below F_g, then grazes at F_g, unstable",
+          "[orbit]") {
+  // From 10 N down in the force amplitude, the impacting period-1 orbit (e = 0.7, the rig's
+  // defaults) persists well below the linear grazing force F_g = 5.0805 N, beside the stable
+  // non-impacting orbit (the impact oscillator's hysteresis: from rest, brute force finds no
+  // impact at 4 N), until it folds (a multiplier through +1). The check of the fold is brute
+  // force from the fold's state: 1 % above it the body keeps impacting once a period, 1 % below
+  // it the impacts die out.
+  const DropTestSetup s = setup(0.7);
+  auto spec_at = [&s](double force_N) {
+    OscillatorOptions o;
+    o.impact_model = ShakerImpactModel::instantaneous;
+    o.force_amplitude_N = force_N;
+    o.transient = 400;
+    o.impacts = 20;
+    return make_oscillator_sequence(s, "hongo-paper", {}, o).spec;
+  };
+  const SectionGuess guess = section_guess(spec_at(10), std::nullopt, std::nullopt);
+  REQUIRE(guess.failure.empty());
+  REQUIRE(guess.period == 1);
+  const OscillatorOptions defaults;
+  const double v = spec_at(10).speed_scale_mps, f = defaults.frequency_Hz;
+  ContinuationOptions o{.from = 10, .to = 0.5, .period = 1, .section_phase = guess.section_phase, .start = guess.state,
+                        .scale = Eigen::Vector2d(v / f, v)};
+  const Continuation branch = continue_periodic_orbits(spec_at, o);
+  INFO(branch.ends.at(0));
+  const std::vector<BranchEvent> folds = events_of(branch, BranchEventType::fold);
+  REQUIRE(folds.size() == 1);
+  const double F_f = folds[0].parameter;
+  CHECK(F_f < 5.0);
+  auto impacts_from_fold = [&](double force_N) {
+    ImpactSequenceSpec spec = spec_at(force_N);
+    spec.t0_s = guess.section_phase / f;
+    spec.y0_m = folds[0].state(0);
+    spec.u0_mps = folds[0].state(1);
+    spec.transient = 2000;
+    return run_impact_sequence(spec);
+  };
+  const ImpactSequence above = impacts_from_fold(1.01 * F_f), below = impacts_from_fold(0.99 * F_f);
+  CHECK(above.impacts.size() == 20);
+  CHECK(above.pattern.period == 1);
+  CHECK(below.impacts.empty());
+  // The branch's end: it comes back up, unstable, its impact speed falling to zero at F_g, where
+  // it meets the non-impacting orbit touching the stop (a zero-speed impact is no impact: the
+  // orbit is then the linear steady state of amplitude d). Newton converges ever more slowly
+  // there (the saltation matrix grows like 1/(impact speed)), so the grazing is the secant of the
+  // impact speed to zero through the last two points, the last within 1e-3 of the speed scale:
+  // the impact speed is linear in F - F_g to O((F - F_g)^2), so F_g to ~1e-5; asserted to 1e-4.
+  const std::vector<BranchEvent> grazing = events_of(branch, BranchEventType::grazing);
+  REQUIRE(grazing.size() == 1);
+  const double m = s.mass_kg, k = defaults.stiffness_N_per_m, w = 2 * pi * f;
+  const double F_g = defaults.stop_distance_m * std::hypot(k - m * w * w, 2 * defaults.damping_ratio * std::sqrt(k * m) * w);
+  CHECK(std::abs(grazing[0].parameter - F_g) < 1e-4 * F_g);
+  const BranchPoint& last = branch.points.back();
+  CHECK(last.min_impact_speed_mps / v < 1e-3);
+  CHECK(last.impacts == 1);
+  CHECK_FALSE(last.stable);
+}

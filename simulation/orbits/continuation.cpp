@@ -31,10 +31,11 @@ using Vector3 = Eigen::Vector3d;
 using Jacobian = Eigen::Matrix<double, 2, 3>;
 
 constexpr double residual_tolerance = 1e-10, step_tolerance = 1e-9, mu_step = 1e-6;
-constexpr double h_first = 0.01, h_most = 0.03, h_least = 1e-7, h_located = 1e-12;
+constexpr double h_first = 0.01, h_most = 0.03, h_least = 1e-7, h_approach = 1e-5, h_located = 1e-12;
 constexpr int max_corrector_steps = 12, located_bisections = 60;
 const double most_turn_cos = std::cos(25.0 * std::numbers::pi / 180.0);
 constexpr double section_margin = 1e-3;
+constexpr double grazing_close = 1e-6;  // of the rig's scales: a located grazing
 
 /// A corrected point: x, its image, Jacobian and tangent.
 struct Point {
@@ -179,6 +180,11 @@ class Tracer {
   void add_event(BranchEventType type, int branch, int period, const Point& p) {
     out_.events.push_back({type, lambda(p.x(2)), branch, period, Eigen::Vector2d(p.x(0) * s_(0), p.x(1) * s_(1))});
   }
+  /// How close an orbit is to grazing, in the rig's scales: its slowest impact, or its closest
+  /// approach to a wall in flight, whichever is smaller.
+  double grazing_measure(const SectionImage& im) const {
+    return std::min(im.min_impact_speed_mps / s_(1), im.min_flight_gap_m / s_(0));
+  }
   bool near_section(const SectionImage& im) const {
     for (const SequenceImpact& i : im.impacts) {
       const double d = std::abs(i.phase - o_.section_phase);
@@ -192,31 +198,49 @@ class Tracer {
     Point a = start.point;
     add_point(branch, period, a);
     double h = h_first;
-    bool first_step = start.from_branch_point;
+    bool first_step = start.from_branch_point, approaching = false;
+    std::optional<Point> previous;
     auto end = [&](std::string why) { out_.ends.push_back(fmt::format("branch {} (period {}): {}", branch, period, why)); };
     for (;;) {
       if (static_cast<int>(out_.points.size()) >= o_.max_points) return end(fmt::format("{} points reached", o_.max_points));
       std::optional<Point> b = correct(a, h, period, a.tangent);
       const bool turned = b && b->tangent.dot(a.tangent) < most_turn_cos;
       const std::size_t n = a.image.impacts.size();
-      // Grazing: the orbit's impacts per period change on the way, seen at the corrected point or,
-      // where the corrector fails (the map's Jacobian grows without bound at grazing), at the
-      // predicted one.
-      const SectionImage predicted = b ? SectionImage{} : image(a.x + h * a.tangent, period);
-      const bool grazed =
-          b ? b->image.impacts.size() != n : predicted.failure.empty() && predicted.impacts.size() != n;
-      if (!grazed && (!b || turned)) {
+      // Grazing at a corrected point: its impacts per period differ from a's. Located by bisection
+      // on the step (the side without the grazing impact converges up to it), and taken where the
+      // located orbit is within grazing_close of grazing (else the corrector jumped to another
+      // branch with other impacts: a shorter step follows).
+      if (b && b->image.impacts.size() != n) {
+        const Point g = *locate(a, h, period, [n](const Point& p) { return p.image.impacts.size() == n; });
+        if (grazing_measure(g.image) < grazing_close) {
+          add_point(branch, period, g);
+          add_event(BranchEventType::grazing, branch, period, g);
+          return end(fmt::format("grazing at {:.9g}", lambda(g.x(2))));
+        }
+      }
+      // Where the corrector fails and the predicted point has other impacts, grazing lies ahead on
+      // the side where the map's Jacobian grows like 1/(impact speed): the steps shrink towards
+      // it, and below the least step the grazing is the secant of the closest approach
+      // (grazing_measure) to zero through the last two points.
+      if (!b) {
+        const SectionImage predicted = image(a.x + h * a.tangent, period);
+        approaching = approaching || (predicted.failure.empty() && predicted.impacts.size() != n);
+      }
+      approaching = approaching || (b && b->image.impacts.size() != n);
+      if (!b || turned || b->image.impacts.size() != n) {
         h /= 2;
-        if (h < h_least)
+        if (h >= (approaching ? h_approach : h_least)) continue;
+        if (!approaching || !previous)
           return end(fmt::format("the step fell below {} at {} = {:.9g} (a corrector that does not converge)", h_least,
                                  "the parameter", lambda(a.x(2))));
-        continue;
-      }
-      if (grazed) {
-        const Point g = *locate(a, h, period, [n](const Point& p) { return p.image.impacts.size() == n; });
-        add_point(branch, period, g);
+        const double qa = grazing_measure(a.image), qp = grazing_measure(previous->image);
+        const double mu = qp > qa ? a.x(2) - qa * (a.x(2) - previous->x(2)) / (qa - qp) : a.x(2);
+        Point g = a;
+        g.x(2) = mu;
         add_event(BranchEventType::grazing, branch, period, g);
-        return end(fmt::format("grazing at {:.9g}", lambda(g.x(2))));
+        return end(fmt::format("grazing at {:.9g} (the secant of the slowest impact or closest flight to zero; the "
+                               "last point, at {:.9g}, {:.3g} of the rig's scale from it)",
+                               lambda(mu), lambda(a.x(2)), qa));
       }
       if (!first_step) {
         const std::array<double, 3> ta = tests(a.image), tb = tests(b->image);
@@ -252,6 +276,7 @@ class Tracer {
         return end(fmt::format("an impact reached the section phase {:.6g} at {:.9g}: another section phase follows it further",
                                o_.section_phase, lambda(b->x(2))));
       if (b->corrector_steps <= 3) h = std::min(1.3 * h, h_most);
+      previous = std::move(a);
       a = std::move(*b);
     }
   }

@@ -7,7 +7,8 @@
 // that the branch runs from mu = 0 towards mu = 1; x = (zeta, mu), F(x) = (P^N(z) - z)/scale.
 // The Jacobian [dF/dzeta, dF/dmu]: dF/dzeta = S^-1 (M - I) S from the map's own monodromy M
 // (saltation matrices, no differences); dF/dmu by a central difference in mu alone (step 1e-6;
-// error ~1e-10), which only steers: points and multipliers come from M.
+// error ~1e-10; one-sided where a neighbour lies past a grazing), which only steers: points and
+// multipliers come from M.
 //   - tangent t: the null vector of the 2x3 Jacobian (the cross product of its rows), oriented
 //     along the last one;
 //   - predictor x + h t; corrector: Newton on [F(x); t.(x - x_pred)] = 0 (bordered), converged
@@ -23,9 +24,15 @@
 //     (v, 0), v the eigenvector of M for -1, P^{2N} having a pitchfork there;
 //   - Neimark-Sacker: a complex pair crossing the unit circle, det M - 1 changing sign while the
 //     multipliers are complex (a 2-dimensional map with e < 1 has |lambda|^2 = det M < 1: none);
-//   - grazing: the orbit's impacts per period change between a and b (an impact born at zero
-//     relative speed, or a flight touching a wall: the map is not smooth there). The branch ends
-//     at the last point with a's impacts, the bisection's lower end.
+//   - grazing: the orbit's impacts per period change on the way (an impact born at zero relative
+//     speed, or a flight touching a wall: the map is not smooth there), and the branch ends there.
+//     From the side where the orbit has fewer impacts (the new one not yet born) the corrector
+//     converges up to it: bisection on the step, taken where the located orbit is within 1e-6 of
+//     the rig's scales of grazing (else the corrector had jumped to another branch, and a shorter
+//     step follows). From the side of the impact that vanishes the map's Jacobian grows like
+//     1/(impact speed) and Newton fails short of it: the steps shrink towards it (to 1e-5), and the
+//     grazing is the secant to zero of the orbit's closeness to grazing (its slowest impact or
+//     closest flight, in the rig's scales) through the last two points.
 // A branch also ends on leaving [from, to] (the last point corrected onto lambda = to), on an
 // impact reaching the section phase (to 1e-3 of a cycle: the map jumps; choose another
 // section phase), or after max_points points in all.
