@@ -39,6 +39,9 @@ Command add_rig_command(CLI::App& app, const Rig& rig);
 /// `hertzdash orbit RIG`: a rig's periodic orbit and its Floquet multipliers.
 Command add_orbit_command(CLI::App& app);
 
+/// `hertzdash continue RIG`: the branches of a rig's periodic orbits in a parameter.
+Command add_continue_command(CLI::App& app);
+
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);
 

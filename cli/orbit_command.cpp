@@ -35,7 +35,7 @@ Command add_orbit_command(CLI::App& app) {
     r->rig = &rig;
     if (!rig.default_integrator.empty()) r->run.integrator = rig.default_integrator;
     r->sub = orbit->add_subcommand(std::string(rig.name), "The periodic orbit of `hertzdash " + std::string(rig.name) + "`");
-    add_rig_options(*r->sub, rig, r->run, r->inputs);
+    add_rig_options(*r->sub, rig, r->run, r->inputs, true);
     for (const ParameterDecl& d : options_of_command("orbit")) {
       const std::string flag = "--" + std::string(d.key), key(d.key), help = help_text(d, KeySpelling::command_line);
       if (d.type == ParameterType::flag) {

@@ -3,13 +3,14 @@
 
 #include "cli/number_options.hpp"
 #include "cli/setup_options.hpp"
+#include "hertzdash/simulation/rigs/rig_orbit.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <algorithm>
 
 namespace hertzdash::cli {
 
-void add_rig_options(CLI::App& sub, const Rig& rig, RunOptions& run, RigInputs& inputs) {
+void add_rig_options(CLI::App& sub, const Rig& rig, RunOptions& run, RigInputs& inputs, bool instantaneous) {
   add_run_options(sub, run);
   for (const RigOptionNote& n : rig.run_option_notes) sub.get_option("--" + std::string(n.key))->description(std::string(n.help));
   // The help lists what a run of the rig reads (issue 46): the options it never reads stay
@@ -22,7 +23,8 @@ void add_rig_options(CLI::App& sub, const Rig& rig, RunOptions& run, RigInputs& 
     bool regularized_reads = !r.integrators;
     for (const IntegratorTraits& t : all_integrator_traits)
       regularized_reads = regularized_reads || (t.variables == Variables::regularized && r.integrators(t));
-    const bool unread = std::ranges::find(rig.run_options_not_read, option.name) != rig.run_options_not_read.end();
+    const bool unread = std::ranges::find(rig.run_options_not_read, option.name) != rig.run_options_not_read.end() ||
+                        (instantaneous && std::ranges::find(rig.instantaneous_reads, option.name) == rig.instantaneous_reads.end());
     if (unread || r.trace_only || r.flights_only || r.elastic_rod || option.name == "rod-model" || option.name == "no-tension" ||
         !regularized_reads)
       sub.get_option("--" + option.name)->group("");
@@ -37,6 +39,10 @@ void add_rig_options(CLI::App& sub, const Rig& rig, RunOptions& run, RigInputs& 
             : add_number_option(sub, flag, [in, key](double v) { in->numbers[key] = v; }, help);
     if (d.type == ParameterType::number && d.range.kind == NumberRange::Kind::integer) o->type_name("INT");
     o->group(group);
+  }
+  if (instantaneous) {
+    inputs.texts[std::string(orbit_impact_model_note.key)] = std::string(orbit_impact_model);
+    sub.get_option("--" + std::string(orbit_impact_model_note.key))->description(std::string(orbit_impact_model_note.help));
   }
 }
 

@@ -14,6 +14,7 @@
 #include "hertzdash/simulation/reports/fit_curves.hpp"
 #include "hertzdash/simulation/reports/fit_request.hpp"
 #include "hertzdash/simulation/options/command_options.hpp"
+#include "hertzdash/simulation/reports/continuation_report.hpp"
 #include "hertzdash/simulation/reports/orbit_report.hpp"
 #include "hertzdash/simulation/reports/rig_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -587,6 +588,13 @@ std::string result_names(bool ResultReports::*report) {
 
 // ---- rigs: run("RIG", **options) and one function per registered rig (simulation/rigs/rig.hpp) ----
 
+// A declared key as a Python argument: python_keyword()'s spelling, with '_' appended to a word
+// Python reserves (`continue`'s `from` is from_=).
+std::string python_argument(std::string_view key) {
+  const std::string k = python_keyword(key);
+  return py::module_::import("keyword").attr("iskeyword")(k).cast<bool>() ? k + "_" : k;
+}
+
 // The keywords of a rig's run into its options and inputs: its own inputs (and `extra`'s, the
 // orbit's, into `extra_inputs`), else an option of a run; an unknown one is refused naming
 // `function`.
@@ -594,7 +602,7 @@ void read_rig_keywords(const Rig& rig, const char* function, const py::kwargs& k
                        RigInputs& inputs, ParameterDecls extra = {}, RigInputs* extra_inputs = nullptr) {
   if (!rig.default_integrator.empty()) options.integrator = rig.default_integrator;
   auto named = [](ParameterDecls decls, const std::string& keyword) {
-    return std::find_if(decls.begin(), decls.end(), [&](const ParameterDecl& d) { return python_keyword(d.key) == keyword; });
+    return std::find_if(decls.begin(), decls.end(), [&](const ParameterDecl& d) { return python_argument(d.key) == keyword; });
   };
   for (const auto& [key, value] : kwargs) {
     const std::string keyword = key.cast<std::string>();
@@ -604,7 +612,7 @@ void read_rig_keywords(const Rig& rig, const char* function, const py::kwargs& k
     if (own == rig.inputs.end()) {
       std::string names;
       for (const ParameterDecls decls : {rig.inputs, extra})
-        for (const ParameterDecl& d : decls) names += (names.empty() ? "" : ", ") + python_keyword(d.key);
+        for (const ParameterDecl& d : decls) names += (names.empty() ? "" : ", ") + python_argument(d.key);
       set_option(options, option_named(keyword, function, names), value);
     }
     else if (value.is_none()) continue;  // None: the default
@@ -627,33 +635,63 @@ py::dict py_run_rig(const Rig& rig, const py::kwargs& kwargs) {
   return to_python(to_json(rig, r));
 }
 
-// The numeric options of `hertzdash orbit` (its --json aside).
-std::vector<ParameterDecl> orbit_options() {
+// The options of `hertzdash orbit` or `continue` a Python call takes: numbers and texts (its
+// --json, --csv and --mkdir aside: the dict is the JSON).
+std::vector<ParameterDecl> analysis_options(std::string_view command) {
   std::vector<ParameterDecl> decls;
-  for (const ParameterDecl& d : options_of_command("orbit"))
-    if (d.type == ParameterType::number) decls.push_back(d);
+  for (const ParameterDecl& d : options_of_command(command))
+    if (d.type != ParameterType::flag && d.key != "csv") decls.push_back(d);
   return decls;
 }
 
-py::dict py_orbit(const std::string& name, const py::kwargs& kwargs) {
+// A rig `orbit` and `continue` take, by name.
+const Rig& analysed_rig(const std::string& name) {
   const Rig* rig = find_rig(name);
-  if (!rig || !rig->sequence) {
-    std::string names;
-    for (const Rig& r : rigs())
-      if (r.sequence) names += (names.empty() ? "" : ", ") + std::string(r.name);
-    throw InvalidParameter("rig", name, "one of: " + names);
-  }
+  if (rig && rig->sequence) return *rig;
+  std::string names;
+  for (const Rig& r : rigs())
+    if (r.sequence) names += (names.empty() ? "" : ", ") + std::string(r.name);
+  throw InvalidParameter("rig", name, "one of: " + names);
+}
+
+py::dict py_orbit(const std::string& name, const py::kwargs& kwargs) {
+  const Rig& rig = analysed_rig(name);
   RunOptions options;
   RigInputs inputs, given;
-  static const std::vector<ParameterDecl> decls = orbit_options();
-  read_rig_keywords(*rig, "orbit", kwargs, options, inputs, decls, &given);
+  inputs.texts[std::string(orbit_impact_model_note.key)] = std::string(orbit_impact_model);
+  static const std::vector<ParameterDecl> decls = analysis_options("orbit");
+  read_rig_keywords(rig, "orbit", kwargs, options, inputs, decls, &given);
   OrbitResult r;
   {
     py::gil_scoped_release release;
-    r = run_orbit(*rig, options, paper(), inputs, orbit_request(given));
+    r = run_orbit(rig, options, paper(), inputs, orbit_request(given));
   }
   if (!r.orbit.converged) warn("no periodic orbit found: " + r.orbit.failure);
-  return to_python(to_json(*rig, r));
+  return to_python(to_json(rig, r));
+}
+
+py::dict py_continuation(const std::string& name, const py::kwargs& kwargs) {
+  const Rig& rig = analysed_rig(name);
+  RunOptions options;
+  RigInputs inputs, given;
+  inputs.texts[std::string(orbit_impact_model_note.key)] = std::string(orbit_impact_model);
+  static const std::vector<ParameterDecl> decls = analysis_options("continue");
+  read_rig_keywords(rig, "continuation", kwargs, options, inputs, decls, &given);
+  ContinuationResult r;
+  {
+    py::gil_scoped_release release;
+    r = run_continuation(rig, options, paper(), inputs, continuation_request(given));
+  }
+  if (!r.failure.empty()) warn("no branch followed: " + r.failure);
+  return to_python(to_json(rig, r));
+}
+
+// The docstring of orbit() or continuation(): what it returns, then its own keywords.
+std::string analysis_doc(std::string_view command, const std::string& head) {
+  std::string doc = head;
+  for (const ParameterDecl& d : analysis_options(command))
+    doc += fmt::format("  {}: {}\n", python_argument(d.key), help_text(d, KeySpelling::python));
+  return doc;
 }
 
 std::string rig_doc(const Rig& rig) {
@@ -804,14 +842,20 @@ PYBIND11_MODULE(hertzdash, m) {
       },
       py::arg("name"), py::pos_only(),
       "run(name, /, **options) -> dict\n\nThe registered rig `name` (see rigs()), as hertzdash.NAME(**options).");
-  std::string orbit_doc = "orbit(rig, /, **options) -> dict\n\nA rig's periodic orbit by shooting, exactly `hertzdash "
-                          "orbit RIG --json` (docs/orbits.md): converged, period, section_phase, section_state, "
-                          "multipliers ([re, im] pairs), multiplier_moduli, stable, newton_residual, the orbit's "
-                          "impacts, inputs. Not converged: converged False, failure, and a UserWarning. The rig's "
-                          "options, and:\n";
-  for (const ParameterDecl& d : orbit_options())
-    orbit_doc += fmt::format("  {}: {}\n", python_keyword(d.key), help_text(d, KeySpelling::python));
-  m.def("orbit", &py_orbit, py::arg("rig"), py::pos_only(), orbit_doc.c_str());
+  m.def("orbit", &py_orbit, py::arg("rig"), py::pos_only(),
+        analysis_doc("orbit", "orbit(rig, /, **options) -> dict\n\nA rig's periodic orbit by shooting, exactly "
+                              "`hertzdash orbit RIG --json` (docs/orbits.md): converged, period, section_phase, "
+                              "section_state, multipliers ([re, im] pairs), multiplier_moduli, stable, "
+                              "newton_residual, the orbit's impacts, inputs. Not converged: converged False, failure, "
+                              "and a UserWarning. The rig's options (impact_model instantaneous unless given), and:\n")
+            .c_str());
+  m.def("continuation", &py_continuation, py::arg("rig"), py::pos_only(),
+        analysis_doc("continue", "continuation(rig, /, **options) -> dict\n\nThe branches of a rig's periodic orbits "
+                                 "in a parameter, exactly `hertzdash continue RIG --json` (docs/orbits.md): branch (a "
+                                 "dict per point), events (fold, period-doubling, neimark-sacker, grazing), ends, "
+                                 "start, inputs. No orbit at the start: failure, and a UserWarning. The rig's options "
+                                 "(impact_model instantaneous unless given), and:\n")
+            .c_str());
   m.def(
       "rigs",
       [] {

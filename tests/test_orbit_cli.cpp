@@ -3,6 +3,7 @@
 // line's JSON; bad input (exit 2, the option named) and an orbit that cannot be found (exit 3,
 // the output standing).
 #include "cli_runner.hpp"
+#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -16,7 +17,7 @@ using hertzdash::test::run_cli;
 
 namespace {
 
-const std::string ball = "orbit shaker --impact-model instantaneous --restitution 0.5 --frequency 20 ";
+const std::string ball = "orbit shaker --restitution 0.5 --frequency 20 ";
 
 nlohmann::json orbit_json(const std::string& args) {
   const auto r = run_cli(ball + args + " --json");
@@ -74,10 +75,14 @@ TEST_CASE("CLI orbit: the saddle from a guess, unstable, which the rig's own run
 }
 
 TEST_CASE("CLI orbit: bad input exits 2 naming the option", "[orbit]") {
-  // The shaker's default impact model is soft, whose multipliers are not built yet.
-  const auto soft = run_cli("orbit shaker --gamma 1.3");
+  // `orbit`'s impact model is instantaneous unless told: soft contacts' multipliers are not built yet.
+  const auto soft = run_cli("orbit shaker --impact-model soft --gamma 1.3");
   CHECK(soft.exit_code == 2);
   CHECK_THAT(soft.err, Catch::Contains("--impact-model") && Catch::Contains("instantaneous"));
+  CHECK(run_cli("orbit shaker --gamma 1.3 --restitution 0.5").exit_code == 0);
+  // The help lists the options instantaneous impacts read, not the soft contact's.
+  const auto help = run_cli("orbit shaker --help");
+  CHECK_THAT(help.out, Catch::Contains("--restitution") && !Catch::Contains("--ball-E") && !Catch::Contains("--integrator"));
   const auto half = run_cli(ball + "--gamma 1.3 --section-phase 0.5 --guess-position 0.01");
   CHECK(half.exit_code == 2);
   CHECK_THAT(half.err, Catch::Contains("--guess-velocity"));
@@ -105,4 +110,59 @@ TEST_CASE("CLI orbit: no orbit to find exits 3 with the reason, the output stand
   const nlohmann::json j = nlohmann::json::parse(r.out);
   CHECK(j["converged"] == false);
   CHECK_THAT(j["failure"].get<std::string>(), Catch::Contains("sticks to the wall"));
+}
+
+TEST_CASE("CLI continue: the shaker's branches in gamma, their doublings as events, the CSV", "[orbit]") {
+  // From the stable period-1 orbit at Gamma = 1.3 (e = 0.5) up to 1.6: the period doubling at the
+  // closed form Gamma_2 = 1.52682372 (tests/test_orbits.cpp), the doubled branch followed from it.
+  const hertzdash::test::ScratchDir dir;
+  const std::string csv = (dir.path / "branches.csv").string();
+  const auto r = run_cli("continue shaker --restitution 0.5 --parameter gamma --from 1.3 --to 1.6 --json --csv " + csv);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"schema_version", "rig", "method", "parameter", "start", "branch", "events", "ends", "inputs",
+                          "git_revision"})
+    CHECK(j.contains(key));
+  REQUIRE(j["events"].size() == 1);
+  CHECK(j["events"][0]["type"] == "period-doubling");
+  CHECK(std::abs(j["events"][0]["parameter"].get<double>() - std::hypot(std::numbers::pi / 3, 10.0 / 9.0)) < 1e-8);
+  // Two branches: period 1 from 1.3 to 1.6, stable below Gamma_2 only; period 2 from Gamma_2.
+  int periods[3] = {0, 0, 0};
+  for (const auto& p : j["branch"]) {
+    const double gamma = p["gamma"].get<double>();
+    ++periods[p["period"].get<int>()];
+    if (p["period"] == 1) CHECK(p["stable"].get<bool>() == (gamma < 1.5268));
+    CHECK(p["multipliers"].size() == 2);
+    CHECK(p["impacts_per_period"] == p["period"]);
+  }
+  CHECK(periods[1] > 5);
+  CHECK(periods[2] > 5);
+  CHECK(j["ends"].size() == 2);
+  // The CSV: the same points below the provenance, the event as a comment.
+  const std::string text = hertzdash::test::slurp(csv);
+  CHECK(text.rfind("branch,period,gamma,position_m,velocity_mps,multiplier_1_re", 0) == 0);
+  CHECK_THAT(text, Catch::Contains("# event: period-doubling at gamma = 1.5268237") && Catch::Contains("# git_revision"));
+  std::size_t rows = 0;
+  for (std::size_t at = text.find('\n'); at != std::string::npos && at + 1 < text.size(); at = text.find('\n', at + 1))
+    rows += text[at + 1] != '#';
+  CHECK(rows == j["branch"].size());
+}
+
+TEST_CASE("CLI continue: bad input exits 2 naming the option, no orbit at the start exits 3", "[orbit]") {
+  for (const auto& [args, named] : {std::pair{"--parameter impacts --from 1 --to 2", "--parameter"},
+                                    {"--parameter gamma --to 2", "--from"},
+                                    {"--parameter gamma --from 1.3 --to 1.3", "--to"},
+                                    {"--parameter restitution --from 0.5 --to 1.5", "--restitution"},
+                                    {"--from 1.3 --to 1.4", "--parameter"}}) {
+    const auto r = run_cli("continue shaker --restitution 0.5 " + std::string(args));
+    INFO(args);
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Catch::Contains(named));
+  }
+  // Gamma = 1.02 < Gamma_1: the rig's own run sticks to the wall (see the orbit's case).
+  const auto none = run_cli("continue shaker --restitution 0.5 --parameter gamma --from 1.02 --to 1.2");
+  CHECK(none.exit_code == 3);
+  CHECK_THAT(none.err, Catch::Contains("no branch followed"));
 }

@@ -74,7 +74,9 @@ TEST_CASE("continuation: the shaker's period-1 branch folds at Gamma_1 = pi (1 -
   CHECK(unstable);
 }
 
-TEST_CASE("continuation: the shaker's first two period doublings, where the brute-force diagram doubles", "[orbit]") {
+TEST_CASE("continuation: the shaker's period-doubling cascade: Gamma_2, the second where brute force doubles, "
+          "Feigenbaum's ratio",
+          "[orbit]") {
   // The first at the closed form Gamma_2 = sqrt((pi/3)^2 + (10/9)^2) = 1.52682372; the second on
   // the doubled branch, which the brute-force diagram shows between 1.665 (period 2) and 1.670
   // (period 4), checked here by brute-force runs 0.2 % either side of the located value.
@@ -94,6 +96,17 @@ TEST_CASE("continuation: the shaker's first two period doublings, where the brut
   };
   CHECK(brute_force_period(0.998 * second.parameter) == 2);
   CHECK(brute_force_period(1.002 * second.parameter) == 4);
+  // The cascade goes on (doubled branches while their period is at most 16): the intervals
+  // between successive doublings shrink by Feigenbaum's delta = 4.6692..., the universal ratio of
+  // a one-dimensional unimodal map's cascade, which the strongly dissipative bouncing ball
+  // (det M = e^(2k)) approaches (Tufillaro, Abbott and Reilly 1992, ch. 3). The ratios of the
+  // third and fourth intervals are asymptotic to delta with O(1/delta^n) corrections: within 2 %.
+  REQUIRE(doublings.size() == 5);
+  for (int k = 1; k <= 2; ++k) {
+    const double ratio = (doublings[k + 1].parameter - doublings[k].parameter) /
+                         (doublings[k + 2].parameter - doublings[k + 1].parameter);
+    CHECK(std::abs(ratio / 4.6692016 - 1) < 0.02);
+  }
   // The doubled branch starts stable and loses it at the second doubling.
   bool stable_period_2 = false;
   for (const BranchPoint& p : c.points)

@@ -69,25 +69,39 @@ constexpr ParameterDecl sweep[] = {
     mkdir};
 constexpr double infinity = std::numeric_limits<double>::infinity();
 // `hertzdash orbit RIG` (simulation/rigs/rig_orbit.hpp, docs/orbits.md).
-constexpr ParameterDecl orbit[] = {
-    {.key = "period", .range = R::integer(1, 1000), .default_value = "the rig's own run's", .default_number = 1,
-     .default_source = "the period the rig's run settles on (1 with a guess)",
-     .help = "Drive cycles N of the orbit sought, the fixed point of the map over N cycles"},
-    {.key = "section-phase", .range = R::closed_open(0, 1), .default_value = "mid-gap",
-     .default_source = "the middle of the widest impact-free arc of the rig's run's impact phases",
-     .help = "Drive phase of the section in [0, 1), where the orbit's state is taken"},
-    {.key = "guess-position", .unit = "m", .range = R::open(-infinity, infinity), .default_value = "none",
-     .help = "Newton's start instead of the rig's own run: the body's position [m] at the section phase (with "
-             "guess-velocity and section-phase)"},
-    {.key = "guess-velocity", .unit = "m/s", .range = R::open(-infinity, infinity), .default_value = "none",
-     .help = "Newton's start: the body's velocity [m/s] at the section phase"},
-    json};
+constexpr ParameterDecl orbit_period{.key = "period", .range = R::integer(1, 1000), .default_value = "the rig's own run's",
+    .default_number = 1, .default_source = "the period the rig's run settles on (1 with a guess)",
+    .help = "Drive cycles N of the orbit sought, the fixed point of the map over N cycles"};
+constexpr ParameterDecl section_phase{.key = "section-phase", .range = R::closed_open(0, 1), .default_value = "mid-gap",
+    .default_source = "the middle of the widest impact-free arc of the rig's run's impact phases",
+    .help = "Drive phase of the section in [0, 1), where the orbit's state is taken"};
+constexpr ParameterDecl guess_position{.key = "guess-position", .unit = "m", .range = R::open(-infinity, infinity),
+    .default_value = "none",
+    .help = "Newton's start instead of the rig's own run: the body's position [m] at the section phase (with "
+            "guess-velocity and section-phase)"};
+constexpr ParameterDecl guess_velocity{.key = "guess-velocity", .unit = "m/s", .range = R::open(-infinity, infinity),
+    .default_value = "none", .help = "Newton's start: the body's velocity [m/s] at the section phase"};
+constexpr ParameterDecl orbit[] = {orbit_period, section_phase, guess_position, guess_velocity, json};
+// `hertzdash continue RIG` (simulation/rigs/rig_continuation.hpp, docs/orbits.md): the orbit's
+// options for the first branch's start, and the parameter's range.
+constexpr ParameterDecl continuation[] = {
+    {.key = "parameter", .type = T::text, .choices = "a numeric input of the rig or of its run", .default_value = "required",
+     .help = "The parameter continued in, a number the rig's command takes (gamma, frequency, force-amplitude, "
+             "restitution, ...)"},
+    {.key = "from", .range = R::open(-infinity, infinity), .default_value = "required",
+     .help = "The parameter's value at the start, where the first orbit is found"},
+    {.key = "to", .range = R::open(-infinity, infinity), .default_value = "required",
+     .help = "The parameter's value towards which the branches are followed"},
+    orbit_period, section_phase, guess_position, guess_velocity,
+    {.key = "max-points", .range = R::integer(10, 100000), .default_value = "2000", .default_number = 2000,
+     .default_source = "chosen", .help = "Branch points at most, over all branches"},
+    json, file("csv", "Write the branches to this CSV file, one row per point, the events as comments"), mkdir};
 constexpr ParameterDecl models[] = {{.key = "json", .type = T::flag, .default_value = "off", .help = "Print the list as a JSON array"}};
 
 constexpr CommandOptions table[] = {
     {"simulate", simulate}, {"models", models},       {"restitution", restitution},
     {"bounce", bounce},     {"RIG", rig},             {"fit", {}},
-    {"orbit", orbit},       {"sweep", sweep}};
+    {"orbit", orbit},       {"continue", continuation}, {"sweep", sweep}};
 
 }  // namespace
 

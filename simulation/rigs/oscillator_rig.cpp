@@ -42,6 +42,8 @@ constexpr ParameterDecl inputs[] = {stiffness,      damping_ratio,  force_amplit
                                     start_position, start_velocity, s::impacts,      s::transient, s::impact_model};
 
 constexpr std::string_view not_read[] = {"height", "impact-velocity", "gravity"};
+// What Newton's law at an instantaneous impact reads of a run's options.
+constexpr std::string_view instantaneous_reads[] = {"rod", "restitution", "mass"};
 
 struct Run {
   DropTestSetup setup;
@@ -59,8 +61,7 @@ void refuse(const RunOptions& options, const RigInputs& in) {
   if (parse_shaker_impact_model(model) == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights m
     RunOptions defaults;
     defaults.integrator = shaker_default_integrator;
-    static constexpr std::string_view read[] = {"rod", "restitution", "mass"};
-    refuse_options_not_read(options, defaults, read, "`impact-model` soft (instantaneous impacts read `restitution` and `mass`)");
+    refuse_options_not_read(options, defaults, instantaneous_reads, "`impact-model` soft (instantaneous impacts read `restitution` and `mass`)");
   }
 }
 
@@ -187,7 +188,8 @@ const Rig& oscillator_rig() {
        .summary = "The impact oscillator: a body on a spring driven by F cos(2 pi f t) against a stop at distance d; "
                   "soft contacts or instantaneous impacts, exact flights",
        .inputs = inputs, .run_options_not_read = not_read, .not_read_because = "the body starts at `start-position`",
-       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse, .results = results,
+       .run_option_notes = notes, .default_integrator = shaker_default_integrator,
+       .instantaneous_reads = instantaneous_reads, .refuse = refuse, .results = results,
        .table_description = "one row per kept impact (time from the start; phase of the drive F cos(2 pi f t) in "
                             "[0,1); speeds relative to the stop)",
        .table = one_wall_impact_table, .run = run, .outcome = outcome, .sequence = sequence});

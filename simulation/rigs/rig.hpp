@@ -104,6 +104,9 @@ struct Rig {
   std::string_view not_read_because;
   std::span<const RigOptionNote> run_option_notes;
   std::string_view default_integrator;  ///< empty: RunOptions' own
+  /// The options of a run its instantaneous impacts read (the rest are refused with them; the
+  /// help of `orbit RIG` lists these alone); empty: the rig has no instantaneous impacts.
+  std::span<const std::string_view> instantaneous_reads;
   /// The rig's refusals of inputs given together (`gamma` with `amplitude`), read before any run;
   /// null: none. Throws InvalidParameter naming the key.
   void (*refuse)(const RunOptions&, const RigInputs&) = nullptr;
@@ -156,6 +159,7 @@ struct RigDefinition {
   std::string_view not_read_because;
   std::span<const RigOptionNote> run_option_notes;
   std::string_view default_integrator;
+  std::span<const std::string_view> instantaneous_reads;
   void (*refuse)(const RunOptions&, const RigInputs&);
   std::span<const RigFieldOf<Run>> results;
   std::string_view table_description;
@@ -170,7 +174,7 @@ template <class Run, class Impact>
 Rig make_rig(const RigDefinition<Run, Impact>& d) {
   Rig rig{.name = d.name, .summary = d.summary, .inputs = d.inputs, .run_options_not_read = d.run_options_not_read,
           .not_read_because = d.not_read_because, .run_option_notes = d.run_option_notes,
-          .default_integrator = d.default_integrator, .refuse = d.refuse, .results = {}, .table_description = d.table_description,
+          .default_integrator = d.default_integrator, .instantaneous_reads = d.instantaneous_reads, .refuse = d.refuse, .results = {}, .table_description = d.table_description,
           .table = {}, .run = {}, .sequence = d.sequence};
   for (const auto& f : d.results) rig.results.push_back(f.field);
   for (const auto& c : d.table) rig.table.push_back(c.column);

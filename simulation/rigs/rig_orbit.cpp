@@ -25,46 +25,62 @@ OrbitRequest orbit_request(const RigInputs& given) {
   return r;
 }
 
-OrbitResult run_orbit(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs,
-                      const OrbitRequest& request) {
+RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs) {
   if (!rig.sequence)
     throw InvalidParameter("rig", std::string(rig.name), "a rig on the impact-sequence driver with a prescribed box");
   check_rig_inputs(rig, options, inputs);
   RigSequence rs = rig.sequence(options, paper, inputs);
-  const ImpactSequenceSpec& spec = rs.sequence.spec;
-  if (spec.soft)
+  if (rs.sequence.spec.soft)
     throw InvalidParameter("impact-model", "soft",
-                           "instantaneous for the orbit command: a soft contact's multipliers need its variational equations "
-                           "(not yet built; docs/orbits.md)");
-  if (!spec.prescribed)
+                           "instantaneous for the orbit and continue commands: a soft contact's multipliers need its "
+                           "variational equations (not yet built; docs/orbits.md)");
+  if (!rs.sequence.spec.prescribed)
     throw InvalidParameter("rig", std::string(rig.name), "a rig whose box moves as prescribed (the damper's does not)");
+  return rs;
+}
+
+Eigen::VectorXd orbit_scales(const ImpactSequenceSpec& spec) {
   const double v = spec.speed_scale_mps;
-  OrbitResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .guess = {}, .period = 0, .section_phase = 0,
-                  .scale = Eigen::Vector2d(v / spec.frequency_Hz, v), .orbit = {}};
-  Eigen::VectorXd guess;
+  return Eigen::Vector2d(v / spec.frequency_Hz, v);
+}
+
+OrbitStart orbit_start(const ImpactSequenceSpec& spec, const OrbitRequest& request) {
+  OrbitStart start;
   if (request.guess_position_m) {
-    out.period = request.period.value_or(1);
-    out.section_phase = *request.section_phase;
-    guess = Eigen::Vector2d(*request.guess_position_m, *request.guess_velocity_mps);
-    out.guess = "the given guess";
-  } else {
-    const SectionGuess g = section_guess(spec, request.section_phase, request.period);
-    out.period = g.period;
-    out.section_phase = g.section_phase;
-    if (!g.failure.empty()) {
-      out.orbit.failure = g.failure;
-      out.guess = "none";
-      return out;
-    }
-    guess = g.state;
-    out.guess = fmt::format("the rig's own run after {} transient impacts (period {}, {} impact{} per period)",
-                            spec.transient, g.period, g.impacts_per_period, g.impacts_per_period == 1 ? "" : "s");
+    start.period = request.period.value_or(1);
+    start.section_phase = *request.section_phase;
+    start.state = Eigen::Vector2d(*request.guess_position_m, *request.guess_velocity_mps);
+    start.guess = "the given guess";
+    return start;
+  }
+  SectionGuess g = section_guess(spec, request.section_phase, request.period);
+  start.period = g.period;
+  start.section_phase = g.section_phase;
+  start.state = std::move(g.state);
+  start.failure = std::move(g.failure);
+  start.guess = start.failure.empty()
+                    ? fmt::format("the rig's own run after {} transient impacts (period {}, {} impact{} per period)",
+                                  spec.transient, g.period, g.impacts_per_period, g.impacts_per_period == 1 ? "" : "s")
+                    : "none";
+  return start;
+}
+
+OrbitResult run_orbit(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs,
+                      const OrbitRequest& request) {
+  RigSequence rs = orbit_sequence(rig, options, paper, inputs);
+  const ImpactSequenceSpec& spec = rs.sequence.spec;
+  const OrbitStart start = orbit_start(spec, request);
+  OrbitResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .guess = start.guess, .period = start.period,
+                  .section_phase = start.section_phase, .scale = orbit_scales(spec), .orbit = {}};
+  if (!start.failure.empty()) {
+    out.orbit.failure = start.failure;
+    return out;
   }
   out.inputs.emplace_back("period", std::to_string(out.period));
   out.inputs.emplace_back("section_phase", fmt::format("{}", out.section_phase));
   out.inputs.emplace_back("newton_tolerance", fmt::format("{}", request.shooting.tolerance));
-  const StroboscopicMap map(spec, out.section_phase, out.period);
-  out.orbit = find_periodic_orbit(map, guess, out.scale, request.shooting);
+  out.orbit = find_periodic_orbit(StroboscopicMap(spec, out.section_phase, out.period), start.state, out.scale,
+                                  request.shooting);
   return out;
 }
 

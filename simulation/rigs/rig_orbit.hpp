@@ -9,8 +9,9 @@
 //   - shooting on the stroboscopic map over N cycles, with the monodromy from saltation matrices
 //     (simulation/orbits/stroboscopic_map.hpp, periodic_orbit.hpp), in the rig's scales: its
 //     speed scale v_s and v_s / f for the position.
-// Instantaneous impacts of a prescribed box only (the shaker, the oscillator): soft contacts
-// need the contact's variational equations, not yet built, and are refused naming `impact-model`.
+// Instantaneous impacts of a prescribed box only (the shaker, the oscillator), the default impact
+// model of `orbit` and `continue`: soft contacts need the contact's variational equations, not
+// yet built, and are refused naming `impact-model`.
 #include "hertzdash/simulation/orbits/periodic_orbit.hpp"
 #include "hertzdash/simulation/rigs/rig.hpp"
 
@@ -19,6 +20,12 @@
 #include <vector>
 
 namespace hertzdash {
+
+/// The impact model `orbit` and `continue` default to, and the help of `impact-model` there.
+inline constexpr std::string_view orbit_impact_model = "instantaneous";
+inline constexpr RigOptionNote orbit_impact_model_note{
+    "impact-model", "Impact model: instantaneous; soft contacts are not analysed yet (docs/orbits.md) (default: "
+                    "instantaneous)"};
 
 /// What to look for, from the declared options of `orbit` (options/command_options.cpp).
 struct OrbitRequest {
@@ -29,6 +36,22 @@ struct OrbitRequest {
 /// The request of the options given by key ("period", "section-phase", ...); InvalidParameter
 /// naming a key outside its declared range, or a guess without its other half or its phase.
 OrbitRequest orbit_request(const RigInputs& given);
+
+/// Where Newton starts (see above): the period, section phase and state, or why there is none.
+struct OrbitStart {
+  int period = 0;
+  double section_phase = 0;
+  Eigen::VectorXd state;
+  std::string guess;    ///< where it comes from, in words
+  std::string failure;  ///< empty: a start
+};
+/// The start for the instantaneous, prescribed-box sequence `spec` and `request`.
+OrbitStart orbit_start(const ImpactSequenceSpec& spec, const OrbitRequest& request);
+/// The scales of the rig's state: v_s / f for the position [m], v_s for the velocity [m/s].
+Eigen::VectorXd orbit_scales(const ImpactSequenceSpec& spec);
+/// The rig's sequence from validated inputs, refused (InvalidParameter) where `orbit` and
+/// `continue` cannot take it: a rig without one, soft impacts, a box of its own.
+RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs);
 
 /// The orbit found, or why not (orbit.converged false: the output stands, as a failed fit's).
 struct OrbitResult {

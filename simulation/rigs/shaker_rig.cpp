@@ -17,6 +17,8 @@ namespace hertzdash {
 namespace {
 
 constexpr std::string_view not_read[] = {"impact-velocity"};
+// What Newton's law at an instantaneous impact reads of a run's options.
+constexpr std::string_view instantaneous_reads[] = {"rod", "restitution", "gravity", "height"};
 constexpr std::string_view starts = "the body starts at rest, at `height` above the wall's mean position";
 
 // A shaker run: its resolved set-up, law, solver and options, its inputs and its outcome.
@@ -45,8 +47,7 @@ void refuse_shaker_inputs(const RunOptions& options, const RigInputs& in) {
   if (parse_shaker_impact_model(model) == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g
     RunOptions defaults;
     defaults.integrator = shaker_default_integrator;
-    static constexpr std::string_view read[] = {"rod", "restitution", "gravity", "height"};
-    refuse_options_not_read(options, defaults, read,
+    refuse_options_not_read(options, defaults, instantaneous_reads,
                             "`impact-model` soft (the instantaneous map reads `restitution`, `gravity` and `height`)");
   }
 }
@@ -150,7 +151,8 @@ const Rig& shaker_rig() {
       {.name = "shaker",
        .summary = "A body bouncing on a vibrating wall: soft contacts or instantaneous impacts, exact flights",
        .inputs = shaker_parameters::all, .run_options_not_read = not_read, .not_read_because = starts,
-       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse_shaker_inputs, .results = results,
+       .run_option_notes = notes, .default_integrator = shaker_default_integrator,
+       .instantaneous_reads = instantaneous_reads, .refuse = refuse_shaker_inputs, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest on the wall; phase of "
                             "s(t) = A sin(2 pi f t) in [0,1); speeds relative to the wall)",
        .table = one_wall_impact_table, .run = run, .outcome = outcome, .sequence = sequence});

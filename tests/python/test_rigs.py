@@ -97,9 +97,10 @@ def test_orbit_is_the_programs_orbit():
     # hertzdash.orbit("RIG", ...) is `hertzdash orbit RIG --json` (docs/orbits.md). The bouncing
     # ball's stable period-1 orbit at e = 0.5, Gamma = 1.3 has the multipliers
     # -0.24159860 +- 0.43775577i (tests/test_orbits.cpp derives them), modulus e.
-    kw = dict(impact_model="instantaneous", restitution=0.5, gamma=1.3)
+    # Its impact model is instantaneous unless told.
+    kw = dict(restitution=0.5, gamma=1.3)
     d = hertzdash.orbit("shaker", **kw)
-    assert d == cli_json("orbit", "shaker", "--impact-model", "instantaneous", "--restitution", "0.5", "--gamma", "1.3")
+    assert d == cli_json("orbit", "shaker", "--restitution", "0.5", "--gamma", "1.3")
     assert d["converged"] and d["stable"] and d["period"] == 1
     assert d["multipliers"][0][0] == pytest.approx(-0.24159860, abs=1e-8)
     assert abs(d["multipliers"][0][1]) == pytest.approx(0.43775577, abs=1e-8)
@@ -110,5 +111,19 @@ def test_orbit_is_the_programs_orbit():
         hertzdash.orbit("walls")
     # No orbit to find (the body sticks to the wall once a period): a warning, and the dict says why.
     with pytest.warns(UserWarning, match="no periodic orbit found"):
-        stuck = hertzdash.orbit("shaker", impact_model="instantaneous", restitution=0.5, gamma=1.02)
+        stuck = hertzdash.orbit("shaker", restitution=0.5, gamma=1.02)
     assert not stuck["converged"] and "sticks to the wall" in stuck["failure"]
+
+
+def test_continuation_is_the_programs_continue():
+    # hertzdash.continuation("RIG", ...) is `hertzdash continue RIG --json`; `from` is the Python
+    # argument from_. The shaker's period doubling lies at the closed form
+    # Gamma_2 = sqrt((pi/3)^2 + (10/9)^2) for e = 0.5 (tests/test_orbits.cpp).
+    d = hertzdash.continuation("shaker", restitution=0.5, parameter="gamma", from_=1.3, to=1.6)
+    assert d == cli_json("continue", "shaker", "--restitution", "0.5", "--parameter", "gamma", "--from", "1.3",
+                         "--to", "1.6")
+    assert [e["type"] for e in d["events"]] == ["period-doubling"]
+    assert d["events"][0]["parameter"] == pytest.approx(math.hypot(math.pi / 3, 10 / 9), abs=1e-8)
+    assert {p["period"] for p in d["branch"]} == {1, 2}
+    with pytest.raises(ValueError, match="parameter"):
+        hertzdash.continuation("shaker", parameter="impacts", from_=1, to=2)
