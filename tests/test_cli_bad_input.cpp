@@ -175,7 +175,8 @@ TEST_CASE("CLI restitution: an iterated --omega-n exits 2 naming the option and 
 TEST_CASE("CLI: an unknown or missing subcommand exits 2 and lists the subcommands", "[cli]") {
   // Issue 19: `hertzdash frobnicate` said "A subcommand is required".
   const std::string listed =
-      "simulate, models, parameters, restitution, bounce, shaker, walls, oscillator, orbit, fit, sweep (hertzdash --help)";
+      "simulate, models, parameters, restitution, bounce, shaker, walls, oscillator, orbit, continue, fit, sweep "
+      "(hertzdash --help)";
   const auto unknown = run_cli("frobnicate --mass 1");
   CHECK(unknown.exit_code == 2);
   CHECK(unknown.err == "hertzdash: unknown subcommand 'frobnicate': the subcommands are " + listed + "\n");
