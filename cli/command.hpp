@@ -42,6 +42,9 @@ Command add_orbit_command(CLI::App& app);
 /// `hertzdash continue RIG`: the branches of a rig's periodic orbits in a parameter.
 Command add_continue_command(CLI::App& app);
 
+/// `hertzdash lyapunov RIG`: the Lyapunov exponents of a rig's attractor.
+Command add_lyapunov_command(CLI::App& app);
+
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);
 

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   for (const hertzdash::Rig& rig : hertzdash::rigs()) commands.push_back(hertzdash::cli::add_rig_command(app, rig));
   commands.push_back(hertzdash::cli::add_orbit_command(app));
   commands.push_back(hertzdash::cli::add_continue_command(app));
+  commands.push_back(hertzdash::cli::add_lyapunov_command(app));
   commands.push_back(hertzdash::cli::add_fit_command(app));
   commands.push_back(hertzdash::cli::add_sweep_command(app));
 

@@ -15,6 +15,7 @@
 #include "hertzdash/simulation/reports/fit_request.hpp"
 #include "hertzdash/simulation/options/command_options.hpp"
 #include "hertzdash/simulation/reports/continuation_report.hpp"
+#include "hertzdash/simulation/reports/lyapunov_report.hpp"
 #include "hertzdash/simulation/reports/orbit_report.hpp"
 #include "hertzdash/simulation/reports/rig_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -686,7 +687,24 @@ py::dict py_continuation(const std::string& name, const py::kwargs& kwargs) {
   return to_python(to_json(rig, r));
 }
 
-// The docstring of orbit() or continuation(): what it returns, then its own keywords.
+py::dict py_lyapunov(const std::string& name, const py::kwargs& kwargs) {
+  const Rig& rig = analysed_rig(name);
+  RunOptions options;
+  RigInputs inputs, given;
+  inputs.texts[std::string(orbit_impact_model_note.key)] = std::string(orbit_impact_model);
+  static const std::vector<ParameterDecl> decls = analysis_options("lyapunov");
+  read_rig_keywords(rig, "lyapunov", kwargs, options, inputs, decls, &given);
+  LyapunovResult r;
+  {
+    py::gil_scoped_release release;
+    r = run_lyapunov(rig, options, paper(), inputs, lyapunov_request(given));
+  }
+  if (!r.spectrum.converged)
+    warn("the exponents did not converge: " + (r.spectrum.failure.empty() ? "the run's halves disagree" : r.spectrum.failure));
+  return to_python(to_json(rig, r));
+}
+
+// The docstring of orbit(), continuation() or lyapunov(): what it returns, then its own keywords.
 std::string analysis_doc(std::string_view command, const std::string& head) {
   std::string doc = head;
   for (const ParameterDecl& d : analysis_options(command))
@@ -854,6 +872,13 @@ PYBIND11_MODULE(hertzdash, m) {
                                  "in a parameter, exactly `hertzdash continue RIG --json` (docs/orbits.md): branch (a "
                                  "dict per point), events (fold, period-doubling, neimark-sacker, grazing), ends, "
                                  "start, inputs. No orbit at the start: failure, and a UserWarning. The rig's options "
+                                 "(impact_model instantaneous unless given), and:\n")
+            .c_str());
+  m.def("lyapunov", &py_lyapunov, py::arg("rig"), py::pos_only(),
+        analysis_doc("lyapunov", "lyapunov(rig, /, **options) -> dict\n\nThe Lyapunov exponents of a rig's attractor, "
+                                 "exactly `hertzdash lyapunov RIG --json` (docs/orbits.md): exponents_per_period, "
+                                 "exponents_per_impact (largest first), sum_per_impact, expected_sum_per_impact, "
+                                 "converged, running, inputs. Not converged: a UserWarning. The rig's options "
                                  "(impact_model instantaneous unless given), and:\n")
             .c_str());
   m.def(

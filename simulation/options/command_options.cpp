@@ -96,12 +96,19 @@ constexpr ParameterDecl continuation[] = {
     {.key = "max-points", .range = R::integer(10, 100000), .default_value = "2000", .default_number = 2000,
      .default_source = "chosen", .help = "Branch points at most, over all branches"},
     json, file("csv", "Write the branches to this CSV file, one row per point, the events as comments"), mkdir};
+// `hertzdash lyapunov RIG` (simulation/rigs/rig_lyapunov.hpp, docs/orbits.md).
+constexpr ParameterDecl lyapunov[] = {
+    {.key = "periods", .range = R::integer(10, 10000000), .default_value = "10000", .default_number = 10000,
+     .default_source = "chosen: a chaotic run's exponents to ~2 % (docs/orbits.md)",
+     .help = "Drive periods of the run after the rig's own (its transient and kept impacts)"},
+    section_phase, json};
 constexpr ParameterDecl models[] = {{.key = "json", .type = T::flag, .default_value = "off", .help = "Print the list as a JSON array"}};
 
 constexpr CommandOptions table[] = {
     {"simulate", simulate}, {"models", models},       {"restitution", restitution},
     {"bounce", bounce},     {"RIG", rig},             {"fit", {}},
-    {"orbit", orbit},       {"continue", continuation}, {"sweep", sweep}};
+    {"orbit", orbit},       {"continue", continuation}, {"lyapunov", lyapunov},
+    {"sweep", sweep}};
 
 }  // namespace
 

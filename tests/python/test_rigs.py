@@ -127,3 +127,11 @@ def test_continuation_is_the_programs_continue():
     assert {p["period"] for p in d["branch"]} == {1, 2}
     with pytest.raises(ValueError, match="parameter"):
         hertzdash.continuation("shaker", parameter="impacts", from_=1, to=2)
+
+
+def test_lyapunov_is_the_programs_lyapunov():
+    # A chaotic bouncing ball (e = 0.95, Gamma = 2.2): its exponents sum to 2 ln e per impact.
+    d = hertzdash.lyapunov("shaker", restitution=0.95, gamma=2.2, periods=3000)
+    assert d == cli_json("lyapunov", "shaker", "--restitution", "0.95", "--gamma", "2.2", "--periods", "3000")
+    assert d["sum_per_impact"] == pytest.approx(2 * math.log(0.95), abs=1e-10)
+    assert d["exponents_per_impact"][0] > 0

@@ -1,0 +1,63 @@
+// Lyapunov exponents by the QR method (simulation/orbits/lyapunov.hpp).
+#include "hertzdash/simulation/orbits/lyapunov.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hertzdash {
+
+LyapunovSpectrum lyapunov_spectrum(const StroboscopicMap& map, const Eigen::VectorXd& start, const LyapunovOptions& o) {
+  LyapunovSpectrum out;
+  const auto n = start.size();
+  Eigen::VectorXd z = start, sum = Eigen::VectorXd::Zero(n), half_sum = sum;
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(n, n);
+  long half_impacts = 0;
+  auto per_impact = [](const Eigen::VectorXd& s, long impacts) {
+    std::vector<double> v(s.data(), s.data() + s.size());
+    for (double& x : v) x /= static_cast<double>(std::max(impacts, 1L));
+    return v;
+  };
+  for (long k = 0; k < o.periods; ++k) {
+    if (k == o.periods / 2) half_sum = sum, half_impacts = out.impacts;
+    const SectionImage image = map(z);
+    if (!image.failure.empty()) {
+      out.failure = fmt::format("after {} periods: {}", k, image.failure);
+      break;
+    }
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(image.monodromy * Q);
+    Q = qr.householderQ();
+    const Eigen::MatrixXd R = qr.matrixQR().triangularView<Eigen::Upper>();
+    // Q R with R's diagonal made positive: the signs go into Q.
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (R(i, i) < 0) Q.col(i) = -Q.col(i);
+      sum(i) += std::log(std::abs(R(i, i)));
+    }
+    z = image.state;
+    out.impacts += static_cast<long>(image.impacts.size());
+    out.periods = k + 1;
+    if ((out.periods & (out.periods - 1)) == 0 || out.periods == o.periods) {
+      out.running_periods.push_back(out.periods);
+      out.running_per_impact.push_back(per_impact(sum, out.impacts));
+    }
+  }
+  out.per_period = per_impact(sum, 1);
+  for (double& x : out.per_period) x /= static_cast<double>(std::max(out.periods, 1L));
+  out.per_impact = per_impact(sum, out.impacts);
+  out.sum_per_impact = sum.sum() / static_cast<double>(std::max(out.impacts, 1L));
+  const ImpactSequenceSpec& spec = map.spec();
+  const double T = 1 / spec.frequency_Hz, c_over_m = spec.body.damping_N_s_per_m() / spec.body.mass_kg;
+  out.expected_sum_per_impact = 2 * std::log(spec.restitution) -
+                                c_over_m * T * static_cast<double>(out.periods) / static_cast<double>(std::max(out.impacts, 1L));
+  const std::vector<double> first = per_impact(half_sum, half_impacts),
+                            second = per_impact(sum - half_sum, out.impacts - half_impacts);
+  for (Eigen::Index i = 0; i < n; ++i)
+    out.half_difference = std::max(out.half_difference, std::abs(first[static_cast<std::size_t>(i)] - second[static_cast<std::size_t>(i)]));
+  double largest = 0;
+  for (const double l : out.per_impact) largest = std::max(largest, std::abs(l));
+  out.converged = out.failure.empty() && out.impacts > 0 && out.half_difference < o.tolerance * largest;
+  return out;
+}
+
+}  // namespace hertzdash
