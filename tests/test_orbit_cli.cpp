@@ -170,7 +170,7 @@ TEST_CASE("CLI continue: bad input exits 2 naming the option, no orbit at the st
 TEST_CASE("CLI lyapunov: a chaotic shaker's exponents, their sum 2 ln e per impact", "[orbit]") {
   // e = 0.95, Gamma = 2.2: chaotic (tests/test_orbit_lyapunov.cpp); the sum per impact is
   // 2 ln 0.95 = -0.10258659 to round-off, the largest exponent positive.
-  const auto r = run_cli("lyapunov shaker --restitution 0.95 --gamma 2.2 --periods 5000 --json");
+  const auto r = run_cli("lyapunov shaker --restitution 0.95 --gamma 2.2 --periods 10000 --json");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -178,7 +178,7 @@ TEST_CASE("CLI lyapunov: a chaotic shaker's exponents, their sum 2 ln e per impa
                           "exponents_per_impact", "sum_per_impact", "expected_sum_per_impact", "half_difference",
                           "converged", "running", "inputs", "git_revision"})
     CHECK(j.contains(key));
-  CHECK(j["periods"] == 5000);
+  CHECK(j["periods"] == 10000);
   CHECK(std::abs(j["sum_per_impact"].get<double>() - 2 * std::log(0.95)) < 1e-10);
   CHECK(j["exponents_per_impact"][0].get<double>() > 0);
   CHECK(j["converged"] == true);
