@@ -6,7 +6,7 @@
 // output standing), 2 for bad input.
 #include "cli/analysis_command.hpp"
 #include "cli/output_files.hpp"
-#include "hertzdash/simulation/reports/continuation_report.hpp"
+#include "hertzdash/simulation/reports/orbit_report.hpp"
 
 #include <iostream>
 

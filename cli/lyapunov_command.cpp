@@ -3,7 +3,7 @@
 // --section-phase, --json. Exit 0 with a converged spectrum, 3 when the run stopped or did not
 // converge (the output standing), 2 for bad input.
 #include "cli/analysis_command.hpp"
-#include "hertzdash/simulation/reports/lyapunov_report.hpp"
+#include "hertzdash/simulation/reports/orbit_report.hpp"
 
 #include <iostream>
 

@@ -14,8 +14,6 @@
 #include "hertzdash/simulation/reports/fit_curves.hpp"
 #include "hertzdash/simulation/reports/fit_request.hpp"
 #include "hertzdash/simulation/options/command_options.hpp"
-#include "hertzdash/simulation/reports/continuation_report.hpp"
-#include "hertzdash/simulation/reports/lyapunov_report.hpp"
 #include "hertzdash/simulation/reports/orbit_report.hpp"
 #include "hertzdash/simulation/reports/rig_report.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -655,53 +653,50 @@ const Rig& analysed_rig(const std::string& name) {
   throw InvalidParameter("rig", name, "one of: " + names);
 }
 
-py::dict py_orbit(const std::string& name, const py::kwargs& kwargs) {
+// A call of `hertzdash COMMAND RIG --json` (orbit, continue, lyapunov): the rig's keywords
+// (impact_model instantaneous unless given) and the command's, then `run` (rig, options, inputs,
+// the command's given options) -> (its result's JSON, a warning or empty), without the GIL.
+template <class Run>
+py::dict py_analysis(const std::string& name, std::string_view command, const char* function, const py::kwargs& kwargs,
+                     Run&& run) {
   const Rig& rig = analysed_rig(name);
   RunOptions options;
   RigInputs inputs, given;
   inputs.texts[std::string(orbit_impact_model_note.key)] = std::string(orbit_impact_model);
-  static const std::vector<ParameterDecl> decls = analysis_options("orbit");
-  read_rig_keywords(rig, "orbit", kwargs, options, inputs, decls, &given);
-  OrbitResult r;
+  read_rig_keywords(rig, function, kwargs, options, inputs, analysis_options(command), &given);
+  std::pair<nlohmann::ordered_json, std::string> out;
   {
     py::gil_scoped_release release;
-    r = run_orbit(rig, options, paper(), inputs, orbit_request(given));
+    out = run(rig, options, inputs, given);
   }
-  if (!r.orbit.converged) warn("no periodic orbit found: " + r.orbit.failure);
-  return to_python(to_json(rig, r));
+  if (!out.second.empty()) warn(out.second);
+  return to_python(out.first);
+}
+
+py::dict py_orbit(const std::string& name, const py::kwargs& kwargs) {
+  return py_analysis(name, "orbit", "orbit", kwargs, [](const Rig& rig, const RunOptions& o, const RigInputs& in, const RigInputs& given) {
+    const OrbitResult r = run_orbit(rig, o, paper(), in, orbit_request(given));
+    return std::pair{to_json(rig, r), r.orbit.converged ? "" : "no periodic orbit found: " + r.orbit.failure};
+  });
 }
 
 py::dict py_continuation(const std::string& name, const py::kwargs& kwargs) {
-  const Rig& rig = analysed_rig(name);
-  RunOptions options;
-  RigInputs inputs, given;
-  inputs.texts[std::string(orbit_impact_model_note.key)] = std::string(orbit_impact_model);
-  static const std::vector<ParameterDecl> decls = analysis_options("continue");
-  read_rig_keywords(rig, "continuation", kwargs, options, inputs, decls, &given);
-  ContinuationResult r;
-  {
-    py::gil_scoped_release release;
-    r = run_continuation(rig, options, paper(), inputs, continuation_request(given));
-  }
-  if (!r.failure.empty()) warn("no branch followed: " + r.failure);
-  return to_python(to_json(rig, r));
+  return py_analysis(name, "continue", "continuation", kwargs,
+                     [](const Rig& rig, const RunOptions& o, const RigInputs& in, const RigInputs& given) {
+                       const ContinuationResult r = run_continuation(rig, o, paper(), in, continuation_request(given));
+                       return std::pair{to_json(rig, r), r.failure.empty() ? "" : "no branch followed: " + r.failure};
+                     });
 }
 
 py::dict py_lyapunov(const std::string& name, const py::kwargs& kwargs) {
-  const Rig& rig = analysed_rig(name);
-  RunOptions options;
-  RigInputs inputs, given;
-  inputs.texts[std::string(orbit_impact_model_note.key)] = std::string(orbit_impact_model);
-  static const std::vector<ParameterDecl> decls = analysis_options("lyapunov");
-  read_rig_keywords(rig, "lyapunov", kwargs, options, inputs, decls, &given);
-  LyapunovResult r;
-  {
-    py::gil_scoped_release release;
-    r = run_lyapunov(rig, options, paper(), inputs, lyapunov_request(given));
-  }
-  if (!r.spectrum.converged)
-    warn("the exponents did not converge: " + (r.spectrum.failure.empty() ? "the run's halves disagree" : r.spectrum.failure));
-  return to_python(to_json(rig, r));
+  return py_analysis(name, "lyapunov", "lyapunov", kwargs,
+                     [](const Rig& rig, const RunOptions& o, const RigInputs& in, const RigInputs& given) {
+                       const LyapunovResult r = run_lyapunov(rig, o, paper(), in, lyapunov_request(given));
+                       const LyapunovSpectrum& s = r.spectrum;
+                       return std::pair{to_json(rig, r),
+                                        s.converged ? std::string() : "the exponents did not converge: " +
+                                                                          (s.failure.empty() ? "the run's halves disagree" : s.failure)};
+                     });
 }
 
 // The docstring of orbit(), continuation() or lyapunov(): what it returns, then its own keywords.

@@ -45,6 +45,19 @@ Continuation shaker_branches(double from, double to) {
   return continue_periodic_orbits([](double gamma) { return shaker_spec(gamma); }, o);
 }
 
+/// The instantaneous impact oscillator at force amplitude F (the rig's other defaults, the paper's
+/// steel rod's mass, e = 0.7), with `transient` impacts before 20 kept.
+SequenceFamily oscillator_family(int transient) {
+  return [transient](double force_N) {
+    OscillatorOptions o;
+    o.impact_model = ShakerImpactModel::instantaneous;
+    o.force_amplitude_N = force_N;
+    o.transient = transient;
+    o.impacts = 20;
+    return make_oscillator_sequence(setup(0.7), "hongo-paper", {}, o).spec;
+  };
+}
+
 std::vector<BranchEvent> events_of(const Continuation& c, BranchEventType type) {
   std::vector<BranchEvent> found;
   for (const BranchEvent& ev : c.events)
@@ -122,14 +135,7 @@ TEST_CASE("continuation: the oscillator's non-impacting orbit grazes the stop at
   // Continued up in the force amplitude from 3 N (no impacts), the branch ends at the grazing,
   // located by bisection to 1e-12 in arclength: F_g to ~1e-9 relative; asserted to 1e-7.
   const DropTestSetup s = setup(0.7);
-  auto spec_at = [&s](double force_N) {
-    OscillatorOptions o;
-    o.impact_model = ShakerImpactModel::instantaneous;
-    o.force_amplitude_N = force_N;
-    o.transient = 200;
-    o.impacts = 20;
-    return make_oscillator_sequence(s, "hongo-paper", {}, o).spec;
-  };
+  const SequenceFamily spec_at = oscillator_family(200);
   const OscillatorOptions defaults;
   const double m = s.mass_kg, k = defaults.stiffness_N_per_m, w = 2 * pi * defaults.frequency_Hz;
   const double c = 2 * defaults.damping_ratio * std::sqrt(k * m), d = defaults.stop_distance_m;
@@ -158,14 +164,7 @@ TEST_CASE("continuation: the oscillator's impacting orbit folds far below F_g, t
   // force from the fold's state: 1 % above it the body keeps impacting once a period, 1 % below
   // it the impacts die out.
   const DropTestSetup s = setup(0.7);
-  auto spec_at = [&s](double force_N) {
-    OscillatorOptions o;
-    o.impact_model = ShakerImpactModel::instantaneous;
-    o.force_amplitude_N = force_N;
-    o.transient = 400;
-    o.impacts = 20;
-    return make_oscillator_sequence(s, "hongo-paper", {}, o).spec;
-  };
+  const SequenceFamily spec_at = oscillator_family(400);
   const SectionGuess guess = section_guess(spec_at(10), std::nullopt, std::nullopt);
   REQUIRE(guess.failure.empty());
   REQUIRE(guess.period == 1);

@@ -1,5 +1,5 @@
-// A rig's branches as JSON, text and CSV (simulation/reports/continuation_report.hpp).
-#include "hertzdash/simulation/reports/continuation_report.hpp"
+// A rig's branches as JSON, text and CSV (simulation/reports/orbit_report.hpp).
+#include "hertzdash/simulation/reports/orbit_report.hpp"
 
 #include "hertzdash/simulation/reports/report_json.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"

@@ -1,5 +1,5 @@
-// A rig's Lyapunov exponents as JSON and text (simulation/reports/lyapunov_report.hpp).
-#include "hertzdash/simulation/reports/lyapunov_report.hpp"
+// A rig's Lyapunov exponents as JSON and text (simulation/reports/orbit_report.hpp).
+#include "hertzdash/simulation/reports/orbit_report.hpp"
 
 #include "hertzdash/simulation/reports/report_json.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"

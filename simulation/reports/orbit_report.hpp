@@ -1,6 +1,12 @@
 #pragma once
-// What `hertzdash orbit RIG` and Python's hertzdash.orbit() print (simulation/rigs/rig_orbit.hpp,
-// docs/orbits.md): the orbit as JSON and as text.
+// What the analyses of a rig's impact sequence print (docs/orbits.md), `hertzdash COMMAND RIG`
+// and Python's hertzdash.FUNCTION(): `orbit` (simulation/rigs/rig_orbit.hpp), `continue`
+// (rig_continuation.hpp) and `lyapunov` (rig_lyapunov.hpp), each as JSON and text, the branches
+// of `continue` as CSV too. Each in its own source file: orbit_report.cpp,
+// continuation_report.cpp, lyapunov_report.cpp.
+#include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/rigs/rig_continuation.hpp"
+#include "hertzdash/simulation/rigs/rig_lyapunov.hpp"
 #include "hertzdash/simulation/rigs/rig_orbit.hpp"
 
 #include <nlohmann/json.hpp>
@@ -19,5 +25,31 @@ nlohmann::ordered_json to_json(const Rig& rig, const OrbitResult& result);
 
 /// "hertzdash orbit RIG: heading", the orbit's lines and its impacts, or the failure.
 std::string orbit_text(const Rig& rig, const OrbitResult& result);
+
+/// "schema_version", "rig", "method", "parameter", "start" {period, section_phase, guess},
+/// "failure" (only where no branch was followed), "branch" (one object per point: branch, period,
+/// the parameter under its column name with its unit (force_amplitude_N), position_m,
+/// velocity_mps, multipliers [[re, im], ...], multiplier_moduli, stable, impacts_per_period,
+/// min_impact_speed_mps, min_flight_gap_m),
+/// "events" ({type, parameter, branch, period}), "ends" (per branch, why it ended), "inputs",
+/// "git_revision". An infinite closeness (no impact, no interior minimum) is null.
+nlohmann::ordered_json to_json(const Rig& rig, const ContinuationResult& result);
+
+/// "hertzdash continue RIG: heading", the start, the events and each branch's end.
+std::string continuation_text(const Rig& rig, const ContinuationResult& result);
+
+/// The points as CSV (the JSON's per-point keys as columns, each multiplier as _re and _im) below
+/// the provenance, the events and the branches' ends as comments.
+CsvWriter continuation_csv(const Rig& rig, const ContinuationResult& result);
+
+/// "schema_version", "rig", "method", "failure" (only where the run stopped or had no start),
+/// "periods", "impacts", "section_phase", "exponents_per_period" and "exponents_per_impact"
+/// (largest first), "sum_per_impact", "expected_sum_per_impact", "half_difference",
+/// "converged", "running" {periods, exponents_per_impact: one array per running point},
+/// "inputs", "git_revision".
+nlohmann::ordered_json to_json(const Rig& rig, const LyapunovResult& result);
+
+/// "hertzdash lyapunov RIG: heading" and the spectrum's lines.
+std::string lyapunov_text(const Rig& rig, const LyapunovResult& result);
 
 }  // namespace hertzdash
