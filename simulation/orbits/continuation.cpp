@@ -172,9 +172,11 @@ class Tracer {
     BranchPoint row{.branch = branch, .period = period, .parameter = lambda(p.x(2)),
                     .state = Eigen::Vector2d(p.x(0) * s_(0), p.x(1) * s_(1)),
                     .multipliers = floquet_multipliers(im.monodromy), .stable = false,
-                    .impacts = static_cast<int>(im.impacts.size()), .min_impact_speed_mps = im.min_impact_speed_mps,
+                    .impacts = static_cast<int>(im.impacts.size()), .impact_phases = {},
+                    .min_impact_speed_mps = im.min_impact_speed_mps,
                     .min_flight_gap_m = im.min_flight_gap_m};
     row.stable = std::ranges::all_of(row.multipliers, [](auto l) { return std::abs(l) < 1 - 1e-9; });
+    for (const SequenceImpact& i : im.impacts) row.impact_phases.push_back(i.phase);
     out_.points.push_back(std::move(row));
   }
   void add_event(BranchEventType type, int branch, int period, const Point& p) {

@@ -67,6 +67,7 @@ struct BranchPoint {
   std::vector<std::complex<double>> multipliers;  ///< largest modulus first
   bool stable = false;
   int impacts = 0;  ///< per period
+  std::vector<double> impact_phases;  ///< the drive phase of each, in the order of the period
   double min_impact_speed_mps = 0, min_flight_gap_m = 0;
 };
 

@@ -40,7 +40,7 @@ nlohmann::ordered_json to_json(const Rig& rig, const ContinuationResult& r) {
     }
     branch.push_back({{"branch", p.branch}, {"period", p.period}, {column, p.parameter}, {"position_m", p.state(0)},
                       {"velocity_mps", p.state(1)}, {"multipliers", m}, {"multiplier_moduli", moduli},
-                      {"stable", p.stable}, {"impacts_per_period", p.impacts},
+                      {"stable", p.stable}, {"impacts_per_period", p.impacts}, {"impact_phase", p.impact_phases},
                       {"min_impact_speed_mps", number_or_null(p.min_impact_speed_mps)},
                       {"min_flight_gap_m", number_or_null(p.min_flight_gap_m)}});
   }

@@ -30,7 +30,7 @@ std::string orbit_text(const Rig& rig, const OrbitResult& result);
 /// "failure" (only where no branch was followed), "branch" (one object per point: branch, period,
 /// the parameter under its column name with its unit (force_amplitude_N), position_m,
 /// velocity_mps, multipliers [[re, im], ...], multiplier_moduli, stable, impacts_per_period,
-/// min_impact_speed_mps, min_flight_gap_m),
+/// impact_phase (one per impact), min_impact_speed_mps, min_flight_gap_m),
 /// "events" ({type, parameter, branch, period}), "ends" (per branch, why it ended), "inputs",
 /// "git_revision". An infinite closeness (no impact, no interior minimum) is null.
 nlohmann::ordered_json to_json(const Rig& rig, const ContinuationResult& result);
