@@ -3,7 +3,7 @@
 // `continue` and `lyapunov`, each one subcommand per rig with a sequence (Rig::sequence), with
 // the rig's options for instantaneous impacts (cli/rig_options.hpp) and the command's own,
 // declared in simulation/options/command_options.cpp: numbers and texts into `given`, --json,
-// --csv FILE and --mkdir where declared.
+// --csv FILE and --mkdir where declared. The frame and the three commands: analysis_commands.cpp.
 #include "cli/command.hpp"
 
 #include <functional>

@@ -20,6 +20,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/LU>  // determinant(): Eigen's, independent of the library's closed forms
+
 #include <cmath>
 #include <complex>
 #include <numbers>

@@ -2,6 +2,7 @@
 #include "hertzdash/simulation/orbits/continuation.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/orbits/planar_algebra.hpp"
 
 #include <fmt/format.h>
 
@@ -92,8 +93,7 @@ class Tracer {
   /// The Jacobian at x (its image given), or nothing where a neighbour in mu fails.
   std::optional<Jacobian> jacobian(const Vector3& x, const SectionImage& im, int period) const {
     Jacobian J;
-    const Eigen::Matrix2d S = s_.asDiagonal();
-    J.leftCols<2>() = S.inverse() * (im.monodromy - Eigen::MatrixXd::Identity(2, 2)) * S;
+    J.leftCols<2>() = s_.cwiseInverse().asDiagonal() * (im.monodromy - Eigen::MatrixXd::Identity(2, 2)) * s_.asDiagonal();
     // Central, or one-sided where a neighbour lies past a grazing (other impacts) or its range.
     Vector3 up = x, down = x;
     up(2) += mu_step, down(2) -= mu_step;
@@ -110,7 +110,7 @@ class Tracer {
     if (!im.failure.empty()) return std::nullopt;
     const std::optional<Jacobian> J = jacobian(x, im, period);
     if (!J) return std::nullopt;
-    Vector3 t = J->row(0).transpose().cross(J->row(1).transpose());
+    Vector3 t = planar::cross(J->row(0).transpose(), J->row(1).transpose());
     if (!(t.norm() > 0)) return std::nullopt;
     return Point{x, std::move(im), *J, t.normalized(), 0};
   }
@@ -129,7 +129,7 @@ class Tracer {
       A.row(2) = direction.transpose();
       Vector3 rhs;
       rhs << -residual(x, im), -direction.dot(x - predicted);
-      const Vector3 dx = A.fullPivLu().solve(rhs);
+      const Vector3 dx = planar::solve(A, rhs);
       if (!dx.allFinite()) return std::nullopt;
       x += dx;
       if (dx.norm() < step_tolerance) {
@@ -146,11 +146,10 @@ class Tracer {
   /// Test functions of an event at a point: fold det(M - I), period doubling det(M + I),
   /// Neimark-Sacker det M - 1 (NaN unless the multipliers are complex).
   static std::array<double, 3> tests(const SectionImage& im) {
-    const Eigen::MatrixXd& M = im.monodromy;
-    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(M.rows(), M.cols());
-    const double tr = M.trace(), det = M.determinant();
+    const Eigen::Matrix2d M = im.monodromy, I = Eigen::Matrix2d::Identity();
+    const double tr = M.trace(), det = planar::det(M);
     const bool complex = tr * tr < 4 * det;
-    return {(M - I).determinant(), (M + I).determinant(), complex ? det - 1 : std::nan("")};
+    return {planar::det(M - I), planar::det(M + I), complex ? det - 1 : std::nan("")};
   }
 
   /// Bisection on the step from a for the point where `good` turns false; the last good point.
@@ -283,13 +282,10 @@ class Tracer {
     }
   }
 
-  /// The branch of period 2N from a period doubling at e: along (v, 0), v the eigenvector of -1.
+  /// The branch of period 2N from a period doubling at e: along (v, 0), v the eigenvector of -1
+  /// (the null vector of M + I there).
   BranchStart doubled(const Point& e, int period) const {
-    const Eigen::EigenSolver<Eigen::MatrixXd> solver(e.image.monodromy);
-    int k = 0;
-    for (int i = 1; i < solver.eigenvalues().size(); ++i)
-      if (std::abs(solver.eigenvalues()(i) + 1.0) < std::abs(solver.eigenvalues()(k) + 1.0)) k = i;
-    const Eigen::Vector2d v = solver.eigenvectors().col(k).real();
+    const Eigen::Vector2d v = planar::null_vector(e.image.monodromy + Eigen::Matrix2d::Identity());
     // At the branch point P^{2N}'s Jacobian has a two-dimensional null space (the old branch's
     // tangent and (v, 0)): its tangent is set, not computed.
     Point start{e.x, image(e.x, 2 * period), e.J, Vector3(v(0) / s_(0), v(1) / s_(1), 0.0).normalized(), 0};

@@ -26,13 +26,14 @@ LyapunovSpectrum lyapunov_spectrum(const StroboscopicMap& map, const Eigen::Vect
       out.failure = fmt::format("after {} periods: {}", k, image.failure);
       break;
     }
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(image.monodromy * Q);
-    Q = qr.householderQ();
-    const Eigen::MatrixXd R = qr.matrixQR().triangularView<Eigen::Upper>();
-    // Q R with R's diagonal made positive: the signs go into Q.
+    // Q R = M Q by modified Gram-Schmidt, R's diagonal positive: each column of M Q less its
+    // parts along the earlier columns, its norm R_ii.
+    Q = image.monodromy * Q;
     for (Eigen::Index i = 0; i < n; ++i) {
-      if (R(i, i) < 0) Q.col(i) = -Q.col(i);
-      sum(i) += std::log(std::abs(R(i, i)));
+      for (Eigen::Index j = 0; j < i; ++j) Q.col(i) -= Q.col(j).dot(Q.col(i)) * Q.col(j);
+      const double r = Q.col(i).norm();
+      Q.col(i) /= r;
+      sum(i) += std::log(r);
     }
     z = image.state;
     out.impacts += static_cast<long>(image.impacts.size());

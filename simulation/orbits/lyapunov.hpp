@@ -3,7 +3,8 @@
 // (simulation/orbits/stroboscopic_map.hpp), along the trajectory from a start: the QR method
 // (Benettin, Galgani, Giorgilli and Strelcyn, Meccanica 15 (1980) 9; Eckmann and Ruelle, Rev.
 // Mod. Phys. 57 (1985) 617): with the map's monodromy M_n (saltation matrices, no differences),
-//   Q_{n+1} R_{n+1} = M_n Q_n,   Q_0 = I,   lambda_i = (1/n) sum_n log |(R_n)_ii|,
+//   Q_{n+1} R_{n+1} = M_n Q_n,   Q_0 = I,   lambda_i = (1/n) sum_n log (R_n)_ii,
+// (modified Gram-Schmidt, R's diagonal positive),
 // per drive period, and per impact over the impacts the trajectory made. Their sum is
 // (1/n) log |det(M_n ... M_1)|: for instantaneous impacts each impact gives log e^2 and each
 // period of flight -c T/m (Liouville), so the sum per impact is 2 ln e - (c/m) T periods/impacts

@@ -1,9 +1,12 @@
 // Shooting for periodic orbits and their Floquet multipliers (simulation/orbits/periodic_orbit.hpp).
 #include "hertzdash/simulation/orbits/periodic_orbit.hpp"
 
+#include "hertzdash/simulation/orbits/planar_algebra.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace hertzdash {
@@ -20,10 +23,8 @@ double scaled_norm(const Eigen::VectorXd& g, const Eigen::VectorXd& scale) {
 }  // namespace
 
 std::vector<std::complex<double>> floquet_multipliers(const Eigen::MatrixXd& monodromy) {
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(monodromy, false);
-  std::vector<std::complex<double>> lambda(solver.eigenvalues().begin(), solver.eigenvalues().end());
-  std::ranges::stable_sort(lambda, [](auto a, auto b) { return std::abs(a) > std::abs(b); });
-  return lambda;
+  const std::array<std::complex<double>, 2> lambda = planar::eigenvalues(monodromy);
+  return {lambda.begin(), lambda.end()};
 }
 
 PeriodicOrbit find_periodic_orbit(const StroboscopicMap& map, const Eigen::VectorXd& guess, const Eigen::VectorXd& scale,
@@ -45,13 +46,12 @@ PeriodicOrbit find_periodic_orbit(const StroboscopicMap& map, const Eigen::Vecto
       orbit.failure = fmt::format("no convergence in {} Newton steps (scaled residual {:.3g})", orbit.iterations, residual);
       break;
     }
-    const Eigen::MatrixXd J = image.monodromy - Eigen::MatrixXd::Identity(z.size(), z.size());
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
-    if (!lu.isInvertible()) {
+    const Eigen::Matrix2d J = image.monodromy - Eigen::Matrix2d::Identity();
+    if (std::abs(planar::det(J)) <= 1e-14 * J.squaredNorm()) {
       orbit.failure = "a multiplier equals 1 (a fold): Newton's matrix M - I is singular";
       break;
     }
-    const Eigen::VectorXd step = lu.solve(-(image.state - z));
+    const Eigen::VectorXd step = planar::inverse(J) * (z - image.state);
     bool accepted = false;
     for (double lambda = 1; !accepted && lambda >= std::ldexp(1.0, -max_halvings); lambda /= 2) {
       const Eigen::VectorXd trial = z + lambda * step;

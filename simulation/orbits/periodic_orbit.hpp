@@ -35,7 +35,7 @@ struct PeriodicOrbit {
   double min_flight_gap_m = 0;               ///< its closest approach to a wall in flight (SectionImage)
 };
 
-/// The Floquet multipliers of `monodromy`, largest modulus first.
+/// The Floquet multipliers of the 2x2 `monodromy`, largest modulus first (planar_algebra.hpp).
 std::vector<std::complex<double>> floquet_multipliers(const Eigen::MatrixXd& monodromy);
 
 /// Newton from `guess`, residuals measured in `scale` (one positive entry per state component).

@@ -8,7 +8,7 @@
 // next time at phase phi_s.
 #include "hertzdash/simulation/shaker/impact_sequence.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <optional>
 #include <span>

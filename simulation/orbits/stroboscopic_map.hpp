@@ -22,7 +22,7 @@
 // wall, a body carried by a wall (a sticking orbit: the map is not smooth there) and a chatter cap.
 #include "hertzdash/simulation/shaker/impact_sequence.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <string>
 #include <vector>

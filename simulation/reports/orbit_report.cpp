@@ -1,10 +1,12 @@
-// A rig's periodic orbit as JSON and text (simulation/reports/orbit_report.hpp).
+// What the orbit analyses print (simulation/reports/orbit_report.hpp): `orbit`, then
+// `continue`, then `lyapunov`.
 #include "hertzdash/simulation/reports/orbit_report.hpp"
 
 #include "hertzdash/simulation/reports/report_json.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 
@@ -12,7 +14,7 @@ namespace hertzdash {
 
 namespace {
 
-constexpr const char* method = "stroboscopic map, monodromy from saltation matrices (instantaneous impacts)";
+constexpr const char* orbit_method = "stroboscopic map, monodromy from saltation matrices (instantaneous impacts)";
 
 std::string complex_text(std::complex<double> z) {
   if (z.imag() == 0) return fmt::format("{:.9g}", z.real());
@@ -35,7 +37,7 @@ nlohmann::ordered_json to_json(const Rig& rig, const OrbitResult& r) {
   nlohmann::ordered_json j;
   j["schema_version"] = json_schema_version;
   j["rig"] = rig.name;
-  j["method"] = method;
+  j["method"] = orbit_method;
   j["converged"] = o.converged;
   if (!o.converged) j["failure"] = o.failure;
   j["period"] = r.period;
@@ -102,6 +104,133 @@ std::string orbit_text(const Rig& rig, const OrbitResult& r) {
     const SequenceImpact& i = o.impacts[n];
     out += fmt::format("  {:>4} {:>16.10g} {:>17.10g} {:>17.10g}\n", n, i.phase, i.impact_speed_mps, i.rebound_speed_mps);
   }
+  return out;
+}
+
+namespace {
+
+constexpr const char* continuation_method =
+    "pseudo-arclength continuation of the stroboscopic map's fixed points, monodromy from saltation matrices "
+    "(instantaneous impacts)";
+
+std::string event_line(const ContinuationResult& r, const BranchEvent& e) {
+  return fmt::format("{} at {} = {:.9g} (branch {}, period {})", to_string(e.type), r.parameter, e.parameter, e.branch,
+                     e.period);
+}
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const Rig& rig, const ContinuationResult& r) {
+  using report_detail::number_or_null;
+  nlohmann::ordered_json j;
+  j["schema_version"] = json_schema_version;
+  j["rig"] = rig.name;
+  j["method"] = continuation_method;
+  j["parameter"] = r.parameter;
+  const std::string column = r.column;
+  j["start"] = {{"period", r.start.period}, {"section_phase", r.start.section_phase}, {"guess", r.start.guess}};
+  if (!r.failure.empty()) j["failure"] = r.failure;
+  nlohmann::ordered_json branch = nlohmann::ordered_json::array();
+  for (const BranchPoint& p : r.continuation.points) {
+    nlohmann::ordered_json m = nlohmann::ordered_json::array(), moduli = nlohmann::ordered_json::array();
+    for (const std::complex<double> l : p.multipliers) {
+      m.push_back({l.real(), l.imag()});
+      moduli.push_back(std::abs(l));
+    }
+    branch.push_back({{"branch", p.branch}, {"period", p.period}, {column, p.parameter}, {"position_m", p.state(0)},
+                      {"velocity_mps", p.state(1)}, {"multipliers", m}, {"multiplier_moduli", moduli},
+                      {"stable", p.stable}, {"impacts_per_period", p.impacts}, {"impact_phase", p.impact_phases},
+                      {"min_impact_speed_mps", number_or_null(p.min_impact_speed_mps)},
+                      {"min_flight_gap_m", number_or_null(p.min_flight_gap_m)}});
+  }
+  j["branch"] = branch;
+  nlohmann::ordered_json events = nlohmann::ordered_json::array();
+  for (const BranchEvent& e : r.continuation.events)
+    events.push_back({{"type", to_string(e.type)}, {"parameter", e.parameter}, {"branch", e.branch}, {"period", e.period}});
+  j["events"] = events;
+  j["ends"] = r.continuation.ends;
+  report_detail::add_inputs_and_revision(j, r.inputs);
+  return j;
+}
+
+std::string continuation_text(const Rig& rig, const ContinuationResult& r) {
+  std::string out = fmt::format("hertzdash continue {}: {}\n", rig.name, r.heading);
+  out += fmt::format("  start     period {}, section phase {:.9g}: {}\n", r.start.period, r.start.section_phase, r.start.guess);
+  if (!r.failure.empty()) return out + fmt::format("  failure   {}\n", r.failure);
+  for (const BranchEvent& e : r.continuation.events) out += "  event     " + event_line(r, e) + "\n";
+  for (const std::string& end : r.continuation.ends) out += "  end       " + end + "\n";
+  return out;
+}
+
+CsvWriter continuation_csv(const Rig& rig, const ContinuationResult& r) {
+  std::vector<std::string> columns{"branch", "period", r.column, "position_m", "velocity_mps"};
+  for (const char* part : {"multiplier_1_re", "multiplier_1_im", "multiplier_2_re", "multiplier_2_im"}) columns.emplace_back(part);
+  for (const char* c : {"stable", "impacts_per_period", "min_impact_speed_mps", "min_flight_gap_m"}) columns.emplace_back(c);
+  CsvWriter csv(fmt::format("hertzdash continue {}: one row per branch point (the orbit's state at the section, its "
+                            "Floquet multipliers largest first; stable 1 or 0; an infinite closeness: no impact or "
+                            "no flight minimum)",
+                            rig.name),
+                r.inputs, columns);
+  if (!r.failure.empty()) csv.add_comment("failure: " + r.failure);
+  for (const BranchEvent& e : r.continuation.events) csv.add_comment("event: " + event_line(r, e));
+  for (const std::string& end : r.continuation.ends) csv.add_comment("end: " + end);
+  for (const BranchPoint& p : r.continuation.points) {
+    std::vector<CsvWriter::Cell> row{static_cast<long>(p.branch), static_cast<long>(p.period), p.parameter, p.state(0),
+                                     p.state(1)};
+    for (std::size_t k = 0; k < 2; ++k) {
+      const std::complex<double> l = k < p.multipliers.size() ? p.multipliers[k] : std::complex<double>(NAN, NAN);
+      row.emplace_back(l.real());
+      row.emplace_back(l.imag());
+    }
+    row.emplace_back(static_cast<long>(p.stable));
+    row.emplace_back(static_cast<long>(p.impacts));
+    row.emplace_back(p.min_impact_speed_mps);
+    row.emplace_back(p.min_flight_gap_m);
+    csv.add_row(row);
+  }
+  return csv;
+}
+
+namespace {
+
+constexpr const char* lyapunov_method =
+    "QR method on the stroboscopic map's monodromy matrices, saltation matrices at the impacts (instantaneous impacts)";
+
+std::string numbers(const std::vector<double>& v) { return fmt::format("{:.6g}", fmt::join(v, ", ")); }
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const Rig& rig, const LyapunovResult& r) {
+  const LyapunovSpectrum& s = r.spectrum;
+  nlohmann::ordered_json j;
+  j["schema_version"] = json_schema_version;
+  j["rig"] = rig.name;
+  j["method"] = lyapunov_method;
+  if (!s.failure.empty()) j["failure"] = s.failure;
+  j["periods"] = s.periods;
+  j["impacts"] = s.impacts;
+  j["section_phase"] = r.section_phase;
+  j["exponents_per_period"] = s.per_period;
+  j["exponents_per_impact"] = s.per_impact;
+  j["sum_per_impact"] = report_detail::number_or_null(s.sum_per_impact);
+  j["expected_sum_per_impact"] = report_detail::number_or_null(s.expected_sum_per_impact);
+  j["half_difference"] = s.half_difference;
+  j["converged"] = s.converged;
+  j["running"] = {{"periods", s.running_periods}, {"exponents_per_impact", s.running_per_impact}};
+  report_detail::add_inputs_and_revision(j, r.inputs);
+  return j;
+}
+
+std::string lyapunov_text(const Rig& rig, const LyapunovResult& r) {
+  const LyapunovSpectrum& s = r.spectrum;
+  std::string out = fmt::format("hertzdash lyapunov {}: {}\n", rig.name, r.heading);
+  auto line = [&](std::string_view name, const std::string& value) { out += fmt::format("  {:<24} {}\n", name, value); };
+  if (!s.failure.empty()) line("failure", s.failure);
+  line("periods, impacts", fmt::format("{}, {}", s.periods, s.impacts));
+  line("exponents per period", numbers(s.per_period));
+  line("exponents per impact", numbers(s.per_impact));
+  line("sum per impact", fmt::format("{:.9g} (expected {:.9g})", s.sum_per_impact, s.expected_sum_per_impact));
+  line("converged", fmt::format("{} (halves differ by {:.2g} per impact)", s.converged ? "yes" : "no", s.half_difference));
   return out;
 }
 

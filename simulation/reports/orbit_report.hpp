@@ -2,8 +2,7 @@
 // What the analyses of a rig's impact sequence print (docs/orbits.md), `hertzdash COMMAND RIG`
 // and Python's hertzdash.FUNCTION(): `orbit` (simulation/rigs/rig_orbit.hpp), `continue`
 // (rig_continuation.hpp) and `lyapunov` (rig_lyapunov.hpp), each as JSON and text, the branches
-// of `continue` as CSV too. Each in its own source file: orbit_report.cpp,
-// continuation_report.cpp, lyapunov_report.cpp.
+// of `continue` as CSV too (orbit_report.cpp).
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/simulation/rigs/rig_continuation.hpp"
 #include "hertzdash/simulation/rigs/rig_lyapunov.hpp"
@@ -35,7 +34,8 @@ std::string orbit_text(const Rig& rig, const OrbitResult& result);
 /// "git_revision". An infinite closeness (no impact, no interior minimum) is null.
 nlohmann::ordered_json to_json(const Rig& rig, const ContinuationResult& result);
 
-/// "hertzdash continue RIG: heading", the start, the events and each branch's end.
+/// "hertzdash continue RIG: heading", the start, the events and each branch's end (the points'
+/// count, which the step control's round-off can move, in the JSON only).
 std::string continuation_text(const Rig& rig, const ContinuationResult& result);
 
 /// The points as CSV (the JSON's per-point keys as columns, each multiplier as _re and _im) below
