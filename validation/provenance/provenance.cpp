@@ -65,9 +65,12 @@ int main(int argc, char** argv) try {
     const char* macro;  ///< \prov<macro>
     std::string version;
   };
+  // The compiler's row first: numpy.genfromtxt guesses a column's type from its first value, and
+  // a revision of hexadecimal digits that are all decimal (686273504890) made it an integer
+  // column that the later names do not fit (a DeprecationWarning, an error where warnings are).
   const std::vector<Tool> tools{
-      {"git_revision", "GitRevision", git_revision()},
       {"compiler", "Compiler", compiler},
+      {"git_revision", "GitRevision", git_revision()},
       {"sundials", "Sundials", SUNDIALS_VERSION},
       {"gsl", "Gsl", GSL_VERSION},
       {"eigen", "Eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
