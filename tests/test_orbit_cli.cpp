@@ -154,7 +154,11 @@ TEST_CASE("CLI continue: bad input exits 2 naming the option, no orbit at the st
                                     {"--parameter gamma --to 2", "--from"},
                                     {"--parameter gamma --from 1.3 --to 1.3", "--to"},
                                     {"--parameter restitution --from 0.5 --to 1.5", "--restitution"},
-                                    {"--from 1.3 --to 1.4", "--parameter"}}) {
+                                    {"--from 1.3 --to 1.4", "--parameter"},
+                                    // The start's inputs: the map starts from its own states.
+                                    {"--parameter start-phase --from 0.1 --to 0.6", "--parameter"},
+                                    // gamma's default depends on e: continuing in e would move it too.
+                                    {"--parameter restitution --from 0.5 --to 0.6", "--amplitude"}}) {
     const auto r = run_cli("continue shaker --restitution 0.5 " + std::string(args));
     INFO(args);
     CHECK(r.exit_code == 2);

@@ -4,6 +4,7 @@
 #include "hertzdash/simulation/orbits/lyapunov.hpp"
 #include "hertzdash/simulation/orbits/section_guess.hpp"
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
+#include "hertzdash/simulation/rigs/oscillator_rig.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
 
 #include <catch2/catch.hpp>
@@ -67,4 +68,26 @@ TEST_CASE("lyapunov: on a stable periodic orbit the exponents are the logs of it
   for (const double l : s.per_period) CHECK(std::abs(l - std::log(0.5)) < 1e-3);
   CHECK(std::abs(s.sum_per_impact - 2 * std::log(0.5)) < 1e-12);
   CHECK(s.converged);
+}
+
+TEST_CASE("lyapunov: with a dashpot the sum per impact is 2 ln e - (c/m) T periods/impacts", "[orbit]") {
+  // The impact oscillator (the rig's defaults, zeta = 0.05, e = 0.7): each flight's Phi has
+  // det exp(-c tau/m) (Liouville), so over the run log det = 2 ln e impacts - (c/m) T periods;
+  // the spectrum's sum must equal it to round-off, and the expected value the library states is
+  // recomputed here from the oscillator's own constants.
+  DropTestSetup s = paper_setup(load_paper_parameters(), "steel", 0.02);
+  s.restitution = 0.7;
+  OscillatorOptions o;
+  o.impact_model = ShakerImpactModel::instantaneous;
+  const ImpactSequenceSpec spec = make_oscillator_sequence(s, "hongo-paper", {}, o).spec;
+  const SectionGuess start = section_guess(spec, std::nullopt, 1);
+  REQUIRE(start.failure.empty());
+  const LyapunovSpectrum l = lyapunov_spectrum(StroboscopicMap(spec, start.section_phase, 1), start.state, {.periods = 2000});
+  REQUIRE(l.failure.empty());
+  REQUIRE(l.impacts > 0);
+  const double c_over_m = 2 * o.damping_ratio * std::sqrt(o.stiffness_N_per_m / s.mass_kg);
+  const double expected = 2 * std::log(0.7) - c_over_m / o.frequency_Hz * static_cast<double>(l.periods) /
+                                                  static_cast<double>(l.impacts);
+  CHECK(l.expected_sum_per_impact == Approx(expected).epsilon(1e-12));
+  CHECK(std::abs(l.sum_per_impact - expected) < 1e-10);
 }

@@ -37,6 +37,7 @@ constexpr int max_corrector_steps = 12, located_bisections = 60;
 const double most_turn_cos = std::cos(25.0 * std::numbers::pi / 180.0);
 constexpr double section_margin = 1e-3;
 constexpr double grazing_close = 1e-6;  // of the rig's scales: a located grazing
+constexpr double grazing_near = 1e-2;   // of the rig's scales: a grazing approached, extrapolated
 
 /// A corrected point: x, its image, Jacobian and tangent.
 struct Point {
@@ -148,7 +149,8 @@ class Tracer {
   static std::array<double, 3> tests(const SectionImage& im) {
     const Eigen::Matrix2d M = im.monodromy, I = Eigen::Matrix2d::Identity();
     const double tr = M.trace(), det = planar::det(M);
-    const bool complex = tr * tr < 4 * det;
+    // det M - 1 only where it is more than round-off (e = 1 without damping: det M = 1 exactly).
+    const bool complex = tr * tr < 4 * det && std::abs(det - 1) > 1e-12;
     return {planar::det(M - I), planar::det(M + I), complex ? det - 1 : std::nan("")};
   }
 
@@ -197,6 +199,8 @@ class Tracer {
   void follow(int branch, const BranchStart& start, std::deque<BranchStart>& queue) {
     const int period = start.period;
     Point a = start.point;
+    if (!a.image.failure.empty())
+      return out_.ends.push_back(fmt::format("branch {} (period {}): no start: {}", branch, period, a.image.failure));
     add_point(branch, period, a);
     double h = h_first;
     bool first_step = start.from_branch_point, approaching = false;
@@ -231,11 +235,13 @@ class Tracer {
       if (!b || turned || b->image.impacts.size() != n) {
         h /= 2;
         if (h >= (approaching ? h_approach : h_least)) continue;
-        if (!approaching || !previous)
+        const double qa = grazing_measure(a.image), qp = previous ? grazing_measure(previous->image) : qa;
+        // A grazing only where a predicted point had other impacts, and the orbit is near grazing
+        // and nearing it (else the corrector failed for another reason).
+        if (!approaching || !(qa < grazing_near) || !(qp > qa))
           return end(fmt::format("the step fell below {} at {} = {:.9g} (a corrector that does not converge)", h_least,
                                  "the parameter", lambda(a.x(2))));
-        const double qa = grazing_measure(a.image), qp = grazing_measure(previous->image);
-        const double mu = qp > qa ? a.x(2) - qa * (a.x(2) - previous->x(2)) / (qa - qp) : a.x(2);
+        const double mu = a.x(2) - qa * (a.x(2) - previous->x(2)) / (qa - qp);
         Point g = a;
         g.x(2) = mu;
         add_event(BranchEventType::grazing, branch, period, g);
@@ -289,7 +295,7 @@ class Tracer {
     // At the branch point P^{2N}'s Jacobian has a two-dimensional null space (the old branch's
     // tangent and (v, 0)): its tangent is set, not computed.
     Point start{e.x, image(e.x, 2 * period), e.J, Vector3(v(0) / s_(0), v(1) / s_(1), 0.0).normalized(), 0};
-    return {2 * period, start, true};
+    return {2 * period, start, true};  // an image that failed ends the branch at once (follow)
   }
 
   const SequenceFamily& family_;
@@ -301,6 +307,8 @@ class Tracer {
 }  // namespace
 
 Continuation continue_periodic_orbits(const SequenceFamily& family, const ContinuationOptions& options) {
+  if (options.start.size() != 2 || options.scale.size() != 2 || !(options.scale.array() > 0).all())
+    throw std::invalid_argument("continue_periodic_orbits: a start and positive scales of the 2-dimensional section");
   return Tracer(family, options).run();
 }
 

@@ -14,25 +14,28 @@
 //   - predictor x + h t; corrector: Newton on [F(x); t.(x - x_pred)] = 0 (bordered), converged
 //     where |F| < 1e-10 and the step < 1e-9;
 //   - step h from 0.01, times 1.3 after a corrector of at most 3 steps, halved after a failed one
-//     or a turn of the tangent by more than 25 degrees, at most 0.03 (events are not stepped over)
-//     and at least 1e-7 (below it the branch ends, with a note).
+//     or a turn of the tangent by more than 25 degrees, at most 0.03 (so that two events of one
+//     kind, whose sign changes would cancel, are unlikely within a step) and at least 1e-7 (below
+//     it the branch ends, with a note).
 // Events between two points a and b, each located by bisection on the step from a (to 1e-12 in
 // arclength), its parameter reported:
 //   - fold: det(M - I) changes sign (a multiplier through +1; the branch turns in lambda);
 //   - period doubling: det(M + I) changes sign (a multiplier through -1). The branch of period 2N
 //     is followed from there too (while 2N <= max_period): at the branch point it leaves along
 //     (v, 0), v the eigenvector of M for -1, P^{2N} having a pitchfork there;
-//   - Neimark-Sacker: a complex pair crossing the unit circle, det M - 1 changing sign while the
-//     multipliers are complex (a 2-dimensional map with e < 1 has |lambda|^2 = det M < 1: none);
+//   - Neimark-Sacker: a complex pair crossing the unit circle, det M - 1 changing sign (by more
+//     than 1e-12) while the multipliers are complex (a 2-dimensional map with e < 1 has
+//     |lambda|^2 = det M < 1: none);
 //   - grazing: the orbit's impacts per period change on the way (an impact born at zero relative
 //     speed, or a flight touching a wall: the map is not smooth there), and the branch ends there.
 //     From the side where the orbit has fewer impacts (the new one not yet born) the corrector
 //     converges up to it: bisection on the step, taken where the located orbit is within 1e-6 of
 //     the rig's scales of grazing (else the corrector had jumped to another branch, and a shorter
 //     step follows). From the side of the impact that vanishes the map's Jacobian grows like
-//     1/(impact speed) and Newton fails short of it: the steps shrink towards it (to 1e-5), and the
-//     grazing is the secant to zero of the orbit's closeness to grazing (its slowest impact or
-//     closest flight, in the rig's scales) through the last two points.
+//     1/(impact speed) and Newton fails short of it: the steps shrink towards it (to 1e-5), and,
+//     where the orbit's closeness to grazing (its slowest impact or closest flight, in the rig's
+//     scales) is below 1e-2 and falling, the grazing is its secant to zero through the last two
+//     points.
 // A branch also ends on leaving [from, to] (the last point corrected onto lambda = to), on an
 // impact reaching the section phase (to 1e-3 of a cycle: the map jumps; choose another
 // section phase), or after max_points points in all.
@@ -89,7 +92,7 @@ struct Continuation {
 };
 
 /// The branches from the orbit near `options.start` at `from` (see above). std::runtime_error if
-/// Newton finds no orbit at `from`.
+/// Newton finds no orbit at `from`; std::invalid_argument unless start and scale have 2 entries.
 Continuation continue_periodic_orbits(const SequenceFamily& family, const ContinuationOptions& options);
 
 }  // namespace hertzdash

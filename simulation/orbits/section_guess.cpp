@@ -57,6 +57,10 @@ SectionGuess section_guess(const ImpactSequenceSpec& spec, std::optional<double>
     guess.failure = "the brute-force attractor sticks to the wall (a sticking orbit: the map is not smooth there)";
     return guess;
   }
+  if (!(to_section.end_time_s == t_s)) {
+    guess.failure = "the flow to the section ended before it: " + to_section.end_reason;
+    return guess;
+  }
   guess.state = Eigen::Vector2d(to_section.end_position_m, to_section.end_velocity_mps);
   return guess;
 }

@@ -159,7 +159,7 @@ struct RigDefinition {
   std::string_view not_read_because;
   std::span<const RigOptionNote> run_option_notes;
   std::string_view default_integrator;
-  std::span<const std::string_view> instantaneous_reads;
+  std::span<const std::string_view> instantaneous_reads = {};
   void (*refuse)(const RunOptions&, const RigInputs&);
   std::span<const RigFieldOf<Run>> results;
   std::string_view table_description;

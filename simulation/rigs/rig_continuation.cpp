@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <tuple>
 
 namespace hertzdash {
 
@@ -40,6 +41,9 @@ ContinuationResult run_continuation(const Rig& rig, const RunOptions& options, c
   if (!decl || decl->type != ParameterType::number || decl->range.kind == NumberRange::Kind::integer)
     throw InvalidParameter("parameter", key,
                            fmt::format("a numeric input of `hertzdash {}` or of its run (not a count)", rig.name));
+  // The inputs that only place the rig's run's start: the map starts from its own states.
+  if (key.starts_with("start-") || key == "height")
+    throw InvalidParameter("parameter", key, "an input of the rig's dynamics, not of its run's start");
   auto at = [&](double value) {
     RigInputs in = inputs;
     RunOptions run = options;
@@ -48,10 +52,26 @@ ContinuationResult run_continuation(const Rig& rig, const RunOptions& options, c
     return std::pair{run, in};
   };
   // Both ends checked as the rig checks its input: a value out of range is refused naming the key.
-  RigSequence rs;
-  for (const double value : {request.to, request.from}) {
-    const auto [run, in] = at(value);
-    rs = orbit_sequence(rig, run, paper, in);
+  const RigSequence end = std::apply([&](const RunOptions& r, const RigInputs& in) { return orbit_sequence(rig, r, paper, in); },
+                                     at(request.to));
+  RigSequence rs = std::apply([&](const RunOptions& r, const RigInputs& in) { return orbit_sequence(rig, r, paper, in); },
+                              at(request.from));
+  // Continued in e, an input whose default e sets (the shaker's gamma: the middle of e's period-1
+  // window, and with it the amplitude) would change along the branch: refused unless given. Its
+  // resolved value at either end, as the run records it, tells (the start's inputs aside). Other
+  // parameters move the inputs derived from them on purpose (gamma the amplitude, frequency too).
+  for (const ParameterDecl& d : rig.inputs) {
+    if (key != "restitution" || d.key.starts_with("start-") || d.type != ParameterType::number) continue;
+    const std::string column = input_column(d);
+    auto value = [&](const Parameters& p) -> std::string {
+      for (const auto& [name, text] : p)
+        if (name == column) return text;
+      return {};
+    };
+    if (value(rs.inputs) != value(end.inputs))
+      throw InvalidParameter(std::string(d.key), "its default",
+                             fmt::format("given when continuing in `{}`: its default changes with it ({} at `from`, {} at `to`)",
+                                         key, value(rs.inputs), value(end.inputs)));
   }
   ContinuationResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .parameter = key,
                          .column = own ? input_column(*own) : column_name(*option), .start = orbit_start(rs.sequence.spec, request.orbit),

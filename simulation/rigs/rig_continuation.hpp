@@ -6,7 +6,10 @@
 // (and their doubled branches), Neimark-Sacker points and grazings
 // (simulation/orbits/continuation.hpp). The parameter is any number the rig's command takes: one
 // of the rig's own inputs (gamma, frequency, force-amplitude, stop-distance, ...) or an option of
-// its run (restitution, mass, ...); an integer count (impacts, transient) is refused.
+// its run (restitution, gravity, ...); refused: an integer count (impacts, transient), an input of
+// the rig's run's start only (start-*, height), and restitution where it moves another input's
+// default (the shaker without gamma or amplitude: gamma's default depends on e), which must then
+// be given.
 #include "hertzdash/simulation/orbits/continuation.hpp"
 #include "hertzdash/simulation/rigs/rig_orbit.hpp"
 

@@ -166,8 +166,9 @@ struct ImpactSequence {
 ImpactSequence run_impact_sequence(const ImpactSequenceSpec& spec);
 
 /// A rig's sequence and, with soft impacts, the integrator its contacts use. The spec's
-/// soft-contact callback owns its contact, so copies of the spec run alone (simulation/orbits/
-/// runs one many times).
+/// soft-contact callback shares ownership of its contact, so a copy of the spec outlives the
+/// function that made it (simulation/orbits/ runs one many times); copies share that contact and
+/// must not run at the same time.
 struct SequenceSetUp {
   ImpactSequenceSpec spec;
   std::optional<IntegratorKind> integrator_used;
