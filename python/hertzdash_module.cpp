@@ -855,22 +855,22 @@ PYBIND11_MODULE(hertzdash, m) {
       },
       py::arg("name"), py::pos_only(),
       "run(name, /, **options) -> dict\n\nThe registered rig `name` (see rigs()), as hertzdash.NAME(**options).");
-  m.def("orbit", &py_orbit, py::arg("rig"), py::pos_only(),
-        analysis_doc("orbit", "orbit(rig, /, **options) -> dict\n\nA rig's periodic orbit by shooting, exactly "
+  m.def("orbit", &py_orbit, py::arg("name"), py::pos_only(),
+        analysis_doc("orbit", "orbit(name, /, **options) -> dict\n\nA rig's periodic orbit by shooting, exactly "
                               "`hertzdash orbit RIG --json` (docs/orbits.md): converged, period, section_phase, "
                               "section_state, multipliers ([re, im] pairs), multiplier_moduli, stable, "
                               "newton_residual, the orbit's impacts, inputs. Not converged: converged False, failure, "
                               "and a UserWarning. The rig's options (impact_model instantaneous unless given), and:\n")
             .c_str());
-  m.def("continuation", &py_continuation, py::arg("rig"), py::pos_only(),
-        analysis_doc("continue", "continuation(rig, /, **options) -> dict\n\nThe branches of a rig's periodic orbits "
+  m.def("continuation", &py_continuation, py::arg("name"), py::pos_only(),
+        analysis_doc("continue", "continuation(name, /, **options) -> dict\n\nThe branches of a rig's periodic orbits "
                                  "in a parameter, exactly `hertzdash continue RIG --json` (docs/orbits.md): branch (a "
                                  "dict per point), events (fold, period-doubling, neimark-sacker, grazing), ends, "
                                  "start, inputs. No orbit at the start: failure, and a UserWarning. The rig's options "
                                  "(impact_model instantaneous unless given), and:\n")
             .c_str());
-  m.def("lyapunov", &py_lyapunov, py::arg("rig"), py::pos_only(),
-        analysis_doc("lyapunov", "lyapunov(rig, /, **options) -> dict\n\nThe Lyapunov exponents of a rig's attractor, "
+  m.def("lyapunov", &py_lyapunov, py::arg("name"), py::pos_only(),
+        analysis_doc("lyapunov", "lyapunov(name, /, **options) -> dict\n\nThe Lyapunov exponents of a rig's attractor, "
                                  "exactly `hertzdash lyapunov RIG --json` (docs/orbits.md): exponents_per_period, "
                                  "exponents_per_impact (largest first), sum_per_impact, expected_sum_per_impact, "
                                  "converged, running, inputs. Not converged: a UserWarning. The rig's options "

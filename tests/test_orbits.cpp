@@ -17,6 +17,7 @@
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/rigs/oscillator_rig.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
+#include "hertzdash/simulation/shaker/two_walls.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -263,4 +264,27 @@ TEST_CASE("orbit: the impact oscillator's monodromy has det e^(2k) exp(-2 zeta w
   // spring's Phi and the force in the saltation matrix.
   require_monodromy_matches_differences(StroboscopicMap(spec, guess.section_phase, 2),
                                         orbit.state + Eigen::Vector2d(0.01 * scale(0), 0.02 * scale(1)), scale);
+}
+
+TEST_CASE("orbit: the driven box's two walls: det M = e^(2k) and central differences, floor and ceiling", "[orbit]") {
+  // A body between a floor and a ceiling 10 mm above it (the walls rig's driven box), the box
+  // moving as A sin(2 pi f t) with Gamma = 3, e = 0.5, f = 20 Hz: brute force settles on a
+  // period-1 orbit with one impact on each wall. Both saltation matrices have det e^2 (the ceiling's
+  // sigma = -1 flips n and the denominator together), the free flight's Phi det 1: det M = e^4.
+  // The differences check the ceiling's saltation matrix, which the shaker's cases do not reach.
+  TwoWallsOptions o;
+  o.drive = {.amplitude_m = shaker_amplitude_m(3.0, f_Hz, setup().gravity_mps2), .frequency_Hz = f_Hz};
+  const ImpactSequenceSpec spec = make_two_walls_sequence(setup(), "hongo-paper", {}, o).spec;
+  const SectionGuess guess = section_guess(spec, std::nullopt, std::nullopt);
+  REQUIRE(guess.failure.empty());
+  const double v = spec.speed_scale_mps;
+  const Eigen::Vector2d scale(v / f_Hz, v);
+  const PeriodicOrbit orbit = find_periodic_orbit(StroboscopicMap(spec, guess.section_phase, guess.period), guess.state, scale);
+  REQUIRE(orbit.converged);
+  REQUIRE(orbit.impacts.size() == 2);
+  CHECK(orbit.impacts[0].wall != orbit.impacts[1].wall);
+  CHECK(std::abs(orbit.monodromy.determinant() - std::pow(e, 4)) < 1e-12);
+  CHECK(orbit.stable);
+  require_monodromy_matches_differences(StroboscopicMap(spec, guess.section_phase, 3),
+                                        orbit.state + Eigen::Vector2d(0.01 * scale(0), 0.01 * scale(1)), scale);
 }

@@ -34,8 +34,10 @@ RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const Pape
     throw InvalidParameter("impact-model", "soft",
                            "instantaneous for the orbit and continue commands: a soft contact's multipliers need its "
                            "variational equations (not yet built; docs/orbits.md)");
-  if (!rs.sequence.spec.prescribed)
-    throw InvalidParameter("rig", std::string(rig.name), "a rig whose box moves as prescribed (the damper's does not)");
+  if (!rs.sequence.spec.prescribed)  // the walls' impact damper: its primary's state joins the section's
+    throw InvalidParameter("rig", inputs.text("rig").value_or(std::string(rig.name)),
+                           "a box that moves as prescribed (`rig` box): the impact damper's primary has a state of "
+                           "its own, not yet analysed");
   return rs;
 }
 

@@ -9,9 +9,9 @@
 //   - shooting on the stroboscopic map over N cycles, with the monodromy from saltation matrices
 //     (simulation/orbits/stroboscopic_map.hpp, periodic_orbit.hpp), in the rig's scales: its
 //     speed scale v_s and v_s / f for the position.
-// Instantaneous impacts of a prescribed box only (the shaker, the oscillator), the default impact
-// model of `orbit` and `continue`: soft contacts need the contact's variational equations, not
-// yet built, and are refused naming `impact-model`.
+// Instantaneous impacts of a prescribed box only (the shaker, the walls' driven box, the
+// oscillator), the default impact model of `orbit` and `continue`: soft contacts need the
+// contact's variational equations, not yet built, and are refused naming `impact-model`.
 #include "hertzdash/simulation/orbits/periodic_orbit.hpp"
 #include "hertzdash/simulation/rigs/rig.hpp"
 

@@ -23,10 +23,15 @@ namespace s = shaker_parameters;
 namespace p = two_walls_parameters;
 
 constexpr std::string_view not_read[] = {"height", "impact-velocity"};
+// What Newton's law at an instantaneous impact reads of a run's options: the driven box's, and
+// the damper's (its primary's response to the momentum exchange reads the body's mass).
+constexpr std::string_view box_reads[] = {"rod", "restitution", "gravity"};
+constexpr std::string_view damper_reads[] = {"rod", "restitution", "gravity", "mass"};
 
 struct Run {
   DropTestSetup setup;
   std::string law;
+  SolverSettings solver;
   TwoWallsOptions options;
   Parameters inputs;  ///< describe_run() and the two walls' options
   TwoWallsRun run;
@@ -57,8 +62,6 @@ void refuse(const RunOptions& options, const RigInputs& in) {
   if (parse_shaker_impact_model(model) == ShakerImpactModel::instantaneous) {  // Newton's law reads e, the flights g, momentum m
     RunOptions defaults;
     defaults.integrator = shaker_default_integrator;
-    static constexpr std::string_view box_reads[] = {"rod", "restitution", "gravity"};
-    static constexpr std::string_view damper_reads[] = {"rod", "restitution", "gravity", "mass"};
     refuse_options_not_read(options, defaults, box ? std::span<const std::string_view>(box_reads) : damper_reads,
                             box ? "`impact-model` soft (the instantaneous box reads `restitution` and `gravity`)"
                                 : "`impact-model` soft (the instantaneous damper reads `restitution`, `gravity` and "
@@ -66,7 +69,8 @@ void refuse(const RunOptions& options, const RigInputs& in) {
   }
 }
 
-Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+// Resolve and validate, without running (`run` left empty but for its rig and impact model).
+Run resolve(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
   Run r;
   TwoWallsOptions& o = r.options;
   o.rig = parse_two_walls_rig(in.text("rig").value_or(std::string(p::rig.default_value)));
@@ -110,7 +114,8 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   }
   r.setup = resolve_setup(set_up, paper);
   r.law = options.damping;
-  const SolverSettings solver = resolve_solver(options);
+  r.solver = resolve_solver(options);
+  const SolverSettings& solver = r.solver;
   if (box && !in.number("amplitude"))
     o.drive.amplitude_m = amplitude_from_gamma(in.number_or_default(p::gamma), o.drive.frequency_Hz, r.setup.gravity_mps2);
   o.impacts = static_cast<int>(in.number_or_default(s::impacts));
@@ -150,7 +155,14 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   r.inputs.emplace_back("impacts", std::to_string(o.impacts));
   r.inputs.emplace_back("transient", std::to_string(o.transient));
   r.inputs.emplace_back("impact_model", to_string(o.impact_model));
-  r.run = run_two_walls(r.setup, r.law, solver, o);
+  r.run.rig = o.rig;
+  r.run.impact_model = o.impact_model;
+  return r;
+}
+
+Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  Run r = resolve(options, paper, in);
+  r.run = run_two_walls(r.setup, r.law, r.solver, r.options);
   return r;
 }
 
@@ -158,6 +170,11 @@ bool soft(const Run& r) { return r.run.impact_model == ShakerImpactModel::soft; 
 bool box(const Run& r) { return r.run.rig == TwoWallsRig::box; }
 
 RigResult outcome(const Run& r) { return sequence_outcome(r, box(r) ? "driven box, " : "impact damper, "); }
+
+RigSequence sequence(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
+  const Run r = resolve(options, paper, in);
+  return {make_two_walls_sequence(r.setup, r.law, r.solver, r.options), outcome(r).heading, r.inputs};
+}
 
 /// A number the run has only where `has` holds.
 RigValue only(bool has, double v) { return has ? RigValue(v) : RigValue(); }
@@ -229,10 +246,12 @@ const Rig& walls_rig() {
        .summary = "A body between two walls: a harmonically driven box, or the impact damper (a box on a primary "
                   "oscillator under a harmonic force); exact flights",
        .inputs = inputs, .run_options_not_read = not_read, .not_read_because = "the body starts at rest at mid-gap",
-       .run_option_notes = notes, .default_integrator = shaker_default_integrator, .refuse = refuse, .results = results,
+       .run_option_notes = notes, .default_integrator = shaker_default_integrator,
+       .instantaneous_reads = box_reads,  // `orbit walls` analyses the driven box (the damper's is 4-dimensional)
+       .refuse = refuse, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest at mid-gap; phase of the "
                             "drive sin(2 pi f t) in [0,1); wall 0 floor, 1 ceiling; speeds relative to the box)",
-       .table = table, .run = run, .outcome = outcome});
+       .table = table, .run = run, .outcome = outcome, .sequence = sequence});
   return rig;
 }
 

@@ -37,8 +37,8 @@ void validate(const TwoWallsOptions& o) {
   validate_impact_counts(o.impacts, o.transient);
 }
 
-TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
-                          const TwoWallsOptions& options) {
+SequenceSetUp make_two_walls_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                                      const TwoWallsOptions& options) {
   validate(setup);
   validate(solver);
   validate(options);
@@ -51,47 +51,57 @@ TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, cons
   free.omega_rad_per_s = w;
   free.constant_force_N = 0;
   const double accel_scale = damper ? free.steady_amplitude_m() * w * w : options.drive.peak_acceleration_mps2();
-  ImpactSequenceSpec spec{
-      .body = {.mass_kg = m, .stiffness_N_per_m = 0, .omega_rad_per_s = w, .constant_force_N = -m * g},
-      .box = free, .walls = {{.name = "floor"}, {.name = "ceiling", .sigma = -1, .offset_m = gap}}, .frequency_Hz = f,
-      .speed_scale_mps = (g + accel_scale) * T, .y0_m = gap / 2, .impacts = options.impacts,
-      .transient = options.transient, .restitution = setup.restitution, .pattern = options.pattern,
-      .energy = damper, .sampled = damper ? ImpactSequenceSpec::Sampled::box : ImpactSequenceSpec::Sampled::none};
+  SequenceSetUp out{
+      .spec = {.body = {.mass_kg = m, .stiffness_N_per_m = 0, .omega_rad_per_s = w, .constant_force_N = -m * g},
+               .box = free, .walls = {{.name = "floor"}, {.name = "ceiling", .sigma = -1, .offset_m = gap}},
+               .frequency_Hz = f, .speed_scale_mps = (g + accel_scale) * T, .y0_m = gap / 2, .impacts = options.impacts,
+               .transient = options.transient, .restitution = setup.restitution, .pattern = options.pattern,
+               .energy = damper,
+               .sampled = damper ? ImpactSequenceSpec::Sampled::box : ImpactSequenceSpec::Sampled::none},
+      .integrator_used = std::nullopt};
+  ImpactSequenceSpec& spec = out.spec;
   if (!damper) spec.prescribed = OscillatorMotion::prescribed(options.drive.amplitude_m, w);
 
   // The soft contacts (simulation/run/soft_contact.hpp): the driven box's floor and ceiling, a wall
-  // in harmonic motion (sigma per wall); the damper's, the primary moving with the contact.
-  std::unique_ptr<SoftContact<HarmonicForcing>> contact;
-  std::unique_ptr<SoftContact<SprungPrimary>> damper_contact;
-  IntegratorKind integrator_used = IntegratorKind::gbs8_regularized;
+  // in harmonic motion (sigma per wall); the damper's, the primary moving with the contact. The
+  // callbacks share their contact's ownership (SequenceSetUp).
   auto sigma = [](Wall wall) { return wall == Wall::floor ? 1.0 : -1.0; };
   if (options.impact_model == ShakerImpactModel::soft) spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
   if (options.impact_model == ShakerImpactModel::soft && damper) {
-    damper_contact = make_soft_contact<SprungPrimary>(law, setup, solver, "hertzdash walls");
-    integrator_used = damper_contact->integrator_used();
-    spec.soft = [&](Wall wall, double t, double v0, double X, double V, double t_obs) {
-      const auto c = damper_contact->run(SprungPrimary{free, g, sigma(wall), t, X, V}, v0, t_obs);
+    std::shared_ptr<SoftContact<SprungPrimary>> contact = make_soft_contact<SprungPrimary>(law, setup, solver, "hertzdash walls");
+    out.integrator_used = contact->integrator_used();
+    spec.soft = [contact, free, g, sigma](Wall wall, double t, double v0, double X, double V, double t_obs) {
+      const auto c = contact->run(SprungPrimary{free, g, sigma(wall), t, X, V}, v0, t_obs);
       SoftImpact s = soft_impact(c);
       s.X_m = c.environment[0], s.V_mps = c.environment[1];
       return s;
     };
   } else if (options.impact_model == ShakerImpactModel::soft) {
-    contact = make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash walls");
-    integrator_used = contact->integrator_used();
-    spec.soft = [&](Wall wall, double t, double v0, double, double, double t_obs) {
-      return soft_impact(contact->run(harmonic_wall(options.drive, g, sigma(wall), t), v0, t_obs));
+    std::shared_ptr<SoftContact<HarmonicForcing>> contact =
+        make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash walls");
+    out.integrator_used = contact->integrator_used();
+    spec.soft = [contact, drive = options.drive, g, sigma](Wall wall, double t, double v0, double, double, double t_obs) {
+      return soft_impact(contact->run(harmonic_wall(drive, g, sigma(wall), t), v0, t_obs));
     };
   }
+  return out;
+}
 
+TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                          const TwoWallsOptions& options) {
+  const SequenceSetUp sequence = make_two_walls_sequence(setup, law, solver, options);
+  const ImpactSequenceSpec& spec = sequence.spec;
+  const bool damper = options.rig == TwoWallsRig::damper;
   TwoWallsRun out{run_impact_sequence(spec)};
   out.rig = options.rig;
   out.impact_model = options.impact_model;
-  out.integrator_used = integrator_used;
+  if (sequence.integrator_used) out.integrator_used = *sequence.integrator_used;
   for (const TwoWallsImpact& i : out.impacts) (i.wall == Wall::floor ? out.floor_impacts : out.ceiling_impacts) += 1;
   out.impacts_per_cycle =
       out.pattern.period > 0 ? static_cast<double>(out.pattern.impacts_per_period) / out.pattern.period : 0.0;
   out.primary_amplitude_m = out.amplitude_m;
   if (damper) {
+    const ForcedOscillator& free = spec.box;
     out.primary_amplitude_bare_m = free.steady_amplitude_m();
     ForcedOscillator rigid = carrying(free, spec.body, 0.0);
     rigid.constant_force_N = 0;

@@ -83,6 +83,10 @@ struct TwoWallsRun : ImpactSequence {
 
 /// The run of the validated `setup` (its body mass m, contact, law inputs, e, gravity g >= 0; not
 /// its height) with the law `law` (soft impacts) in the box of `options`.
+/// The sequence of a run_two_walls() call, validated as it validates.
+SequenceSetUp make_two_walls_sequence(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
+                                      const TwoWallsOptions& options);
+
 TwoWallsRun run_two_walls(const DropTestSetup& setup, std::string_view law, const SolverSettings& solver,
                           const TwoWallsOptions& options);
 

@@ -107,8 +107,10 @@ def test_orbit_is_the_programs_orbit():
     # The orbit's own options are keywords; a guess needs both halves, refused naming the missing one.
     with pytest.raises(ValueError, match="guess_velocity"):
         hertzdash.orbit("shaker", section_phase=0.5, guess_position=0.003, **kw)
-    with pytest.raises(ValueError, match="shaker, oscillator"):
-        hertzdash.orbit("walls")
+    with pytest.raises(ValueError, match="shaker, walls, oscillator"):
+        hertzdash.orbit("bounce")
+    with pytest.raises(ValueError, match="damper"):
+        hertzdash.orbit("walls", rig="damper")
     # No orbit to find (the body sticks to the wall once a period): a warning, and the dict says why.
     with pytest.warns(UserWarning, match="no periodic orbit found"):
         stuck = hertzdash.orbit("shaker", restitution=0.5, gamma=1.02)
