@@ -176,7 +176,7 @@ class Tracer {
                     .impacts = static_cast<int>(im.impacts.size()), .impact_phases = {},
                     .min_impact_speed_mps = im.min_impact_speed_mps,
                     .min_flight_gap_m = im.min_flight_gap_m};
-    row.stable = std::ranges::all_of(row.multipliers, [](auto l) { return std::abs(l) < 1 - 1e-9; });
+    row.stable = is_stable(row.multipliers);
     for (const SequenceImpact& i : im.impacts) row.impact_phases.push_back(i.phase);
     out_.points.push_back(std::move(row));
   }

@@ -14,9 +14,10 @@ LyapunovSpectrum lyapunov_spectrum(const StroboscopicMap& map, const Eigen::Vect
   Eigen::VectorXd z = start, sum = Eigen::VectorXd::Zero(n), half_sum = sum;
   Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(n, n);
   long half_impacts = 0;
-  auto per_impact = [](const Eigen::VectorXd& s, long impacts) {
+  // The sums of log R_ii over `count` periods or impacts, as averages (a count of 0 as 1).
+  auto per = [](const Eigen::VectorXd& s, long count) {
     std::vector<double> v(s.data(), s.data() + s.size());
-    for (double& x : v) x /= static_cast<double>(std::max(impacts, 1L));
+    for (double& x : v) x /= static_cast<double>(std::max(count, 1L));
     return v;
   };
   for (long k = 0; k < o.periods; ++k) {
@@ -40,19 +41,17 @@ LyapunovSpectrum lyapunov_spectrum(const StroboscopicMap& map, const Eigen::Vect
     out.periods = k + 1;
     if ((out.periods & (out.periods - 1)) == 0 || out.periods == o.periods) {
       out.running_periods.push_back(out.periods);
-      out.running_per_impact.push_back(per_impact(sum, out.impacts));
+      out.running_per_impact.push_back(per(sum, out.impacts));
     }
   }
-  out.per_period = per_impact(sum, 1);
-  for (double& x : out.per_period) x /= static_cast<double>(std::max(out.periods, 1L));
-  out.per_impact = per_impact(sum, out.impacts);
+  out.per_period = per(sum, out.periods);
+  out.per_impact = per(sum, out.impacts);
   out.sum_per_impact = sum.sum() / static_cast<double>(std::max(out.impacts, 1L));
   const ImpactSequenceSpec& spec = map.spec();
   const double T = 1 / spec.frequency_Hz, c_over_m = spec.body.damping_N_s_per_m() / spec.body.mass_kg;
   out.expected_sum_per_impact = 2 * std::log(spec.restitution) -
                                 c_over_m * T * static_cast<double>(out.periods) / static_cast<double>(std::max(out.impacts, 1L));
-  const std::vector<double> first = per_impact(half_sum, half_impacts),
-                            second = per_impact(sum - half_sum, out.impacts - half_impacts);
+  const std::vector<double> first = per(half_sum, half_impacts), second = per(sum - half_sum, out.impacts - half_impacts);
   for (Eigen::Index i = 0; i < n; ++i)
     out.half_difference = std::max(out.half_difference, std::abs(first[static_cast<std::size_t>(i)] - second[static_cast<std::size_t>(i)]));
   double largest = 0;

@@ -27,6 +27,10 @@ std::vector<std::complex<double>> floquet_multipliers(const Eigen::MatrixXd& mon
   return {lambda.begin(), lambda.end()};
 }
 
+bool is_stable(const std::vector<std::complex<double>>& multipliers) {
+  return std::ranges::all_of(multipliers, [](auto l) { return std::abs(l) < 1 - stability_margin; });
+}
+
 PeriodicOrbit find_periodic_orbit(const StroboscopicMap& map, const Eigen::VectorXd& guess, const Eigen::VectorXd& scale,
                                   const ShootingOptions& options) {
   PeriodicOrbit orbit;
@@ -70,7 +74,7 @@ PeriodicOrbit find_periodic_orbit(const StroboscopicMap& map, const Eigen::Vecto
   orbit.state = z;
   orbit.monodromy = image.monodromy;
   orbit.multipliers = floquet_multipliers(image.monodromy);
-  orbit.stable = std::ranges::all_of(orbit.multipliers, [](auto l) { return std::abs(l) < 1 - stability_margin; });
+  orbit.stable = is_stable(orbit.multipliers);
   orbit.residual = residual;
   orbit.impacts = std::move(image.impacts);
   orbit.min_impact_speed_mps = image.min_impact_speed_mps;

@@ -38,6 +38,9 @@ struct PeriodicOrbit {
 /// The Floquet multipliers of the 2x2 `monodromy`, largest modulus first (planar_algebra.hpp).
 std::vector<std::complex<double>> floquet_multipliers(const Eigen::MatrixXd& monodromy);
 
+/// Every multiplier's modulus below 1 - 1e-9 (see above).
+bool is_stable(const std::vector<std::complex<double>>& multipliers);
+
 /// Newton from `guess`, residuals measured in `scale` (one positive entry per state component).
 PeriodicOrbit find_periodic_orbit(const StroboscopicMap& map, const Eigen::VectorXd& guess, const Eigen::VectorXd& scale,
                                   const ShootingOptions& options = {});

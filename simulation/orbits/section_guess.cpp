@@ -1,6 +1,8 @@
 // The brute-force guess of shooting (simulation/orbits/section_guess.hpp).
 #include "hertzdash/simulation/orbits/section_guess.hpp"
 
+#include "hertzdash/simulation/orbits/stroboscopic_map.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -44,15 +46,8 @@ SectionGuess section_guess(const ImpactSequenceSpec& spec, std::optional<double>
   const double f = spec.frequency_Hz, t_end = run.end_time_s;
   double t_s = (std::floor(t_end * f) + guess.section_phase) / f;
   if (t_s <= t_end) t_s += 1 / f;
-  ImpactSequenceSpec flow = spec;
-  flow.t0_s = t_end;
-  flow.y0_m = run.end_position_m;
-  flow.u0_mps = run.end_velocity_mps;
-  flow.carried_by = -1;
-  flow.transient = 0;
-  flow.impacts = max_shaker_impacts;
-  flow.end_time_s = t_s;
-  const ImpactSequence to_section = run_impact_sequence(flow);
+  const ImpactSequence to_section =
+      run_impact_sequence(flow_spec(spec, t_end, run.end_position_m, run.end_velocity_mps, t_s));
   if (to_section.end_carried || to_section.sticking_episodes > 0) {
     guess.failure = "the brute-force attractor sticks to the wall (a sticking orbit: the map is not smooth there)";
     return guess;

@@ -55,18 +55,25 @@ double min_interior_gap(const OscillatorMotion& body, const OscillatorMotion& bo
 
 }  // namespace
 
+ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps, double t_end_s) {
+  spec.t0_s = t0_s;
+  spec.y0_m = y0_m;
+  spec.u0_mps = u0_mps;
+  spec.carried_by = -1;
+  spec.transient = 0;
+  spec.impacts = max_shaker_impacts;
+  spec.end_time_s = t_end_s;
+  spec.energy = false;
+  spec.sampled = ImpactSequenceSpec::Sampled::none;
+  return spec;
+}
+
 StroboscopicMap::StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles)
-    : spec_(std::move(spec)), t_s_(section_phase / spec_.frequency_Hz), cycles_(cycles) {
-  if (!spec_.prescribed || spec_.soft)
+    : t_s_(section_phase / spec.frequency_Hz), cycles_(cycles) {
+  if (!spec.prescribed || spec.soft)
     throw std::invalid_argument("StroboscopicMap: a prescribed box and instantaneous impacts only");
   if (cycles < 1) throw std::invalid_argument("StroboscopicMap: cycles >= 1");
-  spec_.t0_s = t_s_;
-  spec_.carried_by = -1;
-  spec_.transient = 0;
-  spec_.impacts = max_shaker_impacts;
-  spec_.end_time_s = t_s_ + cycles / spec_.frequency_Hz;
-  spec_.energy = false;
-  spec_.sampled = ImpactSequenceSpec::Sampled::none;
+  spec_ = flow_spec(std::move(spec), t_s_, 0, 0, t_s_ + cycles / spec.frequency_Hz);
 }
 
 double StroboscopicMap::smallest_gap_m(const Eigen::VectorXd& z) const {

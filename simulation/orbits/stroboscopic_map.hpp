@@ -29,6 +29,10 @@
 
 namespace hertzdash {
 
+/// `spec` as a flow: the body in flight at (t0 [s], y0 [m], u0 [m/s]) run to t_end [s], every impact
+/// kept, no energy account or samples (the map's runs, the guess's flow to the section).
+ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps, double t_end_s);
+
 /// The image of one state under the map.
 struct SectionImage {
   Eigen::VectorXd state;                 ///< (y [m], u [m/s]) N periods later

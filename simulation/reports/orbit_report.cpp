@@ -21,6 +21,17 @@ std::string complex_text(std::complex<double> z) {
   return fmt::format("{:.9g} {} {:.9g}i", z.real(), z.imag() < 0 ? '-' : '+', std::abs(z.imag()));
 }
 
+/// "multipliers" ([re, im] each, largest modulus first) and "multiplier_moduli" into `j`.
+void add_multipliers(nlohmann::ordered_json& j, const std::vector<std::complex<double>>& multipliers) {
+  nlohmann::ordered_json pairs = nlohmann::ordered_json::array(), moduli = nlohmann::ordered_json::array();
+  for (const std::complex<double> l : multipliers) {
+    pairs.push_back({l.real(), l.imag()});
+    moduli.push_back(std::abs(l));
+  }
+  j["multipliers"] = pairs;
+  j["multiplier_moduli"] = moduli;
+}
+
 /// `x` to 1e-8 of its scale: Newton leaves the state uncertain beyond that (its residual is below
 /// 1e-11 of the scales, the state's error that over the conditioning of M - I), and the text shows
 /// no round-off noise (-1e-13 m/s is 0).
@@ -46,13 +57,7 @@ nlohmann::ordered_json to_json(const Rig& rig, const OrbitResult& r) {
   if (o.state.size() == 2) {
     j["impacts_per_period"] = o.impacts.size();
     j["section_state"] = {{"position_m", o.state(0)}, {"velocity_mps", o.state(1)}};
-    nlohmann::ordered_json multipliers = nlohmann::ordered_json::array(), moduli = nlohmann::ordered_json::array();
-    for (const std::complex<double> l : o.multipliers) {
-      multipliers.push_back({l.real(), l.imag()});
-      moduli.push_back(std::abs(l));
-    }
-    j["multipliers"] = multipliers;
-    j["multiplier_moduli"] = moduli;
+    add_multipliers(j, o.multipliers);
     j["stable"] = o.stable;
     j["newton_residual"] = o.residual;
     j["newton_iterations"] = o.iterations;
@@ -132,16 +137,15 @@ nlohmann::ordered_json to_json(const Rig& rig, const ContinuationResult& r) {
   if (!r.failure.empty()) j["failure"] = r.failure;
   nlohmann::ordered_json branch = nlohmann::ordered_json::array();
   for (const BranchPoint& p : r.continuation.points) {
-    nlohmann::ordered_json m = nlohmann::ordered_json::array(), moduli = nlohmann::ordered_json::array();
-    for (const std::complex<double> l : p.multipliers) {
-      m.push_back({l.real(), l.imag()});
-      moduli.push_back(std::abs(l));
-    }
-    branch.push_back({{"branch", p.branch}, {"period", p.period}, {column, p.parameter}, {"position_m", p.state(0)},
-                      {"velocity_mps", p.state(1)}, {"multipliers", m}, {"multiplier_moduli", moduli},
-                      {"stable", p.stable}, {"impacts_per_period", p.impacts}, {"impact_phase", p.impact_phases},
-                      {"min_impact_speed_mps", number_or_null(p.min_impact_speed_mps)},
-                      {"min_flight_gap_m", number_or_null(p.min_flight_gap_m)}});
+    nlohmann::ordered_json point{{"branch", p.branch},      {"period", p.period},        {column, p.parameter},
+                                 {"position_m", p.state(0)}, {"velocity_mps", p.state(1)}};
+    add_multipliers(point, p.multipliers);
+    point["stable"] = p.stable;
+    point["impacts_per_period"] = p.impacts;
+    point["impact_phase"] = p.impact_phases;
+    point["min_impact_speed_mps"] = number_or_null(p.min_impact_speed_mps);
+    point["min_flight_gap_m"] = number_or_null(p.min_flight_gap_m);
+    branch.push_back(std::move(point));
   }
   j["branch"] = branch;
   nlohmann::ordered_json events = nlohmann::ordered_json::array();
