@@ -114,7 +114,8 @@ TEST_CASE("continuation: the shaker's period-doubling cascade: Gamma_2, the seco
   // a one-dimensional unimodal map's cascade, which the strongly dissipative bouncing ball
   // (det M = e^(2k)) approaches (Tufillaro, Abbott and Reilly 1992, ch. 3). The ratios of the
   // third and fourth intervals approach delta with corrections falling like 1/delta per
-  // doubling; measured 0.8 % and 0.4 % off (docs/orbits.md), asserted within 2 %.
+  // doubling; measured 0.8 % and 0.4 % off (from the doublings the `continue` example of
+  // docs/orbits.md prints), asserted within 2 %.
   REQUIRE(doublings.size() == 5);
   for (int k = 1; k <= 2; ++k) {
     const double ratio = (doublings[k + 1].parameter - doublings[k].parameter) /

@@ -115,7 +115,8 @@ struct Rig {
   std::vector<RigColumn> table;
   /// Validated inputs -> result: refuses bad input with InvalidParameter naming the key.
   std::function<RigResult(const RunOptions&, const PaperParameters&, const RigInputs&)> run;
-  /// Its impact sequence from validated inputs (null: the rig has none to analyse).
+  /// Its impact sequence from validated inputs, a box in prescribed motion (null: the rig has none
+  /// to analyse; a variant with a box of its own is refused by the maker, naming its input).
   RigSequenceMaker sequence = nullptr;
 };
 

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 namespace hertzdash {
 
 OrbitRequest orbit_request(const RigInputs& given) {
@@ -34,10 +36,8 @@ RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const Pape
     throw InvalidParameter("impact-model", "soft",
                            "instantaneous for the orbit and continue commands: a soft contact's multipliers need its "
                            "variational equations (not yet built; docs/orbits.md)");
-  if (!rs.sequence.spec.prescribed)  // the walls' impact damper: its primary's state joins the section's
-    throw InvalidParameter("rig", inputs.text("rig").value_or(std::string(rig.name)),
-                           "a box that moves as prescribed (`rig` box): the impact damper's primary has a state of "
-                           "its own, not yet analysed");
+  if (!rs.sequence.spec.prescribed)  // a rig's sequence hook refuses a box of its own (the walls' damper)
+    throw std::logic_error(fmt::format("rig {}: a sequence whose box is not prescribed", rig.name));
   return rs;
 }
 

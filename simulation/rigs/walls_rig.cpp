@@ -173,6 +173,12 @@ RigResult outcome(const Run& r) { return sequence_outcome(r, box(r) ? "driven bo
 
 RigSequence sequence(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
   const Run r = resolve(options, paper, in);
+  // The map's section is the body's (y, u) beside a box in prescribed motion; the damper's
+  // primary has a state of its own.
+  if (!box(r))
+    throw InvalidParameter("rig", "damper",
+                           "box for the orbit analyses: the impact damper's primary has a state of its own, not yet "
+                           "analysed");
   return {make_two_walls_sequence(r.setup, r.law, r.solver, r.options), outcome(r).heading, r.inputs};
 }
 
