@@ -96,6 +96,11 @@ struct HarmonicForcing {
   std::array<double, 2> initial_extra() const {
     return {std::sin(omega_rad_per_s * t_onset_s), std::cos(omega_rad_per_s * t_onset_s)};
   }
+  /// d z0 / d t_onset [1/s] (model/contact_tangent_system.hpp)
+  std::array<double, 2> initial_extra_onset_derivative() const {
+    const double w = omega_rad_per_s;
+    return {w * std::cos(w * t_onset_s), -w * std::sin(w * t_onset_s)};
+  }
   std::array<double, 2> extra_scale(double, double) const { return {1.0, 1.0}; }
 };
 

@@ -70,6 +70,18 @@
 
 namespace hertzdash {
 
+/// The regularised equations (see above), (du, dv, dt, dz...)/dtau as a tuple, at the state y
+/// with the force F there, of the environment env and 1/mu = inverse_mass [1/kg], over any scalar
+/// type (double, power series, jets): the one right-hand side of ContactSystem and of its
+/// variational equations (model/contact_tangent_system.hpp).
+template <class Env, class Y, class F>
+auto regularized_contact_rates(const Env& env, const Y& y, const F& force, double inverse_mass) {
+  const auto two_u = 2.0 * y[0];
+  return std::apply([&](const auto& a, const auto&... r) {
+    return std::tuple{y[1], two_u * (a - force * inverse_mass), two_u, (two_u * r)...};
+  }, env.rates(y, force, inverse_mass));
+}
+
 /// The contact's events, in event order (event_index gives the integrators' index).
 enum class ContactEvent : int { separation, max_compression, peak_force, observation_time };
 
@@ -144,8 +156,8 @@ class ContactSystem {
     const double u = std::max(y[0], 0.0), v = y[1];
     double F, F_u, F_v;
     if constexpr (RootPolynomialLaw<Law>) {
-      const ForceJet jet = law_.force_of_root(ForceJet::root(u), ForceJet::rate(v));
-      F = jet.value, F_u = jet.d_u, F_v = jet.d_v;
+      const ForceJet jet = law_.force_of_root(root_leaf(u), rate_leaf(v));
+      F = jet.value, F_u = jet.d[0], F_v = jet.d[1];
     } else {
       const double du = 1e-6 * std::max(u, 1e-6 * state_scale_[0]), dv = 1e-6 * v0_mps_;
       F = force_at(u, v);
@@ -168,13 +180,8 @@ class ContactSystem {
   void set_observation_time_s(double t_obs_s) { t_obs_s_ = t_obs_s; }
 
  private:
-  /// (du, dv, dt, dz...)/dtau at the state y with the force F there.
-  template <class Y, class F>
-  auto tau_derivatives(const Y& y, const F& force) const {
-    const auto two_u = 2.0 * y[0];
-    return std::apply([&](const auto& a, const auto&... r) {
-      return std::tuple{y[1], two_u * (a - force * inverse_mass_), two_u, (two_u * r)...};
-    }, env_.rates(y, force, inverse_mass_));
+  template <class Y, class F> auto tau_derivatives(const Y& y, const F& force) const {
+    return regularized_contact_rates(env_, y, force, inverse_mass_);
   }
 
   /// The force at (u, v) [N]: the law's polynomial in u if it declares one

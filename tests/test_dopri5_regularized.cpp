@@ -154,12 +154,12 @@ TEST_CASE("ForceJet: force_of_root on jets gives the force and its partial deriv
       const double scale = std::abs(law.force_of_root(u_scale, v_scale));  // the force's scale [N]
       for (double u : {0.0, 0.1 * u_scale, u_scale})
         for (double v : {0.626, 0.0, -0.5}) {
-          const ForceJet jet = law.force_of_root(ForceJet::root(u), ForceJet::rate(v));
+          const ForceJet jet = law.force_of_root(root_leaf(u), rate_leaf(v));
           const double F_u = (law.force_of_root(u + du, v) - law.force_of_root(u - du, v)) / (2 * du);
           const double F_v = (law.force_of_root(u, v + dv) - law.force_of_root(u, v - dv)) / (2 * dv);
           CHECK(jet.value == law.force_of_root(u, v));
-          CHECK(std::abs(jet.d_u - F_u) * u_scale <= 1e-6 * scale);
-          CHECK(std::abs(jet.d_v - F_v) * v_scale <= 1e-6 * scale);
+          CHECK(std::abs(jet.d[0] - F_u) * u_scale <= 1e-6 * scale);
+          CHECK(std::abs(jet.d[1] - F_v) * v_scale <= 1e-6 * scale);
           ++checked;
         }
     }
@@ -168,11 +168,43 @@ TEST_CASE("ForceJet: force_of_root on jets gives the force and its partial deriv
   const HongoPaper paper_law(c, setup.damping);
   for (double u : {0.0, 0.3 * u_scale, u_scale})
     for (double v : {0.626, -0.5}) {
-      const ForceJet jet = paper_law.force_of_root(ForceJet::root(u), ForceJet::rate(v));
+      const ForceJet jet = paper_law.force_of_root(root_leaf(u), rate_leaf(v));
       const HongoPaper::Gradient g = HongoPaper::gradient_of_root(c.K, paper_law.time_constant_s(), u, v);
-      CHECK(jet.d_u == Approx(g.F_u).epsilon(1e-14).margin(1e-14 * c.K * u_scale * u_scale));
-      CHECK(jet.d_v == Approx(g.F_xdot).epsilon(1e-14).margin(1e-300));
+      CHECK(jet.d[0] == Approx(g.F_u).epsilon(1e-14).margin(1e-14 * c.K * u_scale * u_scale));
+      CHECK(jet.d[1] == Approx(g.F_xdot).epsilon(1e-14).margin(1e-300));
     }
+}
+
+TEST_CASE("SpeedDerivativeLaw: dF/dv0 of every law that declares it equals differences in v0", "[regularized][damping]") {
+  // A law fixes its coefficients from v0 at onset; SpeedDerivativeLaw's force_speed_derivative
+  // gives dF/dv0 at fixed (u, xdot). Central differences of laws built at v0 (1 +- 1e-5) err by
+  // O(1e-10) relative (the coefficients are smooth powers of v0) plus rounding O(1e-16/1e-5): 1e-8
+  // of the force's scale holds any correct derivative and no wrong one. Hunt-Crossley's closed
+  // form: dF/dv0 = -K u^3 chi xdot / v0 (chi = 3 (1 - e)/(2 v0)).
+  const DropTestSetup s = steel_drop();
+  const double K = hertz_stiffness(s), v0 = 0.4, e = 0.5;
+  const double u_scale = std::sqrt(undamped_hertz_max_deformation_m(K, s.mass_kg, v0));
+  int checked = 0;
+  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
+    if constexpr (SpeedDerivativeLaw<Law>) {
+      DampingSettings d = s.damping;
+      d.viscous_time_constant_s = 1e-4;
+      const double h = 1e-5 * v0;
+      const Law law(ImpactConditions{K, s.mass_kg, v0, e}, d), plus(ImpactConditions{K, s.mass_kg, v0 + h, e}, d),
+          minus(ImpactConditions{K, s.mass_kg, v0 - h, e}, d);
+      const double scale = K * u_scale * u_scale * u_scale;
+      for (double u : {0.0, 0.4 * u_scale, u_scale})
+        for (double v : {v0, 0.0, -0.7 * v0}) {
+          const double fd = (plus.force_of_root(u, v) - minus.force_of_root(u, v)) / (2 * h);
+          CHECK(std::abs(law.force_speed_derivative(u, v) - fd) * v0 <= 1e-8 * scale);
+          ++checked;
+        }
+    }
+  });
+  CHECK(checked >= 9 * 3);
+  const HuntCrossley hc(ImpactConditions{K, s.mass_kg, v0, e}, s.damping);
+  const double u = 0.5 * u_scale, v = 0.2, chi = 1.5 * (1 - e) / v0;
+  CHECK(hc.force_speed_derivative(u, v) == Approx(-K * u * u * u * chi * v / v0).epsilon(1e-14));
 }
 
 TEST_CASE("cvode-regularized: undamped Hertz contact against the closed forms, error proportional to tolerance",

@@ -133,6 +133,16 @@ concept RootPolynomialLaw = DampingLaw<L> && requires(const L& law, double u, de
   { law.force_of_root(r, r) } -> std::same_as<detail::RingScalar>;
 };
 
+/// Optional for a RootPolynomialLaw: how its force at fixed (x, xdot) moves with the approach
+/// speed v0 through the coefficients fixed at onset, declared by offering
+///   double force_speed_derivative(double u, double xdot) const;   // dF/dv0 [N s/m] at u = x^{1/2}
+/// (0 for a law whose coefficients do not depend on v0). The soft contact's variational equations
+/// (model/contact_tangent_system.hpp) need it: a change of the impact speed changes the law too.
+template <class L>
+concept SpeedDerivativeLaw = RootPolynomialLaw<L> && requires(const L& law, double u) {
+  { law.force_speed_derivative(u, u) } -> std::same_as<double>;
+};
+
 /// Optional for a law: damping set by a material time constant A [s]
 /// (DampingSettings::viscous_time_constant_s) instead of by the input e, so that its
 /// restitution depends on the impact speed (the viscoelastic Hertz law). Such a law declares

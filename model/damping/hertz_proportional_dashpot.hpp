@@ -27,13 +27,16 @@ template <class Derived>
 class HertzProportionalDashpot {
  public:
   HertzProportionalDashpot(const ImpactConditions& c, const DampingSettings&)
-      : K_(c.K), chi_(Derived::chi_v0(c.restitution) / c.v0_mps) {}
+      : K_(c.K), chi_(Derived::chi_v0(c.restitution) / c.v0_mps), v0_mps_(c.v0_mps) {}
 
   /// F = K x^{3/2} (1 + chi xdot) [N]
   double force(double x, double xdot) const noexcept { return hertz_spring_force(K_, x) * (1.0 + chi_ * xdot); }
   /// The same at u = x^{1/2}: K u^3 (1 + chi xdot) [N] (RootPolynomialLaw)
   template <class T>
   auto force_of_root(const T& u, const T& xdot) const noexcept { return K_ * u * u * u * (1.0 + chi_ * xdot); }
+
+  /// dF/dv0 = -K u^3 chi xdot / v0 [N s/m]: chi = f(e)/v0 (SpeedDerivativeLaw)
+  double force_speed_derivative(double u, double xdot) const noexcept { return -K_ * u * u * u * chi_ * xdot / v0_mps_; }
 
   std::vector<NamedValue> coefficients() const {
     return {{"chi_s_per_m", chi_}, {"damping_coefficient_N_s_per_m_2_5", K_ * chi_}};
@@ -42,6 +45,7 @@ class HertzProportionalDashpot {
  private:
   double K_;    ///< Hertz stiffness [N/m^{3/2}]
   double chi_;  ///< hysteresis damping factor [s/m]
+  double v0_mps_;  ///< the approach speed chi was fixed at [m/s]
 };
 
 }  // namespace hertzdash

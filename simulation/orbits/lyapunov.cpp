@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hertzdash {
 
@@ -49,8 +50,10 @@ LyapunovSpectrum lyapunov_spectrum(const StroboscopicMap& map, const Eigen::Vect
   out.sum_per_impact = sum.sum() / static_cast<double>(std::max(out.impacts, 1L));
   const ImpactSequenceSpec& spec = map.spec();
   const double T = 1 / spec.frequency_Hz, c_over_m = spec.body.damping_N_s_per_m() / spec.body.mass_kg;
-  out.expected_sum_per_impact = 2 * std::log(spec.restitution) -
-                                c_over_m * T * static_cast<double>(out.periods) / static_cast<double>(std::max(out.impacts, 1L));
+  out.expected_sum_per_impact =
+      spec.soft ? std::numeric_limits<double>::quiet_NaN()
+                : 2 * std::log(spec.restitution) -
+                      c_over_m * T * static_cast<double>(out.periods) / static_cast<double>(std::max(out.impacts, 1L));
   const std::vector<double> first = per(half_sum, half_impacts), second = per(sum - half_sum, out.impacts - half_impacts);
   for (Eigen::Index i = 0; i < n; ++i)
     out.half_difference = std::max(out.half_difference, std::abs(first[static_cast<std::size_t>(i)] - second[static_cast<std::size_t>(i)]));

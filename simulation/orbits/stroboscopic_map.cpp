@@ -70,8 +70,8 @@ ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, 
 
 StroboscopicMap::StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles)
     : t_s_(section_phase / spec.frequency_Hz), cycles_(cycles) {
-  if (!spec.prescribed || spec.soft)
-    throw std::invalid_argument("StroboscopicMap: a prescribed box and instantaneous impacts only");
+  if (!spec.prescribed || (spec.soft && !spec.soft_tangent))
+    throw std::invalid_argument("StroboscopicMap: a prescribed box, and soft impacts with their tangents");
   if (cycles < 1) throw std::invalid_argument("StroboscopicMap: cycles >= 1");
   spec_ = flow_spec(std::move(spec), t_s_, 0, 0, t_s_ + cycles / spec.frequency_Hz);
 }
@@ -116,19 +116,43 @@ SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
   for (const SequenceImpact& i : run.impacts) {
     const double t = i.time_s, V = box.velocity_mps(t), A = box.acceleration_mps2(t);
     const SequenceWall& w = spec_.walls[static_cast<std::size_t>(i.wall)];
-    const double y = box.position_m(t) + w.offset_m;
-    const double u_minus = V - w.sigma * i.impact_speed_mps, u_plus = V + w.sigma * i.rebound_speed_mps;
-    // S = R + (f+ - R f- - dr/dt) n^T / (n.f- + dh/dt); n/(n.f- + dh/dt) = (1, 0)/(u- - V).
-    Eigen::Matrix2d R;
-    R << 1, 0, 0, -e;
-    const Eigen::Vector2d f_minus(u_minus, acceleration(body, t, y, u_minus)),
-        f_plus(u_plus, acceleration(body, t, y, u_plus)), r_t(0, (1 + e) * A);
-    Eigen::Matrix2d S = R;
-    S.col(0) += (f_plus - R * f_minus - r_t) / (u_minus - V);
-    M = S * flight_matrix(body, t - t_prev) * M;
+    const double sigma = w.sigma, y = box.position_m(t) + w.offset_m;
+    const double u_minus = V - sigma * i.impact_speed_mps;
+    const Eigen::Matrix2d to_onset = flight_matrix(body, t - t_prev);
     flight_gap(t);
-    t_prev = t;
-    flight = OscillatorMotion(body, t, y, u_plus);
+    if (!spec_.soft) {
+      // S = R + (f+ - R f- - r_t) n^T / (n.f- + dh/dt); n/(n.f- + dh/dt) = (1, 0)/(u- - V).
+      const double u_plus = V + sigma * i.rebound_speed_mps;
+      Eigen::Matrix2d R;
+      R << 1, 0, 0, -e;
+      const Eigen::Vector2d f_minus(u_minus, acceleration(body, t, y, u_minus)),
+          f_plus(u_plus, acceleration(body, t, y, u_plus)), r_t(0, (1 + e) * A);
+      Eigen::Matrix2d S = R;
+      S.col(0) += (f_plus - R * f_minus - r_t) / (u_minus - V);
+      M = S * to_onset * M;
+      t_prev = t;
+      flight = OscillatorMotion(body, t, y, u_plus);
+    } else {
+      const double v0 = i.impact_speed_mps, t_sep = t + i.contact_time_s;
+      if (!(t_sep < *spec_.end_time_s)) {
+        image.failure = fmt::format("the contact beginning at t = {:.9g} s spans the section's time", t);
+        return image;
+      }
+      const ContactTangent c = spec_.soft_tangent(i.wall, t, v0, 2.0 / spec_.frequency_Hz);
+      if (!c.separated) {
+        image.failure = fmt::format("the contact beginning at t = {:.9g} s did not end within 2 drive cycles", t);
+        return image;
+      }
+      const double V_sep = box.velocity_mps(t_sep), A_sep = box.acceleration_mps2(t_sep);
+      const double y_sep = box.position_m(t_sep) + w.offset_m, u_plus = V_sep + sigma * i.rebound_speed_mps;
+      Eigen::Matrix2d P, Q, J = c.jacobian;
+      P << sigma / v0, 0, (A - acceleration(body, t, y, u_minus)) / v0, -sigma;
+      Q << V_sep - u_plus, 0, A_sep - acceleration(body, t_sep, y_sep, u_plus), sigma;
+      J(0, 0) += 1;  // t_sep = t_on + t_c
+      M = Q * J * P * to_onset * M;
+      t_prev = t_sep;
+      flight = OscillatorMotion(body, t_sep, y_sep, u_plus);
+    }
     image.min_impact_speed_mps = std::min(image.min_impact_speed_mps, i.impact_speed_mps);
   }
   M = flight_matrix(body, *spec_.end_time_s - t_prev) * M;

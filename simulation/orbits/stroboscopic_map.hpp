@@ -1,6 +1,6 @@
 #pragma once
 // The stroboscopic map of a rig whose box moves as prescribed (the shaker's wall, the driven box,
-// the impact oscillator's stop at rest) and whose impacts are instantaneous: the body's state
+// the impact oscillator's stop at rest), with instantaneous or soft impacts: the body's state
 // z = (y [m], u [m/s]) at the drive phase phi_s is carried over N drive periods by the
 // impact-sequence driver (simulation/shaker/impact_sequence.hpp, its `end_time_s`), and its
 // Jacobian, the monodromy matrix, follows from the flights' fundamental matrices and the impacts'
@@ -18,6 +18,19 @@
 // with f-+ = (u-+, a(t, y, u-+)) the flight's vector field before and after. For a free flight
 // (a = -g) this is S = [[-e, 0], [(1 + e)(g + X'')/(V - u-), -e]], det S = e^2; det Phi =
 // exp(-c tau/m); so det M = e^(2k) exp(-c N T/m) for k impacts in N periods.
+// Soft impacts (the same rigs, any law that declares dF/dv0): a contact begins at t_on at relative
+// speed v0 and ends t_c later at relative speed v_sep, and its variational equations give
+// J = d(t_c, v_sep)/d(t_on, v0) (simulation/run/soft_contact_tangent.hpp). The state's
+// perturbation before the contact, dz- at fixed time, moves the onset and the speed,
+//   dt_on = sigma dy / v0,   dv0 = (X''(t_on) - a-) dt_on - sigma du        (P = d(t_on, v0)/dz-),
+// and the separation (t_sep = t_on + t_c, y = X + offset, u+ = V + sigma v_sep) gives the
+// perturbation after it at fixed time,
+//   dz+ = (V dt_sep, X'' dt_sep + sigma dv_sep) - f+ dt_sep                 (Q = d dz+/d(t_sep, v_sep)),
+// so the contact's block is C = Q [[1, 0], [0, 0]] + Q J' P with J' = J + [[1, 0], [0, 0]] the
+// derivative of (t_sep, v_sep): C = Q (J + E11) P, and M = Phi C_k Phi ... C_1 Phi between the
+// separations and the next onsets. As the contact stiffens (t_c -> 0, v_sep -> e v0) C tends to
+// the saltation matrix S above: the check of one against the other (tests/test_orbit_soft.cpp).
+// A contact that spans the section's time is refused (the section lies in flight by its choice).
 // Refused (as a failed image, not an exception: Newton steps back from it) are a state inside a
 // wall, a body carried by a wall (a sticking orbit: the map is not smooth there) and a chatter cap.
 #include "hertzdash/simulation/shaker/impact_sequence.hpp"
@@ -46,10 +59,11 @@ struct SectionImage {
   std::string failure;                   ///< empty: a valid image; else why not
 };
 
-/// The map P^N from phase phi_s of a prescribed-box, instantaneous-impact sequence `spec`.
+/// The map P^N from phase phi_s of a prescribed-box sequence `spec`.
 class StroboscopicMap {
  public:
-  /// Throws std::invalid_argument if `spec` has a box of its own or soft impacts, or cycles < 1.
+  /// Throws std::invalid_argument if `spec` has a box of its own, soft impacts without their
+  /// tangents (spec.soft_tangent), or cycles < 1.
   StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles);
   SectionImage operator()(const Eigen::VectorXd& state) const;
   /// The section's time in the first drive period [s], phi_s / f.

@@ -233,7 +233,9 @@ std::string lyapunov_text(const Rig& rig, const LyapunovResult& r) {
   line("periods, impacts", fmt::format("{}, {}", s.periods, s.impacts));
   line("exponents per period", numbers(s.per_period));
   line("exponents per impact", numbers(s.per_impact));
-  line("sum per impact", fmt::format("{:.9g} (expected {:.9g})", s.sum_per_impact, s.expected_sum_per_impact));
+  line("sum per impact", std::isnan(s.expected_sum_per_impact)
+                             ? fmt::format("{:.9g}", s.sum_per_impact)
+                             : fmt::format("{:.9g} (expected {:.9g})", s.sum_per_impact, s.expected_sum_per_impact));
   line("converged", fmt::format("{} (halves differ by {:.2g} per impact)", s.converged ? "yes" : "no", s.half_difference));
   return out;
 }

@@ -6,7 +6,7 @@
 #include "hertzdash/simulation/rigs/rig_work_bound.hpp"
 #include "hertzdash/simulation/rigs/shaker_rig.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
-#include "hertzdash/simulation/run/soft_contact.hpp"
+#include "hertzdash/simulation/shaker/harmonic_soft_contacts.hpp"
 
 #include <fmt/format.h>
 
@@ -157,18 +157,14 @@ SequenceSetUp make_oscillator_sequence(const DropTestSetup& setup, std::string_v
                .restitution = setup.restitution, .pattern = o.pattern, .energy = true,
                .sampled = ImpactSequenceSpec::Sampled::body},
       .integrator_used = std::nullopt};
-  if (o.impact_model == ShakerImpactModel::soft) {  // the stop's contact (model/contact_environments.hpp)
-    std::shared_ptr<SoftContact<HarmonicForcing>> contact =
-        make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash oscillator");
-    out.integrator_used = contact->integrator_used();
-    out.spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
-    const HarmonicForcing stop{k, body.damping_N_s_per_m(), o.force_amplitude_N, w, d};
-    out.spec.soft = [contact, stop](Wall, double t, double v0, double, double, double t_obs) {
-      HarmonicForcing at = stop;
-      at.t_onset_s = t;
-      return soft_impact(contact->run(at, v0, t_obs));
-    };
-  }
+  if (o.impact_model == ShakerImpactModel::soft)  // the stop's contact (model/contact_environments.hpp)
+    set_harmonic_soft_contacts(out, law, setup, solver, "hertzdash oscillator",
+                               [stop = HarmonicForcing{k, body.damping_N_s_per_m(), o.force_amplitude_N, w, d}](
+                                   Wall, double t) {
+                                 HarmonicForcing at = stop;
+                                 at.t_onset_s = t;
+                                 return at;
+                               });
   return out;
 }
 

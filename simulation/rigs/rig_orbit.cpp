@@ -32,10 +32,11 @@ RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const Pape
     throw InvalidParameter("rig", std::string(rig.name), "a rig on the impact-sequence driver with a prescribed box");
   check_rig_inputs(rig, options, inputs);
   RigSequence rs = rig.sequence(options, paper, inputs);
-  if (rs.sequence.spec.soft)
-    throw InvalidParameter("impact-model", "soft",
-                           "instantaneous for the orbit and continue commands: a soft contact's multipliers need its "
-                           "variational equations (not yet built; docs/orbits.md)");
+  if (rs.sequence.spec.soft && !rs.sequence.spec.soft_tangent)
+    throw InvalidParameter("damping", options.damping,
+                           fmt::format("a law whose force declares its dependence on the impact speed, for a soft "
+                                       "orbit's variational equations ({}), or `impact-model` instantaneous",
+                                       contact_tangent_laws()));
   if (!rs.sequence.spec.prescribed)  // a rig's sequence hook refuses a box of its own (the walls' damper)
     throw std::logic_error(fmt::format("rig {}: a sequence whose box is not prescribed", rig.name));
   return rs;

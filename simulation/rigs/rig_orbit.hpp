@@ -9,9 +9,10 @@
 //   - shooting on the stroboscopic map over N cycles, with the monodromy from saltation matrices
 //     (simulation/orbits/stroboscopic_map.hpp, periodic_orbit.hpp), in the rig's scales: its
 //     speed scale v_s and v_s / f for the position.
-// Instantaneous impacts of a prescribed box only (the shaker, the walls' driven box, the
-// oscillator), the default impact model of `orbit` and `continue`: soft contacts need the
-// contact's variational equations, not yet built, and are refused naming `impact-model`.
+// A prescribed box only (the shaker, the walls' driven box, the oscillator). Impacts instantaneous
+// (the default of `orbit`, `continue` and `lyapunov`: saltation matrices) or soft (the contacts'
+// variational equations, simulation/run/soft_contact_tangent.hpp), the latter with a law that
+// declares dF/dv0, else refused naming `damping`.
 #include "hertzdash/simulation/orbits/periodic_orbit.hpp"
 #include "hertzdash/simulation/rigs/rig.hpp"
 
@@ -24,8 +25,8 @@ namespace hertzdash {
 /// The impact model `orbit` and `continue` default to, and the help of `impact-model` there.
 inline constexpr std::string_view orbit_impact_model = "instantaneous";
 inline constexpr RigOptionNote orbit_impact_model_note{
-    "impact-model", "Impact model: instantaneous; soft contacts are not analysed yet (docs/orbits.md) (default: "
-                    "instantaneous)"};
+    "impact-model", "Impact model: instantaneous, or soft (a law that declares dF/dv0; the soft options are "
+                    "those of the rig's own command; docs/orbits.md) (default: instantaneous)"};
 
 /// What to look for, from the declared options of `orbit` (options/command_options.cpp).
 struct OrbitRequest {
@@ -50,7 +51,7 @@ OrbitStart orbit_start(const ImpactSequenceSpec& spec, const OrbitRequest& reque
 /// The scales of the rig's state: v_s / f for the position [m], v_s for the velocity [m/s].
 Eigen::VectorXd orbit_scales(const ImpactSequenceSpec& spec);
 /// The rig's sequence from validated inputs, refused (InvalidParameter) where `orbit` and
-/// `continue` cannot take it: a rig without one, soft impacts, a box of its own.
+/// `continue` cannot take it: a rig without one, soft impacts of a law without dF/dv0, a box of its own.
 RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs);
 
 /// The orbit found, or why not (orbit.converged false: the output stands, as a failed fit's).
@@ -65,7 +66,7 @@ struct OrbitResult {
 };
 
 /// The orbit of `rig` (see above). InvalidParameter for bad input, a rig without a sequence or
-/// soft impacts; a guess the rig's run cannot give (no period, a sticking attractor) is a failure
+/// a soft law without dF/dv0; a guess the rig's run cannot give (no period, a sticking attractor) is a failure
 /// in the result, not an exception.
 OrbitResult run_orbit(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs,
                       const OrbitRequest& request);

@@ -50,6 +50,7 @@
 #include "hertzdash/model/forced_oscillator.hpp"
 #include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/simulation/run/soft_contact.hpp"
+#include "hertzdash/simulation/run/soft_contact_tangent.hpp"
 #include "hertzdash/simulation/run/solver_settings.hpp"
 #include "hertzdash/simulation/shaker/impact_pattern.hpp"
 
@@ -106,6 +107,11 @@ template <class Env> SoftImpact soft_impact(const SoftContactOutcome<Env>& c) {
 using SoftImpactRun =
     std::function<SoftImpact(Wall wall, double t_onset_s, double v0_mps, double X_m, double V_mps, double t_obs_s)>;
 
+/// The soft contact with wall `wall` beginning at t_onset [s] at relative speed v0 > 0 [m/s] and
+/// its derivatives with respect to (t_onset, v0) (simulation/run/soft_contact_tangent.hpp), a
+/// prescribed box's: what simulation/orbits/ needs for a soft orbit's monodromy.
+using SoftTangentRun = std::function<ContactTangent(Wall wall, double t_onset_s, double v0_mps, double t_obs_s)>;
+
 /// A rig's sequence (see above). The oscillators' w is the drive's.
 struct ImpactSequenceSpec {
   ForcedOscillator body{};                      ///< mass m > 0
@@ -120,6 +126,9 @@ struct ImpactSequenceSpec {
   std::optional<double> end_time_s{};  ///< set: the run also ends there [s] (> t0)
   double restitution = 1;   ///< instantaneous impacts' e
   SoftImpactRun soft{};    ///< set: soft impacts
+  /// Soft impacts on a prescribed box: the same contacts with their tangents, for
+  /// simulation/orbits/ (the driver does not read it); empty for a law without dF/dv0.
+  SoftTangentRun soft_tangent{};
   /// Soft impacts: the speed at which the undamped Hertz deformation reaches the ball radius
   /// (HertzScale::speed_at_bound_mps of a valid set-up) [m/s]; impacts at or beyond it are counted
   /// in the warning, touches too slow for a contact run (below stick_speed) included.

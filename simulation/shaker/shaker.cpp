@@ -1,12 +1,11 @@
 #include "hertzdash/simulation/shaker/shaker.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/run/soft_contact.hpp"
+#include "hertzdash/simulation/shaker/harmonic_soft_contacts.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <memory>
 #include <numbers>
 
 namespace hertzdash {
@@ -56,15 +55,9 @@ SequenceSetUp make_shaker_sequence(const DropTestSetup& setup, std::string_view 
                .carried_by = start.height_m > 0 ? -1 : 0, .impacts = options.impacts, .transient = options.transient,
                .restitution = setup.restitution, .pattern = options.pattern},
       .integrator_used = std::nullopt};
-  if (options.impact_model == ShakerImpactModel::soft) {
-    std::shared_ptr<SoftContact<HarmonicForcing>> contact =
-        make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash shaker");
-    out.integrator_used = contact->integrator_used();
-    out.spec.hertz_speed_limit_mps = hertz_scale(setup).speed_at_bound_mps;
-    out.spec.soft = [contact, wall, g](Wall, double t, double v0, double, double, double t_obs) {
-      return soft_impact(contact->run(harmonic_wall(wall, g, 1.0, t), v0, t_obs));
-    };
-  }
+  if (options.impact_model == ShakerImpactModel::soft)
+    set_harmonic_soft_contacts(out, law, setup, solver, "hertzdash shaker",
+                               [wall, g](Wall, double t) { return harmonic_wall(wall, g, 1.0, t); });
   return out;
 }
 

@@ -3,6 +3,7 @@
 
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/run/soft_contact.hpp"
+#include "hertzdash/simulation/shaker/harmonic_soft_contacts.hpp"
 
 #include <fmt/format.h>
 
@@ -77,12 +78,10 @@ SequenceSetUp make_two_walls_sequence(const DropTestSetup& setup, std::string_vi
       return s;
     };
   } else if (options.impact_model == ShakerImpactModel::soft) {
-    std::shared_ptr<SoftContact<HarmonicForcing>> contact =
-        make_soft_contact<HarmonicForcing>(law, setup, solver, "hertzdash walls");
-    out.integrator_used = contact->integrator_used();
-    spec.soft = [contact, drive = options.drive, g, sigma](Wall wall, double t, double v0, double, double, double t_obs) {
-      return soft_impact(contact->run(harmonic_wall(drive, g, sigma(wall), t), v0, t_obs));
-    };
+    set_harmonic_soft_contacts(out, law, setup, solver, "hertzdash walls",
+                               [drive = options.drive, g, sigma](Wall wall, double t) {
+                                 return harmonic_wall(drive, g, sigma(wall), t);
+                               });
   }
   return out;
 }

@@ -67,6 +67,8 @@ class KuwabaraKono {
   /// The same at u = x^{1/2}: K u (u^2 + A xdot) [N] (RootPolynomialLaw)
   template <class T>
   auto force_of_root(const T& u, const T& xdot) const noexcept { return K_ * u * (u * u + A_ * xdot); }
+  /// dF/dv0 = 0: A is the material's, fixed for the set-up (beta only reports it) (SpeedDerivativeLaw)
+  double force_speed_derivative(double, double) const noexcept { return 0.0; }
 
   std::vector<NamedValue> coefficients() const {
     return {{"viscous_time_constant_s", A_}, {"damping_number_beta", beta_}};

@@ -24,6 +24,8 @@ class Undamped {
   /// The same at u = x^{1/2}: K u^3 [N] (RootPolynomialLaw)
   template <class T>
   auto force_of_root(const T& u, const T& /*xdot*/) const noexcept { return K_ * u * u * u; }
+  /// dF/dv0 = 0: no coefficient depends on v0 (SpeedDerivativeLaw)
+  double force_speed_derivative(double, double) const noexcept { return 0.0; }
   std::vector<NamedValue> coefficients() const { return {}; }
 
  private:

@@ -1,0 +1,75 @@
+// A soft contact's tangents (simulation/run/soft_contact_tangent.hpp): the law chosen by name
+// among the registered ones, its type erased (ContactForceJets), so that the tangent system and
+// Dormand-Prince are compiled once.
+#include "hertzdash/simulation/run/soft_contact_tangent.hpp"
+
+#include "hertzdash/integrators/dormand_prince.hpp"
+#include "hertzdash/model/contact_tangent_system.hpp"
+#include "hertzdash/model/damping/registered_law_types.hpp"
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"  // with_calibrated_time_constant
+
+#include <memory>
+
+namespace hertzdash {
+
+namespace {
+
+using TangentSystem = ContactTangentSystem<HarmonicForcing>;
+
+/// Keeps the separation's state.
+struct SeparationObserver {
+  bool separated = false;
+  void on_step(double, const TangentSystem::State&) {}
+  void on_event(int which, double, const TangentSystem::State&, EventAction) {
+    separated = separated || which == event_index(TangentContactEvent::separation);
+  }
+};
+
+using LawMaker = std::unique_ptr<ContactForceJets> (*)(const ImpactConditions&, const DampingSettings&);
+
+}  // namespace
+
+std::string contact_tangent_laws() {
+  std::string out;
+  for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
+    if constexpr (SpeedDerivativeLaw<Law>) out += (out.empty() ? "" : ", ") + std::string(Law::info.name);
+  });
+  return out;
+}
+
+ContactTangentRun make_contact_tangent(std::string_view law, const DropTestSetup& setup, const SolverSettings& solver) {
+  LawMaker make = nullptr;
+  DropTestSetup calibrated = setup;
+  with_damping_law(law, [&]<class Law>(std::type_identity<Law>) {
+    if constexpr (SpeedDerivativeLaw<Law>) {
+      make = [](const ImpactConditions& c, const DampingSettings& s) -> std::unique_ptr<ContactForceJets> {
+        return std::make_unique<LawForceJets<Law>>(c, s);
+      };
+      if constexpr (MaterialTimeConstantLaw<Law>)
+        if (!setup.damping.viscous_time_constant_s) calibrated = with_calibrated_time_constant<Law>(setup);
+    }
+  });
+  if (!make) return {};
+  const double K = hertz_stiffness(calibrated), m = calibrated.mass_kg, e = calibrated.restitution;
+  const DampingSettings damping = calibrated.damping;
+  const DormandPrinceOptions options{.rtol = solver.rtol, .atol = solver.atol, .singular_points = false};
+  return [make, K, m, e, damping, options](const HarmonicForcing& env, double v0, double t_obs) {
+    const std::unique_ptr<ContactForceJets> force = make(ImpactConditions{K, env.reduced_mass_kg(m), v0, e}, damping);
+    TangentSystem sys(*force, env, K, m, v0, t_obs);
+    TangentSystem::State y = sys.initial_state();
+    SeparationObserver observer;
+    // tau is bounded by the events, as in SoftContactOf::run (simulation/run/soft_contact_run.hpp).
+    const double tau_end = 1e7 * (t_obs + sys.state_scale()[2]) / (2.0 * sys.state_scale()[0]);
+    ContactTangent out;
+    out.work = integrate_dormand_prince(sys, y, 0.0, tau_end, options, observer);
+    constexpr int D = TangentSystem::base_dimension;
+    out.separated = observer.separated;
+    out.contact_time_s = y[2];
+    out.rebound_speed_mps = -y[1];
+    out.jacobian << y[D + 2], y[2 * D + 2], -y[D + 1], -y[2 * D + 1];
+    return out;
+  };
+}
+
+}  // namespace hertzdash
