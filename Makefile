@@ -12,7 +12,7 @@ FUZZ_SECONDS   ?= 60
 # Extra CMake arguments for every configuration, e.g. CMAKE_ARGS=-DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 CMAKE_ARGS     ?=
 
-.PHONY: all deps deps-paper configure build test figures convergence uncertainty paper bench build-times sanitize fuzz clean
+.PHONY: all deps deps-paper deps-peers configure build test figures convergence uncertainty paper bench build-times sanitize fuzz clean
 
 all: build
 
@@ -23,6 +23,10 @@ deps:
 
 deps-paper:
 	@tools/install-deps.sh debian-packages.txt debian-packages-paper.txt
+
+# The peer engines `make bench` runs (debian-packages-peers.txt).
+deps-peers:
+	@tools/install-deps.sh debian-packages.txt debian-packages-peers.txt
 
 $(BUILD)/CMakeCache.txt: | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
@@ -68,8 +72,10 @@ paper: figures deps-paper
 # Work precision against Boost.Odeint, GSL and CVODE at full repeats (a few minutes):
 # prints the table and ratios, writes the CSVs the figure is drawn from, the paper's
 # \perf macros, and the measured block of docs/performance.md.
-# It first times `make figures` from the built tree (into a scratch directory).
-bench: build
+# It first times `make figures` from the built tree (into a scratch directory). Then the peer
+# engines beside hertzdash on the same impacts (bench/siconos_peer/siconos_peer.py: Siconos's
+# event-driven bouncing ball, the same orbits, the time per impact of each).
+bench: build deps-peers
 	$(need_bench)
 	@start=$$(date +%s%N); \
 	validation/run_studies.sh $(BUILD) $(BUILD)/figures-timing > /dev/null; \
@@ -77,6 +83,7 @@ bench: build
 	$(BUILD)/bench/work_precision_peers --full --out $(FIGURES) --generated paper/generated --performance-page docs/performance.md \
 	  --figures-ms $$ms
 	validation/draw_figure.sh bench/work_precision_peers/work_precision_peers.gp $(FIGURES)
+	/usr/bin/python3 bench/siconos_peer/siconos_peer.py $(BUILD)
 
 # The cold build and the rebuild after editing one damping law's header, ccache off, in a scratch
 # directory of their own (tools/measure-build-times.sh): the generated blocks of docs/build-times.md

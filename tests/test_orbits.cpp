@@ -213,6 +213,10 @@ TEST_CASE("orbit: the brute-force guess puts the section in the middle of the wi
   CHECK(widest_gap_middle(a) == Approx(0.7));
   CHECK(widest_gap_middle(b) == Approx(0.5));
   CHECK(widest_gap_middle(c) == Approx(0.4));
+  // Soft contacts occupy their duration: 0.1 for 0.5 cycle and 0.7 for 0.1 cycle leave 0.6 .. 0.7
+  // (0.1 wide) and 0.8 round to 1.1 (0.3 wide), its middle 0.95.
+  const double lengths[] = {0.5, 0.1}, d[] = {0.1, 0.7};
+  CHECK(widest_gap_middle(d, lengths) == Approx(0.95));
 }
 
 TEST_CASE("orbit: a sticking attractor or a state inside the wall is refused, not shot", "[orbit]") {

@@ -7,18 +7,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace hertzdash {
 
-double widest_gap_middle(std::span<const double> phases) {
+double widest_gap_middle(std::span<const double> phases, std::span<const double> lengths) {
   if (phases.empty()) return 0.5;
-  std::vector<double> p(phases.begin(), phases.end());
-  std::ranges::sort(p);
-  // The arc from the last phase round to the first, then each arc between neighbours.
-  double widest = p.front() + 1 - p.back(), middle = p.back() + 0.5 * widest;
-  for (std::size_t i = 1; i < p.size(); ++i)
-    if (p[i] - p[i - 1] > widest) widest = p[i] - p[i - 1], middle = p[i - 1] + 0.5 * widest;
+  // (start, end) of each occupied arc, by start.
+  std::vector<std::pair<double, double>> arcs;
+  for (std::size_t i = 0; i < phases.size(); ++i)
+    arcs.emplace_back(phases[i], phases[i] + (i < lengths.size() ? lengths[i] : 0.0));
+  std::ranges::sort(arcs);
+  // The arc from the last end round to the first start, then each arc between neighbours.
+  double widest = arcs.front().first + 1 - arcs.back().second, middle = arcs.back().second + 0.5 * widest;
+  for (std::size_t i = 1; i < arcs.size(); ++i) {
+    const double gap = arcs[i].first - arcs[i - 1].second;
+    if (gap > widest) widest = gap, middle = arcs[i - 1].second + 0.5 * gap;
+  }
   return middle - std::floor(middle);
 }
 
@@ -39,9 +45,10 @@ SectionGuess section_guess(const ImpactSequenceSpec& spec, std::optional<double>
     return guess;
   }
   if (period) guess.period = *period;
-  std::vector<double> phases;
-  for (const SequenceImpact& i : run.impacts) phases.push_back(i.phase);
-  guess.section_phase = section_phase.value_or(widest_gap_middle(phases));
+  std::vector<double> phases, lengths;
+  for (const SequenceImpact& i : run.impacts)
+    phases.push_back(i.phase), lengths.push_back(i.contact_time_s * spec.frequency_Hz);
+  guess.section_phase = section_phase.value_or(widest_gap_middle(phases, lengths));
   // From the end state (just after the last impact) to the next time at the section phase.
   const double f = spec.frequency_Hz, t_end = run.end_time_s;
   double t_s = (std::floor(t_end * f) + guess.section_phase) / f;

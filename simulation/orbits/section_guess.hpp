@@ -24,8 +24,10 @@ struct SectionGuess {
   Eigen::VectorXd state;     ///< (y [m], u [m/s]) at the section
 };
 
-/// The middle of the widest arc of [0, 1) free of `phases` (0.5 when there are none).
-double widest_gap_middle(std::span<const double> phases);
+/// The middle of the widest arc of [0, 1) free of the impacts at drive phases `phases`, each
+/// occupying [phase, phase + length] (`lengths`, a soft contact's duration in cycles; none: 0)
+/// (0.5 when there are none).
+double widest_gap_middle(std::span<const double> phases, std::span<const double> lengths = {});
 
 /// The guess from the brute-force run of `spec` (see above); `section_phase` and `period`, where
 /// set, replace the detected ones.

@@ -55,6 +55,11 @@ double min_interior_gap(const OscillatorMotion& body, const OscillatorMotion& bo
 
 }  // namespace
 
+const char* monodromy_method(const ImpactSequenceSpec& spec) {
+  return spec.soft ? "stroboscopic map, monodromy from the contacts' variational equations (soft impacts)"
+                   : "stroboscopic map, monodromy from saltation matrices (instantaneous impacts)";
+}
+
 ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps, double t_end_s) {
   spec.t0_s = t0_s;
   spec.y0_m = y0_m;

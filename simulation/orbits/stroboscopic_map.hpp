@@ -59,6 +59,9 @@ struct SectionImage {
   std::string failure;                   ///< empty: a valid image; else why not
 };
 
+/// How the map of `spec` computes its monodromy, in words (a report's `method`).
+const char* monodromy_method(const ImpactSequenceSpec& spec);
+
 /// The map P^N from phase phi_s of a prescribed-box sequence `spec`.
 class StroboscopicMap {
  public:

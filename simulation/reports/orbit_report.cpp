@@ -14,8 +14,6 @@ namespace hertzdash {
 
 namespace {
 
-constexpr const char* orbit_method = "stroboscopic map, monodromy from saltation matrices (instantaneous impacts)";
-
 std::string complex_text(std::complex<double> z) {
   if (z.imag() == 0) return fmt::format("{:.9g}", z.real());
   return fmt::format("{:.9g} {} {:.9g}i", z.real(), z.imag() < 0 ? '-' : '+', std::abs(z.imag()));
@@ -48,7 +46,7 @@ nlohmann::ordered_json to_json(const Rig& rig, const OrbitResult& r) {
   nlohmann::ordered_json j;
   j["schema_version"] = json_schema_version;
   j["rig"] = rig.name;
-  j["method"] = orbit_method;
+  j["method"] = r.method;
   j["converged"] = o.converged;
   if (!o.converged) j["failure"] = o.failure;
   j["period"] = r.period;

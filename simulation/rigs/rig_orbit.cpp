@@ -73,7 +73,7 @@ OrbitResult run_orbit(const Rig& rig, const RunOptions& options, const PaperPara
   RigSequence rs = orbit_sequence(rig, options, paper, inputs);
   const ImpactSequenceSpec& spec = rs.sequence.spec;
   const OrbitStart start = orbit_start(spec, request);
-  OrbitResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .guess = start.guess, .period = start.period,
+  OrbitResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .method = monodromy_method(spec), .guess = start.guess, .period = start.period,
                   .section_phase = start.section_phase, .scale = orbit_scales(spec), .orbit = {}};
   if (!start.failure.empty()) {
     out.orbit.failure = start.failure;

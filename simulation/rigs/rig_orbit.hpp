@@ -58,6 +58,7 @@ RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const Pape
 struct OrbitResult {
   std::string heading;        ///< the rig's ("instantaneous impacts, e = 0.5")
   Parameters inputs;          ///< the rig's run's, then the request's
+  std::string method;         ///< how the monodromy is computed (monodromy_method)
   std::string guess;          ///< where Newton started, in words
   int period = 0;             ///< drive cycles N
   double section_phase = 0;   ///< in [0, 1)
