@@ -8,6 +8,9 @@
 //     when no orbit is found at `from` (the output standing).
 //   - `hertzdash lyapunov RIG` (simulation/rigs/rig_lyapunov.hpp): --periods, --section-phase,
 //     --json. Exit 0 with a converged spectrum, 3 when the run stopped or did not converge.
+//   - `hertzdash basins RIG` (simulation/rigs/rig_basins.hpp): --section-phase, the grid's ranges
+//     and resolution, the cells' runs, --threads, --json, --csv FILE, --mkdir. Exit 0 with the
+//     grid, 3 when no default range exists (the rig's run gives no attractor).
 // Bad input exits 2, the option named (cli/main.cpp).
 #include "cli/analysis_command.hpp"
 
@@ -105,6 +108,23 @@ Command add_lyapunov_command(CLI::App& app) {
         std::cerr << "hertzdash: the exponents did not converge: "
                   << (result.spectrum.failure.empty() ? "the run's halves disagree (more --periods)" : result.spectrum.failure)
                   << "\n";
+        return 3;
+      });
+}
+
+Command add_basins_command(CLI::App& app) {
+  return add_analysis_command(
+      app, "basins", "The basins of attraction of a rig's section: which attractor each start reaches",
+      "The basins of attraction", [](const AnalysisRequest& r) {
+        const BasinsResult result = run_basins(*r.rig, r.run, load_paper_parameters(), r.inputs, basins_request(r.given));
+        if (!r.csv_path.empty()) {
+          create_output_directories(r.csv_path, r.mkdir);
+          basins_csv(*r.rig, result).save(r.csv_path);
+        }
+        if (r.json) std::cout << to_json(*r.rig, result).dump(2) << "\n";
+        else std::cout << basins_text(*r.rig, result);
+        if (result.failure.empty()) return 0;
+        std::cerr << "hertzdash: no basins: " << result.failure << "\n";
         return 3;
       });
 }

@@ -45,6 +45,9 @@ Command add_continue_command(CLI::App& app);
 /// `hertzdash lyapunov RIG`: the Lyapunov exponents of a rig's attractor.
 Command add_lyapunov_command(CLI::App& app);
 
+/// `hertzdash basins RIG`: which attractor each start at a rig's section reaches.
+Command add_basins_command(CLI::App& app);
+
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);
 

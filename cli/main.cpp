@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   commands.push_back(hertzdash::cli::add_orbit_command(app));
   commands.push_back(hertzdash::cli::add_continue_command(app));
   commands.push_back(hertzdash::cli::add_lyapunov_command(app));
+  commands.push_back(hertzdash::cli::add_basins_command(app));
   commands.push_back(hertzdash::cli::add_fit_command(app));
   commands.push_back(hertzdash::cli::add_sweep_command(app));
 

@@ -653,7 +653,7 @@ const Rig& analysed_rig(const std::string& name) {
   throw InvalidParameter("rig", name, "one of: " + names);
 }
 
-// A call of `hertzdash COMMAND RIG --json` (orbit, continue, lyapunov): the rig's keywords
+// A call of `hertzdash COMMAND RIG --json` (orbit, continue, lyapunov, basins): the rig's keywords
 // (impact_model instantaneous unless given) and the command's, then `run` (rig, options, inputs,
 // the command's given options) -> (its result's JSON, a warning or empty), without the GIL.
 template <class Run>
@@ -685,6 +685,14 @@ py::dict py_continuation(const std::string& name, const py::kwargs& kwargs) {
                      [](const Rig& rig, const RunOptions& o, const RigInputs& in, const RigInputs& given) {
                        const ContinuationResult r = run_continuation(rig, o, paper(), in, continuation_request(given));
                        return std::pair{to_json(rig, r), r.failure.empty() ? "" : "no branch followed: " + r.failure};
+                     });
+}
+
+py::dict py_basins(const std::string& name, const py::kwargs& kwargs) {
+  return py_analysis(name, "basins", "basins", kwargs,
+                     [](const Rig& rig, const RunOptions& o, const RigInputs& in, const RigInputs& given) {
+                       const BasinsResult r = run_basins(rig, o, paper(), in, basins_request(given));
+                       return std::pair{to_json(rig, r), r.failure.empty() ? "" : "no basins: " + r.failure};
                      });
 }
 
@@ -875,6 +883,13 @@ PYBIND11_MODULE(hertzdash, m) {
                                  "exponents_per_impact (largest first), sum_per_impact, expected_sum_per_impact, "
                                  "converged, running, inputs. Not converged: a UserWarning. The rig's options "
                                  "(impact_model instantaneous unless given), and:\n")
+            .c_str());
+  m.def("basins", &py_basins, py::arg("name"), py::pos_only(),
+        analysis_doc("basins", "basins(name, /, **options) -> dict\n\nThe basins of attraction of a rig's section, "
+                               "exactly `hertzdash basins RIG --json` (docs/orbits.md): position_m and velocity_mps "
+                               "(the grid's axes), attractors (kind, period, impact_phase, cells, fraction), cell (one "
+                               "list per velocity row of attractor indices, -1 inside a wall), inputs. The rig's "
+                               "options (impact_model instantaneous unless given), and:\n")
             .c_str());
   m.def(
       "rigs",

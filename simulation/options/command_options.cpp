@@ -102,13 +102,35 @@ constexpr ParameterDecl lyapunov[] = {
      .default_source = "chosen: a chaotic run's exponents to ~2 % (docs/orbits.md)",
      .help = "Drive periods of the run after the rig's own (its transient and kept impacts)"},
     section_phase, json};
+// `hertzdash basins RIG` (simulation/rigs/rig_basins.hpp, docs/orbits.md).
+constexpr ParameterDecl basins[] = {
+    section_phase,
+    {.key = "position-min", .unit = "m", .range = R::open(-infinity, infinity), .default_value = "around the attractor",
+     .default_source = "the rig's attractor's position at the section less one position scale (v_s / f)",
+     .help = "Lowest start position [m] of the grid (with position-max)"},
+    {.key = "position-max", .unit = "m", .range = R::open(-infinity, infinity), .default_value = "around the attractor",
+     .default_source = "the attractor's position plus one position scale", .help = "Highest start position [m] of the grid"},
+    {.key = "velocity-min", .unit = "m/s", .range = R::open(-infinity, infinity), .default_value = "around the attractor",
+     .default_source = "the attractor's velocity at the section less one speed scale (v_s)",
+     .help = "Lowest start velocity [m/s] of the grid (with velocity-max)"},
+    {.key = "velocity-max", .unit = "m/s", .range = R::open(-infinity, infinity), .default_value = "around the attractor",
+     .default_source = "the attractor's velocity plus one speed scale", .help = "Highest start velocity [m/s] of the grid"},
+    {.key = "resolution", .range = R::integer(2, 2000), .default_value = "64", .default_number = 64,
+     .default_source = "chosen", .help = "Cells per axis of the grid of starts"},
+    {.key = "cell-transient", .range = R::integer(0, 1000000), .default_value = "400", .default_number = 400,
+     .default_source = "chosen", .help = "Impacts each start runs before its attractor is read"},
+    {.key = "cell-impacts", .range = R::integer(2, 100000), .default_value = "32", .default_number = 32,
+     .default_source = "chosen", .help = "Impacts each start keeps to read its attractor (period, phases)"},
+    {.key = "threads", .range = R::integer(0, 4096), .default_value = "0", .default_number = 0,
+     .default_source = "the machine's cores", .help = "Threads (the result does not depend on them)"},
+    json, file("csv", "Write the grid to this CSV file, one row per start, the attractors as comments"), mkdir};
 constexpr ParameterDecl models[] = {{.key = "json", .type = T::flag, .default_value = "off", .help = "Print the list as a JSON array"}};
 
 constexpr CommandOptions table[] = {
     {"simulate", simulate}, {"models", models},       {"restitution", restitution},
     {"bounce", bounce},     {"RIG", rig},             {"fit", {}},
     {"orbit", orbit},       {"continue", continuation}, {"lyapunov", lyapunov},
-    {"sweep", sweep}};
+    {"basins", basins},     {"sweep", sweep}};
 
 }  // namespace
 

@@ -1,5 +1,5 @@
 // What the orbit analyses print (simulation/reports/orbit_report.hpp): `orbit`, then
-// `continue`, then `lyapunov`.
+// `continue`, then `lyapunov`, then `basins`.
 #include "hertzdash/simulation/reports/orbit_report.hpp"
 
 #include "hertzdash/simulation/reports/report_json.hpp"
@@ -195,9 +195,6 @@ CsvWriter continuation_csv(const Rig& rig, const ContinuationResult& r) {
 
 namespace {
 
-constexpr const char* lyapunov_method =
-    "QR method on the stroboscopic map's monodromy matrices, saltation matrices at the impacts (instantaneous impacts)";
-
 std::string numbers(const std::vector<double>& v) { return fmt::format("{:.6g}", fmt::join(v, ", ")); }
 
 }  // namespace
@@ -207,7 +204,7 @@ nlohmann::ordered_json to_json(const Rig& rig, const LyapunovResult& r) {
   nlohmann::ordered_json j;
   j["schema_version"] = json_schema_version;
   j["rig"] = rig.name;
-  j["method"] = lyapunov_method;
+  j["method"] = "QR method on the " + r.method;
   if (!s.failure.empty()) j["failure"] = s.failure;
   j["periods"] = s.periods;
   j["impacts"] = s.impacts;
@@ -236,6 +233,102 @@ std::string lyapunov_text(const Rig& rig, const LyapunovResult& r) {
                              : fmt::format("{:.9g} (expected {:.9g})", s.sum_per_impact, s.expected_sum_per_impact));
   line("converged", fmt::format("{} (halves differ by {:.2g} per impact)", s.converged ? "yes" : "no", s.half_difference));
   return out;
+}
+
+namespace {
+
+constexpr const char* basins_method = "a grid of starts at the section, each run by the impact-sequence driver and "
+                                      "classified by its attractor (period and impact phases)";
+
+const char* kind_name(BasinAttractor::Kind k) {
+  switch (k) {
+    case BasinAttractor::Kind::rest: return "rest";
+    case BasinAttractor::Kind::no_period: return "no-period";
+    case BasinAttractor::Kind::periodic: break;
+  }
+  return "periodic";
+}
+
+std::vector<double> axis(double lo, double hi, int n) {
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) v.push_back(cell_centre(lo, hi, i, n));
+  return v;
+}
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const Rig& rig, const BasinsResult& r) {
+  const BasinOptions& g = r.grid;
+  nlohmann::ordered_json j;
+  j["schema_version"] = json_schema_version;
+  j["rig"] = rig.name;
+  j["method"] = basins_method;
+  if (!r.failure.empty()) j["failure"] = r.failure;
+  j["section_phase"] = g.section_phase;
+  j["position_m"] = axis(g.position_min_m, g.position_max_m, g.resolution);
+  j["velocity_mps"] = axis(g.velocity_min_mps, g.velocity_max_mps, g.resolution);
+  j["resolution"] = g.resolution;
+  j["cell_transient"] = g.transient;
+  j["cell_impacts"] = g.kept;
+  const double total = static_cast<double>(r.basins.cell.size());
+  nlohmann::ordered_json attractors = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < r.basins.attractors.size(); ++i) {
+    const BasinAttractor& a = r.basins.attractors[i];
+    attractors.push_back({{"index", i}, {"kind", kind_name(a.kind)}, {"period", a.period},
+                          {"impacts_per_period", a.impacts_per_period}, {"impact_phase", a.phases}, {"cells", a.cells},
+                          {"fraction", total > 0 ? static_cast<double>(a.cells) / total : 0.0}});
+  }
+  j["attractors"] = attractors;
+  j["inside_wall"] = r.basins.inside_wall;
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  const auto n = static_cast<std::size_t>(g.resolution);
+  for (std::size_t row = 0; row * n < r.basins.cell.size(); ++row)
+    rows.push_back(std::vector<int>(r.basins.cell.begin() + static_cast<long>(row * n),
+                                    r.basins.cell.begin() + static_cast<long>((row + 1) * n)));
+  j["cell"] = rows;
+  report_detail::add_inputs_and_revision(j, r.inputs);
+  return j;
+}
+
+std::string basins_text(const Rig& rig, const BasinsResult& r) {
+  const BasinOptions& g = r.grid;
+  std::string out = fmt::format("hertzdash basins {}: {}\n", rig.name, r.heading);
+  auto line = [&](std::string_view name, const std::string& value) { out += fmt::format("  {:<14} {}\n", name, value); };
+  if (!r.failure.empty()) {
+    line("failure", r.failure);
+    return out;
+  }
+  line("section_phase", fmt::format("{:.9g}", g.section_phase));
+  line("grid", fmt::format("{} x {}: position {:.6g} .. {:.6g} m, velocity {:.6g} .. {:.6g} m/s", g.resolution,
+                           g.resolution, g.position_min_m, g.position_max_m, g.velocity_min_mps, g.velocity_max_mps));
+  const double total = static_cast<double>(r.basins.cell.size());
+  for (std::size_t i = 0; i < r.basins.attractors.size(); ++i) {
+    const BasinAttractor& a = r.basins.attractors[i];
+    line(fmt::format("attractor {}", i),
+         fmt::format("{}{}: {:.1f} % of the starts", a.describe(),
+                     a.phases.empty() ? "" : fmt::format(", phases {:.6f}", fmt::join(a.phases, " ")),
+                     100.0 * static_cast<double>(a.cells) / total));
+  }
+  if (r.basins.inside_wall > 0)
+    line("inside a wall", fmt::format("{:.1f} % of the starts", 100.0 * static_cast<double>(r.basins.inside_wall) / total));
+  return out;
+}
+
+CsvWriter basins_csv(const Rig& rig, const BasinsResult& r) {
+  const BasinOptions& g = r.grid;
+  CsvWriter csv(fmt::format("hertzdash basins {}: one row per start at the section (attractor -1: inside a wall)", rig.name),
+                r.inputs, {"position_m", "velocity_mps", "attractor", "period", "impacts_per_period"});
+  if (!r.failure.empty()) csv.add_comment("failure: " + r.failure);
+  for (std::size_t i = 0; i < r.basins.attractors.size(); ++i)
+    csv.add_comment(fmt::format("attractor {}: {}", i, r.basins.attractors[i].describe()));
+  const int n = g.resolution;
+  for (std::size_t c = 0; c < r.basins.cell.size(); ++c) {
+    const int row = static_cast<int>(c) / n, col = static_cast<int>(c) % n, a = r.basins.cell[c];
+    const BasinAttractor* at = a >= 0 ? &r.basins.attractors[static_cast<std::size_t>(a)] : nullptr;
+    csv.add_row({cell_centre(g.position_min_m, g.position_max_m, col, n), cell_centre(g.velocity_min_mps, g.velocity_max_mps, row, n),
+                 static_cast<long>(a), static_cast<long>(at ? at->period : 0), static_cast<long>(at ? at->impacts_per_period : 0)});
+  }
+  return csv;
 }
 
 }  // namespace hertzdash

@@ -1,9 +1,10 @@
 #pragma once
 // What the analyses of a rig's impact sequence print (docs/orbits.md), `hertzdash COMMAND RIG`
 // and Python's hertzdash.FUNCTION(): `orbit` (simulation/rigs/rig_orbit.hpp), `continue`
-// (rig_continuation.hpp) and `lyapunov` (rig_lyapunov.hpp), each as JSON and text, the branches
-// of `continue` as CSV too (orbit_report.cpp).
+// (rig_continuation.hpp), `lyapunov` (rig_lyapunov.hpp) and `basins` (rig_basins.hpp), each as
+// JSON and text, the branches of `continue` and the grid of `basins` as CSV too (orbit_report.cpp).
 #include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/simulation/rigs/rig_basins.hpp"
 #include "hertzdash/simulation/rigs/rig_continuation.hpp"
 #include "hertzdash/simulation/rigs/rig_lyapunov.hpp"
 #include "hertzdash/simulation/rigs/rig_orbit.hpp"
@@ -51,5 +52,19 @@ nlohmann::ordered_json to_json(const Rig& rig, const LyapunovResult& result);
 
 /// "hertzdash lyapunov RIG: heading" and the spectrum's lines.
 std::string lyapunov_text(const Rig& rig, const LyapunovResult& result);
+
+/// "schema_version", "rig", "method", "failure" (only where the grid did not run),
+/// "section_phase", "position_m" and "velocity_mps" (the cell centres of each axis), "resolution",
+/// "cell_transient", "cell_impacts", "attractors" ({index, kind: periodic|rest|no-period, period,
+/// impacts_per_period, impact_phase, cells, fraction}), "inside_wall" (cells), "cell" (one array
+/// per velocity row of attractor indices, -1 inside a wall), "inputs", "git_revision".
+nlohmann::ordered_json to_json(const Rig& rig, const BasinsResult& result);
+
+/// "hertzdash basins RIG: heading", the grid and each attractor with its share of the cells.
+std::string basins_text(const Rig& rig, const BasinsResult& result);
+
+/// One row per start (position_m, velocity_mps, attractor, period, impacts_per_period) below the
+/// provenance, the attractors as comments.
+CsvWriter basins_csv(const Rig& rig, const BasinsResult& result);
 
 }  // namespace hertzdash

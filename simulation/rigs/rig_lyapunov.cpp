@@ -23,7 +23,8 @@ LyapunovResult run_lyapunov(const Rig& rig, const RunOptions& options, const Pap
   const ImpactSequenceSpec& spec = rs.sequence.spec;
   // Period 1 given: the start needs no period of the attractor (a chaotic one has none).
   const SectionGuess start = section_guess(spec, request.section_phase, 1);
-  LyapunovResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .section_phase = start.section_phase,
+  LyapunovResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .method = monodromy_method(spec),
+                     .section_phase = start.section_phase,
                      .spectrum = {}};
   out.inputs.emplace_back("periods", std::to_string(request.periods));
   out.inputs.emplace_back("section_phase", fmt::format("{}", out.section_phase));

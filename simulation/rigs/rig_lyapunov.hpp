@@ -23,6 +23,7 @@ LyapunovRequest lyapunov_request(const RigInputs& given);
 struct LyapunovResult {
   std::string heading;    ///< the rig's
   Parameters inputs;      ///< the rig's run's, then the request's
+  std::string method;     ///< how the monodromy matrices are computed (monodromy_method)
   double section_phase = 0;
   LyapunovSpectrum spectrum;  ///< its failure also where the rig's run gives no start
 };

@@ -131,6 +131,22 @@ def test_continuation_is_the_programs_continue():
         hertzdash.continuation("shaker", parameter="impacts", from_=1, to=2)
 
 
+def test_basins_is_the_programs_basins():
+    # e = 0.8, Gamma = 0.8: the period-1 orbit (impact phase acos(Gamma_1/Gamma)/(2 pi), Gamma_1 =
+    # pi (1 - e)/(1 + e)) and the body at rest on the table share the section (tests/test_orbit_basins.cpp).
+    grid = dict(restitution=0.8, gamma=0.8, resolution=6, position_min=6e-4, position_max=0.02,
+                velocity_min=-0.5, velocity_max=0.5)
+    d = hertzdash.basins("shaker", threads=1, **grid)
+    assert d == cli_json("basins", "shaker", "--restitution", "0.8", "--gamma", "0.8", "--resolution", "6",
+                         "--position-min", "6e-4", "--position-max", "0.02", "--velocity-min", "-0.5",
+                         "--velocity-max", "0.5", "--threads", "1")
+    kinds = {a["kind"] for a in d["attractors"]}
+    assert {"periodic", "rest"} <= kinds
+    phase = math.acos(math.pi * 0.2 / 1.8 / 0.8) / (2 * math.pi)
+    periodic = [a for a in d["attractors"] if a["kind"] == "periodic" and a["period"] == 1]
+    assert periodic and periodic[0]["impact_phase"][0] == pytest.approx(phase, abs=1e-9)
+
+
 def test_lyapunov_is_the_programs_lyapunov():
     # A chaotic bouncing ball (e = 0.95, Gamma = 2.2): its exponents sum to 2 ln e per impact.
     d = hertzdash.lyapunov("shaker", restitution=0.95, gamma=2.2, periods=3000)

@@ -1,0 +1,72 @@
+// A rig's basins of attraction (simulation/rigs/rig_basins.hpp).
+#include "hertzdash/simulation/rigs/rig_basins.hpp"
+
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/model/parameter.hpp"
+#include "hertzdash/simulation/options/command_options.hpp"
+#include "hertzdash/simulation/orbits/section_guess.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <thread>
+
+namespace hertzdash {
+
+BasinsRequest basins_request(const RigInputs& given) {
+  for (const auto& [key, value] : given.numbers) require_in_range(command_option("basins", key), value);
+  BasinsRequest r;
+  r.section_phase = given.number("section-phase");
+  r.position_min_m = given.number("position-min"), r.position_max_m = given.number("position-max");
+  r.velocity_min_mps = given.number("velocity-min"), r.velocity_max_mps = given.number("velocity-max");
+  for (const auto& [low, high, lo, hi] : {std::tuple{"position-min", "position-max", r.position_min_m, r.position_max_m},
+                                          std::tuple{"velocity-min", "velocity-max", r.velocity_min_mps, r.velocity_max_mps}}) {
+    if (lo.has_value() != hi.has_value())
+      throw InvalidParameter(lo ? high : low, "none", fmt::format("given with `{}`", lo ? low : high));
+    if (lo && !(*hi > *lo)) throw InvalidParameter(high, format_value(*hi), fmt::format("above `{}` = {}", low, format_value(*lo)));
+  }
+  r.resolution = static_cast<int>(given.number_or_default(command_option("basins", "resolution")));
+  r.cell_transient = static_cast<int>(given.number_or_default(command_option("basins", "cell-transient")));
+  r.cell_impacts = static_cast<int>(given.number_or_default(command_option("basins", "cell-impacts")));
+  r.threads = static_cast<unsigned>(given.number_or_default(command_option("basins", "threads")));
+  return r;
+}
+
+BasinsResult run_basins(const Rig& rig, const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs,
+                        const BasinsRequest& request) {
+  RigSequence rs = orbit_sequence(rig, options, paper, inputs);
+  const ImpactSequenceSpec& spec = rs.sequence.spec;
+  BasinsResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .grid = {}, .basins = {}, .failure = {}};
+  BasinOptions& g = out.grid;
+  g.resolution = request.resolution, g.transient = request.cell_transient, g.kept = request.cell_impacts;
+  g.threads = request.threads > 0 ? request.threads : std::max(1u, std::thread::hardware_concurrency());
+  const bool ranges = request.position_min_m && request.velocity_min_mps;
+  if (!ranges || !request.section_phase) {  // the rig's own attractor gives what is not given
+    const SectionGuess guess = section_guess(spec, request.section_phase, 1);
+    if (!guess.failure.empty() && !ranges) {
+      out.failure = "no default range: " + guess.failure;
+      return out;
+    }
+    g.section_phase = guess.section_phase;
+    const Eigen::VectorXd s = orbit_scales(spec);
+    if (guess.failure.empty()) {
+      g.position_min_m = guess.state(0) - s(0), g.position_max_m = guess.state(0) + s(0);
+      g.velocity_min_mps = guess.state(1) - s(1), g.velocity_max_mps = guess.state(1) + s(1);
+    }
+  }
+  if (request.section_phase) g.section_phase = *request.section_phase;
+  if (request.position_min_m) g.position_min_m = *request.position_min_m, g.position_max_m = *request.position_max_m;
+  if (request.velocity_min_mps) g.velocity_min_mps = *request.velocity_min_mps, g.velocity_max_mps = *request.velocity_max_mps;
+  for (const auto& [key, value] : {std::pair{"section_phase", g.section_phase}, {"position_min_m", g.position_min_m},
+                                   {"position_max_m", g.position_max_m}, {"velocity_min_mps", g.velocity_min_mps},
+                                   {"velocity_max_mps", g.velocity_max_mps}})
+    out.inputs.emplace_back(key, fmt::format("{}", value));
+  out.inputs.emplace_back("resolution", std::to_string(g.resolution));
+  out.inputs.emplace_back("cell_transient", std::to_string(g.transient));
+  out.inputs.emplace_back("cell_impacts", std::to_string(g.kept));
+  // Each thread its own copy of the rig's sequence (its own soft contact).
+  out.basins = compute_basins([&] { return rig.sequence(options, paper, inputs).sequence.spec; }, g);
+  return out;
+}
+
+}  // namespace hertzdash
