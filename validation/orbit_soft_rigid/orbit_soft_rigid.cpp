@@ -149,7 +149,7 @@ int main(int argc, char** argv) try {
         b.continuation.points, {}, [&](const BranchPoint& p) { return std::abs(p.parameter - doubling->parameter); });
     const double tc = contact_time_s(family, b, near) / T, gap = doubling->parameter - gamma_2;
     gap_per_contact_time.push_back(gap / tc);
-    table += fmt::format("{:g} & {} & {:.6f} & {} & {:.3f} \\\\\n", k, latex_scientific(tc), doubling->parameter,
+    table += fmt::format("{:g} & {} & {:.6f} & {} & ${:.3f}$ \\\\\n", k, latex_scientific(tc), doubling->parameter,
                          latex_scientific(gap), gap / tc);
   }
   table += "\\bottomrule\n\\end{tabular}\n";
