@@ -12,8 +12,8 @@
 #include "hertzdash/simulation/orbits/basins.hpp"
 #include "hertzdash/simulation/orbits/periodic_orbit.hpp"
 #include "hertzdash/simulation/orbits/section_guess.hpp"
-#include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
+#include "validation/common/steel_rod_setups.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -30,8 +30,7 @@ namespace {
 constexpr double e = 0.8, gamma = 0.8, f_Hz = 20;
 
 ImpactSequenceSpec ball() {
-  DropTestSetup s = paper_setup(load_paper_parameters(), "steel", 0.02);
-  s.restitution = e;
+  const DropTestSetup s = paper_steel_rod(e);
   ShakerOptions o;
   o.wall = {.amplitude_m = shaker_amplitude_m(gamma, f_Hz, s.gravity_mps2), .frequency_Hz = f_Hz};
   o.impact_model = ShakerImpactModel::instantaneous;

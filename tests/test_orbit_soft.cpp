@@ -6,11 +6,11 @@
 // e* depends on chi v0 alone, so on e alone (model/damping/hertz_proportional_dashpot.hpp): as the
 // contact stiffens at fixed e, the soft rig tends to the instantaneous one with restitution e*, and
 // its multipliers to the map's. The body is the paper's steel rod on a steel hemisphere whose
-// moduli are multiplied by k (tests/test_shaker.cpp's steel_on_steel).
+// moduli are multiplied by k (validation/common/steel_rod_setups.hpp).
 #include "hertzdash/simulation/orbits/periodic_orbit.hpp"
 #include "hertzdash/simulation/orbits/section_guess.hpp"
-#include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
+#include "validation/common/steel_rod_setups.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -25,31 +25,18 @@ namespace {
 
 constexpr double e = 0.5, f_Hz = 20, gamma = 1.1;
 
-DropTestSetup steel_on_steel(double stiffening) {
-  DropTestSetup s = paper_setup(load_paper_parameters(), "steel", 0.02);
-  s.restitution = e;
-  s.ball = {2.0e11 * stiffening, 0.3};
-  s.rod = {2.0e11 * stiffening, 0.3};
-  return s;
-}
-
-SolverSettings tight() {
-  SolverSettings s;
-  s.integrator = IntegratorKind::gbs8_regularized;
-  s.rtol = 1e-11;
-  return s;
-}
+SolverSettings tight() { return gbs8_regularized_solver(1e-11); }
 
 ShakerOptions shaker(ShakerImpactModel model) {
   ShakerOptions o;
-  o.wall = {.amplitude_m = shaker_amplitude_m(gamma, f_Hz, steel_on_steel(1).gravity_mps2), .frequency_Hz = f_Hz};
+  o.wall = {.amplitude_m = shaker_amplitude_m(gamma, f_Hz, stiffened_steel_pair(1, e).gravity_mps2), .frequency_Hz = f_Hz};
   o.impact_model = model;
   return o;
 }
 
 /// The shaker's scales: g T^2 for the position, g T for the speed.
 Eigen::Vector2d scales() {
-  const double g = steel_on_steel(1).gravity_mps2, T = 1 / f_Hz;
+  const double g = stiffened_steel_pair(1, e).gravity_mps2, T = 1 / f_Hz;
   return {g * T * T, g * T};
 }
 
@@ -79,7 +66,7 @@ TEST_CASE("soft contact tangents: d(t_c, v_sep)/d(t_on, v0) from the variational
   // (its value columns) with steps 1e-4 of the contact time and of v0: truncation O(1e-8)
   // relative, the integration's error rtol = 1e-11 over the step 1e-4 gives 1e-7; 1e-5 of each
   // entry's scale holds any correct tangent (a missing dF/dv0 term moves d v_sep/d v0 by O(1)).
-  const DropTestSetup s = steel_on_steel(1);
+  const DropTestSetup s = stiffened_steel_pair(1, e);
   const ContactTangentRun contact = make_contact_tangent("hunt-crossley", s, tight());
   REQUIRE(contact);
   const ShakerOptions o = shaker(ShakerImpactModel::soft);
@@ -105,7 +92,7 @@ TEST_CASE("soft contact tangents: d(t_c, v_sep)/d(t_on, v0) from the variational
 TEST_CASE("soft orbit: the shaker's soft monodromy equals central differences of its map", "[orbit][soft]") {
   // Steps 1e-6 of the scales: the map's own error (contacts to rtol 1e-11, impacts to 1e-13 T)
   // over the step is ~1e-6 relative, the truncation 1e-12; so 1e-4 of M's O(1) scaled entries.
-  const ImpactSequenceSpec spec = make_shaker_sequence(steel_on_steel(1), "hunt-crossley", tight(),
+  const ImpactSequenceSpec spec = make_shaker_sequence(stiffened_steel_pair(1, e), "hunt-crossley", tight(),
                                                        shaker(ShakerImpactModel::soft)).spec;
   const PeriodicOrbit o = orbit_of(spec);
   REQUIRE(o.converged);
@@ -134,8 +121,8 @@ TEST_CASE("soft orbit: the multipliers converge to the instantaneous map's as th
   // 2.51. The table prints k, t_c/T, |dlambda| and the observed order log(err ratio)/log(t_c
   // ratio); the test asserts the order within 0.15 of 1 (the O((t_c/T)^2) rest moves it by
   // t_c/T ~ 1e-3 here) and the error below 3 t_c/T.
-  const double e_star = hunt_crossley_restitution(steel_on_steel(1));
-  DropTestSetup rigid_setup = steel_on_steel(1);
+  const double e_star = hunt_crossley_restitution(stiffened_steel_pair(1, e));
+  DropTestSetup rigid_setup = stiffened_steel_pair(1, e);
   rigid_setup.restitution = e_star;
   const PeriodicOrbit rigid = orbit_of(make_shaker_sequence(rigid_setup, "hunt-crossley", tight(),
                                                             shaker(ShakerImpactModel::instantaneous)).spec);
@@ -144,7 +131,7 @@ TEST_CASE("soft orbit: the multipliers converge to the instantaneous map's as th
               rigid.multipliers[0].imag(), "k", "t_c/T", "|dlambda|", "order");
   double last_error = 0, last_tc = 0;
   for (double k : {1.0, 10.0, 100.0}) {
-    const PeriodicOrbit soft = orbit_of(make_shaker_sequence(steel_on_steel(k), "hunt-crossley", tight(),
+    const PeriodicOrbit soft = orbit_of(make_shaker_sequence(stiffened_steel_pair(k, e), "hunt-crossley", tight(),
                                                              shaker(ShakerImpactModel::soft)).spec);
     REQUIRE(soft.converged);
     REQUIRE(soft.impacts.size() == 1);

@@ -20,9 +20,9 @@
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/simulation/orbits/continuation.hpp"
 #include "hertzdash/simulation/orbits/section_guess.hpp"
-#include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/rigs/oscillator_rig.hpp"
 #include "validation/common/latex_macros.hpp"
+#include "validation/common/steel_rod_setups.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>
@@ -41,11 +41,7 @@ namespace {
 constexpr double e = 0.7;
 
 const DropTestSetup& setup() {
-  static const DropTestSetup s = [] {
-    DropTestSetup rod = paper_setup(load_paper_parameters(), "steel", 0.02);
-    rod.restitution = e;
-    return rod;
-  }();
+  static const DropTestSetup s = paper_steel_rod(e);
   return s;
 }
 

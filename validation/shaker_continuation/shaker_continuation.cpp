@@ -21,9 +21,9 @@
 #include "hertzdash/model/wall_motion.hpp"
 #include "hertzdash/simulation/orbits/continuation.hpp"
 #include "hertzdash/simulation/orbits/section_guess.hpp"
-#include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
 #include "validation/common/latex_macros.hpp"
+#include "validation/common/steel_rod_setups.hpp"
 #include "validation/common/study_args.hpp"
 
 #include <fmt/format.h>
@@ -44,11 +44,7 @@ constexpr double feigenbaum_delta = 4.6692016;
 
 /// The paper's steel rod with e = 0.5 (read once: the continuation builds a sequence per point).
 const DropTestSetup& setup() {
-  static const DropTestSetup s = [] {
-    DropTestSetup rod = paper_setup(load_paper_parameters(), "steel", 0.02);
-    rod.restitution = e;
-    return rod;
-  }();
+  static const DropTestSetup s = paper_steel_rod(e);
   return s;
 }
 
