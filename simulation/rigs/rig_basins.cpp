@@ -40,19 +40,18 @@ BasinsResult run_basins(const Rig& rig, const RunOptions& options, const PaperPa
   BasinOptions& g = out.grid;
   g.resolution = request.resolution, g.transient = request.cell_transient, g.kept = request.cell_impacts;
   g.threads = request.threads > 0 ? request.threads : std::max(1u, std::thread::hardware_concurrency());
-  const bool ranges = request.position_min_m && request.velocity_min_mps;
-  if (!ranges || !request.section_phase) {  // the rig's own attractor gives what is not given
+  if (!request.position_min_m || !request.velocity_min_mps || !request.section_phase) {
+    // The rig's own attractor gives what is not given.
     const SectionGuess guess = section_guess(spec, request.section_phase, 1);
-    if (!guess.failure.empty() && !ranges) {
-      out.failure = "no default range: " + guess.failure;
+    if (!guess.failure.empty()) {
+      out.failure = "the rig's own run gives no attractor to place the grid at (give --section-phase and the four "
+                    "bounds): " + guess.failure;
       return out;
     }
     g.section_phase = guess.section_phase;
     const Eigen::VectorXd s = orbit_scales(spec);
-    if (guess.failure.empty()) {
-      g.position_min_m = guess.state(0) - s(0), g.position_max_m = guess.state(0) + s(0);
-      g.velocity_min_mps = guess.state(1) - s(1), g.velocity_max_mps = guess.state(1) + s(1);
-    }
+    g.position_min_m = guess.state(0) - s(0), g.position_max_m = guess.state(0) + s(0);
+    g.velocity_min_mps = guess.state(1) - s(1), g.velocity_max_mps = guess.state(1) + s(1);
   }
   if (request.section_phase) g.section_phase = *request.section_phase;
   if (request.position_min_m) g.position_min_m = *request.position_min_m, g.position_max_m = *request.position_max_m;

@@ -26,7 +26,7 @@ struct BasinsResult {
   Parameters inputs;    ///< the rig's run's, then the request's
   BasinOptions grid;    ///< as run (its ranges and section phase resolved)
   Basins basins;
-  std::string failure;  ///< empty: the grid ran; else why not (no default range: the rig's run gives no attractor)
+  std::string failure;  ///< empty: the grid ran; else why not (a default needed, and the rig's run gives no attractor)
 };
 
 /// The basins of `rig` (see above). InvalidParameter for bad input and where `orbit` refuses.
