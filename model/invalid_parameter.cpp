@@ -13,13 +13,25 @@ bool is_parameter_key(std::string_view text) {
                      [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-'; });
 }
 
+namespace {
+/// Python's reserved words (keyword.kwlist of Python 3.11) that a key could be: a keyword argument
+/// cannot be spelled so, and takes a trailing '_' (`continue`'s `from` is from_=).
+constexpr std::string_view python_reserved[] = {"and", "as", "assert", "async", "await", "break", "class", "continue",
+                                                "def", "del", "elif", "else", "except", "finally", "for", "from",
+                                                "global", "if", "import", "in", "is", "lambda", "nonlocal", "not", "or",
+                                                "pass", "raise", "return", "try", "while", "with", "yield"};
+}  // namespace
+
 std::string spell_key(std::string_view key, KeySpelling spelling) {
   std::string s(key);
   if (!is_parameter_key(key)) return s;
   switch (spelling) {
     case KeySpelling::key: return s;
     case KeySpelling::command_line: return "--" + s;
-    case KeySpelling::python: std::replace(s.begin(), s.end(), '-', '_'); return s;
+    case KeySpelling::python:
+      std::replace(s.begin(), s.end(), '-', '_');
+      if (std::ranges::find(python_reserved, s) != std::end(python_reserved)) s += '_';
+      return s;
   }
   return s;
 }

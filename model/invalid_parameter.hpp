@@ -17,7 +17,9 @@ enum class KeySpelling { key, command_line, python };
 /// it is in every spelling.
 bool is_parameter_key(std::string_view text);
 
-/// `key` written in `spelling` (text that is no key stays as it is).
+/// `key` written in `spelling` (text that is no key stays as it is): as declared, as an option
+/// (--key), or as a Python keyword (hyphens as underscores, a word Python reserves with a trailing
+/// underscore: `from` is from_).
 std::string spell_key(std::string_view key, KeySpelling spelling);
 
 /// A reference to the parameter `key` inside a range text: "`key`", which the refusal's

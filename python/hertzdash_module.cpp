@@ -587,13 +587,6 @@ std::string result_names(bool ResultReports::*report) {
 
 // ---- rigs: run("RIG", **options) and one function per registered rig (simulation/rigs/rig.hpp) ----
 
-// A declared key as a Python argument: python_keyword()'s spelling, with '_' appended to a word
-// Python reserves (`continue`'s `from` is from_=).
-std::string python_argument(std::string_view key) {
-  const std::string k = python_keyword(key);
-  return py::module_::import("keyword").attr("iskeyword")(k).cast<bool>() ? k + "_" : k;
-}
-
 // The keywords of a rig's run into its options and inputs: its own inputs (and `extra`'s, the
 // orbit's, into `extra_inputs`), else an option of a run; an unknown one is refused naming
 // `function`.
@@ -601,7 +594,7 @@ void read_rig_keywords(const Rig& rig, const char* function, const py::kwargs& k
                        RigInputs& inputs, ParameterDecls extra = {}, RigInputs* extra_inputs = nullptr) {
   if (!rig.default_integrator.empty()) options.integrator = rig.default_integrator;
   auto named = [](ParameterDecls decls, const std::string& keyword) {
-    return std::find_if(decls.begin(), decls.end(), [&](const ParameterDecl& d) { return python_argument(d.key) == keyword; });
+    return std::find_if(decls.begin(), decls.end(), [&](const ParameterDecl& d) { return python_keyword(d.key) == keyword; });
   };
   for (const auto& [key, value] : kwargs) {
     const std::string keyword = key.cast<std::string>();
@@ -611,7 +604,7 @@ void read_rig_keywords(const Rig& rig, const char* function, const py::kwargs& k
     if (own == rig.inputs.end()) {
       std::string names;
       for (const ParameterDecls decls : {rig.inputs, extra})
-        for (const ParameterDecl& d : decls) names += (names.empty() ? "" : ", ") + python_argument(d.key);
+        for (const ParameterDecl& d : decls) names += (names.empty() ? "" : ", ") + python_keyword(d.key);
       set_option(options, option_named(keyword, function, names), value);
     }
     else if (value.is_none()) continue;  // None: the default
@@ -711,7 +704,7 @@ py::dict py_lyapunov(const std::string& name, const py::kwargs& kwargs) {
 std::string analysis_doc(std::string_view command, const std::string& head) {
   std::string doc = head;
   for (const ParameterDecl& d : analysis_options(command))
-    doc += fmt::format("  {}: {}\n", python_argument(d.key), help_text(d, KeySpelling::python));
+    doc += fmt::format("  {}: {}\n", python_keyword(d.key), help_text(d, KeySpelling::python));
   return doc;
 }
 
