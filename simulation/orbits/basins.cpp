@@ -1,12 +1,15 @@
 // Basins of attraction (simulation/orbits/basins.hpp).
 #include "hertzdash/simulation/orbits/basins.hpp"
 
+#include "hertzdash/simulation/orbits/stroboscopic_map.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace hertzdash {
 
@@ -20,12 +23,9 @@ struct CellOutcome {
 
 CellOutcome settle(ImpactSequenceSpec spec, double t_s, double y, double u, const BasinOptions& o) {
   CellOutcome out;
-  const OscillatorMotion& box = *spec.prescribed;
-  for (const SequenceWall& w : spec.walls)
-    if (!(w.sigma * (y - box.position_m(t_s) - w.offset_m) > 0)) return {.inside_wall = true, .attractor = {}};
-  spec.t0_s = t_s, spec.y0_m = y, spec.u0_mps = u, spec.carried_by = -1;
-  spec.transient = o.transient, spec.impacts = o.kept, spec.end_time_s.reset();
-  spec.energy = false, spec.sampled = ImpactSequenceSpec::Sampled::none;
+  if (!(smallest_gap_m(spec, t_s, y) > 0)) return {.inside_wall = true, .attractor = {}};
+  spec = in_flight_from(std::move(spec), t_s, y, u);
+  spec.transient = o.transient, spec.impacts = o.kept;
   const ImpactSequence run = run_impact_sequence(spec);
   BasinAttractor& a = out.attractor;
   if (run.end_carried || static_cast<int>(run.impacts.size()) < o.kept) {

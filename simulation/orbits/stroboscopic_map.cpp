@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace hertzdash {
 
@@ -60,17 +61,28 @@ const char* monodromy_method(const ImpactSequenceSpec& spec) {
                    : "stroboscopic map, monodromy from saltation matrices (instantaneous impacts)";
 }
 
-ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps, double t_end_s) {
+ImpactSequenceSpec in_flight_from(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps) {
   spec.t0_s = t0_s;
   spec.y0_m = y0_m;
   spec.u0_mps = u0_mps;
   spec.carried_by = -1;
-  spec.transient = 0;
-  spec.impacts = max_shaker_impacts;
-  spec.end_time_s = t_end_s;
   spec.energy = false;
   spec.sampled = ImpactSequenceSpec::Sampled::none;
   return spec;
+}
+
+ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps, double t_end_s) {
+  spec = in_flight_from(std::move(spec), t0_s, y0_m, u0_mps);
+  spec.transient = 0;
+  spec.impacts = max_shaker_impacts;
+  spec.end_time_s = t_end_s;
+  return spec;
+}
+
+double smallest_gap_m(const ImpactSequenceSpec& spec, double t_s, double y_m) {
+  double gap = std::numeric_limits<double>::infinity();
+  for (const SequenceWall& w : spec.walls) gap = std::min(gap, w.sigma * (y_m - spec.prescribed->position_m(t_s) - w.offset_m));
+  return gap;
 }
 
 StroboscopicMap::StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles)
@@ -81,12 +93,7 @@ StroboscopicMap::StroboscopicMap(ImpactSequenceSpec spec, double section_phase, 
   spec_ = flow_spec(std::move(spec), t_s_, 0, 0, t_s_ + cycles / spec.frequency_Hz);
 }
 
-double StroboscopicMap::smallest_gap_m(const Eigen::VectorXd& z) const {
-  double gap = std::numeric_limits<double>::infinity();
-  for (const SequenceWall& w : spec_.walls)
-    gap = std::min(gap, w.sigma * (z(0) - spec_.prescribed->position_m(t_s_) - w.offset_m));
-  return gap;
-}
+double StroboscopicMap::smallest_gap_m(const Eigen::VectorXd& z) const { return hertzdash::smallest_gap_m(spec_, t_s_, z(0)); }
 
 SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
   SectionImage image{.state = z, .monodromy = Eigen::MatrixXd::Identity(2, 2), .impacts = {},

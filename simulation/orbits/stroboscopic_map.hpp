@@ -42,9 +42,15 @@
 
 namespace hertzdash {
 
-/// `spec` as a flow: the body in flight at (t0 [s], y0 [m], u0 [m/s]) run to t_end [s], every impact
-/// kept, no energy account or samples (the map's runs, the guess's flow to the section).
+/// `spec` started with the body in flight at (t0 [s], y0 [m], u0 [m/s]), no energy account or
+/// samples (the basins' starts, and flow_spec's).
+ImpactSequenceSpec in_flight_from(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps);
+/// `spec` as a flow: in_flight_from(t0, y0, u0) run to t_end [s], every impact kept (the map's
+/// runs, the guess's flow to the section).
 ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps, double t_end_s);
+/// The gap [m] of a body at y [m] at time t [s] to the nearest wall of the prescribed box of
+/// `spec` (< 0: inside it).
+double smallest_gap_m(const ImpactSequenceSpec& spec, double t_s, double y_m);
 
 /// The image of one state under the map.
 struct SectionImage {
