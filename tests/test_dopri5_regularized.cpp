@@ -175,36 +175,57 @@ TEST_CASE("ForceJet: force_of_root on jets gives the force and its partial deriv
     }
 }
 
+/// Checks Law's dF/dv0 against central differences of laws built at v0 (1 +- 1e-5), at three
+/// depths and three speeds; returns the number of points checked.
+template <class Law>
+int check_speed_derivative(double K, double mass_kg, double v0, double e, const DampingSettings& d) {
+  // Differences err by O(1e-10) relative (the coefficients are smooth powers of v0) plus rounding
+  // O(1e-16/1e-5): 1e-8 of the force's scale holds any correct derivative and no wrong one.
+  const double u_scale = std::sqrt(undamped_hertz_max_deformation_m(K, mass_kg, v0)), h = 1e-5 * v0;
+  const Law law(ImpactConditions{K, mass_kg, v0, e}, d), plus(ImpactConditions{K, mass_kg, v0 + h, e}, d),
+      minus(ImpactConditions{K, mass_kg, v0 - h, e}, d);
+  const double scale = K * u_scale * u_scale * u_scale;
+  int checked = 0;
+  for (double u : {0.0, 0.4 * u_scale, u_scale})
+    for (double v : {v0, 0.0, -0.7 * v0}) {
+      const double fd = (plus.force_of_root(u, v) - minus.force_of_root(u, v)) / (2 * h);
+      CHECK(std::abs(law.force_speed_derivative(u, v) - fd) * v0 <= 1e-8 * scale);
+      ++checked;
+    }
+  return checked;
+}
+
 TEST_CASE("SpeedDerivativeLaw: dF/dv0 of every law that declares it equals differences in v0", "[regularized][damping]") {
   // A law fixes its coefficients from v0 at onset; SpeedDerivativeLaw's force_speed_derivative
-  // gives dF/dv0 at fixed (u, xdot). Central differences of laws built at v0 (1 +- 1e-5) err by
-  // O(1e-10) relative (the coefficients are smooth powers of v0) plus rounding O(1e-16/1e-5): 1e-8
-  // of the force's scale holds any correct derivative and no wrong one. Hunt-Crossley's closed
-  // form: dF/dv0 = -K u^3 chi xdot / v0 (chi = 3 (1 - e)/(2 v0)).
+  // gives dF/dv0 at fixed (u, xdot), checked against differences (check_speed_derivative).
   const DropTestSetup s = steel_drop();
   const double K = hertz_stiffness(s), v0 = 0.4, e = 0.5;
-  const double u_scale = std::sqrt(undamped_hertz_max_deformation_m(K, s.mass_kg, v0));
+  DampingSettings d = s.damping;
+  d.viscous_time_constant_s = 1e-4;
   int checked = 0;
   for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
-    if constexpr (SpeedDerivativeLaw<Law>) {
-      DampingSettings d = s.damping;
-      d.viscous_time_constant_s = 1e-4;
-      const double h = 1e-5 * v0;
-      const Law law(ImpactConditions{K, s.mass_kg, v0, e}, d), plus(ImpactConditions{K, s.mass_kg, v0 + h, e}, d),
-          minus(ImpactConditions{K, s.mass_kg, v0 - h, e}, d);
-      const double scale = K * u_scale * u_scale * u_scale;
-      for (double u : {0.0, 0.4 * u_scale, u_scale})
-        for (double v : {v0, 0.0, -0.7 * v0}) {
-          const double fd = (plus.force_of_root(u, v) - minus.force_of_root(u, v)) / (2 * h);
-          CHECK(std::abs(law.force_speed_derivative(u, v) - fd) * v0 <= 1e-8 * scale);
-          ++checked;
-        }
-    }
+    if constexpr (SpeedDerivativeLaw<Law>) checked += check_speed_derivative<Law>(K, s.mass_kg, v0, e, d);
   });
-  CHECK(checked >= 9 * 3);
+  CHECK(checked >= 12 * 9);
+  // Hunt-Crossley's closed form: dF/dv0 = -K u^3 chi xdot / v0 (chi = 3 (1 - e)/(2 v0)).
   const HuntCrossley hc(ImpactConditions{K, s.mass_kg, v0, e}, s.damping);
+  const double u_scale = std::sqrt(undamped_hertz_max_deformation_m(K, s.mass_kg, v0));
   const double u = 0.5 * u_scale, v = 0.2, chi = 1.5 * (1 - e) / v0;
   CHECK(hc.force_speed_derivative(u, v) == Approx(-K * u * u * u * chi * v / v0).epsilon(1e-14));
+  // The paper's law, F = K u (u^2 + tau xdot), tau = 2 zeta/omega_n: omega_n grows as v0^{1/5} by
+  // eq. (11) and both energy variants (X ~ v0^{4/5}, omega_n ~ X^{1/4}), as v0^{2/5} as printed
+  // (~ X^{1/2}), and is held fixed when given (an iterated variant's fixed point); so
+  // dF/dv0 = -p K u xdot tau / v0 with p = 1/5, 2/5 and 0.
+  for (const auto& [variant, p] : {std::pair{OmegaNVariant::paper, 0.2}, std::pair{OmegaNVariant::impact_energy, 0.2},
+                                   std::pair{OmegaNVariant::rebound_energy, 0.2}, std::pair{OmegaNVariant::as_printed, 0.4},
+                                   std::pair{OmegaNVariant::self_consistent, 0.0}}) {
+    DampingSettings hd = s.damping;
+    hd.omega_n = variant;
+    hd.omega_n_rad_per_s = 5e3;
+    CHECK(check_speed_derivative<HongoPaper>(K, s.mass_kg, v0, e, hd) == 9);
+    const HongoPaper law(ImpactConditions{K, s.mass_kg, v0, e}, hd);
+    CHECK(law.force_speed_derivative(u, v) == Approx(-p * K * u * v * law.time_constant_s() / v0).margin(1e-14 * K * u * u * u));
+  }
 }
 
 TEST_CASE("cvode-regularized: undamped Hertz contact against the closed forms, error proportional to tolerance",

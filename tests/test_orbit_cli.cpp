@@ -75,10 +75,11 @@ TEST_CASE("CLI orbit: the saddle from a guess, unstable, which the rig's own run
 }
 
 TEST_CASE("CLI orbit: bad input exits 2 naming the option", "[orbit]") {
-  // `orbit`'s impact model is instantaneous unless told: soft contacts' multipliers are not built yet.
-  const auto soft = run_cli("orbit shaker --impact-model soft --gamma 1.3");
+  // Soft contacts need a law that declares dF/dv0 (model/damping/damping_law.hpp); kelvin-voigt does not.
+  const auto soft = run_cli("orbit shaker --impact-model soft --damping kelvin-voigt --gamma 1.3");
   CHECK(soft.exit_code == 2);
-  CHECK_THAT(soft.err, Catch::Contains("--impact-model") && Catch::Contains("instantaneous"));
+  CHECK_THAT(soft.err, Catch::Contains("--damping = kelvin-voigt") && Catch::Contains("hongo") &&
+                           Catch::Contains("--impact-model instantaneous"));
   CHECK(run_cli("orbit shaker --gamma 1.3 --restitution 0.5").exit_code == 0);
   // The help lists the options instantaneous impacts read, not the soft contact's.
   const auto help = run_cli("orbit shaker --help");

@@ -5,7 +5,7 @@
 // integrated by adaptive Dormand-Prince 5(4) at the run's tolerances (rtol, atol x the state's
 // scales). What the stroboscopic map of a soft impact orbit needs for its monodromy matrix
 // (simulation/orbits/stroboscopic_map.hpp). The laws: those that declare dF/dv0
-// (SpeedDerivativeLaw: the Hunt-Crossley family, kuwabara-kono, none); the contact is the one
+// (SpeedDerivativeLaw: hongo, the Hunt-Crossley family, kuwabara-kono, none); the contact is the one
 // `make_soft_contact` runs for the same law and set-up (kuwabara-kono's time constant calibrated
 // the same way), integrated again with its tangents.
 #include "hertzdash/model/contact_environments.hpp"

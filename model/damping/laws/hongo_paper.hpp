@@ -33,6 +33,21 @@ inline double as_printed_natural_frequency(double K, double mass_kg, double ampl
   return std::sqrt(4.0 * K / (5.0 * mass_kg)) * std::sqrt(amplitude_m);
 }
 
+/// d ln(omega_n) / d ln(v0) of a variant at fixed K, m and e: X grows as v0^{4/5} (eq. 10 and both
+/// energy variants), omega_n as X^{1/4} (eq. 9 corrected) or X^{1/2} (as printed); an iterated
+/// variant's omega_n is given to the law (its fixed point), so the law holds it fixed.
+constexpr double paper_law_natural_frequency_speed_exponent(OmegaNVariant v) {
+  switch (v) {
+    case OmegaNVariant::paper:
+    case OmegaNVariant::impact_energy:
+    case OmegaNVariant::rebound_energy: return 0.2;
+    case OmegaNVariant::as_printed: return 0.4;
+    case OmegaNVariant::self_consistent:
+    case OmegaNVariant::contact_time: return 0.0;
+  }
+  return 0.0;
+}
+
 /// omega_n [rad/s] of the paper's law for one impact, by the chosen variant (OmegaNVariant).
 /// The iterated variants (self-consistent, contact-time) take the given
 /// settings.omega_n_rad_per_s, which their fixed-point iteration supplies
@@ -90,12 +105,17 @@ class HongoPaper {
       : K_(c.K),
         zeta_(zeta_from_restitution(c.restitution, s.zeta_form)),
         omega_n_(paper_law_natural_frequency(c, s)),
-        tau_(2.0 * zeta_ / omega_n_) {}
+        tau_(2.0 * zeta_ / omega_n_),
+        dtau_dv0_(-paper_law_natural_frequency_speed_exponent(s.omega_n) * tau_ / c.v0_mps) {}
 
   double force(double x, double xdot) const noexcept { return K_ * std::sqrt(x) * (x + tau_ * xdot); }
   /// The same at u = x^{1/2}: K u (u^2 + tau xdot) [N] (RootPolynomialLaw)
   template <class T>
   auto force_of_root(const T& u, const T& xdot) const noexcept { return K_ * u * (u * u + tau_ * xdot); }
+
+  /// dF/dv0 = K u xdot dtau/dv0 [N s/m], dtau/dv0 = -p tau / v0 with p = d ln(omega_n)/d ln(v0)
+  /// (paper_law_natural_frequency_speed_exponent) (SpeedDerivativeLaw)
+  double force_speed_derivative(double u, double xdot) const noexcept { return K_ * u * xdot * dtau_dv0_; }
 
   /// tau = 2 zeta / omega_n [s], so that c_e = K tau x^{1/2} (eq. 5): the law's one
   /// coefficient besides K.
@@ -122,6 +142,7 @@ class HongoPaper {
   double zeta_;
   double omega_n_;
   double tau_;  ///< 2 zeta / omega_n [s]: c_e = K tau x^{1/2}
+  double dtau_dv0_;  ///< d tau / d v0 [s^2/m]
 };
 
 }  // namespace hertzdash
