@@ -12,7 +12,7 @@ FUZZ_SECONDS   ?= 60
 # Extra CMake arguments for every configuration, e.g. CMAKE_ARGS=-DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 CMAKE_ARGS     ?=
 
-.PHONY: all deps deps-paper deps-peers configure build test figures convergence uncertainty paper bench build-times sanitize fuzz clean
+.PHONY: all deps deps-paper deps-peers deps-engines configure build test figures convergence uncertainty paper bench build-times sanitize fuzz clean
 
 all: build
 
@@ -23,6 +23,10 @@ deps:
 
 deps-paper:
 	@tools/install-deps.sh debian-packages.txt debian-packages-paper.txt
+
+# The discrete-element engines the suite runs hertzdash's decks in (debian-packages-engines.txt).
+deps-engines:
+	@tools/install-deps.sh debian-packages.txt debian-packages-engines.txt
 
 # The peer engines `make bench` runs (debian-packages-peers.txt).
 deps-peers:
@@ -36,7 +40,7 @@ configure: deps $(BUILD)/CMakeCache.txt
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-test: build deps-paper
+test: build deps-paper deps-engines
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The studies of bench/ are among the figures: a build without the benchmark peers
@@ -97,7 +101,7 @@ build-times: deps-paper
 # minutes and 2.5 GB for one template-heavy file under ASan. paper_builds is left out: it runs every
 # study again as the pipeline test (tests/test_figures_pipeline.cpp) has just run them under ASan,
 # then LaTeX, which is not ours to instrument.
-sanitize: deps
+sanitize: deps deps-engines
 	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O1 -DHERTZDASH_SANITIZE=ON \
 	  $(CMAKE_ARGS)
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)

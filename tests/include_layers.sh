@@ -6,7 +6,7 @@
 #   rank 0  ode/  io/
 #   rank 1  model/  integrators/
 #   rank 2  simulation/run/  simulation/uncertainty/
-#   rank 3  simulation/paper/  simulation/shaker/
+#   rank 3  simulation/paper/  simulation/shaker/  simulation/export/
 #   rank 4  simulation/options/  simulation/orbits/
 #   rank 5  simulation/rigs/
 #   rank 6  simulation/fit/  simulation/sweep/
@@ -22,7 +22,7 @@ rank() {
     ode|io) echo 0 ;;
     model|integrators) echo 1 ;;
     simulation/run|simulation/uncertainty) echo 2 ;;
-    simulation/paper|simulation/shaker) echo 3 ;;
+    simulation/paper|simulation/shaker|simulation/export) echo 3 ;;
     simulation/options|simulation/orbits) echo 4 ;;
     simulation/rigs) echo 5 ;;
     simulation/fit|simulation/sweep) echo 6 ;;

@@ -1,0 +1,84 @@
+// A contact as a discrete-element engine takes it (simulation/export/engine_contact.hpp).
+#include "hertzdash/simulation/export/engine_contact.hpp"
+
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"
+#include "hertzdash/simulation/run/impact_summary.hpp"
+#include "hertzdash/simulation/run/law_runs.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace hertzdash {
+
+const char* to_string(EngineImpactKind k) {
+  return k == EngineImpactKind::sphere_sphere ? "sphere-sphere" : "sphere-wall";
+}
+
+double EngineContact::density_kg_per_m3() const {
+  return mass_kg / (4.0 / 3.0 * std::numbers::pi * radius_m * radius_m * radius_m);
+}
+
+double EngineContact::effective_modulus_Pa(EngineImpactKind k) const {
+  return 1.0 / (compliance(sphere) + compliance(k == EngineImpactKind::sphere_sphere ? sphere : wall));
+}
+
+double EngineContact::reduced_mass_kg(EngineImpactKind k) const {
+  return k == EngineImpactKind::sphere_sphere ? mass_kg / 2 : mass_kg;
+}
+
+double EngineContact::reduced_radius_m(EngineImpactKind k) const {
+  return k == EngineImpactKind::sphere_sphere ? radius_m / 2 : radius_m;
+}
+
+DropTestSetup engine_impact_setup(const EngineContact& c, EngineImpactKind k) {
+  DropTestSetup s{.mass_kg = c.reduced_mass_kg(k),
+                  .ball_radius_m = c.reduced_radius_m(k),
+                  .ball = c.sphere,
+                  .ball_yield_stress_Pa = INFINITY,  // the engines' contact is elastic: no yield check
+                  .rod = k == EngineImpactKind::sphere_sphere ? c.sphere : c.wall,
+                  .restitution = c.restitution,
+                  .height_m = 0,
+                  .impact_velocity_mps = c.speed_mps,
+                  .gravity_mps2 = 0,
+                  .damping = c.damping};
+  if (c.time_constant_s > 0) s.damping.viscous_time_constant_s = c.time_constant_s;
+  validate(s);
+  return s;
+}
+
+namespace {
+
+EngineImpactResult predict(ImpactSimulator& simulator, const DropTestSetup& s, const std::string& law) {
+  const ImpactSummary r = simulator.run(s, law);
+  return {r.e_effective, r.contact_time_s, r.peak_force_N};
+}
+
+}  // namespace
+
+EngineContact make_engine_contact(const DropTestSetup& setup, const std::string& law) {
+  EngineContact c;
+  c.law = law;
+  c.radius_m = setup.ball_radius_m;
+  c.mass_kg = setup.mass_kg;
+  c.sphere = setup.ball;
+  c.wall = setup.rod;
+  c.restitution = setup.restitution;
+  c.speed_mps = approach_speed(setup);
+  c.damping = setup.damping;
+  DropTestSetup pair = engine_impact_setup(c, EngineImpactKind::sphere_sphere);
+  if (const auto calibrate = law_runs(law).calibrated_time_constant) {
+    if (!pair.damping.viscous_time_constant_s) pair = calibrate(pair);
+    c.time_constant_s = *pair.damping.viscous_time_constant_s;
+  }
+  SolverSettings accurate;
+  accurate.integrator = IntegratorKind::gbs8_regularized;
+  accurate.rtol = 1e-10;
+  accurate.atol = 1e-10;
+  ImpactSimulator simulator(accurate);
+  c.pair = predict(simulator, pair, law);
+  c.on_wall = predict(simulator, engine_impact_setup(c, EngineImpactKind::sphere_wall), law);
+  return c;
+}
+
+}  // namespace hertzdash

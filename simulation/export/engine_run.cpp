@@ -1,0 +1,93 @@
+// Running an installed engine on a deck (simulation/export/engine_run.hpp).
+#include "hertzdash/simulation/export/engine_run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <spawn.h>
+#include <sstream>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+extern char** environ;
+
+namespace hertzdash {
+
+bool engine_installed(Engine engine) {
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (!dir.empty() && access((std::filesystem::path(dir) / engine_program(engine)).c_str(), X_OK) == 0) return true;
+  return false;
+}
+
+namespace {
+
+/// The engine's line that starts with `prefix` in its screen output, or "".
+std::string line_starting(const std::string& output, std::string_view prefix) {
+  std::istringstream in(output);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) return line;
+  return {};
+}
+
+}  // namespace
+
+EngineImpactResult run_engine_deck(Engine engine, const EngineDeck& deck, const std::filesystem::path& directory,
+                                   const std::string& deck_name, double approach_speed_mps) {
+  const char* program = engine_program(engine);
+  { std::ofstream(directory / deck_name) << deck.text; }
+  const std::filesystem::path screen = directory / (deck_name + ".out");
+  posix_spawn_file_actions_t actions;
+  if (posix_spawn_file_actions_init(&actions) != 0 ||
+      posix_spawn_file_actions_addchdir_np(&actions, directory.c_str()) != 0 ||
+      posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, screen.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600) != 0 ||
+      posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO) != 0)
+    throw std::runtime_error(fmt::format("cannot prepare {}'s output in {}", program, directory.string()));
+  std::vector<std::string> args{program, "-in", deck_name, "-log", "none"};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, program, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0)
+    throw std::runtime_error(fmt::format("cannot run {} ({}): {}; `make deps-engines` installs it (debian-packages-engines.txt)",
+                                         to_string(engine), program, std::strerror(spawned)));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw std::runtime_error(fmt::format("waiting for {} failed", program));
+  std::ostringstream said;
+  said << std::ifstream(screen).rdbuf();
+  const std::string error = line_starting(said.str(), "ERROR");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !error.empty())
+    throw std::runtime_error(fmt::format("{} failed on {}: {}", program, (directory / deck_name).string(),
+                                         error.empty() ? "exit status " + std::to_string(status) : error));
+  const std::string result = line_starting(said.str(), "hertzdash_result ");
+  EngineImpactResult r;
+  if (result.empty() || !(std::istringstream(result.substr(17)) >> r.restitution))
+    throw std::runtime_error(fmt::format("{} printed no hertzdash_result line ({})", program, screen.string()));
+  r.restitution /= approach_speed_mps;
+  std::ifstream forces(directory / deck.force_file);
+  long in_contact = 0;
+  for (std::string line; std::getline(forces, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const double f = std::strtod(line.c_str(), nullptr);
+    if (f != 0) ++in_contact;
+    r.peak_force_N = std::max(r.peak_force_N, f);
+  }
+  if (in_contact == 0)
+    throw std::runtime_error(fmt::format("{} recorded no contact force in {}", program, (directory / deck.force_file).string()));
+  r.contact_time_s = static_cast<double>(in_contact) * deck.timestep_s;
+  return r;
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,21 @@
+#pragma once
+// Running an installed engine on a deck of simulation/export/engine_models.hpp and reading back
+// the impact: the rebound speed the deck prints, and its contact-force file (the contact time is
+// the number of steps with a non-zero force times the time step, the peak force the largest).
+#include "hertzdash/simulation/export/engine_models.hpp"
+
+#include <filesystem>
+
+namespace hertzdash {
+
+/// Runs `engine_program(engine)` on `deck` (written to `directory` as `deck_name`, with the
+/// engine's screen output beside it as `deck_name`.out) and reads its result; `approach_speed_mps`
+/// turns the rebound speed into e. Throws std::runtime_error naming the engine and its ERROR
+/// line, or saying the program is not installed (`make deps-engines`).
+EngineImpactResult run_engine_deck(Engine engine, const EngineDeck& deck, const std::filesystem::path& directory,
+                                   const std::string& deck_name, double approach_speed_mps);
+
+/// Whether the engine's program is on PATH.
+bool engine_installed(Engine engine);
+
+}  // namespace hertzdash
