@@ -48,6 +48,9 @@ Command add_lyapunov_command(CLI::App& app);
 /// `hertzdash basins RIG`: which attractor each start at a rig's section reaches.
 Command add_basins_command(CLI::App& app);
 
+/// `hertzdash export`: a contact's input decks for a discrete-element engine (docs/engines.md).
+Command add_export_command(CLI::App& app);
+
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);
 

@@ -175,7 +175,8 @@ TEST_CASE("CLI restitution: an iterated --omega-n exits 2 naming the option and 
 TEST_CASE("CLI: an unknown or missing subcommand exits 2 and lists the subcommands", "[cli]") {
   // Issue 19: `hertzdash frobnicate` said "A subcommand is required".
   const std::string listed =
-      "simulate, models, parameters, restitution, bounce, shaker, walls, oscillator, orbit, continue, lyapunov, basins, fit, sweep "
+      "simulate, models, parameters, restitution, bounce, shaker, walls, oscillator, orbit, continue, lyapunov, basins, fit, export, "
+      "sweep "
       "(hertzdash --help)";
   const auto unknown = run_cli("frobnicate --mass 1");
   CHECK(unknown.exit_code == 2);
@@ -254,6 +255,7 @@ TEST_CASE("CLI: every numeric option of every subcommand refuses text that is no
       {"simulate", "--trace " + out},
       {"fit", "--trace " + trace + " --curves " + out},
       {"sweep", (dir.path / "case.toml").string() + " --quiet --out " + out},
+      {"export", "--engine lammps --out " + dir.path.string()},
   };
   // The options that apply only with another: given with it, so that the refusal is theirs.
   const std::map<std::string, std::string> context{

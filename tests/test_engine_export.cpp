@@ -18,15 +18,21 @@
 #include "hertzdash/simulation/export/engine_run.hpp"
 
 #include "hertzdash/model/hertz.hpp"
+#include "tests/cli_runner.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 using namespace hertzdash;
 
@@ -95,4 +101,54 @@ TEST_CASE("engine export: each engine model run by its engine gives the impact o
       }
     }
   }
+}
+
+TEST_CASE("CLI export: the decks run in the engine as written and give the JSON's prediction, and bad input exits 2 "
+          "naming the option and writes nothing",
+          "[export][engines][cli]") {
+  // The glass beads of the first test case at the default 1000 steps per contact: e within
+  // 0.3 N^-(1+p) of the prediction (the bound derived above), the deck run unedited in its directory.
+  const std::string beads = "--mass 1.0471975511965977e-5 --ball-radius 1e-3 --ball-E 63e9 --ball-nu 0.22 --rod-E 200e9 "
+                            "--rod-nu 0.3 --restitution 0.9 --impact-velocity 1 ";
+  for (const auto& [engine, law, program] : {std::tuple{"lammps", "kuwabara-kono", "lmp"}, std::tuple{"liggghts", "tsuji-dem", "liggghts"}}) {
+    CAPTURE(engine);
+    ScratchDirectory dir;
+    const auto r = test::run_cli(fmt::format("export --engine {} --damping {} {} --out {} --json", engine, law, beads,
+                                             dir.path.string()));
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["hertzdash_law"] == law);
+    for (const char* deck : {"sphere_sphere.in", "sphere_wall.in", "contact_lines.in"})
+      CHECK(test::slurp(dir.path / deck).find("# git_revision: ") != std::string::npos);
+    for (const auto& impact : j["impacts"]) {
+      const std::string deck = impact["deck"];
+      const auto ran = test::run_cli_program(fmt::format("cd {} && {}", dir.path.string(), program),
+                                             "-in " + deck + " -log none");
+      REQUIRE(ran.exit_code == 0);
+      const auto at = ran.out.find("hertzdash_result ");
+      REQUIRE(at != std::string::npos);
+      const double e = std::stod(ran.out.substr(at + 17));  // the approach speed is 1 m/s
+      CHECK(std::abs(e - impact["restitution"].get<double>()) < 0.3 * std::pow(1000, -(1 + dashpot_exponent(law))));
+    }
+  }
+  ScratchDirectory scratch;
+  const std::string out = (scratch.path / "decks").string();
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"--engine yade --damping tsuji-dem", "--engine"},
+      {"--engine lammps", "--damping = hongo"},  // the default law: no LAMMPS model equals it
+      {"--engine lammps --damping tsuji-dem --engine-model granular-viscoelastic", "--damping"},
+      {"--engine lammps --damping tsuji-dem --engine-model hertz", "--engine-model"},
+      {"--engine liggghts --damping tsuji-dem --rod-E inf", "--rod-E"},
+      {"--engine lammps --damping tsuji-dem --restitution 0.05", "--restitution"},  // below alpha's reach
+      {"--engine lammps --damping tsuji-dem --steps-per-contact 5", "--steps-per-contact"}};
+  for (const auto& [args, named] : refused) {
+    CAPTURE(args);
+    const auto r = test::run_cli("export " + beads + args + " --out " + out + " --mkdir");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains(named));
+    CHECK(!std::filesystem::exists(out));
+  }
+  const auto no_out = test::run_cli("export --engine lammps --damping tsuji-dem");
+  CHECK(no_out.exit_code == 2);
+  CHECK_THAT(no_out.err, Catch::Contains("--out"));
 }

@@ -43,7 +43,7 @@ double tsuji_engine_restitution_input(double e) {
 
 namespace {
 
-std::string number(double x) { return fmt::format("{:.17g}", x); }
+std::string number(double x) { return fmt::format("{}", x); }  // shortest round-trip
 
 constexpr auto pair = EngineImpactKind::sphere_sphere;
 constexpr auto wall = EngineImpactKind::sphere_wall;

@@ -1,0 +1,70 @@
+// `hertzdash export --engine lammps|liggghts`: a contact's input decks for a discrete-element
+// engine (simulation/reports/export_report.hpp, docs/engines.md): two spheres head-on and a
+// sphere on a wall, each runnable as written, and the lines to paste into an input of one's own,
+// for the engine model that equals the law --damping names, with hertzdash's prediction of each
+// impact beside them. The three files are written together, atomically, into --out.
+#include "cli/command.hpp"
+#include "cli/number_options.hpp"
+#include "cli/output_files.hpp"
+#include "cli/setup_options.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/simulation/options/command_options.hpp"
+#include "hertzdash/simulation/reports/export_report.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace hertzdash::cli {
+
+namespace {
+
+struct ExportOptions {
+  RunOptions run;
+  std::string engine, model, out;
+  std::optional<double> steps_per_contact;
+  bool json = false, mkdir = false;
+};
+
+}  // namespace
+
+Command add_export_command(CLI::App& app) {
+  auto opt = std::make_shared<ExportOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "export", "Input decks of a contact for LAMMPS or LIGGGHTS: the engine model equal to --damping, runnable as written");
+  add_run_options(*sub, opt->run);
+  auto o = [](std::string_view key) { return declared_option("export", key); };
+  sub->add_option(o("engine").flag, opt->engine, o("engine").help);
+  sub->add_option(o("engine-model").flag, opt->model, o("engine-model").help);
+  add_output_file_option(*sub, o("out").flag, opt->out, o("out").help);
+  add_number_option(*sub, o("steps-per-contact").flag, opt->steps_per_contact, o("steps-per-contact").help);
+  sub->add_flag(o("json").flag, opt->json, o("json").help);
+  add_mkdir_flag(*sub, opt->mkdir);
+
+  return {sub, [opt]() {
+            if (opt->engine.empty()) throw InvalidParameter("engine", "none", "given: lammps or liggghts");
+            if (opt->out.empty()) throw InvalidParameter("out", "none", "given: the directory of the decks");
+            const Engine engine = parse_engine(opt->engine);
+            const ParameterDecl& steps_decl = command_option("export", "steps-per-contact");
+            const double steps_given = opt->steps_per_contact.value_or(steps_decl.default_number);
+            if (!steps_decl.range.contains(steps_given))
+              throw InvalidParameter("steps-per-contact", format_value(steps_given), steps_decl.range.text(steps_decl.unit));
+            const int steps = static_cast<int>(steps_given);
+            const std::filesystem::path dir(opt->out);
+            std::vector<std::pair<std::filesystem::path, std::string>> files;
+            // Checked before any work, written after all of it.
+            for (const char* name : {"sphere_sphere.in", "sphere_wall.in", "contact_lines.in"})
+              prepare_output_file("out", (dir / name).string(), opt->mkdir);
+            const EngineExport e = export_engine_decks(opt->run, load_paper_parameters(), engine, opt->model, steps);
+            for (const auto& [name, text] : e.files()) files.emplace_back(dir / name, text);
+            create_output_directories((dir / "sphere_sphere.in").string(), opt->mkdir);
+            write_files_atomically(files);
+            if (opt->json) std::cout << to_json(e).dump(2) << "\n";
+            else std::cout << export_text(e) << "  decks        " << dir.string() << "/{sphere_sphere,sphere_wall,contact_lines}.in\n";
+            return 0;
+          }};
+}
+
+}  // namespace hertzdash::cli

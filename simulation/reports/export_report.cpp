@@ -1,0 +1,113 @@
+// `hertzdash export` (simulation/reports/export_report.hpp).
+#include "hertzdash/simulation/reports/export_report.hpp"
+
+#include <fmt/format.h>
+
+namespace hertzdash {
+
+namespace {
+
+constexpr auto pair = EngineImpactKind::sphere_sphere;
+constexpr auto wall = EngineImpactKind::sphere_wall;
+
+Parameters deck_parameters(const EngineExport& e) {
+  const EngineContact& c = e.contact;
+  auto g = [](double x) { return fmt::format("{:.10g}", x); };
+  Parameters p{{"engine", to_string(e.model->engine)},
+               {"engine_model", std::string(e.model->key)},
+               {"hertzdash_law", c.law},
+               {"relation", std::string(e.model->relation)},
+               {"sphere_radius_m", g(c.radius_m)},
+               {"sphere_mass_kg", g(c.mass_kg)},
+               {"sphere_density_kg_per_m3", g(c.density_kg_per_m3())},
+               {"sphere_E_Pa", g(c.sphere.E_Pa)},
+               {"sphere_nu", g(c.sphere.nu)},
+               {"wall_E_Pa", g(c.wall.E_Pa)},
+               {"wall_nu", g(c.wall.nu)},
+               {"restitution", g(c.restitution)}};
+  if (c.time_constant_s > 0) p.emplace_back("viscous_time_constant_s", g(c.time_constant_s));
+  p.emplace_back("speed_mps", g(c.speed_mps));
+  p.emplace_back("steps_per_contact", std::to_string(e.steps_per_contact));
+  for (EngineImpactKind k : {pair, wall}) {
+    const std::string n = k == pair ? "sphere_sphere" : "sphere_wall";
+    p.emplace_back(n + "_restitution", g(c.predicted(k).restitution));
+    p.emplace_back(n + "_contact_time_s", g(c.predicted(k).contact_time_s));
+    p.emplace_back(n + "_peak_force_N", g(c.predicted(k).peak_force_N));
+  }
+  return p;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> EngineExport::files() const {
+  return {{"sphere_sphere.in", pair_deck.text}, {"sphere_wall.in", wall_deck.text}, {"contact_lines.in", contact_lines}};
+}
+
+EngineExport export_engine_decks(const RunOptions& options, const PaperParameters& paper, Engine engine,
+                                 const std::string& model_key, int steps_per_contact) {
+  EngineExport e;
+  const DropTestSetup setup = resolve_setup(options, paper);  // the inputs' own checks first
+  e.model = &engine_model(engine, model_key, options.damping);
+  e.contact = make_engine_contact(setup, options.damping);
+  e.steps_per_contact = steps_per_contact;
+  const Parameters p = deck_parameters(e);
+  const std::string engine_name = to_string(engine);
+  e.pair_deck = engine_deck(*e.model, e.contact, pair, steps_per_contact,
+                            provenance_header(engine_name + " input deck: two spheres head-on (hertzdash export)", p));
+  e.wall_deck = engine_deck(*e.model, e.contact, wall, steps_per_contact,
+                            provenance_header(engine_name + " input deck: a sphere on a wall at z = 0 (hertzdash export)", p));
+  e.contact_lines = provenance_header(engine_name + " contact lines for an input of your own (hertzdash export)", p) +
+                    engine_contact_lines(*e.model, e.contact);
+  return e;
+}
+
+std::string export_text(const EngineExport& e) {
+  const EngineContact& c = e.contact;
+  std::string s = fmt::format("hertzdash export: {} model {} ({})\n", to_string(e.model->engine), e.model->key, e.model->syntax);
+  s += fmt::format("  equals       hertzdash law '{}': {}\n", c.law, e.model->relation);
+  s += fmt::format("  spheres      R = {:.6g} m, m = {:.6g} kg (rho = {:.6g} kg/m^3), E = {:.6g} Pa, nu = {:.6g}\n", c.radius_m,
+                   c.mass_kg, c.density_kg_per_m3(), c.sphere.E_Pa, c.sphere.nu);
+  s += fmt::format("  wall         E = {:.6g} Pa, nu = {:.6g}\n", c.wall.E_Pa, c.wall.nu);
+  s += fmt::format("  law          e = {:.6g}", c.restitution);
+  if (c.time_constant_s > 0) s += fmt::format(", A = {:.6g} s (calibrated on the spheres at {:.6g} m/s)", c.time_constant_s, c.speed_mps);
+  s += "\n";
+  s += fmt::format("  {:<14} {:>12} {:>14} {:>14} {:>14}\n", "impact", "speed_mps", "restitution", "contact_time_s",
+                   "peak_force_N");
+  for (EngineImpactKind k : {pair, wall}) {
+    const EngineImpactResult& r = c.predicted(k);
+    s += fmt::format("  {:<14} {:>12.6g} {:>14.9f} {:>14.6e} {:>14.6g}\n", to_string(k), c.speed_mps, r.restitution,
+                     r.contact_time_s, r.peak_force_N);
+  }
+  s += fmt::format("  timestep_s   {:.6g} (sphere-sphere), {:.6g} (sphere-wall): {} steps per contact\n", e.pair_deck.timestep_s,
+                   e.wall_deck.timestep_s, e.steps_per_contact);
+  return s;
+}
+
+nlohmann::ordered_json to_json(const EngineExport& e) {
+  const EngineContact& c = e.contact;
+  nlohmann::ordered_json j;
+  j["engine"] = to_string(e.model->engine);
+  j["engine_model"] = e.model->key;
+  j["hertzdash_law"] = c.law;
+  j["relation"] = e.model->relation;
+  j["restitution"] = c.restitution;
+  if (c.time_constant_s > 0) j["viscous_time_constant_s"] = c.time_constant_s;
+  j["speed_mps"] = c.speed_mps;
+  j["sphere_density_kg_per_m3"] = c.density_kg_per_m3();
+  j["steps_per_contact"] = e.steps_per_contact;
+  for (EngineImpactKind k : {pair, wall}) {
+    const EngineImpactResult& r = c.predicted(k);
+    const EngineDeck& d = k == pair ? e.pair_deck : e.wall_deck;
+    j["impacts"].push_back({{"impact", to_string(k)},
+                            {"deck", k == pair ? "sphere_sphere.in" : "sphere_wall.in"},
+                            {"restitution", r.restitution},
+                            {"contact_time_s", r.contact_time_s},
+                            {"peak_force_N", r.peak_force_N},
+                            {"timestep_s", d.timestep_s},
+                            {"steps", d.steps}});
+  }
+  j["git_revision"] = git_revision();
+  return j;
+}
+
+}  // namespace hertzdash

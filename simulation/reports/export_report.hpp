@@ -1,0 +1,35 @@
+#pragma once
+// `hertzdash export --engine E`: the decks of a contact for a discrete-element engine
+// (simulation/export/engine_models.hpp), with what hertzdash predicts each impact gives; its text
+// and JSON for every front end (docs/engines.md, docs/json-output.md).
+#include "hertzdash/io/provenance.hpp"
+#include "hertzdash/simulation/export/engine_models.hpp"
+#include "hertzdash/simulation/options/run_options.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hertzdash {
+
+struct EngineExport {
+  const EngineModel* model = nullptr;
+  EngineContact contact;
+  int steps_per_contact = 0;
+  EngineDeck pair_deck, wall_deck;
+  std::string contact_lines;  ///< the lines to paste, with their provenance header
+  /// The files to write into the output directory: (name, content).
+  std::vector<std::pair<std::string, std::string>> files() const;
+};
+
+/// Resolve the run options, find the engine's model equal to the law, calibrate, predict and
+/// write the decks' text. Throws InvalidParameter naming the option at fault.
+EngineExport export_engine_decks(const RunOptions& options, const PaperParameters& paper, Engine engine,
+                                 const std::string& model_key, int steps_per_contact);
+
+std::string export_text(const EngineExport& e);
+nlohmann::ordered_json to_json(const EngineExport& e);
+
+}  // namespace hertzdash
