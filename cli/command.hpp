@@ -51,6 +51,9 @@ Command add_basins_command(CLI::App& app);
 /// `hertzdash export`: a contact's input decks for a discrete-element engine (docs/engines.md).
 Command add_export_command(CLI::App& app);
 
+/// `hertzdash conformance`: an installed engine's models against the laws they equal.
+Command add_conformance_command(CLI::App& app);
+
 /// `hertzdash sweep`: the runs of a case file, one CSV row each; threads, or MPI processes.
 Command add_sweep_command(CLI::App& app);
 

@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
   commands.push_back(hertzdash::cli::add_basins_command(app));
   commands.push_back(hertzdash::cli::add_fit_command(app));
   commands.push_back(hertzdash::cli::add_export_command(app));
+  commands.push_back(hertzdash::cli::add_conformance_command(app));
   commands.push_back(hertzdash::cli::add_sweep_command(app));
 
   try {

@@ -176,7 +176,7 @@ TEST_CASE("CLI: an unknown or missing subcommand exits 2 and lists the subcomman
   // Issue 19: `hertzdash frobnicate` said "A subcommand is required".
   const std::string listed =
       "simulate, models, parameters, restitution, bounce, shaker, walls, oscillator, orbit, continue, lyapunov, basins, fit, export, "
-      "sweep "
+      "conformance, sweep "
       "(hertzdash --help)";
   const auto unknown = run_cli("frobnicate --mass 1");
   CHECK(unknown.exit_code == 2);
@@ -256,6 +256,7 @@ TEST_CASE("CLI: every numeric option of every subcommand refuses text that is no
       {"fit", "--trace " + trace + " --curves " + out},
       {"sweep", (dir.path / "case.toml").string() + " --quiet --out " + out},
       {"export", "--engine lammps --out " + dir.path.string()},
+      {"conformance", "--engine lammps"},
   };
   // The options that apply only with another: given with it, so that the refusal is theirs.
   const std::map<std::string, std::string> context{

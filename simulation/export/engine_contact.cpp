@@ -54,6 +54,16 @@ EngineImpactResult predict(ImpactSimulator& simulator, const DropTestSetup& s, c
   return {r.e_effective, r.contact_time_s, r.peak_force_N};
 }
 
+void predict_impacts(EngineContact& c) {
+  SolverSettings accurate;
+  accurate.integrator = IntegratorKind::gbs8_regularized;
+  accurate.rtol = 1e-10;
+  accurate.atol = 1e-10;
+  ImpactSimulator simulator(accurate);
+  c.pair = predict(simulator, engine_impact_setup(c, EngineImpactKind::sphere_sphere), c.law);
+  c.on_wall = predict(simulator, engine_impact_setup(c, EngineImpactKind::sphere_wall), c.law);
+}
+
 }  // namespace
 
 EngineContact make_engine_contact(const DropTestSetup& setup, const std::string& law) {
@@ -66,19 +76,20 @@ EngineContact make_engine_contact(const DropTestSetup& setup, const std::string&
   c.restitution = setup.restitution;
   c.speed_mps = approach_speed(setup);
   c.damping = setup.damping;
-  DropTestSetup pair = engine_impact_setup(c, EngineImpactKind::sphere_sphere);
   if (const auto calibrate = law_runs(law).calibrated_time_constant) {
+    DropTestSetup pair = engine_impact_setup(c, EngineImpactKind::sphere_sphere);
     if (!pair.damping.viscous_time_constant_s) pair = calibrate(pair);
     c.time_constant_s = *pair.damping.viscous_time_constant_s;
   }
-  SolverSettings accurate;
-  accurate.integrator = IntegratorKind::gbs8_regularized;
-  accurate.rtol = 1e-10;
-  accurate.atol = 1e-10;
-  ImpactSimulator simulator(accurate);
-  c.pair = predict(simulator, pair, law);
-  c.on_wall = predict(simulator, engine_impact_setup(c, EngineImpactKind::sphere_wall), law);
+  predict_impacts(c);
   return c;
+}
+
+EngineContact at_speed(const EngineContact& c, double speed_mps) {
+  EngineContact out = c;
+  out.speed_mps = speed_mps;
+  predict_impacts(out);
+  return out;
 }
 
 }  // namespace hertzdash

@@ -55,6 +55,10 @@ struct EngineContact {
 /// rtol 1e-10). Throws InvalidParameter as the set-up's own checks do.
 EngineContact make_engine_contact(const DropTestSetup& setup, const std::string& law);
 
+/// The same contact at another approach speed, its constants kept (kuwabara-kono's A is the
+/// material's), both impacts predicted again.
+EngineContact at_speed(const EngineContact& c, double speed_mps);
+
 /// The hertzdash set-up of one impact of the contact (its contact phase: no gravity).
 DropTestSetup engine_impact_setup(const EngineContact& c, EngineImpactKind k);
 

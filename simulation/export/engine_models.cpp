@@ -99,15 +99,24 @@ std::string liggghts_hertz_wall(const EngineContact&) {
   return "fix wall all wall/gran model hertz tangential history primitive type 2 zplane 0.0\n";
 }
 
+EngineCoefficient viscoelastic_input(const EngineContact& c, EngineImpactKind k) {
+  return {"eta_n0 [1/(m s)]", viscoelastic_eta(c, k)};
+}
+EngineCoefficient tsuji_input(const EngineContact& c, EngineImpactKind) {
+  return {"e_L (damping tsuji)", tsuji_engine_restitution_input(c.restitution)};
+}
+EngineCoefficient liggghts_input(const EngineContact& c, EngineImpactKind) { return {"coefficientRestitution", c.restitution}; }
+double same_restitution(double e) { return e; }
+
 constexpr EngineModel models[] = {
     {Engine::lammps, "granular-viscoelastic", "pair_style granular, hertz/material, damping viscoelastic",
      "kuwabara-kono", "equal: eta_n0 = 4 E* A / (3 m*) (A kuwabara-kono's material time constant)",
-     lammps_viscoelastic_pair, lammps_viscoelastic_wall},
+     lammps_viscoelastic_pair, lammps_viscoelastic_wall, viscoelastic_input, nullptr},
     {Engine::lammps, "granular-tsuji", "pair_style granular, hertz/material, damping tsuji", "tsuji-dem",
      "equal: the engine's alpha(e_L) = sqrt(5) zeta(e); e_L is not e (the engine's polynomial fit)",
-     lammps_tsuji_pair, lammps_tsuji_wall},
+     lammps_tsuji_pair, lammps_tsuji_wall, tsuji_input, lammps_tsuji_restitution},
     {Engine::liggghts, "hertz", "pair_style gran model hertz (coefficientRestitution)", "tsuji-dem",
-     "equal: coefficientRestitution = e", liggghts_hertz_pair, liggghts_hertz_wall},
+     "equal: coefficientRestitution = e", liggghts_hertz_pair, liggghts_hertz_wall, liggghts_input, same_restitution},
 };
 
 std::string engine_laws(Engine engine) {

@@ -34,6 +34,12 @@ Engine parse_engine(std::string_view name);
 /// The engine's program, looked up on PATH: lmp, liggghts.
 const char* engine_program(Engine e);
 
+/// The engine's damping input of one impact: its name in the engine and its value.
+struct EngineCoefficient {
+  std::string_view name;
+  double value;
+};
+
 struct EngineModel {
   Engine engine;
   std::string_view key;       ///< --engine-model: "granular-viscoelastic"
@@ -43,6 +49,12 @@ struct EngineModel {
   /// The deck's lines of the model for the spheres (pair) and for the wall at z = 0.
   std::string (*pair_lines)(const EngineContact&);
   std::string (*wall_lines)(const EngineContact&);
+  /// The damping input the deck gives the engine for the impact (the inverse calibration: what
+  /// gives the law's e at the contact's speed).
+  EngineCoefficient (*damping_input)(const EngineContact&, EngineImpactKind);
+  /// For a model whose damping input is a restitution: the law's e when that input is set to e
+  /// itself (what a user who types their e in gets); nullptr for a model whose input is not one.
+  double (*restitution_given_input)(double e);
 };
 
 /// Every registered engine model, engine by engine.

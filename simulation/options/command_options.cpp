@@ -124,27 +124,32 @@ constexpr ParameterDecl basins[] = {
     {.key = "threads", .range = R::integer(0, 4096), .default_value = "0", .default_number = 0,
      .default_source = "the machine's cores", .help = "Threads (the result does not depend on them)"},
     json, file("csv", "Write the grid to this CSV file, one row per start, the attractors as comments"), mkdir};
-// `hertzdash export` (simulation/export/engine_models.hpp, docs/engines.md).
+// `hertzdash export` and `hertzdash conformance` (simulation/export/, docs/engines.md).
+constexpr ParameterDecl engine{.key = "engine", .type = T::text, .choices = "lammps, liggghts", .default_value = "none",
+                               .help = "The discrete-element engine (required)"};
+constexpr ParameterDecl steps_per_contact{
+    .key = "steps-per-contact", .range = R::integer(10, 10000000), .default_value = "1000", .default_number = 1000,
+    .default_source = "chosen: the engines' e within 0.15 N^-(1+p) of the law's, 5e-6 (kuwabara-kono) and 3e-5 "
+                      "(tsuji-dem) (docs/engines.md)",
+    .help = "Time steps per predicted contact time: the decks' time step"};
 constexpr ParameterDecl export_decks[] = {
-    {.key = "engine", .type = T::text, .choices = "lammps, liggghts", .default_value = "none",
-     .help = "The engine whose input decks to write (required)"},
+    engine,
     {.key = "engine-model", .type = T::text, .choices = "granular-viscoelastic, granular-tsuji (lammps); hertz (liggghts)",
      .default_value = "the engine's model equal to --damping", .default_source = "computed",
      .help = "The engine's contact model; it must equal the law --damping names"},
     {.key = "out", .type = T::text, .choices = "a directory", .default_value = "none",
      .help = "Directory of the decks (required): sphere_sphere.in, sphere_wall.in and contact_lines.in"},
-    {.key = "steps-per-contact", .range = R::integer(10, 10000000), .default_value = "1000", .default_number = 1000,
-     .default_source = "chosen: the engines' e within 0.15 N^-(1+p) of the law's, 5e-6 (kuwabara-kono) and 3e-5 "
-                       "(tsuji-dem) (docs/engines.md)",
-     .help = "Time steps per predicted contact time: the decks' time step"},
+    steps_per_contact,
     json, mkdir};
+constexpr ParameterDecl conformance[] = {engine, steps_per_contact, json};
 constexpr ParameterDecl models[] = {{.key = "json", .type = T::flag, .default_value = "off", .help = "Print the list as a JSON array"}};
 
 constexpr CommandOptions table[] = {
     {"simulate", simulate}, {"models", models},       {"restitution", restitution},
     {"bounce", bounce},     {"RIG", rig},             {"fit", {}},
     {"orbit", orbit},       {"continue", continuation}, {"lyapunov", lyapunov},
-    {"basins", basins},     {"sweep", sweep},         {"export", export_decks}};
+    {"basins", basins},     {"sweep", sweep},         {"export", export_decks},
+    {"conformance", conformance}};
 
 }  // namespace
 

@@ -1,5 +1,7 @@
-// `hertzdash export` (simulation/reports/export_report.hpp).
+// `hertzdash export` and `hertzdash conformance` (simulation/reports/export_report.hpp).
 #include "hertzdash/simulation/reports/export_report.hpp"
+
+#include "hertzdash/simulation/reports/report_json.hpp"
 
 #include <fmt/format.h>
 
@@ -106,6 +108,61 @@ nlohmann::ordered_json to_json(const EngineExport& e) {
                             {"timestep_s", d.timestep_s},
                             {"steps", d.steps}});
   }
+  j["git_revision"] = git_revision();
+  return j;
+}
+
+EngineConformance run_engine_conformance(const RunOptions& options, const PaperParameters& paper, Engine engine,
+                                         int steps_per_contact) {
+  const DropTestSetup setup = resolve_setup(options, paper);  // the inputs' own checks first
+  if (options.damping != default_damping_law)
+    throw InvalidParameter("damping", options.damping,
+                           "omitted: conformance runs every model of the engine with the law it equals");
+  return {engine, approach_speed(setup), steps_per_contact, engine_conformance(engine, setup, steps_per_contact)};
+}
+
+std::string conformance_text(const EngineConformance& c) {
+  std::string s = fmt::format(
+      "hertzdash conformance: {}, each model against the law it equals, calibrated at {:.6g} m/s; {} and {} steps per "
+      "contact\n",
+      to_string(c.engine), c.reference_speed_mps, c.steps_per_contact, c.steps_per_contact / 2);
+  s += fmt::format("  {:<22} {:<14} {:<13} {:>9} {:>8} {:>12} {:>12} {:>10} {:>6} {:>12}  {}\n", "engine_model",
+                   "hertzdash_law", "impact", "speed_mps", "e_asked", "e_hertzdash", "e_engine", "|de|", "order", "e_typed_in",
+                   "engine input");
+  for (const ConformanceRow& r : c.rows)
+    s += fmt::format("  {:<22} {:<14} {:<13} {:>9.4g} {:>8.4g} {:>12.9f} {:>12.9f} {:>10.3e} {:>6.3f} {:>12}  {} = {:.6g}\n",
+                     r.engine_model, r.hertzdash_law, to_string(r.impact), r.speed_mps, r.e_asked, r.hertzdash.restitution,
+                     r.engine.restitution, std::abs(r.engine.restitution - r.hertzdash.restitution), r.observed_order,
+                     std::isnan(r.e_engine_given_e_asked) ? std::string("-") : fmt::format("{:.6f}", r.e_engine_given_e_asked),
+                     r.engine_input.name, r.engine_input.value);
+  s += "  e_typed_in: the engine's e with e_asked typed in as its damping input (where that input is a restitution)\n";
+  return s;
+}
+
+nlohmann::ordered_json to_json(const EngineConformance& c) {
+  nlohmann::ordered_json j;
+  j["engine"] = to_string(c.engine);
+  j["reference_speed_mps"] = c.reference_speed_mps;
+  j["steps_per_contact"] = c.steps_per_contact;
+  j["rows"] = nlohmann::ordered_json::array();
+  for (const ConformanceRow& r : c.rows)
+    j["rows"].push_back({{"engine_model", r.engine_model},
+                         {"hertzdash_law", r.hertzdash_law},
+                         {"impact", to_string(r.impact)},
+                         {"speed_mps", r.speed_mps},
+                         {"e_asked", r.e_asked},
+                         {"e_hertzdash", r.hertzdash.restitution},
+                         {"e_engine", r.engine.restitution},
+                         {"e_engine_half_steps", r.e_engine_half_steps},
+                         {"observed_order", r.observed_order},
+                         {"e_engine_given_e_asked", report_detail::number_or_null(r.e_engine_given_e_asked)},
+                         {"e_hertzdash_given_e_asked", report_detail::number_or_null(r.e_hertzdash_given_e_asked)},
+                         {"engine_input", {{"name", r.engine_input.name}, {"value", r.engine_input.value}}},
+                         {"contact_time_s", r.hertzdash.contact_time_s},
+                         {"contact_time_engine_s", r.engine.contact_time_s},
+                         {"peak_force_N", r.hertzdash.peak_force_N},
+                         {"peak_force_engine_N", r.engine.peak_force_N},
+                         {"timestep_s", r.timestep_s}});
   j["git_revision"] = git_revision();
   return j;
 }

@@ -3,6 +3,7 @@
 // (simulation/export/engine_models.hpp), with what hertzdash predicts each impact gives; its text
 // and JSON for every front end (docs/engines.md, docs/json-output.md).
 #include "hertzdash/io/provenance.hpp"
+#include "hertzdash/simulation/export/engine_conformance.hpp"
 #include "hertzdash/simulation/export/engine_models.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 
@@ -31,5 +32,20 @@ EngineExport export_engine_decks(const RunOptions& options, const PaperParameter
 
 std::string export_text(const EngineExport& e);
 nlohmann::ordered_json to_json(const EngineExport& e);
+
+/// `hertzdash conformance --engine E`: every model of the engine against the law it equals.
+struct EngineConformance {
+  Engine engine = Engine::lammps;
+  double reference_speed_mps = 0;  ///< where each law is calibrated to the asked e
+  int steps_per_contact = 0;
+  std::vector<ConformanceRow> rows;
+};
+
+/// Resolve the run options (the bodies, e and the reference speed; `damping` is refused: every
+/// model runs with the law it equals) and run the engine.
+EngineConformance run_engine_conformance(const RunOptions& options, const PaperParameters& paper, Engine engine,
+                                         int steps_per_contact);
+std::string conformance_text(const EngineConformance& c);
+nlohmann::ordered_json to_json(const EngineConformance& c);
 
 }  // namespace hertzdash
