@@ -1,0 +1,139 @@
+// A granular gas run by LAMMPS against Haff's law (simulation/export/granular_gas.hpp).
+#include "hertzdash/simulation/export/granular_gas.hpp"
+
+#include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <numbers>
+#include <spawn.h>
+#include <sstream>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace hertzdash {
+
+namespace {
+
+constexpr double boltzmann_J_per_K = 1.380649e-23;  // LAMMPS's si units take temperatures in K
+constexpr double pi = std::numbers::pi;
+
+/// The undamped contact time of two of the spheres colliding at relative speed v_rel.
+double pair_contact_time_s(const GranularGas& g, double relative_speed_mps) {
+  const double K = hertz_stiffness(g.diameter_m / 4, g.material, g.material);  // R* = R/2
+  return undamped_hertz_impact(K, g.mass_kg() / 2, relative_speed_mps).contact_time_s;
+}
+
+}  // namespace
+
+double GranularGas::mass_kg() const { return density_kg_per_m3 * pi * diameter_m * diameter_m * diameter_m / 6; }
+
+double GranularGas::box_side_m() const {
+  return particles_per_side * diameter_m * std::cbrt(pi / (6 * volume_fraction));
+}
+
+double GranularGas::number_density_per_m3() const { return particles() / std::pow(box_side_m(), 3); }
+
+double GranularGas::contact_correlation() const {
+  const double phi = volume_fraction;
+  return (1 - phi / 2) / std::pow(1 - phi, 3);
+}
+
+double GranularGas::cooling_coefficient() const {
+  return 4.0 / 3.0 * std::sqrt(pi / mass_kg()) * number_density_per_m3() * diameter_m * diameter_m * contact_correlation() *
+         (1 - restitution * restitution);
+}
+
+double GranularGas::haff_time_s(double temperature_J) const { return 2 / (cooling_coefficient() * std::sqrt(temperature_J)); }
+
+double GranularGas::initial_temperature_J() const { return mass_kg() * thermal_speed_mps * thermal_speed_mps; }
+
+std::string granular_gas_deck(const GranularGas& g) {
+  const double spacing = g.diameter_m * std::cbrt(pi / (6 * g.volume_fraction));
+  // The typical relative speed of two particles: sqrt(2) times the thermal speed per component, sqrt(3) over three.
+  const double dt = pair_contact_time_s(g, std::sqrt(6.0) * g.thermal_speed_mps) / g.steps_per_contact;
+  const long steps = std::lround(g.duration_haff_times * g.haff_time_s(g.initial_temperature_J()) / dt);
+  const auto n = [](double x) { return fmt::format("{}", x); };
+  std::string s;
+  s += "units si\natom_style sphere\natom_modify map array\nboundary p p p\ncomm_modify vel yes\n";
+  s += fmt::format("lattice custom {} a1 1 0 0 a2 0 1 0 a3 0 0 1 basis 0.5 0.5 0.5\n", n(spacing));
+  s += fmt::format("region box block 0 {0} 0 {0} 0 {0}\ncreate_box 1 box\ncreate_atoms 1 box\n", g.particles_per_side);
+  s += fmt::format("set atom * diameter {}\nset atom * density {}\n", n(g.diameter_m), n(g.density_kg_per_m3));
+  s += fmt::format("velocity all create {} {} dist gaussian mom yes\n", n(g.initial_temperature_J() / boltzmann_J_per_K), g.seed);
+  s += fmt::format("pair_style granular\npair_coeff * * hertz/material {} {} {} damping tsuji tangential linear_nohistory 0 0\n",
+                   n(g.material.E_Pa), n(tsuji_engine_restitution_input(g.restitution)), n(g.material.nu));
+  s += fmt::format("neighbor {} bin\nneigh_modify delay 0 every 1 check yes\nfix integrate all nve/sphere\n", n(g.diameter_m / 2));
+  s += fmt::format("timestep {}\nthermo_style custom step time ke\nthermo_modify norm no\nthermo {}\nrun {}\n", n(dt),
+                   std::max(1L, steps / 300), steps);
+  return s;
+}
+
+std::vector<TemperatureSample> run_granular_gas(const GranularGas& gas, int ranks, const std::filesystem::path& directory) {
+  { std::ofstream(directory / "in.gas") << granular_gas_deck(gas); }
+  const std::filesystem::path screen = directory / "gas.out";
+  std::vector<std::string> args;
+  if (ranks > 1) args = {"mpirun", "--allow-run-as-root", "--oversubscribe", "-n", std::to_string(ranks)};
+  for (const char* a : {"lmp", "-in", "in.gas", "-log", "none"}) args.emplace_back(a);
+  posix_spawn_file_actions_t actions;
+  if (posix_spawn_file_actions_init(&actions) != 0 ||
+      posix_spawn_file_actions_addchdir_np(&actions, directory.c_str()) != 0 ||
+      posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, screen.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600) != 0 ||
+      posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO) != 0)
+    throw std::runtime_error("cannot prepare LAMMPS's output in " + directory.string());
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) throw std::runtime_error(fmt::format("cannot run {}: {}", args[0], std::strerror(spawned)));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw std::runtime_error("waiting for LAMMPS failed");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error(fmt::format("LAMMPS failed on the granular gas (exit status {}): see {}", status, screen.string()));
+  std::ifstream in(screen);
+  std::vector<TemperatureSample> out;
+  bool thermo = false;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string first;
+    words >> first;
+    if (first == "Step") thermo = true;
+    else if (first == "Loop") thermo = false;
+    else if (thermo) {
+      double t = 0, ke = 0;
+      if (words >> t >> ke) out.push_back({t, 2 * ke / (3.0 * gas.particles())});
+    }
+  }
+  if (out.size() < 10) throw std::runtime_error("LAMMPS printed no temperature history: see " + screen.string());
+  return out;
+}
+
+HaffFit fit_haff_exponent(const GranularGas& gas, const std::vector<TemperatureSample>& samples) {
+  const double t_start = 0.5 * gas.haff_time_s(gas.initial_temperature_J());
+  std::size_t i1 = 0;
+  while (i1 < samples.size() && samples[i1].time_s < t_start) ++i1;
+  if (i1 + 2 >= samples.size()) throw std::runtime_error("the granular gas ran for less than half a Haff time");
+  HaffFit f{samples[i1].time_s, samples[i1].temperature_J, gas.haff_time_s(samples[i1].temperature_J), 0};
+  // log(T/T1) = -a log(1 + (t - t1)/tau): a line through the origin.
+  double xy = 0, xx = 0;
+  for (std::size_t i = i1; i < samples.size(); ++i) {
+    const double x = std::log1p((samples[i].time_s - f.t1_s) / f.tau_s), y = std::log(samples[i].temperature_J / f.T1_J);
+    xy += x * y;
+    xx += x * x;
+  }
+  f.exponent = -xy / xx;
+  return f;
+}
+
+}  // namespace hertzdash
