@@ -9,10 +9,12 @@ namespace hertzdash::cli {
 
 namespace {
 
-/// The heading an option is listed under in --help, from what reads it: the law's inputs, the
-/// elastic rod's, the solver's, and the drop test's.
+/// The heading an option is listed under in --help, from what reads it: the laws' inputs (those
+/// of one law apart, a group --help folds into one line when it runs long), the elastic rod's,
+/// the solver's, and the drop test's.
 const char* help_group(const RunOption& o) {
   if (o.group == RunOption::Group::solver) return "Solver";
+  if (o.readers.laws.size() == 1) return "Inputs of one law (--damping LAW)";
   if (!o.readers.laws.empty() || o.name == "damping") return "Damping law";
   if (o.readers.elastic_rod || o.name == "rod-model") return "Elastic rod and load cell (--rod-model elastic)";
   return "Drop test";

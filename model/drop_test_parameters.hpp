@@ -28,6 +28,11 @@ inline constexpr ParameterDecl mass{
     .default_source = "the paper's Table 1 (the rod's mass)",
     .help = "Mass of the falling body [kg]: the paper's rod, or a dropped ball",
     .fittable = true};
+inline constexpr ParameterDecl density{
+    .key = "density", .unit = "kg/m^3", .column_unit = "kg_per_m3", .range = R::positive(), .default_value = "none",
+    .default_source = "not used: the falling body's mass is `mass` unless this is given",
+    .help = "Density of a dropped ball [kg/m^3], instead of `mass`: the falling body is the sphere, of mass (4/3) pi "
+            "R^3 rho (R `ball-radius`)"};
 inline constexpr ParameterDecl restitution{
     .key = "restitution", .range = R::open_closed(0, 1), .default_value = "Table 2",
     .default_source = "the paper's Table 2 (measured from bounce intervals)",
@@ -47,7 +52,9 @@ inline constexpr ParameterDecl ball_radius{
     .fittable = true};
 inline constexpr ParameterDecl ball_yield_stress{
     .key = "ball-yield-stress", .unit = "Pa", .column_unit = "Pa", .range = R::positive_or_infinite(),
-    .default_value = "7.0e7", .default_source = "assumed, unfilled nylon datasheets (data/assumptions.csv)",
+    .default_value = "7.0e7", .default_source = "assumed, unfilled nylon datasheets (data/assumptions.csv), for the paper's "
+                                                "hemisphere only: inf (no check) for a sphere of the user's own (`ball-E`, `ball-nu` and "
+                                                "`ball-radius` all given, or `density`)",
     .help = "Yield stress Y of the sphere [Pa]; a Hertz peak pressure above the onset of yield (Y times a factor "
             "of `ball-nu`, Johnson; model/hertz.hpp) is flagged; inf: no check"};
 inline constexpr ParameterDecl rod_E{
@@ -69,7 +76,7 @@ inline constexpr ParameterDecl no_tension{
     .help = "Clamp the contact force at >= 0; contact ends where it reaches zero"};
 
 /// The drop test's inputs, in the order of the options.
-inline constexpr ParameterDecl all[] = {height, impact_velocity, mass,   restitution, ball_E,    ball_nu,
+inline constexpr ParameterDecl all[] = {height, impact_velocity, mass,   density, restitution, ball_E,    ball_nu,
                                         ball_radius, ball_yield_stress, rod_E, rod_nu, gravity, no_tension};
 
 }  // namespace hertzdash::drop_test_parameters

@@ -61,7 +61,7 @@ inline void set_sample(RunOptions& options, const RunOption& o) {
                                                  {"max-step", 1e-5},          {"viscous-time-constant", 1e-6},
                                                  {"linear-stiffness", 1e6},   {"rod-damping-ratio", 0.01},
                                                  {"cell-damping-ratio", 0.05}, {"air-density", 1.2},
-                                                 {"drag-coefficient", 0.5}};
+                                                 {"drag-coefficient", 0.5}, {"density", 7800}};
   const auto it = by_meaning.find(o.name);
   if (it == by_meaning.end()) FAIL("no sample value for " << o.name);
   set_number(options, o, it->second);

@@ -142,8 +142,11 @@ TEST_CASE("a command's help fits a screen: one short line per option, the long f
     // --mass's declaration: "Mass of the falling body [kg]: the paper's rod, or a dropped ball; a
     // finite number > 0 (kg) (default: Table 1; the paper's Table 1 (the rod's mass))".
     CHECK(r.out.find("Mass of the falling body [kg] (default: Table 1)\n") != std::string::npos);
-    // A text option's valid values stay: "(one of: paper, exact)".
-    CHECK(r.out.find("Damping ratio from e (one of: paper, exact) (default: paper)\n") != std::string::npos);
+    // A text option's valid values stay: "(one of: steel, ...)"; a long list is counted.
+    CHECK(r.out.find("(one of: steel, duralumin-a, duralumin-b, duralumin-c) (default: steel)\n") != std::string::npos);
+    CHECK(r.out.find("Damping law (see `hertzdash models`) (one of 14 values) (default: hongo)\n") != std::string::npos);
+    // The inputs of one law are folded into one line of names when the help runs long.
+    CHECK(r.out.find("Inputs of one law (--damping LAW): --zeta TEXT, --omega-n TEXT") != std::string::npos);
   }
   // The parameters command prints the long form the footer points to.
   const test::CliResult full = test::run_cli("parameters");

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -164,6 +165,7 @@ std::vector<RunOption> make_run_options() {
              [](Setup s, Solver) -> Text { return s.impact_velocity_mps ? Text() : Text(number_text(s.height_m)); }),
       option(p::impact_velocity, &R::impact_velocity_mps, G::setup, {}, [](Setup s) -> V { return approach_speed(s); }),
       option(p::mass, &R::mass_kg, G::setup, {}, [](Setup s) -> V { return s.mass_kg; }),
+      described(p::density, &R::density_kg_per_m3, G::setup, {}, [](Setup, Solver) -> Text { return Text(); }),
       option(p::restitution, &R::restitution, G::setup, {.laws = dissipative_law_names()},
              [](Setup s) -> V { return s.restitution; }),
       option(p::ball_E, &R::ball_E_Pa, G::setup, {}, [](Setup s) -> V { return s.ball.E_Pa; }),
@@ -466,7 +468,23 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   if (o.ball_E_Pa) s.ball.E_Pa = *o.ball_E_Pa;
   if (o.ball_nu) s.ball.nu = *o.ball_nu;
   if (o.ball_radius_m) s.ball_radius_m = *o.ball_radius_m;
+  if (o.density_kg_per_m3) {  // a dropped ball: the sphere falls
+    if (o.mass_kg)
+      throw InvalidParameter("density", format_value(*o.density_kg_per_m3),
+                             "omitted when `mass` is given (the density gives the ball's mass)");
+    s.mass_kg = 4.0 / 3.0 * std::numbers::pi * std::pow(s.ball_radius_m, 3) * *o.density_kg_per_m3;
+  }
+  // The default yield stress is the paper's nylon hemisphere's. A sphere whose modulus, Poisson
+  // ratio and radius are all given, or a dropped ball (`density`), is a body of the user's own,
+  // checked only against a yield stress the user gives. (One or two of them alone are the
+  // hemisphere's, as a fit of its modulus or radius gives.)
+  if ((o.ball_E_Pa && o.ball_nu && o.ball_radius_m) || o.density_kg_per_m3) s.ball_yield_stress_Pa = INFINITY;
   if (o.ball_yield_stress_Pa) s.ball_yield_stress_Pa = *o.ball_yield_stress_Pa;
+  // The rod preset supplies the mass, the flat's material and e: with all of them given it
+  // supplies nothing, and the run names no rod.
+  if ((o.mass_kg || o.density_kg_per_m3) && o.rod_E_Pa && o.rod_nu && (o.restitution || o.viscous_time_constant_s) &&
+      o.rod_model == "rigid")
+    s.rod_preset.clear();
   if (o.rod_E_Pa) s.rod.E_Pa = *o.rod_E_Pa;
   if (o.rod_nu) s.rod.nu = *o.rod_nu;
   if (o.gravity_mps2) s.gravity_mps2 = *o.gravity_mps2;
@@ -489,7 +507,8 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   const bool law_reads_e = !o.viscous_time_constant_s &&
                            std::find(reading_e.begin(), reading_e.end(), o.damping) != reading_e.end();
   s.restitution_of_other_pair = law_reads_e && !o.restitution &&
-                                (o.mass_kg || o.ball_E_Pa || o.ball_nu || o.ball_radius_m || o.rod_E_Pa || o.rod_nu);
+                                (o.mass_kg || o.density_kg_per_m3 || o.ball_E_Pa || o.ball_nu || o.ball_radius_m ||
+                                 o.rod_E_Pa || o.rod_nu);
   s.elastic_rod = resolve_elastic_rod(o, paper);
   try {
     validate(s);

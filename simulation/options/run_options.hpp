@@ -37,6 +37,7 @@ struct RunOptions {
   std::optional<double> height_m;                ///< drop height h [m] (unset: default_height_m)
   std::optional<double> impact_velocity_mps;     ///< approach speed at onset [m/s]; overrides height_m
   std::optional<double> mass_kg;                 ///< rod mass [kg]
+  std::optional<double> density_kg_per_m3;       ///< a dropped ball's density [kg/m^3], instead of mass_kg
   std::optional<double> restitution;             ///< input e in (0, 1]
   std::optional<double> ball_E_Pa, ball_nu;      ///< hemisphere modulus [Pa], Poisson ratio
   std::optional<double> ball_radius_m;           ///< hemisphere radius [m]
