@@ -49,6 +49,19 @@ TEST_CASE("CLI restitution: Kelvin-Voigt returns its input e, calibration invert
   CHECK(std::abs(nlohmann::json::parse(fwd.out)["e_effective"].get<double>() - 0.795) < 2e-6);
 }
 
+TEST_CASE("CLI restitution: the law's calibrated constants are reported, Hunt-Crossley's chi as its closed form",
+          "[cli][damping]") {
+  // Hunt-Crossley: chi = 3 (1 - e) / (2 v0) = 3 x 0.5 / 2 = 0.75 s/m at e = 0.5, v0 = 1 m/s; its
+  // damping coefficient K chi. The text output's `law` line carries the same.
+  const auto r = run_cli("restitution --damping hunt-crossley --restitution 0.5 --impact-velocity 1 --json");
+  REQUIRE(r.exit_code == 0);
+  const auto c = nlohmann::json::parse(r.out)["law_coefficients"];
+  CHECK(c["chi_s_per_m"].get<double>() == Approx(0.75).epsilon(1e-15));
+  CHECK(c["damping_coefficient_N_s_per_m_2_5"].get<double>() > 0);
+  CHECK_THAT(run_cli("restitution --damping hunt-crossley --restitution 0.5 --impact-velocity 1").out,
+             Catch::Contains("  law          chi_s_per_m 0.75, damping_coefficient_N_s_per_m_2_5 "));
+}
+
 TEST_CASE("CLI restitution: bad input exits 2 naming the parameter", "[cli][damping]") {
   const auto unknown = run_cli("restitution --damping no-such-law --json");
   CHECK(unknown.exit_code == 2);

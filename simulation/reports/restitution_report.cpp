@@ -78,6 +78,9 @@ nlohmann::ordered_json to_json(const RestitutionRun& run) {
   j["e_effective"] = run.e_effective;
   if (run.iterations) j["iterations"] = *run.iterations;
   j["integrator_used"] = to_string(run.integrator_used);
+  // The law's constants at e_input (kuwabara-kono's A, hunt-crossley's chi, the paper's c_e, ...).
+  j["law_coefficients"] = nlohmann::ordered_json::object();
+  for (const NamedValue& c : run.summary.law_coefficients) j["law_coefficients"][c.name] = c.value;
   j["warnings"] = to_json(run_diagnostics(run));
   j["git_revision"] = git_revision();
   return j;
