@@ -113,10 +113,15 @@ void print_fit(const FitRun& r, const FitResult& f) {
                                bounce ? "timing sigma" : trace ? "standardized noise" : "data's scatter", cv.scatter, unit);
     else std::cout << fmt::format("  cross-validation failed: {}\n", cv.failure);
   }
-  if (trace)
+  if (trace) {
     std::cout << fmt::format("  {} iterations, {} model runs, stopped: {}; fitted contact time {:.6g} s\n", f.iterations,
                              f.model_runs, f.stop_reason, f.model_impact ? f.model_impact->contact_time_s : NAN);
-  else
+    std::string constants;  // the fitted law's, as `simulate` and `restitution` give them
+    if (f.model_impact)
+      for (const NamedValue& c : f.model_impact->law_coefficients)
+        constants += fmt::format("{}{} {:.6g}", constants.empty() ? "" : ", ", c.name, c.value);
+    if (!constants.empty()) std::cout << "  law          " << constants << "\n";
+  } else
     std::cout << fmt::format("  {} iterations, {} model runs ({}), stopped: {}\n", f.iterations, f.model_runs,
                              f.integrator_used, f.stop_reason);
   if (f.failed) std::cout << fmt::format("  FIT FAILED: {}\n", f.failure);

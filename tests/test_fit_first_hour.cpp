@@ -252,3 +252,26 @@ TEST_CASE("the README's first screen shows a ball on a plate and links the user'
   CHECK(first_screen.find("ball on a plate") != std::string::npos);
   CHECK(readme.find("pandas.read_csv(f, comment='#')") != std::string::npos);
 }
+
+TEST_CASE("a trace's fit reports its law's constants: those simulate gives at the fitted inputs", "[fit][first_hour]") {
+  // `fit` reported the fitted ball-E and e, but the paper's c_e (or kuwabara-kono's A) only by a
+  // second run of simulate. Now law_coefficients is the run at the estimate's: the same numbers
+  // simulate prints for fitted_inputs (to the JSON's 17 digits, the same run).
+  const ScratchDir dir;
+  const std::string trace = (dir.path / "m.csv").string();
+  REQUIRE(run_cli("simulate --trace-format measured --integrator rk4 --dt 5e-7 --trace " + trace).exit_code == 0);
+  const CliResult r = run_cli("fit --json --trace " + trace);
+  REQUIRE(r.exit_code == 0);
+  const auto fit = nlohmann::json::parse(r.out)["fits"][0];
+  const auto& constants = fit["law_coefficients"];
+  REQUIRE(constants.contains("c_e_coefficient_N_s_per_m_1_5"));
+  const auto& in = fit["fitted_inputs"];
+  const CliResult again = run_cli(fmt::format("simulate --json --ball-E {:.17g} --restitution {:.17g}",
+                                              in["ball_E_Pa"].get<double>(), in["restitution"].get<double>()));
+  REQUIRE(again.exit_code == 0);
+  const auto simulated = nlohmann::json::parse(again.out)["law_coefficients"];
+  for (const auto& [name, value] : constants.items()) {
+    INFO(name);
+    CHECK(value.get<double>() == Approx(simulated[name].get<double>()).epsilon(1e-12));
+  }
+}

@@ -127,6 +127,10 @@ json fit_json(const FitRun& run, const FitResult& f, const PaperParameters& pape
   if (trace) {
     j["work"] = f.work;
     j["contact_time_s"] = f.model_impact ? f.model_impact->contact_time_s : NAN;
+    // The fitted law's constants (its coefficients at the fitted e, the paper's c_e, ...).
+    j["law_coefficients"] = nlohmann::ordered_json::object();
+    if (f.model_impact)
+      for (const NamedValue& c : f.model_impact->law_coefficients) j["law_coefficients"][c.name] = c.value;
   }
   if (f.cross_validation) {
     const CrossValidation& cv = *f.cross_validation;
