@@ -11,7 +11,6 @@
 #include "cli/setup_options.hpp"
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/options/command_options.hpp"
 #include "hertzdash/simulation/reports/export_report.hpp"
 
 #include <filesystem>
@@ -22,19 +21,6 @@
 namespace hertzdash::cli {
 
 namespace {
-
-/// --steps-per-contact, given or its default, within its declared range.
-int steps_per_contact(const std::string& command, std::optional<double> given) {
-  const ParameterDecl& d = command_option(command, "steps-per-contact");
-  const double steps = given.value_or(d.default_number);
-  if (!d.range.contains(steps)) throw InvalidParameter("steps-per-contact", format_value(steps), d.range.text(d.unit));
-  return static_cast<int>(steps);
-}
-
-Engine given_engine(const std::string& name) {
-  if (name.empty()) throw InvalidParameter("engine", "none", "given: lammps or liggghts");
-  return parse_engine(name);
-}
 
 struct ExportOptions {
   RunOptions run;
@@ -59,9 +45,9 @@ Command add_export_command(CLI::App& app) {
   add_mkdir_flag(*sub, opt->mkdir);
 
   return {sub, [opt]() {
-            const Engine engine = given_engine(opt->engine);
+            const Engine engine = parse_engine(opt->engine);
             if (opt->out.empty()) throw InvalidParameter("out", "none", "given: the directory of the decks");
-            const int steps = steps_per_contact("export", opt->steps_per_contact);
+            const int steps = steps_per_contact_option("export", opt->steps_per_contact);
             const std::filesystem::path dir(opt->out);
             std::vector<std::pair<std::filesystem::path, std::string>> files;
             // Checked before any work, written after all of it.
@@ -94,8 +80,8 @@ Command add_conformance_command(CLI::App& app) {
   add_number_option(*sub, o("steps-per-contact").flag, opt->steps_per_contact, o("steps-per-contact").help);
   sub->add_flag(o("json").flag, opt->json, o("json").help);
   return {sub, [opt]() {
-            const Engine engine = given_engine(opt->engine);
-            const int steps = steps_per_contact("conformance", opt->steps_per_contact);
+            const Engine engine = parse_engine(opt->engine);
+            const int steps = steps_per_contact_option("conformance", opt->steps_per_contact);
             const EngineConformance c = run_engine_conformance(opt->run, load_paper_parameters(), engine, steps);
             std::cout << (opt->json ? to_json(c).dump(2) + "\n" : conformance_text(c));
             return 0;

@@ -11,6 +11,8 @@
 #include "hertzdash/io/file_identity.hpp"
 #include "hertzdash/io/provenance.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/simulation/reports/export_report.hpp"
 #include "hertzdash/simulation/reports/fit_curves.hpp"
 #include "hertzdash/simulation/reports/fit_request.hpp"
 #include "hertzdash/simulation/options/command_options.hpp"
@@ -222,6 +224,37 @@ py::dict py_bounce(double bounces, double min_rebound_velocity, std::optional<do
     run = run_bounce(options, paper(), bounce, target_interval_restitution);
   }
   warn_about(run_diagnostics(run));
+  return to_python(to_json(run));
+}
+
+// The discrete-element engines (docs/engines.md): `hertzdash export` and `hertzdash conformance`.
+py::dict py_export_decks(const std::string& engine, const std::string& out, const std::string& engine_model,
+                         std::optional<double> steps_per_contact, const py::kwargs& kwargs) {
+  const RunOptions options = run_options_from(kwargs, "export_decks");
+  const Engine e = parse_engine(engine);
+  const int steps = steps_per_contact_option("export", steps_per_contact);
+  const std::filesystem::path dir(out);
+  if (!std::filesystem::is_directory(dir)) throw InvalidParameter("out", out, "an existing directory");
+  EngineExport run;
+  {
+    py::gil_scoped_release release;
+    run = export_engine_decks(options, paper(), e, engine_model, steps);
+    std::vector<std::pair<std::filesystem::path, std::string>> files;
+    for (const auto& [name, text] : run.files()) files.emplace_back(dir / name, text);
+    write_files_atomically(files);
+  }
+  return to_python(to_json(run));
+}
+
+py::dict py_conformance(const std::string& engine, std::optional<double> steps_per_contact, const py::kwargs& kwargs) {
+  const RunOptions options = run_options_from(kwargs, "conformance");
+  const Engine e = parse_engine(engine);
+  const int steps = steps_per_contact_option("conformance", steps_per_contact);
+  EngineConformance run;
+  {
+    py::gil_scoped_release release;
+    run = run_engine_conformance(options, paper(), e, steps);
+  }
   return to_python(to_json(run));
 }
 
@@ -883,6 +916,22 @@ PYBIND11_MODULE(hertzdash, m) {
                                "(the grid's axes), attractors (kind, period, impact_phase, cells, fraction), cell (one "
                                "list per velocity row of attractor indices, -1 inside a wall), inputs. The rig's "
                                "options (impact_model instantaneous unless given), and:\n")
+            .c_str());
+  m.def("export_decks", &py_export_decks, py::arg("engine"), py::arg("out"), py::arg("engine_model") = "",
+        py::arg("steps_per_contact") = py::none(),
+        ("export_decks(engine, out, engine_model='', steps_per_contact=None, **options) -> dict\n\nA contact's "
+         "input decks for LAMMPS or LIGGGHTS (engine 'lammps' or 'liggghts') written into the existing directory "
+         "out (sphere_sphere.in, sphere_wall.in, contact_lines.in), for the engine model equal to the law `damping` "
+         "names, exactly `hertzdash export --engine E --out DIR --json` (docs/engines.md): hertzdash's prediction "
+         "of each impact under impacts.\n\n" +
+         options)
+            .c_str());
+  m.def("conformance", &py_conformance, py::arg("engine"), py::arg("steps_per_contact") = py::none(),
+        ("conformance(engine, steps_per_contact=None, **options) -> dict\n\nThe installed engine run on every "
+         "contact model it has at three speeds beside the law each equals, exactly `hertzdash conformance --engine E "
+         "--json` (docs/engines.md): rows of engine_model, hertzdash_law, impact, speed_mps, e_asked, e_hertzdash, "
+         "e_engine, ...\n\n" +
+         options)
             .c_str());
   m.def(
       "rigs",

@@ -14,6 +14,7 @@ namespace hertzdash {
 const char* to_string(Engine e) { return e == Engine::lammps ? "lammps" : "liggghts"; }
 
 Engine parse_engine(std::string_view name) {
+  if (name.empty()) throw InvalidParameter("engine", "none", "given: lammps or liggghts");
   if (name == "lammps") return Engine::lammps;
   if (name == "liggghts") return Engine::liggghts;
   throw InvalidParameter("engine", std::string(name), "lammps or liggghts");

@@ -29,7 +29,7 @@ namespace hertzdash {
 
 enum class Engine { lammps, liggghts };
 const char* to_string(Engine e);
-/// The engine spelled `name`; InvalidParameter("engine", ...) otherwise.
+/// The engine spelled `name`; InvalidParameter("engine", ...) otherwise (an empty name: none given).
 Engine parse_engine(std::string_view name);
 /// The engine's program, looked up on PATH: lmp, liggghts.
 const char* engine_program(Engine e);

@@ -1,6 +1,7 @@
 // `hertzdash export` and `hertzdash conformance` (simulation/reports/export_report.hpp).
 #include "hertzdash/simulation/reports/export_report.hpp"
 
+#include "hertzdash/simulation/options/command_options.hpp"
 #include "hertzdash/simulation/reports/report_json.hpp"
 
 #include <fmt/format.h>
@@ -40,6 +41,13 @@ Parameters deck_parameters(const EngineExport& e) {
 }
 
 }  // namespace
+
+int steps_per_contact_option(std::string_view command, std::optional<double> given) {
+  const ParameterDecl& d = command_option(command, "steps-per-contact");
+  const double steps = given.value_or(d.default_number);
+  if (!d.range.contains(steps)) throw InvalidParameter("steps-per-contact", format_value(steps), d.range.text(d.unit));
+  return static_cast<int>(steps);
+}
 
 std::vector<std::pair<std::string, std::string>> EngineExport::files() const {
   return {{"sphere_sphere.in", pair_deck.text}, {"sphere_wall.in", wall_deck.text}, {"contact_lines.in", contact_lines}};

@@ -9,11 +9,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace hertzdash {
+
+/// `steps-per-contact` of `command` (export, conformance): the given value or its declared
+/// default, within its declared range; InvalidParameter naming it otherwise.
+int steps_per_contact_option(std::string_view command, std::optional<double> given);
 
 struct EngineExport {
   const EngineModel* model = nullptr;
