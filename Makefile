@@ -48,7 +48,7 @@ test: build deps-paper deps-engines
 need_bench = @[ -x $(BUILD)/bench/work_precision_peers ] || { echo "make $@: $(BUILD) was built without the benchmark\
 peers (bench/: Boost.Odeint, HERTZDASH_WITH_BENCH; Debian: libboost-dev), which the figures and the article include" >&2; exit 2; }
 
-figures: build
+figures: build deps-engines
 	$(need_bench)
 	validation/run_studies.sh $(BUILD) $(FIGURES)
 
@@ -79,7 +79,7 @@ paper: figures deps-paper
 # It first times `make figures` from the built tree (into a scratch directory). Then the peer
 # engines beside hertzdash on the same impacts (bench/siconos_peer/siconos_peer.py: Siconos's
 # event-driven bouncing ball, the same orbits, the time per impact of each).
-bench: build deps-peers
+bench: build deps-peers deps-engines
 	$(need_bench)
 	@start=$$(date +%s%N); \
 	validation/run_studies.sh $(BUILD) $(BUILD)/figures-timing > /dev/null; \
