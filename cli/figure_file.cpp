@@ -1,5 +1,7 @@
 #include "cli/figure_file.hpp"
 
+#include "hertzdash/io/temporary_directory.hpp"
+
 #include "hertzdash/io/atomic_file.hpp"
 #include "hertzdash/io/remove_on_signal.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
@@ -34,20 +36,6 @@ constexpr std::pair<std::string_view, std::string_view> scripts[] = {
 #include "figure_scripts.inc"
 };
 
-// A temporary directory, removed with everything in it.
-struct TemporaryDirectory {
-  std::filesystem::path path;
-  TemporaryDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "hertzdash-figure.XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary directory for the figure");
-    path = pattern;
-  }
-  ~TemporaryDirectory() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-};
-
 void write_text(const std::filesystem::path& path, std::string_view text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
@@ -76,7 +64,7 @@ void require_gnuplot(const std::string& option, const std::filesystem::path& pat
 void draw_figure(const std::string& script, const std::string& kind, const std::vector<const CsvWriter*>& data,
                  const std::vector<std::string>& arguments, const std::filesystem::path& path) {
   const SignalHold hold;  // as below: the data's directory too
-  TemporaryDirectory dir;
+  TemporaryDirectory dir("figure");
   std::vector<std::filesystem::path> files;
   for (std::size_t k = 0; k < data.size(); ++k) {
     files.push_back(dir.path / fmt::format("data{}.csv", k));
@@ -91,7 +79,7 @@ void draw_figure_from_files(const std::string& script, const std::string& kind, 
   // Signals wait until the temporary directory is gone (a figure takes a second; gnuplot itself,
   // in the terminal's process group, takes a Ctrl-C at once).
   const SignalHold hold;
-  TemporaryDirectory dir;
+  TemporaryDirectory dir("figure");
   for (const auto& [name, text] : scripts) write_text(dir.path / name, text);
   // gnuplot draws in the temporary directory; the figure is then written to `path` as every
   // output is (io/atomic_file.hpp: whole or not at all, a link followed, a FIFO written through).

@@ -20,6 +20,8 @@
 
 #include "hertzdash/model/hertz.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/scratch_dir.hpp"
+#include "validation/common/glass_beads.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -31,7 +33,6 @@
 #include <numbers>
 #include <string>
 #include <tuple>
-#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -39,34 +40,13 @@ using namespace hertzdash;
 
 namespace {
 
-EngineContact glass_beads(const std::string& law) {
-  DropTestSetup s{.mass_kg = 2500 * 4.0 / 3.0 * std::numbers::pi * 1e-9,
-                  .ball_radius_m = 1e-3,
-                  .ball = {63e9, 0.22},
-                  .rod = {200e9, 0.3},
-                  .restitution = 0.9,
-                  .height_m = 0,
-                  .impact_velocity_mps = 1.0,
-                  .gravity_mps2 = 0};
-  return make_engine_contact(s, law);
-}
-
-/// A scratch directory, removed at the end.
-struct ScratchDirectory {
-  std::filesystem::path path;
-  ScratchDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "hertzdash-engine-XXXXXX").string();
-    REQUIRE(mkdtemp(pattern.data()) != nullptr);
-    path = pattern;
-  }
-  ~ScratchDirectory() { std::filesystem::remove_all(path); }
-};
+EngineContact glass_beads(const std::string& law) { return make_engine_contact(glass_beads_on_steel(), law); }
 
 /// p of the law's dashpot c x^p xdot.
 double dashpot_exponent(std::string_view law) { return law == "kuwabara-kono" ? 0.5 : 0.25; }
 
 EngineImpactResult run(const EngineModel& model, const EngineContact& c, EngineImpactKind k, int steps_per_contact) {
-  ScratchDirectory dir;
+  const test::ScratchDir dir;
   const EngineDeck deck = engine_deck(model, c, k, steps_per_contact, "# test deck\n");
   return run_engine_deck(model.engine, deck, dir.path, "in.deck", c.speed_mps);
 }
@@ -113,7 +93,7 @@ TEST_CASE("CLI export: the decks run in the engine as written and give the JSON'
                             "--rod-nu 0.3 --restitution 0.9 --impact-velocity 1 ";
   for (const auto& [engine, law, program] : {std::tuple{"lammps", "kuwabara-kono", "lmp"}, std::tuple{"liggghts", "tsuji-dem", "liggghts"}}) {
     CAPTURE(engine);
-    ScratchDirectory dir;
+    const test::ScratchDir dir;
     const auto r = test::run_cli(fmt::format("export --engine {} --damping {} {} --out {} --json", engine, law, beads,
                                              dir.path.string()));
     REQUIRE(r.exit_code == 0);
@@ -132,7 +112,7 @@ TEST_CASE("CLI export: the decks run in the engine as written and give the JSON'
       CHECK(std::abs(e - impact["restitution"].get<double>()) < 0.3 * std::pow(1000, -(1 + dashpot_exponent(law))));
     }
   }
-  ScratchDirectory scratch;
+  const test::ScratchDir scratch;
   const std::string out = (scratch.path / "decks").string();
   const std::vector<std::pair<std::string, std::string>> refused{
       {"--engine yade --damping tsuji-dem", "--engine"},
@@ -225,7 +205,7 @@ TEST_CASE("granular gas on LAMMPS under mpirun -n 2: a constant e cools by Haff'
   for (int seed : {4928459, 11, 33}) {
     CAPTURE(seed);
     gas.seed = seed;
-    ScratchDirectory dir;
+    const test::ScratchDir dir;
     const std::vector<TemperatureSample> T = run_granular_gas(gas, 2, dir.path);
     const HaffFit f = fit_haff_exponent(gas, T);
     std::printf("granular gas, seed %d: T0 %.4e J (asked %.4e), from t1 = %.4g s (tau = %.4g s) to %.4g s: exponent %.4f\n",

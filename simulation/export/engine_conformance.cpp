@@ -1,36 +1,15 @@
 // The engines' conformance with the laws they equal (simulation/export/engine_conformance.hpp).
 #include "hertzdash/simulation/export/engine_conformance.hpp"
 
+#include "hertzdash/io/temporary_directory.hpp"
+
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <stdexcept>
 #include <string>
 
 namespace hertzdash {
 
-namespace {
-
-/// A temporary directory, removed at the end.
-struct TemporaryDecks {
-  std::filesystem::path path;
-  TemporaryDecks() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "hertzdash-conformance-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary directory for the engine's decks");
-    path = pattern;
-  }
-  ~TemporaryDecks() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-  TemporaryDecks(const TemporaryDecks&) = delete;
-  TemporaryDecks& operator=(const TemporaryDecks&) = delete;
-};
-
-}  // namespace
-
 std::vector<ConformanceRow> engine_conformance(Engine engine, const DropTestSetup& setup, int steps_per_contact) {
-  const TemporaryDecks dir;
+  const TemporaryDirectory dir("engine decks");
   std::vector<ConformanceRow> rows;
   for (const EngineModel& model : engine_models()) {
     if (model.engine != engine) continue;

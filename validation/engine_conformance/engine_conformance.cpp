@@ -19,8 +19,10 @@
 // engine_conformance.tex (macros \eng...), GENERATED/engine_conformance_table.tex (the pair's
 // rows); engine_gas.gp draws the cooling.
 #include "hertzdash/io/csv_writer.hpp"
+#include "hertzdash/io/temporary_directory.hpp"
 #include "hertzdash/simulation/export/engine_conformance.hpp"
 #include "hertzdash/simulation/export/granular_gas.hpp"
+#include "validation/common/glass_beads.hpp"
 #include "validation/common/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
@@ -28,9 +30,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -40,36 +39,11 @@ using namespace hertzdash;
 
 namespace {
 
-DropTestSetup glass_beads() {
-  return {.mass_kg = 2500 * std::numbers::pi * 1e-9 * 4 / 3,
-          .ball_radius_m = 1e-3,
-          .ball = {63e9, 0.22},
-          .rod = {200e9, 0.3},
-          .restitution = 0.9,
-          .height_m = 0,
-          .impact_velocity_mps = 1.0,
-          .gravity_mps2 = 0};
-}
-
 /// An engine model's name in the table: LAMMPS's without its pair style ("viscoelastic").
 std::string short_name(std::string_view key) {
   const std::string_view prefix = "granular-";
   return std::string(key.substr(key.rfind(prefix, 0) == 0 ? prefix.size() : 0));
 }
-
-/// A scratch directory for the gas's deck and output, removed at the end.
-struct Scratch {
-  std::filesystem::path path;
-  Scratch() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "hertzdash-gas-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a scratch directory");
-    path = pattern;
-  }
-  ~Scratch() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-};
 
 }  // namespace
 
@@ -94,7 +68,7 @@ int main(int argc, char** argv) try {
                       "\\midrule\n";
   double worst = 0, typed_tsuji = NAN;
   for (Engine engine : {Engine::lammps, Engine::liggghts}) {
-    for (const ConformanceRow& r : engine_conformance(engine, glass_beads(), steps)) {
+    for (const ConformanceRow& r : engine_conformance(engine, glass_beads_on_steel(), steps)) {
       const double error = std::abs(r.engine.restitution - r.hertzdash.restitution);
       worst = std::max(worst, error);
       rows_csv.add_row({std::string(to_string(engine)), std::string(r.engine_model), std::string(r.hertzdash_law),
@@ -125,7 +99,7 @@ int main(int argc, char** argv) try {
   const auto gas_start = std::chrono::steady_clock::now();
   for (int seed : seeds) {
     gas.seed = seed;
-    const Scratch dir;
+    const TemporaryDirectory dir("granular gas");
     const std::vector<TemperatureSample> T = run_granular_gas(gas, 2, dir.path);
     const HaffFit f = fit_haff_exponent(gas, T);
     exponent_sum += f.exponent;
