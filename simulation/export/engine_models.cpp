@@ -81,6 +81,22 @@ std::string lammps_tsuji_wall(const EngineContact& c) {
          " zplane 0.0 NULL\n";
 }
 
+/// gran/hertz/history: F = sqrt(R* x) (kn x - m* gamma_n xdot), so kn = (4/3) E* and
+/// m* gamma_n sqrt(R*) = K A, gamma_n = (4/3) E* A / m*. kn is the pair style's (one value for
+/// every pair), the wall's its fix's; no friction (xmu 0), tangential stiffness and damping 0.
+double hertz_history_gamma(const EngineContact& c, EngineImpactKind k) {
+  return 4 * c.effective_modulus_Pa(k) * c.time_constant_s / (3 * c.reduced_mass_kg(k));
+}
+std::string hertz_history_coefficients(const EngineContact& c, EngineImpactKind k) {
+  return fmt::format("{} 0 {} 0 0 0", number(4 * c.effective_modulus_Pa(k) / 3), number(hertz_history_gamma(c, k)));
+}
+std::string hertz_history_pair(const EngineContact& c) {
+  return "pair_style gran/hertz/history " + hertz_history_coefficients(c, pair) + "\npair_coeff * *\n";
+}
+std::string hertz_history_wall(const EngineContact& c) {
+  return "fix wall all wall/gran hertz/history " + hertz_history_coefficients(c, wall) + " zplane 0.0 NULL\n";
+}
+
 /// LIGGGHTS: type 1 the spheres, type 2 the wall's material.
 std::string liggghts_materials(const EngineContact& c) {
   if (!std::isfinite(c.wall.E_Pa))
@@ -106,6 +122,9 @@ EngineCoefficient viscoelastic_input(const EngineContact& c, EngineImpactKind k)
 EngineCoefficient tsuji_input(const EngineContact& c, EngineImpactKind) {
   return {"e_L (damping tsuji)", tsuji_engine_restitution_input(c.restitution)};
 }
+EngineCoefficient hertz_history_input(const EngineContact& c, EngineImpactKind k) {
+  return {"gamma_n [1/(m s)]", hertz_history_gamma(c, k)};
+}
 EngineCoefficient liggghts_input(const EngineContact& c, EngineImpactKind) { return {"coefficientRestitution", c.restitution}; }
 double same_restitution(double e) { return e; }
 
@@ -113,6 +132,9 @@ constexpr EngineModel models[] = {
     {Engine::lammps, "granular-viscoelastic", "pair_style granular, hertz/material, damping viscoelastic",
      "kuwabara-kono", "equal: eta_n0 = 4 E* A / (3 m*) (A kuwabara-kono's material time constant)",
      lammps_viscoelastic_pair, lammps_viscoelastic_wall, viscoelastic_input, nullptr},
+    {Engine::lammps, "gran-hertz-history", "pair_style gran/hertz/history", "kuwabara-kono",
+     "equal: kn = (4/3) E*, gamma_n = 4 E* A / (3 m*) (A kuwabara-kono's material time constant)", hertz_history_pair,
+     hertz_history_wall, hertz_history_input, nullptr},
     {Engine::lammps, "granular-tsuji", "pair_style granular, hertz/material, damping tsuji", "tsuji-dem",
      "equal: the engine's alpha(e_L) = sqrt(5) zeta(e); e_L is not e (the engine's polynomial fit)",
      lammps_tsuji_pair, lammps_tsuji_wall, tsuji_input, lammps_tsuji_restitution},
