@@ -43,7 +43,7 @@ std::string tolerance_warning(const ImpactSummary& s, const SolverSettings& solv
 std::string yield_warning(const ImpactSummary& s, const DropTestSetup& setup) {
   const double p0 = s.peak_contact_pressure_Pa,
                onset = hertz_yield_onset_pressure_Pa(setup.ball_yield_stress_Pa, setup.ball.nu);
-  return fmt::format("the Hertz peak pressure {:.4g} MPa exceeds the onset of yield in the hemisphere, {:.3g} Y = {:.4g} "
+  return fmt::format("the Hertz peak pressure {:.4g} MPa exceeds the onset of yield in the sphere, {:.3g} Y = {:.4g} "
                      "MPa (`ball-yield-stress` {:.4g} Pa, `ball-nu` {:.3g}): the contact may deform plastically, which "
                      "the elastic contact law does not model (docs/bounce.md)",
                      p0 / 1e6, hertz_yield_onset_factor(setup.ball.nu), onset / 1e6, setup.ball_yield_stress_Pa,
