@@ -12,6 +12,8 @@
 //     fit of Tsuji et al.'s graph: F = K x^{3/2} + alpha sqrt(K m*) x^{1/4} xdot, which is tsuji-dem's
 //     form with sqrt(5) zeta = alpha: equal to tsuji-dem at the e whose exact zeta is alpha(e_L)/sqrt(5).
 //     The deck takes the e_L that gives the law's e (tsuji_engine_restitution_input).
+//   pair_style gran/hertz/history, F = sqrt(R* x) (kn x - m* gamma_n xdot): kuwabara-kono with
+//   kn = (4/3) E* and gamma_n = 4 E* A / (3 m*), its wall's kn given to its fix.
 //   The spheres' E_eff is E / (2 (1 - nu^2)) for one material (eq. 3). fix wall/gran takes its wall's
 //   as E_wall / (2 (1 - nu_wall)) (measured: the peak force and contact time of the engine's sphere on
 //   its wall give that E*; tests/test_engine_export.cpp), so the deck's wall modulus is 2 (1 - nu) E*.
