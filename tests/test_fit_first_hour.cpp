@@ -7,6 +7,7 @@
 #include "bounce_recording_synthetic.hpp"
 #include "cli_runner.hpp"
 #include "scratch_dir.hpp"
+#include "virtual_drop_fit.hpp"
 #include "hertzdash/io/csv_table.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/reports/fit_verdict.hpp"
@@ -258,11 +259,7 @@ TEST_CASE("a trace's fit reports its law's constants: those simulate gives at th
   // second run of simulate. Now law_coefficients is the run at the estimate's: the same numbers
   // simulate prints for fitted_inputs (to the JSON's 17 digits, the same run).
   const ScratchDir dir;
-  const std::string trace = (dir.path / "m.csv").string();
-  REQUIRE(run_cli("simulate --trace-format measured --integrator rk4 --dt 5e-7 --trace " + trace).exit_code == 0);
-  const CliResult r = run_cli("fit --json --trace " + trace);
-  REQUIRE(r.exit_code == 0);
-  const auto fit = nlohmann::json::parse(r.out)["fits"][0];
+  const auto fit = fit_json_of_virtual_drop(dir)["fits"][0];
   const auto& constants = fit["law_coefficients"];
   REQUIRE(constants.contains("c_e_coefficient_N_s_per_m_1_5"));
   const auto& in = fit["fitted_inputs"];
