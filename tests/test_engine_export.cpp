@@ -106,6 +106,7 @@ TEST_CASE("CLI export: the decks run in the engine as written and give the JSON'
     const test::ScratchDir dir;
     const auto r = test::run_cli(fmt::format("export --engine {} --damping {} {} --out {} --json", engine, law, beads,
                                              dir.path.string()));
+    INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto j = nlohmann::json::parse(r.out);
     CHECK(j["hertzdash_law"] == law);
@@ -115,6 +116,7 @@ TEST_CASE("CLI export: the decks run in the engine as written and give the JSON'
       const std::string deck = impact["deck"];
       const auto ran = test::run_cli_program(fmt::format("cd {} && {}", dir.path.string(), program),
                                              "-in " + deck + " -log none");
+      INFO(ran.err + ran.out);
       REQUIRE(ran.exit_code == 0);
       const auto at = ran.out.find("hertzdash_result ");
       REQUIRE(at != std::string::npos);
@@ -167,6 +169,7 @@ TEST_CASE("CLI conformance: every model of each engine gives the e of the law it
     const auto models = std::count_if(engine_models().begin(), engine_models().end(),
                                       [&](const EngineModel& m) { return to_string(m.engine) == std::string(engine); });
     const auto r = test::run_cli(fmt::format("conformance --engine {} {} --steps-per-contact 200 --json", engine, beads));
+    INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto rows = nlohmann::json::parse(r.out)["rows"];
     CHECK(rows.size() == static_cast<std::size_t>(models * 3 * 2));

@@ -56,8 +56,15 @@ EngineImpactResult run_engine_deck(Engine engine, const EngineDeck& deck, const 
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  // The engines are MPI programs: run alone, Open MPI's singleton would start a support daemon
+  // (a few tenths of a second each run, and one more process to wait for under load); isolated,
+  // it runs as the one process it is.
+  std::string isolated = "OMPI_MCA_ess_singleton_isolated=1";
+  std::vector<char*> env{isolated.data()};
+  for (char** e = environ; *e; ++e) env.push_back(*e);
+  env.push_back(nullptr);
   pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, program, &actions, nullptr, argv.data(), environ);
+  const int spawned = posix_spawnp(&pid, program, &actions, nullptr, argv.data(), env.data());
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0)
     throw std::runtime_error(fmt::format("cannot run {} ({}): {}; `make deps-engines` installs it (debian-packages-engines.txt)",
