@@ -17,8 +17,14 @@ std::vector<ConformanceRow> engine_conformance(Engine engine, const DropTestSetu
     for (double factor : {0.25, 1.0, 4.0}) {
       const EngineContact c = at_speed(calibrated, factor * calibrated.speed_mps);
       for (EngineImpactKind k : {EngineImpactKind::sphere_sphere, EngineImpactKind::sphere_wall}) {
-        ConformanceRow row{.engine_model = model.key, .hertzdash_law = model.law, .impact = k, .speed_mps = c.speed_mps,
-                           .e_asked = c.restitution, .engine_input = model.damping_input(c, k), .hertzdash = c.predicted(k)};
+        ConformanceRow row;
+        row.engine_model = model.key;
+        row.hertzdash_law = model.law;
+        row.impact = k;
+        row.speed_mps = c.speed_mps;
+        row.e_asked = c.restitution;
+        row.engine_input = model.damping_input(c, k);
+        row.hertzdash = c.predicted(k);
         const EngineDeck fine = engine_deck(model, c, k, steps_per_contact, "");
         const EngineDeck coarse = engine_deck(model, c, k, steps_per_contact / 2, "");
         row.engine = run_engine_deck(engine, fine, dir.path, "fine.in", c.speed_mps);

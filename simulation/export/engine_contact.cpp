@@ -32,16 +32,17 @@ double EngineContact::reduced_radius_m(EngineImpactKind k) const {
 }
 
 DropTestSetup engine_impact_setup(const EngineContact& c, EngineImpactKind k) {
-  DropTestSetup s{.mass_kg = c.reduced_mass_kg(k),
-                  .ball_radius_m = c.reduced_radius_m(k),
-                  .ball = c.sphere,
-                  .ball_yield_stress_Pa = INFINITY,  // the engines' contact is elastic: no yield check
-                  .rod = k == EngineImpactKind::sphere_sphere ? c.sphere : c.wall,
-                  .restitution = c.restitution,
-                  .height_m = 0,
-                  .impact_velocity_mps = c.speed_mps,
-                  .gravity_mps2 = 0,
-                  .damping = c.damping};
+  DropTestSetup s{};
+  s.mass_kg = c.reduced_mass_kg(k);
+  s.ball_radius_m = c.reduced_radius_m(k);
+  s.ball = c.sphere;
+  s.ball_yield_stress_Pa = INFINITY;  // the engines' contact is elastic: no yield check
+  s.rod = k == EngineImpactKind::sphere_sphere ? c.sphere : c.wall;
+  s.restitution = c.restitution;
+  s.height_m = 0;
+  s.impact_velocity_mps = c.speed_mps;
+  s.gravity_mps2 = 0;
+  s.damping = c.damping;
   if (c.time_constant_s > 0) s.damping.viscous_time_constant_s = c.time_constant_s;
   validate(s);
   return s;

@@ -41,44 +41,48 @@ std::string line_starting(const std::string& output, std::string_view prefix) {
 
 }  // namespace
 
-EngineImpactResult run_engine_deck(Engine engine, const EngineDeck& deck, const std::filesystem::path& directory,
-                                   const std::string& deck_name, double approach_speed_mps) {
-  const char* program = engine_program(engine);
-  { std::ofstream(directory / deck_name) << deck.text; }
-  const std::filesystem::path screen = directory / (deck_name + ".out");
+std::string run_in_directory(std::vector<std::string> args, const std::filesystem::path& directory,
+                             const std::filesystem::path& screen, const std::string& install_hint) {
   posix_spawn_file_actions_t actions;
   if (posix_spawn_file_actions_init(&actions) != 0 ||
       posix_spawn_file_actions_addchdir_np(&actions, directory.c_str()) != 0 ||
       posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, screen.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600) != 0 ||
       posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO) != 0)
-    throw std::runtime_error(fmt::format("cannot prepare {}'s output in {}", program, directory.string()));
-  std::vector<std::string> args{program, "-in", deck_name, "-log", "none"};
+    throw std::runtime_error(fmt::format("cannot prepare {}'s output in {}", args[0], directory.string()));
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   // The engines are MPI programs: run alone, Open MPI's singleton would start a support daemon
   // (a few tenths of a second each run, and one more process to wait for under load); isolated,
-  // it runs as the one process it is.
+  // it runs as the one process it is. mpirun ignores it.
   std::string isolated = "OMPI_MCA_ess_singleton_isolated=1";
   std::vector<char*> env{isolated.data()};
   for (char** e = environ; *e; ++e) env.push_back(*e);
   env.push_back(nullptr);
   pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, program, &actions, nullptr, argv.data(), env.data());
+  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), env.data());
   posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0)
-    throw std::runtime_error(fmt::format("cannot run {} ({}): {}; `make deps-engines` installs it (debian-packages-engines.txt)",
-                                         to_string(engine), program, std::strerror(spawned)));
+  if (spawned != 0) throw std::runtime_error(fmt::format("cannot run {}: {}; {}", args[0], std::strerror(spawned), install_hint));
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error(fmt::format("waiting for {} failed", program));
+    if (errno != EINTR) throw std::runtime_error(fmt::format("waiting for {} failed", args[0]));
   std::ostringstream said;
   said << std::ifstream(screen).rdbuf();
   const std::string error = line_starting(said.str(), "ERROR");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !error.empty())
-    throw std::runtime_error(fmt::format("{} failed on {}: {}", program, (directory / deck_name).string(),
-                                         error.empty() ? "exit status " + std::to_string(status) : error));
-  const std::string result = line_starting(said.str(), "hertzdash_result ");
+    throw std::runtime_error(fmt::format("{} failed in {}: {} (its output: {})", args[0], directory.string(),
+                                         error.empty() ? "exit status " + std::to_string(status) : error, screen.string()));
+  return said.str();
+}
+
+EngineImpactResult run_engine_deck(Engine engine, const EngineDeck& deck, const std::filesystem::path& directory,
+                                   const std::string& deck_name, double approach_speed_mps) {
+  const char* program = engine_program(engine);
+  { std::ofstream(directory / deck_name) << deck.text; }
+  const std::filesystem::path screen = directory / (deck_name + ".out");
+  const std::string said = run_in_directory({program, "-in", deck_name, "-log", "none"}, directory, screen,
+                                            "`make deps-engines` installs it (debian-packages-engines.txt)");
+  const std::string result = line_starting(said, "hertzdash_result ");
   EngineImpactResult r;
   if (result.empty() || !(std::istringstream(result.substr(17)) >> r.restitution))
     throw std::runtime_error(fmt::format("{} printed no hertzdash_result line ({})", program, screen.string()));

@@ -5,8 +5,17 @@
 #include "hertzdash/simulation/export/engine_models.hpp"
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace hertzdash {
+
+/// Runs `args` (args[0] looked up on PATH) in `directory`, its standard output and error into
+/// `screen`, and returns what it printed; an MPI program run alone is an isolated singleton.
+/// Throws std::runtime_error saying the program cannot start (with `install_hint`), or that it
+/// failed: its exit status, or its first line that starts with "ERROR".
+std::string run_in_directory(std::vector<std::string> args, const std::filesystem::path& directory,
+                             const std::filesystem::path& screen, const std::string& install_hint);
 
 /// Runs `engine_program(engine)` on `deck` (written to `directory` as `deck_name`, with the
 /// engine's screen output beside it as `deck_name`.out) and reads its result; `approach_speed_mps`

@@ -1,24 +1,18 @@
 // A granular gas run by LAMMPS against Haff's law (simulation/export/granular_gas.hpp).
 #include "hertzdash/simulation/export/granular_gas.hpp"
 
+#include "hertzdash/simulation/export/engine_run.hpp"
+
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fcntl.h>
 #include <fstream>
 #include <numbers>
-#include <spawn.h>
 #include <sstream>
 #include <stdexcept>
-#include <sys/wait.h>
-#include <unistd.h>
-
-extern char** environ;
 
 namespace hertzdash {
 
@@ -83,24 +77,7 @@ std::vector<TemperatureSample> run_granular_gas(const GranularGas& gas, int rank
   std::vector<std::string> args;
   if (ranks > 1) args = {"mpirun", "--allow-run-as-root", "--oversubscribe", "-n", std::to_string(ranks)};
   for (const char* a : {"lmp", "-in", "in.gas", "-log", "none"}) args.emplace_back(a);
-  posix_spawn_file_actions_t actions;
-  if (posix_spawn_file_actions_init(&actions) != 0 ||
-      posix_spawn_file_actions_addchdir_np(&actions, directory.c_str()) != 0 ||
-      posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, screen.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600) != 0 ||
-      posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO) != 0)
-    throw std::runtime_error("cannot prepare LAMMPS's output in " + directory.string());
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) throw std::runtime_error(fmt::format("cannot run {}: {}", args[0], std::strerror(spawned)));
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error("waiting for LAMMPS failed");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(fmt::format("LAMMPS failed on the granular gas (exit status {}): see {}", status, screen.string()));
+  run_in_directory(args, directory, screen, "`make deps-engines` installs LAMMPS (debian-packages-engines.txt)");
   std::ifstream in(screen);
   std::vector<TemperatureSample> out;
   bool thermo = false;

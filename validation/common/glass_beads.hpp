@@ -9,14 +9,15 @@
 namespace hertzdash {
 
 inline DropTestSetup glass_beads_on_steel() {
-  return {.mass_kg = 2500 * 4.0 / 3.0 * std::numbers::pi * 1e-9,
-          .ball_radius_m = 1e-3,
-          .ball = {63e9, 0.22},
-          .rod = {200e9, 0.3},
-          .restitution = 0.9,
-          .height_m = 0,
-          .impact_velocity_mps = 1.0,
-          .gravity_mps2 = 0};
+  DropTestSetup s{};
+  s.mass_kg = 2500 * 4.0 / 3.0 * std::numbers::pi * 1e-9;
+  s.ball_radius_m = 1e-3;
+  s.ball = {63e9, 0.22};
+  s.rod = {200e9, 0.3};
+  s.restitution = 0.9;
+  s.impact_velocity_mps = 1.0;
+  s.gravity_mps2 = 0;
+  return s;
 }
 
 }  // namespace hertzdash
