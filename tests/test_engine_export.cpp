@@ -133,7 +133,9 @@ TEST_CASE("CLI export: the decks run in the engine as written and give the JSON'
       {"--engine lammps --damping tsuji-dem --engine-model hertz", "--engine-model"},
       {"--engine liggghts --damping tsuji-dem --rod-E inf", "--rod-E"},
       {"--engine lammps --damping tsuji-dem --restitution 0.05", "--restitution"},  // below alpha's reach
-      {"--engine lammps --damping tsuji-dem --steps-per-contact 5", "--steps-per-contact"}};
+      {"--engine lammps --damping tsuji-dem --steps-per-contact 5", "--steps-per-contact"},
+      {"--engine lammps --damping tsuji-dem --no-tension", "--no-tension"},  // the engines allow tension
+      {"--engine lammps --damping tsuji-dem --air-density 1.2", "--air-density"}};
   for (const auto& [args, named] : refused) {
     CAPTURE(args);
     const auto r = test::run_cli("export " + beads + args + " --out " + out + " --mkdir");
@@ -141,6 +143,11 @@ TEST_CASE("CLI export: the decks run in the engine as written and give the JSON'
     CHECK_THAT(r.err, Catch::Contains(named));
     CHECK(!std::filesystem::exists(out));
   }
+  // A reference speed of its own: A is calibrated there, and the export says so.
+  const auto referenced = test::run_cli("export " + beads + "--engine lammps --damping kuwabara-kono --reference-velocity 4 "
+                                        "--json --out " + scratch.path.string());
+  REQUIRE(referenced.exit_code == 0);
+  CHECK(nlohmann::json::parse(referenced.out)["calibration_speed_mps"].get<double>() == 4.0);
   const auto no_out = test::run_cli("export --engine lammps --damping tsuji-dem");
   CHECK(no_out.exit_code == 2);
   CHECK_THAT(no_out.err, Catch::Contains("--out"));
@@ -155,9 +162,10 @@ TEST_CASE("CLI conformance: every model of each engine gives the e of the law it
   // calibration reproduces a given e to better than 1e-3 in the engine.
   //
   // LAMMPS's damping tsuji takes a restitution e_L as its input but damps by alpha(e_L) sqrt(m* k_n)
-  // with k_n = (4/3) E* a, the secant stiffness; tsuji-dem's exact e at zeta = alpha(e_L)/sqrt(5)
-  // is what it gives: with e_L = 0.9 typed in, alpha = 0.16052..., zeta = 0.07179 and
-  // e = exp(-pi zeta / sqrt(1 - zeta^2)) = 0.9284, not 0.9 (computed here from the polynomial).
+  // with k_n = (4/3) E* a: tsuji-dem's form, whose exact e at zeta = alpha(e_L)/sqrt(5) is what it
+  // gives: with e_L = 0.9 typed in, alpha = 0.05290, zeta = 0.02366 and
+  // e = exp(-pi zeta / sqrt(1 - zeta^2)) = 0.9284, not 0.9 (computed here from the polynomial, and
+  // run). LIGGGHTS's coefficientRestitution typed in gives itself, within the time step's bound.
   const std::string beads = "--mass 1.0471975511965977e-5 --ball-radius 1e-3 --ball-E 63e9 --ball-nu 0.22 --rod-E 200e9 "
                             "--rod-nu 0.3 --restitution 0.9 --impact-velocity 1 ";
   const double e_L = 0.9;
@@ -178,7 +186,6 @@ TEST_CASE("CLI conformance: every model of each engine gives the e of the law it
       CAPTURE(row.dump());
       const std::string law = row["hertzdash_law"];
       const double bound = 0.3 * std::pow(200, -(1 + dashpot_exponent(law)));
-      CHECK(row["e_asked"].get<double>() == 0.9);
       CHECK(std::abs(row["e_engine"].get<double>() - row["e_hertzdash"].get<double>()) < bound);
       CHECK(std::abs(row["e_engine_half_steps"].get<double>() - row["e_hertzdash"].get<double>()) >
             std::abs(row["e_engine"].get<double>() - row["e_hertzdash"].get<double>()));
@@ -190,7 +197,7 @@ TEST_CASE("CLI conformance: every model of each engine gives the e of the law it
         CHECK(row["e_hertzdash_given_e_asked"].get<double>() == Approx(typed_e).epsilon(1e-12));
         CHECK(std::abs(row["e_engine_given_e_asked"].get<double>() - typed_e) < bound);
       } else if (row["engine_model"] == "hertz") {
-        CHECK(row["e_hertzdash_given_e_asked"].get<double>() == 0.9);
+        CHECK(std::abs(row["e_engine_given_e_asked"].get<double>() - 0.9) < bound);
       } else {
         CHECK(row["e_engine_given_e_asked"].is_null());
       }
@@ -200,6 +207,9 @@ TEST_CASE("CLI conformance: every model of each engine gives the e of the law it
   const auto damping = test::run_cli("conformance --engine lammps --damping tsuji-dem");
   CHECK(damping.exit_code == 2);
   CHECK_THAT(damping.err, Catch::Contains("--damping"));
+  const auto reference = test::run_cli("conformance --engine lammps " + beads + "--reference-velocity 4");
+  CHECK(reference.exit_code == 2);
+  CHECK_THAT(reference.err, Catch::Contains("--reference-velocity"));
 }
 
 TEST_CASE("granular gas on LAMMPS under mpirun -n 2: a constant e cools by Haff's law, exponent 2 with the predicted tau",

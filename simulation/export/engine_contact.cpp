@@ -81,6 +81,7 @@ EngineContact make_engine_contact(const DropTestSetup& setup, const std::string&
     DropTestSetup pair = engine_impact_setup(c, EngineImpactKind::sphere_sphere);
     if (!pair.damping.viscous_time_constant_s) pair = calibrate(pair);
     c.time_constant_s = *pair.damping.viscous_time_constant_s;
+    c.calibration_speed_mps = setup.damping.reference_velocity_mps > 0 ? setup.damping.reference_velocity_mps : c.speed_mps;
   }
   predict_impacts(c);
   return c;

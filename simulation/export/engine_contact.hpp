@@ -8,7 +8,8 @@
 //   - sphere on the wall at speed v: mass m, radius R, E* = 1 / ((1 - nu^2)/E + (1 - nu_w^2)/E_w).
 // Both are the paper's contact phase (no gravity, tension allowed: the engines allow it too).
 // The law's constants are those of the sphere pair: a material time constant (kuwabara-kono's A)
-// is calibrated once, on the pair at v, and the wall runs with the same A.
+// is calibrated once, on the pair at the reference speed (`reference-velocity`, default v), and the
+// wall runs with the same A.
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/simulation/run/solver_settings.hpp"
 
@@ -36,6 +37,9 @@ struct EngineContact {
   double restitution = 0;         ///< the law's input e (kuwabara-kono: e of the pair at speed_mps)
   DampingSettings damping;        ///< the law's settings
   double time_constant_s = 0;     ///< kuwabara-kono's A [s] (calibrated on the pair); 0 for other laws
+  /// Where A was calibrated: the pair's approach speed at which its e is `restitution` [m/s]
+  /// (`reference-velocity`, default speed_mps); 0 for a law without a material time constant.
+  double calibration_speed_mps = 0;
   double speed_mps = 0;           ///< the approach speed of both impacts [m/s] (relative for the pair)
   EngineImpactResult pair, on_wall;  ///< hertzdash's prediction of each impact
 

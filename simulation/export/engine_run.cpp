@@ -44,11 +44,14 @@ std::string line_starting(const std::string& output, std::string_view prefix) {
 std::string run_in_directory(std::vector<std::string> args, const std::filesystem::path& directory,
                              const std::filesystem::path& screen, const std::string& install_hint) {
   posix_spawn_file_actions_t actions;
-  if (posix_spawn_file_actions_init(&actions) != 0 ||
-      posix_spawn_file_actions_addchdir_np(&actions, directory.c_str()) != 0 ||
-      posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, screen.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600) != 0 ||
-      posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO) != 0)
+  if (posix_spawn_file_actions_init(&actions) != 0)
     throw std::runtime_error(fmt::format("cannot prepare {}'s output in {}", args[0], directory.string()));
+  if (posix_spawn_file_actions_addchdir_np(&actions, directory.c_str()) != 0 ||
+      posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, screen.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600) != 0 ||
+      posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO) != 0) {
+    posix_spawn_file_actions_destroy(&actions);
+    throw std::runtime_error(fmt::format("cannot prepare {}'s output in {}", args[0], directory.string()));
+  }
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -69,16 +72,30 @@ std::string run_in_directory(std::vector<std::string> args, const std::filesyste
   std::ostringstream said;
   said << std::ifstream(screen).rdbuf();
   const std::string error = line_starting(said.str(), "ERROR");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !error.empty())
-    throw std::runtime_error(fmt::format("{} failed in {}: {} (its output: {})", args[0], directory.string(),
-                                         error.empty() ? "exit status " + std::to_string(status) : error, screen.string()));
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !error.empty()) {
+    // The directory may be a temporary one, gone with the exception: the message carries the
+    // engine's own words, its ERROR line or the end of what it printed.
+    const std::string& out = said.str();
+    const std::string why = !error.empty()           ? error
+                            : WIFEXITED(status)      ? fmt::format("exit status {}", WEXITSTATUS(status))
+                            : WIFSIGNALED(status)    ? fmt::format("killed by signal {}", WTERMSIG(status))
+                                                     : "stopped";
+    throw std::runtime_error(fmt::format("{} failed: {}; the end of its output: {}", args[0], why,
+                                         out.substr(out.size() > 600 ? out.size() - 600 : 0)));
+  }
   return said.str();
+}
+
+void write_deck(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out.flush()) throw std::runtime_error("cannot write the deck " + path.string());
 }
 
 EngineImpactResult run_engine_deck(Engine engine, const EngineDeck& deck, const std::filesystem::path& directory,
                                    const std::string& deck_name, double approach_speed_mps) {
   const char* program = engine_program(engine);
-  { std::ofstream(directory / deck_name) << deck.text; }
+  write_deck(directory / deck_name, deck.text);
   const std::filesystem::path screen = directory / (deck_name + ".out");
   const std::string said = run_in_directory({program, "-in", deck_name, "-log", "none"}, directory, screen,
                                             "`make deps-engines` installs it (debian-packages-engines.txt)");

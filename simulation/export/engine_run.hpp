@@ -13,9 +13,13 @@ namespace hertzdash {
 /// Runs `args` (args[0] looked up on PATH) in `directory`, its standard output and error into
 /// `screen`, and returns what it printed; an MPI program run alone is an isolated singleton.
 /// Throws std::runtime_error saying the program cannot start (with `install_hint`), or that it
-/// failed: its exit status, or its first line that starts with "ERROR".
+/// failed: its first line that starts with "ERROR", or its exit status or signal, with the end of
+/// its output.
 std::string run_in_directory(std::vector<std::string> args, const std::filesystem::path& directory,
                              const std::filesystem::path& screen, const std::string& install_hint);
+
+/// Writes a deck's text to `path`; std::runtime_error if it cannot.
+void write_deck(const std::filesystem::path& path, const std::string& text);
 
 /// Runs `engine_program(engine)` on `deck` (written to `directory` as `deck_name`, with the
 /// engine's screen output beside it as `deck_name`.out) and reads its result; `approach_speed_mps`

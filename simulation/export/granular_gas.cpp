@@ -72,7 +72,7 @@ std::string granular_gas_deck(const GranularGas& g) {
 }
 
 std::vector<TemperatureSample> run_granular_gas(const GranularGas& gas, int ranks, const std::filesystem::path& directory) {
-  { std::ofstream(directory / "in.gas") << granular_gas_deck(gas); }
+  write_deck(directory / "in.gas", granular_gas_deck(gas));
   const std::filesystem::path screen = directory / "gas.out";
   std::vector<std::string> args;
   if (ranks > 1) args = {"mpirun", "--allow-run-as-root", "--oversubscribe", "-n", std::to_string(ranks)};

@@ -28,7 +28,10 @@ Parameters deck_parameters(const EngineExport& e) {
                {"wall_E_Pa", g(c.wall.E_Pa)},
                {"wall_nu", g(c.wall.nu)},
                {"restitution", g(c.restitution)}};
-  if (c.time_constant_s > 0) p.emplace_back("viscous_time_constant_s", g(c.time_constant_s));
+  if (c.time_constant_s > 0) {
+    p.emplace_back("viscous_time_constant_s", g(c.time_constant_s));
+    p.emplace_back("calibration_speed_mps", g(c.calibration_speed_mps));
+  }
   p.emplace_back("speed_mps", g(c.speed_mps));
   p.emplace_back("steps_per_contact", std::to_string(e.steps_per_contact));
   for (EngineImpactKind k : {pair, wall}) {
@@ -38,6 +41,17 @@ Parameters deck_parameters(const EngineExport& e) {
     p.emplace_back(n + "_peak_force_N", g(c.predicted(k).peak_force_N));
   }
   return p;
+}
+
+/// The run options an engine deck has no place for, refused by name (the engines' contacts allow
+/// tension and run the rigid rod's contact, in vacuum).
+void refuse_options_engines_do_not_read(const RunOptions& o) {
+  if (o.no_tension)
+    throw InvalidParameter("no-tension", "on", "off: the engines' contacts allow tension, as the decks run them");
+  if (o.rod_model != "rigid")
+    throw InvalidParameter("rod-model", o.rod_model, "rigid: an engine's sphere is a rigid body with a Hertz contact");
+  if (o.air_density_kg_per_m3)
+    throw InvalidParameter("air-density", format_value(*o.air_density_kg_per_m3), "omitted: the decks run one contact, in vacuum");
 }
 
 }  // namespace
@@ -57,6 +71,7 @@ EngineExport export_engine_decks(const RunOptions& options, const PaperParameter
                                  const std::string& model_key, int steps_per_contact) {
   EngineExport e;
   const DropTestSetup setup = resolve_setup(options, paper);  // the inputs' own checks first
+  refuse_options_engines_do_not_read(options);
   e.model = &engine_model(engine, model_key, options.damping);
   e.contact = make_engine_contact(setup, options.damping);
   e.steps_per_contact = steps_per_contact;
@@ -79,7 +94,8 @@ std::string export_text(const EngineExport& e) {
                    c.mass_kg, c.density_kg_per_m3(), c.sphere.E_Pa, c.sphere.nu);
   s += fmt::format("  wall         E = {:.6g} Pa, nu = {:.6g}\n", c.wall.E_Pa, c.wall.nu);
   s += fmt::format("  law          e = {:.6g}", c.restitution);
-  if (c.time_constant_s > 0) s += fmt::format(", A = {:.6g} s (calibrated on the spheres at {:.6g} m/s)", c.time_constant_s, c.speed_mps);
+  if (c.time_constant_s > 0)
+    s += fmt::format(", A = {:.6g} s (calibrated on the spheres at {:.6g} m/s)", c.time_constant_s, c.calibration_speed_mps);
   s += "\n";
   s += fmt::format("  {:<14} {:>12} {:>14} {:>14} {:>14}\n", "impact", "speed_mps", "restitution", "contact_time_s",
                    "peak_force_N");
@@ -101,7 +117,10 @@ nlohmann::ordered_json to_json(const EngineExport& e) {
   j["hertzdash_law"] = c.law;
   j["relation"] = e.model->relation;
   j["restitution"] = c.restitution;
-  if (c.time_constant_s > 0) j["viscous_time_constant_s"] = c.time_constant_s;
+  if (c.time_constant_s > 0) {
+    j["viscous_time_constant_s"] = c.time_constant_s;
+    j["calibration_speed_mps"] = c.calibration_speed_mps;
+  }
   j["speed_mps"] = c.speed_mps;
   j["sphere_density_kg_per_m3"] = c.density_kg_per_m3();
   j["steps_per_contact"] = e.steps_per_contact;
@@ -123,9 +142,13 @@ nlohmann::ordered_json to_json(const EngineExport& e) {
 EngineConformance run_engine_conformance(const RunOptions& options, const PaperParameters& paper, Engine engine,
                                          int steps_per_contact) {
   const DropTestSetup setup = resolve_setup(options, paper);  // the inputs' own checks first
+  refuse_options_engines_do_not_read(options);
   if (options.damping != default_damping_law)
     throw InvalidParameter("damping", options.damping,
                            "omitted: conformance runs every model of the engine with the law it equals");
+  if (options.reference_velocity_mps)
+    throw InvalidParameter("reference-velocity", format_value(*options.reference_velocity_mps),
+                           "omitted: conformance calibrates each law at the approach speed (`impact-velocity`)");
   return {engine, approach_speed(setup), steps_per_contact, engine_conformance(engine, setup, steps_per_contact)};
 }
 

@@ -50,10 +50,14 @@ std::string short_name(std::string_view key) {
 int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const int steps = args.reduced ? 200 : 1000;
-  const Parameters provenance{{"sphere_radius_m", "0.001"}, {"sphere_density_kg_per_m3", "2500"},
-                              {"sphere_E_Pa", "6.3e10"}, {"sphere_nu", "0.22"}, {"wall_E_Pa", "2e11"},
-                              {"wall_nu", "0.3"}, {"restitution", "0.9"}, {"reference_speed_mps", "1"},
+  const DropTestSetup beads = glass_beads_on_steel();
+  const auto g = [](double x) { return fmt::format("{}", x); };
+  const Parameters provenance{{"sphere_radius_m", g(beads.ball_radius_m)}, {"sphere_mass_kg", g(beads.mass_kg)},
+                              {"sphere_E_Pa", g(beads.ball.E_Pa)},         {"sphere_nu", g(beads.ball.nu)},
+                              {"wall_E_Pa", g(beads.rod.E_Pa)},            {"wall_nu", g(beads.rod.nu)},
+                              {"restitution", g(beads.restitution)},      {"reference_speed_mps", g(*beads.impact_velocity_mps)},
                               {"steps_per_contact", std::to_string(steps)}};
+  constexpr int gas_ranks = 2;
   const auto start = std::chrono::steady_clock::now();
 
   // Part 1: every model of each engine against the law it equals.
@@ -68,7 +72,7 @@ int main(int argc, char** argv) try {
                       "\\midrule\n";
   double worst = 0, typed_tsuji = NAN;
   for (Engine engine : {Engine::lammps, Engine::liggghts}) {
-    for (const ConformanceRow& r : engine_conformance(engine, glass_beads_on_steel(), steps)) {
+    for (const ConformanceRow& r : engine_conformance(engine, beads, steps)) {
       const double error = std::abs(r.engine.restitution - r.hertzdash.restitution);
       worst = std::max(worst, error);
       rows_csv.add_row({std::string(to_string(engine)), std::string(r.engine_model), std::string(r.hertzdash_law),
@@ -100,7 +104,7 @@ int main(int argc, char** argv) try {
   for (int seed : seeds) {
     gas.seed = seed;
     const TemporaryDirectory dir("granular gas");
-    const std::vector<TemperatureSample> T = run_granular_gas(gas, 2, dir.path);
+    const std::vector<TemperatureSample> T = run_granular_gas(gas, gas_ranks, dir.path);
     const HaffFit f = fit_haff_exponent(gas, T);
     exponent_sum += f.exponent;
     exponent_sq += f.exponent * f.exponent;
@@ -113,6 +117,13 @@ int main(int argc, char** argv) try {
 
   LatexMacros macros("validation/engine_conformance: the contact exported to LAMMPS and LIGGGHTS and run there", provenance);
   macros.add("engStepsPerContact", steps, "{:.0f}");
+  macros.add("engBeadRadiusMm", 1e3 * beads.ball_radius_m, "{:g}");
+  macros.add("engBeadModulusGPa", 1e-9 * beads.ball.E_Pa, "{:g}");
+  macros.add("engBeadNu", beads.ball.nu, "{:g}");
+  macros.add("engRestitution", beads.restitution, "{:g}");
+  macros.add("engReferenceSpeed", *beads.impact_velocity_mps, "{:g}");
+  macros.add("engGasVolumeFraction", gas.volume_fraction, "{:g}");
+  macros.add("engGasRanks", gas_ranks, "{:.0f}");
   macros.add_text("engWorstError", latex_scientific(worst));
   macros.add("engTsujiTyped", typed_tsuji, "{:.4f}");
   macros.add("engConformanceSeconds", conformance_seconds, "{:.1f}");
