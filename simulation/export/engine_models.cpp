@@ -52,43 +52,44 @@ constexpr auto wall = EngineImpactKind::sphere_wall;
 /// LAMMPS's wall modulus for fix wall/gran granular hertz/material: E_eff = E_wall / (2 (1 - nu_wall)).
 double lammps_wall_modulus(const EngineContact& c) { return 2 * (1 - c.sphere.nu) * c.effective_modulus_Pa(wall); }
 
-/// kuwabara-kono's eta_n0 = 4 E* A / (3 m*).
-double viscoelastic_eta(const EngineContact& c, EngineImpactKind k) {
+/// Kuwabara-Kono's dashpot K A x^{1/2} xdot per unit of m* sqrt(R* x) xdot: 4 E* A / (3 m*) [1/(m s)],
+/// with K = (4/3) E* sqrt(R*). LAMMPS's viscoelastic eta_n0 (eta_n = eta_n0 a m*, a = sqrt(R* x))
+/// and gran/hertz/history's gamma_n (m* gamma_n sqrt(R* x)) both.
+double kuwabara_kono_damping_per_mass(const EngineContact& c, EngineImpactKind k) {
   return 4 * c.effective_modulus_Pa(k) * c.time_constant_s / (3 * c.reduced_mass_kg(k));
 }
 
+/// pair_style granular's lines: hertz/material with `damping` and its coefficient, no friction.
 std::string lammps_granular(double E, double damp, double nu, std::string_view damping) {
   return fmt::format("hertz/material {} {} {} damping {} tangential linear_nohistory 0 0", number(E), number(damp),
                      number(nu), damping);
 }
+std::string lammps_granular_pair(const EngineContact& c, double damp, std::string_view damping) {
+  return "pair_style granular\npair_coeff * * " + lammps_granular(c.sphere.E_Pa, damp, c.sphere.nu, damping) + "\n";
+}
+std::string lammps_granular_wall(const EngineContact& c, double damp, std::string_view damping) {
+  return "fix wall all wall/gran granular " + lammps_granular(lammps_wall_modulus(c), damp, c.sphere.nu, damping) +
+         " zplane 0.0 NULL\n";
+}
 
 std::string lammps_viscoelastic_pair(const EngineContact& c) {
-  return "pair_style granular\npair_coeff * * " +
-         lammps_granular(c.sphere.E_Pa, viscoelastic_eta(c, pair), c.sphere.nu, "viscoelastic") + "\n";
+  return lammps_granular_pair(c, kuwabara_kono_damping_per_mass(c, pair), "viscoelastic");
 }
 std::string lammps_viscoelastic_wall(const EngineContact& c) {
-  return "fix wall all wall/gran granular " +
-         lammps_granular(lammps_wall_modulus(c), viscoelastic_eta(c, wall), c.sphere.nu, "viscoelastic") +
-         " zplane 0.0 NULL\n";
+  return lammps_granular_wall(c, kuwabara_kono_damping_per_mass(c, wall), "viscoelastic");
 }
 std::string lammps_tsuji_pair(const EngineContact& c) {
-  return "pair_style granular\npair_coeff * * " +
-         lammps_granular(c.sphere.E_Pa, tsuji_engine_restitution_input(c.restitution), c.sphere.nu, "tsuji") + "\n";
+  return lammps_granular_pair(c, tsuji_engine_restitution_input(c.restitution), "tsuji");
 }
 std::string lammps_tsuji_wall(const EngineContact& c) {
-  return "fix wall all wall/gran granular " +
-         lammps_granular(lammps_wall_modulus(c), tsuji_engine_restitution_input(c.restitution), c.sphere.nu, "tsuji") +
-         " zplane 0.0 NULL\n";
+  return lammps_granular_wall(c, tsuji_engine_restitution_input(c.restitution), "tsuji");
 }
 
-/// gran/hertz/history: F = sqrt(R* x) (kn x - m* gamma_n xdot), so kn = (4/3) E* and
-/// m* gamma_n sqrt(R*) = K A, gamma_n = (4/3) E* A / m*. kn is the pair style's (one value for
-/// every pair), the wall's its fix's; no friction (xmu 0), tangential stiffness and damping 0.
-double hertz_history_gamma(const EngineContact& c, EngineImpactKind k) {
-  return 4 * c.effective_modulus_Pa(k) * c.time_constant_s / (3 * c.reduced_mass_kg(k));
-}
+/// gran/hertz/history: F = sqrt(R* x) (kn x - m* gamma_n xdot), so kn = (4/3) E* and gamma_n is
+/// kuwabara_kono_damping_per_mass. kn is the pair style's (one value for every pair), the wall's its
+/// fix's; no friction (xmu 0), tangential stiffness and damping 0.
 std::string hertz_history_coefficients(const EngineContact& c, EngineImpactKind k) {
-  return fmt::format("{} 0 {} 0 0 0", number(4 * c.effective_modulus_Pa(k) / 3), number(hertz_history_gamma(c, k)));
+  return fmt::format("{} 0 {} 0 0 0", number(4 * c.effective_modulus_Pa(k) / 3), number(kuwabara_kono_damping_per_mass(c, k)));
 }
 std::string hertz_history_pair(const EngineContact& c) {
   return "pair_style gran/hertz/history " + hertz_history_coefficients(c, pair) + "\npair_coeff * *\n";
@@ -117,13 +118,13 @@ std::string liggghts_hertz_wall(const EngineContact&) {
 }
 
 EngineCoefficient viscoelastic_input(const EngineContact& c, EngineImpactKind k) {
-  return {"eta_n0 [1/(m s)]", viscoelastic_eta(c, k)};
+  return {"eta_n0 [1/(m s)]", kuwabara_kono_damping_per_mass(c, k)};
 }
 EngineCoefficient tsuji_input(const EngineContact& c, EngineImpactKind) {
   return {"e_L (damping tsuji)", tsuji_engine_restitution_input(c.restitution)};
 }
 EngineCoefficient hertz_history_input(const EngineContact& c, EngineImpactKind k) {
-  return {"gamma_n [1/(m s)]", hertz_history_gamma(c, k)};
+  return {"gamma_n [1/(m s)]", kuwabara_kono_damping_per_mass(c, k)};
 }
 EngineCoefficient liggghts_input(const EngineContact& c, EngineImpactKind) { return {"coefficientRestitution", c.restitution}; }
 double same_restitution(double e) { return e; }
