@@ -51,14 +51,16 @@ Command add_export_command(CLI::App& app) {
             const std::filesystem::path dir(opt->out);
             std::vector<std::pair<std::filesystem::path, std::string>> files;
             // Checked before any work, written after all of it.
-            for (const char* name : {"sphere_sphere.in", "sphere_wall.in", "contact_lines.in"})
-              prepare_output_file("out", (dir / name).string(), opt->mkdir);
+            for (std::string_view name : engine_deck_files) prepare_output_file("out", (dir / name).string(), opt->mkdir);
             const EngineExport e = export_engine_decks(opt->run, load_paper_parameters(), engine, opt->model, steps);
             for (const auto& [name, text] : e.files()) files.emplace_back(dir / name, text);
-            create_output_directories((dir / "sphere_sphere.in").string(), opt->mkdir);
+            create_output_directories((dir / engine_deck_files[0]).string(), opt->mkdir);
             write_files_atomically(files);
             if (opt->json) std::cout << to_json(e).dump(2) << "\n";
-            else std::cout << export_text(e) << "  decks        " << dir.string() << "/{sphere_sphere,sphere_wall,contact_lines}.in\n";
+            else {
+              std::cout << export_text(e) << "  decks        ";
+              for (const auto& [name, text] : files) std::cout << name.string() << (name == files.back().first ? "\n" : ", ");
+            }
             return 0;
           }};
 }

@@ -64,7 +64,9 @@ int steps_per_contact_option(std::string_view command, std::optional<double> giv
 }
 
 std::vector<std::pair<std::string, std::string>> EngineExport::files() const {
-  return {{"sphere_sphere.in", pair_deck.text}, {"sphere_wall.in", wall_deck.text}, {"contact_lines.in", contact_lines}};
+  return {{std::string(engine_deck_files[0]), pair_deck.text},
+          {std::string(engine_deck_files[1]), wall_deck.text},
+          {std::string(engine_deck_files[2]), contact_lines}};
 }
 
 EngineExport export_engine_decks(const RunOptions& options, const PaperParameters& paper, Engine engine,
@@ -128,7 +130,7 @@ nlohmann::ordered_json to_json(const EngineExport& e) {
     const EngineImpactResult& r = c.predicted(k);
     const EngineDeck& d = k == pair ? e.pair_deck : e.wall_deck;
     j["impacts"].push_back({{"impact", to_string(k)},
-                            {"deck", k == pair ? "sphere_sphere.in" : "sphere_wall.in"},
+                            {"deck", engine_deck_files[k == pair ? 0 : 1]},
                             {"restitution", r.restitution},
                             {"contact_time_s", r.contact_time_s},
                             {"peak_force_N", r.peak_force_N},

@@ -21,13 +21,16 @@ namespace hertzdash {
 /// default, within its declared range; InvalidParameter naming it otherwise.
 int steps_per_contact_option(std::string_view command, std::optional<double> given);
 
+/// The files `hertzdash export` writes into its directory: the two decks, then the lines to paste.
+inline constexpr std::string_view engine_deck_files[] = {"sphere_sphere.in", "sphere_wall.in", "contact_lines.in"};
+
 struct EngineExport {
   const EngineModel* model = nullptr;
   EngineContact contact;
   int steps_per_contact = 0;
   EngineDeck pair_deck, wall_deck;
   std::string contact_lines;  ///< the lines to paste, with their provenance header
-  /// The files to write into the output directory: (name, content).
+  /// The files to write into the output directory (engine_deck_files): (name, content).
   std::vector<std::pair<std::string, std::string>> files() const;
 };
 
