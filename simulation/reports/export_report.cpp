@@ -43,15 +43,19 @@ Parameters deck_parameters(const EngineExport& e) {
   return p;
 }
 
-/// The run options an engine deck has no place for, refused by name (the engines' contacts allow
-/// tension and run the rigid rod's contact, in vacuum).
+/// The run options an engine deck reads: the bodies, the approach speed and the law with its own
+/// inputs (resolve_setup has checked those against the law). Every other one given is refused by
+/// name (refuse_options_not_read): the engines' contacts allow tension and fly nothing, the elastic
+/// rod is the paper's own, and hertzdash's prediction runs its own accurate solver, not the
+/// solver options.
 void refuse_options_engines_do_not_read(const RunOptions& o) {
-  if (o.no_tension)
-    throw InvalidParameter("no-tension", "on", "off: the engines' contacts allow tension, as the decks run them");
-  if (o.rod_model != "rigid")
-    throw InvalidParameter("rod-model", o.rod_model, "rigid: an engine's sphere is a rigid body with a Hertz contact");
-  if (o.air_density_kg_per_m3)
-    throw InvalidParameter("air-density", format_value(*o.air_density_kg_per_m3), "omitted: the decks run one contact, in vacuum");
+  std::vector<std::string_view> read{"rod",   "height", "impact-velocity", "mass",  "density", "restitution", "ball-E",
+                                     "ball-nu", "ball-radius", "rod-E",    "rod-nu", "gravity", "damping"};
+  for (const RunOption& option : run_options())
+    if (!option.readers.laws.empty()) read.push_back(option.name);
+  refuse_options_not_read(o, RunOptions{}, read,
+                          "a run of hertzdash's own contact (simulate, restitution): the engines' decks take the bodies, "
+                          "the approach speed and the law (docs/engines.md)");
 }
 
 }  // namespace
