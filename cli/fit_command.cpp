@@ -15,6 +15,7 @@
 #include "hertzdash/simulation/reports/fit_curves.hpp"
 #include "hertzdash/simulation/reports/fit_request.hpp"
 #include "hertzdash/simulation/reports/fit_verdict.hpp"
+#include "hertzdash/simulation/reports/result_output.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 
 #include <fmt/format.h>
@@ -116,11 +117,7 @@ void print_fit(const FitRun& r, const FitResult& f) {
   if (trace) {
     std::cout << fmt::format("  {} iterations, {} model runs, stopped: {}; fitted contact time {:.6g} s\n", f.iterations,
                              f.model_runs, f.stop_reason, f.model_impact ? f.model_impact->contact_time_s : NAN);
-    std::string constants;  // the fitted law's, as `simulate` and `restitution` give them
-    if (f.model_impact)
-      for (const NamedValue& c : f.model_impact->law_coefficients)
-        constants += fmt::format("{}{} {:.6g}", constants.empty() ? "" : ", ", c.name, c.value);
-    if (!constants.empty()) std::cout << "  law          " << constants << "\n";
+    if (f.model_impact) std::cout << law_coefficients_line(f.model_impact->law_coefficients);
   } else
     std::cout << fmt::format("  {} iterations, {} model runs ({}), stopped: {}\n", f.iterations, f.model_runs,
                              f.integrator_used, f.stop_reason);

@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/setup_options.hpp"
+#include "hertzdash/simulation/reports/result_output.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
@@ -56,10 +57,7 @@ Command add_restitution_command(CLI::App& app) {
             if (r.e_target) std::cout << fmt::format("  e_target     {:.6g}\n", *r.e_target);
             std::cout << fmt::format("  e_input      {:.6g}\n", r.e_input);
             std::cout << fmt::format("  e_effective  {:.6g}\n", r.e_effective);
-            std::string constants;  // the law's, at e_input: what an engine or a program of one's own needs
-            for (const NamedValue& c : r.summary.law_coefficients)
-              constants += fmt::format("{}{} {:.6g}", constants.empty() ? "" : ", ", c.name, c.value);
-            if (!constants.empty()) std::cout << "  law          " << constants << "\n";
+            std::cout << law_coefficients_line(r.summary.law_coefficients);  // at e_input
             if (r.integrator_used != asked)
               std::cout << fmt::format("  integrator   {} (ran {})\n", to_string(asked), to_string(r.integrator_used));
             return 0;

@@ -3,10 +3,12 @@
 // each kind's own keys beside it), the curves file.
 #include "hertzdash/simulation/reports/fit_report.hpp"
 
+
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/fit/trace_setup.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/reports/result_output.hpp"
 #include "hertzdash/simulation/reports/fit_verdict.hpp"
 #include "hertzdash/simulation/reports/report_json.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
@@ -128,9 +130,7 @@ json fit_json(const FitRun& run, const FitResult& f, const PaperParameters& pape
     j["work"] = f.work;
     j["contact_time_s"] = f.model_impact ? f.model_impact->contact_time_s : NAN;
     // The fitted law's constants (its coefficients at the fitted e, the paper's c_e, ...).
-    j["law_coefficients"] = nlohmann::ordered_json::object();
-    if (f.model_impact)
-      for (const NamedValue& c : f.model_impact->law_coefficients) j["law_coefficients"][c.name] = c.value;
+    j["law_coefficients"] = law_coefficients_json(f.model_impact ? f.model_impact->law_coefficients : std::vector<NamedValue>{});
   }
   if (f.cross_validation) {
     const CrossValidation& cv = *f.cross_validation;

@@ -4,6 +4,7 @@
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
 #include "hertzdash/simulation/reports/run_reports.hpp"
+#include "hertzdash/simulation/reports/result_output.hpp"
 #include "hertzdash/simulation/run/calibrate_restitution.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 
@@ -79,8 +80,7 @@ nlohmann::ordered_json to_json(const RestitutionRun& run) {
   if (run.iterations) j["iterations"] = *run.iterations;
   j["integrator_used"] = to_string(run.integrator_used);
   // The law's constants at e_input (kuwabara-kono's A, hunt-crossley's chi, the paper's c_e, ...).
-  j["law_coefficients"] = nlohmann::ordered_json::object();
-  for (const NamedValue& c : run.summary.law_coefficients) j["law_coefficients"][c.name] = c.value;
+  j["law_coefficients"] = law_coefficients_json(run.summary.law_coefficients);
   j["warnings"] = to_json(run_diagnostics(run));
   j["git_revision"] = git_revision();
   return j;

@@ -1,5 +1,7 @@
 #include "hertzdash/simulation/reports/result_output.hpp"
 
+#include <fmt/format.h>
+
 #include "hertzdash/simulation/run/integrator_table.hpp"
 
 #include <cmath>
@@ -29,12 +31,7 @@ void add_fields(nlohmann::ordered_json& j, std::string_view group, const ImpactS
     const std::string name(f.name);
     switch (f.type) {
       case ResultType::integrator: j[name] = to_string(s.integrator_used); break;
-      case ResultType::coefficients: {
-        nlohmann::ordered_json coefficients = nlohmann::ordered_json::object();
-        for (const NamedValue& c : s.law_coefficients) coefficients[c.name] = c.value;
-        j[name] = coefficients;
-        break;
-      }
+      case ResultType::coefficients: j[name] = law_coefficients_json(s.law_coefficients); break;
       case ResultType::warnings: j[name] = std::move(warnings); break;
       case ResultType::group:
         if (std::isnan(f.value(s, setup))) break;
@@ -51,6 +48,18 @@ void add_fields(nlohmann::ordered_json& j, std::string_view group, const ImpactS
 }
 
 }  // namespace
+
+nlohmann::ordered_json law_coefficients_json(const std::vector<NamedValue>& coefficients) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const NamedValue& c : coefficients) j[c.name] = c.value;
+  return j;
+}
+
+std::string law_coefficients_line(const std::vector<NamedValue>& coefficients) {
+  std::string constants;
+  for (const NamedValue& c : coefficients) constants += fmt::format("{}{} {:.6g}", constants.empty() ? "" : ", ", c.name, c.value);
+  return constants.empty() ? constants : "  law          " + constants + "\n";
+}
 
 void add_result_fields(nlohmann::ordered_json& j, const ImpactSummary& s, const DropTestSetup& setup,
                        nlohmann::ordered_json warnings) {

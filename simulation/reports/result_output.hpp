@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace hertzdash {
 
@@ -15,6 +16,14 @@ namespace hertzdash {
 /// run's notes and warnings (run_diagnostics), which need more than the impact to word.
 void add_result_fields(nlohmann::ordered_json& j, const ImpactSummary& s, const DropTestSetup& setup,
                        nlohmann::ordered_json warnings);
+
+/// A law's constants (ImpactSummary::law_coefficients) as a JSON object, name: value: simulate's,
+/// restitution's and a trace fit's `law_coefficients`.
+nlohmann::ordered_json law_coefficients_json(const std::vector<NamedValue>& coefficients);
+
+/// The same as restitution's and fit's text line, "  law          NAME VALUE, NAME VALUE\n";
+/// empty for a law without constants.
+std::string law_coefficients_line(const std::vector<NamedValue>& coefficients);
 
 /// simulate's text block below its heading: one line per field with a text line, in their order
 /// (law_coefficients: one line per coefficient), each indented by two spaces and ended by a newline;
