@@ -3,7 +3,6 @@
 // each kind's own keys beside it), the curves file.
 #include "hertzdash/simulation/reports/fit_report.hpp"
 
-
 #include "hertzdash/io/csv_writer.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/simulation/fit/trace_setup.hpp"
