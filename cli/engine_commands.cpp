@@ -1,5 +1,5 @@
 // The discrete-element engines' commands (simulation/reports/export_report.hpp, docs/engines.md):
-//   - `hertzdash export --engine lammps|liggghts`: a contact's input decks, two spheres head-on and
+//   - `hertzdash export --engine lammps|liggghts|yade`: a contact's input decks, two spheres head-on and
 //     a sphere on a wall, each runnable as written, and the lines to paste into an input of one's
 //     own, for the engine model that equals the law --damping names, with hertzdash's prediction
 //     of each impact beside them; the three files written together, atomically, into --out;
@@ -34,7 +34,7 @@ struct ExportOptions {
 Command add_export_command(CLI::App& app) {
   auto opt = std::make_shared<ExportOptions>();
   CLI::App* sub = app.add_subcommand(
-      "export", "Input decks of a contact for LAMMPS or LIGGGHTS: the engine model equal to --damping, runnable as written");
+      "export", "Input decks of a contact for LAMMPS, LIGGGHTS or YADE: the engine model equal to --damping, runnable as written");
   add_run_options(*sub, opt->run);
   auto o = [](std::string_view key) { return declared_option("export", key); };
   sub->add_option(o("engine").flag, opt->engine, o("engine").help);
@@ -51,10 +51,11 @@ Command add_export_command(CLI::App& app) {
             const std::filesystem::path dir(opt->out);
             std::vector<std::pair<std::filesystem::path, std::string>> files;
             // Checked before any work, written after all of it.
-            for (std::string_view name : engine_deck_files) prepare_output_file("out", (dir / name).string(), opt->mkdir);
+            const auto names = engine_deck_files(engine);
+            for (const std::string& name : names) prepare_output_file("out", (dir / name).string(), opt->mkdir);
             const EngineExport e = export_engine_decks(opt->run, load_paper_parameters(), engine, opt->model, steps);
             for (const auto& [name, text] : e.files()) files.emplace_back(dir / name, text);
-            create_output_directories((dir / engine_deck_files[0]).string(), opt->mkdir);
+            create_output_directories((dir / names[0]).string(), opt->mkdir);
             write_files_atomically(files);
             if (opt->json) std::cout << to_json(e).dump(2) << "\n";
             else {

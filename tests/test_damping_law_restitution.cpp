@@ -147,6 +147,9 @@ TEST_CASE("Kelvin-Voigt and the DEM dashpot under the tension clamp: closed form
           solver_bound);
     CHECK(std::abs(effective_restitution_of<TsujiDem>(p.K, p.mass_kg, p.v0_mps, e, true) - expected) <
           solver_bound);
+    // The library's closed form (model/restitution.hpp, YADE's export uses it) and its inverse.
+    CHECK(clamped_restitution(zeta) == Approx(expected).epsilon(1e-14));
+    CHECK(zeta_from_clamped_restitution(expected) == Approx(zeta).epsilon(1e-12));
   }
 }
 

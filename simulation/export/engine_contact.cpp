@@ -6,8 +6,11 @@
 #include "hertzdash/simulation/run/impact_summary.hpp"
 #include "hertzdash/simulation/run/law_runs.hpp"
 
+#include "hertzdash/model/restitution.hpp"
+
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace hertzdash {
 
@@ -38,7 +41,10 @@ DropTestSetup engine_impact_setup(const EngineContact& c, EngineImpactKind k) {
   s.ball = c.sphere;
   s.ball_yield_stress_Pa = INFINITY;  // the engines' contact is elastic: no yield check
   s.rod = k == EngineImpactKind::sphere_sphere ? c.sphere : c.wall;
-  s.restitution = c.restitution;
+  // Clamped, tsuji-dem's input is the e (with tension) of the zeta whose clamped e is c.restitution.
+  s.restitution = c.tension_clamped ? std::exp(-std::numbers::pi * std::tan(std::asin(zeta_from_clamped_restitution(c.restitution))))
+                                    : c.restitution;
+  s.no_tension = c.tension_clamped;
   s.height_m = 0;
   s.impact_velocity_mps = c.speed_mps;
   s.gravity_mps2 = 0;
@@ -67,9 +73,12 @@ void predict_impacts(EngineContact& c) {
 
 }  // namespace
 
-EngineContact make_engine_contact(const DropTestSetup& setup, const std::string& law) {
+EngineContact make_engine_contact(const DropTestSetup& setup, const std::string& law, bool tension_clamped) {
+  if (tension_clamped && law != "tsuji-dem")
+    throw std::invalid_argument("an engine's clamped contact is known for tsuji-dem alone, not " + law);
   EngineContact c;
   c.law = law;
+  c.tension_clamped = tension_clamped;
   c.radius_m = setup.ball_radius_m;
   c.mass_kg = setup.mass_kg;
   c.sphere = setup.ball;

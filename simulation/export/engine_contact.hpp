@@ -41,6 +41,9 @@ struct EngineContact {
   /// (`reference-velocity`, default speed_mps); 0 for a law without a material time constant.
   double calibration_speed_mps = 0;
   double speed_mps = 0;           ///< the approach speed of both impacts [m/s] (relative for the pair)
+  /// The engine clamps the force at zero (YADE): the law runs with the tension clamp, and
+  /// tsuji-dem at the zeta whose clamped e is `restitution` (zeta_from_clamped_restitution).
+  bool tension_clamped = false;
   EngineImpactResult pair, on_wall;  ///< hertzdash's prediction of each impact
 
   double density_kg_per_m3() const;
@@ -56,8 +59,10 @@ struct EngineContact {
 /// and material are each sphere's (docs/balls.md: `--mass`, `--ball-radius`, `--ball-E`,
 /// `--ball-nu`), the flat's (`--rod-E`, `--rod-nu`) the wall's, the approach speed the set-up's;
 /// the law `law` is calibrated on the pair and both impacts are predicted (gbs8-regularized at
-/// rtol 1e-10). Throws InvalidParameter as the set-up's own checks do.
-EngineContact make_engine_contact(const DropTestSetup& setup, const std::string& law);
+/// rtol 1e-10). `tension_clamped`: an engine that clamps the force at zero (EngineModel::
+/// tension_clamped), for tsuji-dem alone (std::invalid_argument otherwise). Throws
+/// InvalidParameter as the set-up's own checks do.
+EngineContact make_engine_contact(const DropTestSetup& setup, const std::string& law, bool tension_clamped = false);
 
 /// The same contact at another approach speed, its constants kept (kuwabara-kono's A is the
 /// material's), both impacts predicted again.

@@ -21,20 +21,47 @@
 //   gamma_n = -2 sqrt(5/6) beta sqrt(S_n m*), S_n = 2 E* sqrt(R* x), beta = ln e / sqrt(ln^2 e + pi^2), so
 //   F = K x^{3/2} - sqrt(5) beta sqrt(K m*) x^{1/4} xdot: tsuji-dem at the same e, equal. Its walls are a
 //   material of their own (a finite modulus) mixed by eq. (3).
+// YADE (2023.02a, Debian's `yade`), Law2_ScGeom_MindlinPhys_Mindlin with Ip2_FrictMat_FrictMat_MindlinPhys(en):
+//   F = max(0, K x^{3/2} + 2 beta_n sqrt(m* k_n) xdot), K = (4/3) E* sqrt(R*), k_n = (3/2) K x^{1/2}, so
+//   the dashpot is sqrt(6) beta_n sqrt(K m*) x^{1/4} xdot: tsuji-dem with zeta = sqrt(6/5) beta_n under
+//   the tension clamp, whose e is clamped_restitution(zeta) (model/restitution.hpp). beta_n(e_Y) is
+//   Thornton et al.'s fit, so e_Y is not quite e: the deck takes the e_Y that gives the law's e. The
+//   engine's wall() and box() give R* = R/2 to this law (measured: kno is 1/sqrt(2) of eq. 3's); the
+//   deck's wall is a fixed sphere of radius 10^6 R, whose R* is R (1 - 10^-6).
 #include "hertzdash/simulation/export/engine_contact.hpp"
 
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hertzdash {
 
-enum class Engine { lammps, liggghts };
+enum class Engine { lammps, liggghts, yade };
+
+struct EngineDeck;
+struct EngineModel;
+
+/// An engine: how hertzdash runs it and writes its decks. Registered once (engine_models.cpp).
+struct EngineProgram {
+  Engine engine;
+  std::string_view name;            ///< --engine: "lammps"
+  std::string_view program;         ///< looked up on PATH: "lmp"
+  std::string_view deck_extension;  ///< ".in", ".py"
+  /// The command line that runs the deck `deck` in its directory (program first).
+  std::vector<std::string> (*command)(const std::string& deck);
+  /// The text of an impact's deck (after its header), given its time step, steps and force file.
+  std::string (*deck_text)(const EngineModel&, const EngineContact&, EngineImpactKind, const EngineDeck&);
+};
+
+/// Every registered engine.
+std::span<const EngineProgram> engines();
+const EngineProgram& engine_program(Engine e);
 const char* to_string(Engine e);
 /// The engine spelled `name`; InvalidParameter("engine", ...) otherwise (an empty name: none given).
 Engine parse_engine(std::string_view name);
-/// The engine's program, looked up on PATH: lmp, liggghts.
-const char* engine_program(Engine e);
+/// "lammps, liggghts or yade".
+std::string engine_names();
 
 /// The engine's damping input of one impact: its name in the engine and its value.
 struct EngineCoefficient {
@@ -57,6 +84,9 @@ struct EngineModel {
   /// For a model whose damping input is a restitution: the law's e when that input is set to e
   /// itself (what a user who types their e in gets); nullptr for a model whose input is not one.
   double (*restitution_given_input)(double e);
+  /// The engine clamps the contact force at zero (no attraction): the law it equals is run with
+  /// the tension clamp (EngineContact::tension_clamped).
+  bool tension_clamped = false;
 };
 
 /// Every registered engine model, engine by engine.
@@ -75,6 +105,18 @@ double lammps_tsuji_restitution(double e_L);
 /// The e_L whose restitution is e (Brent on [0, 1]); InvalidParameter naming `restitution` with
 /// the range the polynomial reaches.
 double tsuji_engine_restitution_input(double e);
+
+/// YADE's Ip2_FrictMat_FrictMat_MindlinPhys with `en`: Thornton et al. (2013)'s fit, beta_n(e_Y) =
+/// sqrt(1 / (1 - (1 + e_Y)^2 exp(a(e_Y))) - 1), a the tenth-degree polynomial of their Table 2
+/// (0 at e_Y = 1, as YADE sets it).
+double yade_thornton_beta(double e_Y);
+/// The restitution YADE's Mindlin gives with `en` = e_Y: its dashpot 2 beta_n sqrt(m* k_n) xdot,
+/// k_n = (3/2) K x^{1/2}, is tsuji-dem's c x^{1/4} xdot with zeta = sqrt(6/5) beta_n, clamped at
+/// zero force: clamped_restitution(sqrt(6/5) beta_n(e_Y)).
+double yade_mindlin_restitution(double e_Y);
+/// The e_Y whose restitution is e (Brent); InvalidParameter naming `restitution` with the range
+/// the fit reaches (below 1 it reaches no e above yade_mindlin_restitution(1^-) = 0.9846).
+double yade_mindlin_restitution_input(double e);
 
 struct EngineDeck {
   std::string text;            ///< the deck

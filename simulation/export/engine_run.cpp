@@ -25,7 +25,7 @@ bool engine_installed(Engine engine) {
   const char* path = std::getenv("PATH");
   std::istringstream dirs(path ? path : "");
   for (std::string dir; std::getline(dirs, dir, ':');)
-    if (!dir.empty() && access((std::filesystem::path(dir) / engine_program(engine)).c_str(), X_OK) == 0) return true;
+    if (!dir.empty() && access((std::filesystem::path(dir) / engine_program(engine).program).c_str(), X_OK) == 0) return true;
   return false;
 }
 
@@ -94,10 +94,10 @@ void write_deck(const std::filesystem::path& path, const std::string& text) {
 
 EngineImpactResult run_engine_deck(Engine engine, const EngineDeck& deck, const std::filesystem::path& directory,
                                    const std::string& deck_name, double approach_speed_mps) {
-  const char* program = engine_program(engine);
+  const std::string program(engine_program(engine).program);
   write_deck(directory / deck_name, deck.text);
   const std::filesystem::path screen = directory / (deck_name + ".out");
-  const std::string said = run_in_directory({program, "-in", deck_name, "-log", "none"}, directory, screen,
+  const std::string said = run_in_directory(engine_program(engine).command(deck_name), directory, screen,
                                             "`make deps-engines` installs it (debian-packages-engines.txt)");
   const std::string result = line_starting(said, "hertzdash_result ");
   EngineImpactResult r;

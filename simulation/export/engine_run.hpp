@@ -21,7 +21,7 @@ std::string run_in_directory(std::vector<std::string> args, const std::filesyste
 /// Writes a deck's text to `path`; std::runtime_error if it cannot.
 void write_deck(const std::filesystem::path& path, const std::string& text);
 
-/// Runs `engine_program(engine)` on `deck` (written to `directory` as `deck_name`, with the
+/// Runs the engine's program (engine_program(engine).command) on `deck` (written to `directory` as `deck_name`, with the
 /// engine's screen output beside it as `deck_name`.out) and reads its result; `approach_speed_mps`
 /// turns the rebound speed into e. Throws std::runtime_error naming the engine and its ERROR
 /// line, or saying the program is not installed (`make deps-engines`).

@@ -125,7 +125,7 @@ constexpr ParameterDecl basins[] = {
      .default_source = "the machine's cores", .help = "Threads (the result does not depend on them)"},
     json, file("csv", "Write the grid to this CSV file, one row per start, the attractors as comments"), mkdir};
 // `hertzdash export` and `hertzdash conformance` (simulation/export/, docs/engines.md).
-constexpr ParameterDecl engine{.key = "engine", .type = T::text, .choices = "lammps, liggghts", .default_value = "none",
+constexpr ParameterDecl engine{.key = "engine", .type = T::text, .choices = "lammps, liggghts, yade", .default_value = "none",
                                .help = "The discrete-element engine (required)"};
 constexpr ParameterDecl steps_per_contact{
     .key = "steps-per-contact", .range = R::integer(10, 10000000), .default_value = "1000", .default_number = 1000,
@@ -134,11 +134,11 @@ constexpr ParameterDecl steps_per_contact{
     .help = "Time steps per predicted contact time: the decks' time step"};
 constexpr ParameterDecl export_decks[] = {
     engine,
-    {.key = "engine-model", .type = T::text, .choices = "granular-viscoelastic, gran-hertz-history, granular-tsuji (lammps); hertz (liggghts)",
+    {.key = "engine-model", .type = T::text, .choices = "granular-viscoelastic, gran-hertz-history, granular-tsuji (lammps); hertz (liggghts); mindlin (yade)",
      .default_value = "the engine's model equal to --damping", .default_source = "computed",
      .help = "The engine's contact model; it must equal the law --damping names"},
     {.key = "out", .type = T::text, .choices = "a directory", .default_value = "none",
-     .help = "Directory of the decks (required): sphere_sphere.in, sphere_wall.in and contact_lines.in"},
+     .help = "Directory of the decks (required): sphere_sphere.in, sphere_wall.in and contact_lines.in (.py for yade)"},
     steps_per_contact,
     json, mkdir};
 constexpr ParameterDecl conformance[] = {engine, steps_per_contact, json};

@@ -67,10 +67,15 @@ int steps_per_contact_option(std::string_view command, std::optional<double> giv
   return static_cast<int>(steps);
 }
 
+std::array<std::string, 3> engine_deck_files(Engine engine) {
+  const std::string_view extension = engine_program(engine).deck_extension;
+  return {fmt::format("sphere_sphere{}", extension), fmt::format("sphere_wall{}", extension),
+          fmt::format("contact_lines{}", extension)};
+}
+
 std::vector<std::pair<std::string, std::string>> EngineExport::files() const {
-  return {{std::string(engine_deck_files[0]), pair_deck.text},
-          {std::string(engine_deck_files[1]), wall_deck.text},
-          {std::string(engine_deck_files[2]), contact_lines}};
+  const auto names = engine_deck_files(model->engine);
+  return {{names[0], pair_deck.text}, {names[1], wall_deck.text}, {names[2], contact_lines}};
 }
 
 EngineExport export_engine_decks(const RunOptions& options, const PaperParameters& paper, Engine engine,
@@ -79,7 +84,7 @@ EngineExport export_engine_decks(const RunOptions& options, const PaperParameter
   const DropTestSetup setup = resolve_setup(options, paper);  // the inputs' own checks first
   refuse_options_engines_do_not_read(options);
   e.model = &engine_model(engine, model_key, options.damping);
-  e.contact = make_engine_contact(setup, options.damping);
+  e.contact = make_engine_contact(setup, options.damping, e.model->tension_clamped);
   e.steps_per_contact = steps_per_contact;
   const Parameters p = deck_parameters(e);
   const std::string engine_name = to_string(engine);
@@ -134,7 +139,7 @@ nlohmann::ordered_json to_json(const EngineExport& e) {
     const EngineImpactResult& r = c.predicted(k);
     const EngineDeck& d = k == pair ? e.pair_deck : e.wall_deck;
     j["impacts"].push_back({{"impact", to_string(k)},
-                            {"deck", engine_deck_files[k == pair ? 0 : 1]},
+                            {"deck", engine_deck_files(e.model->engine)[k == pair ? 0 : 1]},
                             {"restitution", r.restitution},
                             {"contact_time_s", r.contact_time_s},
                             {"peak_force_N", r.peak_force_N},

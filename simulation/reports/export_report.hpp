@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,8 +22,9 @@ namespace hertzdash {
 /// default, within its declared range; InvalidParameter naming it otherwise.
 int steps_per_contact_option(std::string_view command, std::optional<double> given);
 
-/// The files `hertzdash export` writes into its directory: the two decks, then the lines to paste.
-inline constexpr std::string_view engine_deck_files[] = {"sphere_sphere.in", "sphere_wall.in", "contact_lines.in"};
+/// The files `hertzdash export` writes into its directory: the two decks, then the lines to paste
+/// (sphere_sphere.in, sphere_wall.in, contact_lines.in; .py for YADE).
+std::array<std::string, 3> engine_deck_files(Engine engine);
 
 struct EngineExport {
   const EngineModel* model = nullptr;

@@ -35,7 +35,7 @@ def test_conformance_rows_and_bad_input():
         # tsuji-dem's error bound at N = 100: 0.3 N^-1.25 (docs/engines.md).
         assert abs(row["e_engine"] - row["e_hertzdash"]) < 0.3 * 100 ** -1.25
     with pytest.raises(ValueError, match="engine"):
-        hertzdash.conformance("yade", **BEAD)
+        hertzdash.conformance("abaqus", **BEAD)
     with pytest.raises(ValueError, match="steps_per_contact"):
         hertzdash.conformance("lammps", steps_per_contact=5, **BEAD)
     with pytest.raises(ValueError, match="out"):

@@ -1,5 +1,5 @@
 // The contact exported to the discrete-element engines and run there (docs/engines.md): every
-// model of LAMMPS and LIGGGHTS beside the hertzdash law it equals, and a granular gas on LAMMPS
+// model of LAMMPS, LIGGGHTS and YADE beside the hertzdash law it equals, and a granular gas on LAMMPS
 // under mpirun against Haff's law.
 //
 // Why: a DEM user cannot tell which e an engine's contact gives. hertzdash knows the law's e at
@@ -28,6 +28,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -43,6 +44,13 @@ namespace {
 std::string short_name(std::string_view key) {
   const std::string_view prefix = "granular-";
   return std::string(key.substr(key.rfind(prefix, 0) == 0 ? prefix.size() : 0));
+}
+
+/// An engine's name as its authors write it: "LAMMPS".
+std::string display_name(Engine engine) {
+  std::string name = to_string(engine);
+  for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return name;
 }
 
 }  // namespace
@@ -70,8 +78,9 @@ int main(int argc, char** argv) try {
                       "\\begin{tabular}{llccccc}\n\\toprule\n"
                       "engine model & law & $v$ (m/s) & $e$, law & $e$, engine & $|\\Delta e|$ & $e$ typed in \\\\\n"
                       "\\midrule\n";
-  double worst = 0, typed_tsuji = NAN;
-  for (Engine engine : {Engine::lammps, Engine::liggghts}) {
+  double worst = 0, typed_tsuji = NAN, typed_yade = NAN;
+  for (const EngineProgram& program : engines()) {
+    const Engine engine = program.engine;
     for (const ConformanceRow& r : engine_conformance(engine, beads, steps)) {
       const double error = std::abs(r.engine.restitution - r.hertzdash.restitution);
       worst = std::max(worst, error);
@@ -79,8 +88,9 @@ int main(int argc, char** argv) try {
                         std::string(to_string(r.impact)), r.speed_mps, r.e_asked, r.hertzdash.restitution,
                         r.engine.restitution, r.e_engine_half_steps, r.observed_order, r.e_engine_given_e_asked});
       if (r.engine_model == "granular-tsuji") typed_tsuji = r.e_engine_given_e_asked;
+      if (r.engine_model == "mindlin") typed_yade = r.e_engine_given_e_asked;
       if (r.impact == EngineImpactKind::sphere_sphere)
-        table += fmt::format("{} {} & {} & {:g} & {:.5f} & {:.5f} & {} & {} \\\\\n", engine == Engine::lammps ? "LAMMPS" : "LIGGGHTS",
+        table += fmt::format("{} {} & {} & {:g} & {:.5f} & {:.5f} & {} & {} \\\\\n", display_name(engine),
                              short_name(r.engine_model), r.hertzdash_law, r.speed_mps, r.hertzdash.restitution,
                              r.engine.restitution, latex_scientific(error),
                              std::isnan(r.e_engine_given_e_asked) ? std::string("--")
@@ -126,6 +136,9 @@ int main(int argc, char** argv) try {
   macros.add("engGasRanks", gas_ranks, "{:.0f}");
   macros.add_text("engWorstError", latex_scientific(worst));
   macros.add("engTsujiTyped", typed_tsuji, "{:.4f}");
+  macros.add("engYadeTyped", typed_yade, "{:.4f}");
+  // The largest e YADE's en reaches below en = 1 (Thornton et al.'s fit leaves beta_n(1^-) > 0).
+  macros.add("engYadeHighest", yade_mindlin_restitution(std::nextafter(1.0, 0.0)), "{:.4f}");
   macros.add("engConformanceSeconds", conformance_seconds, "{:.1f}");
   macros.add("engGasParticles", gas.particles(), "{:.0f}");
   macros.add("engGasRestitution", gas.restitution, "{:g}");
