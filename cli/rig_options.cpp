@@ -25,8 +25,8 @@ void add_rig_options(CLI::App& sub, const Rig& rig, RunOptions& run, RigInputs& 
       regularized_reads = regularized_reads || (t.variables == Variables::regularized && r.integrators(t));
     const bool unread = std::ranges::find(rig.run_options_not_read, option.name) != rig.run_options_not_read.end() ||
                         (instantaneous && std::ranges::find(rig.instantaneous_reads, option.name) == rig.instantaneous_reads.end());
-    if (unread || r.trace_only || r.flights_only || r.elastic_rod || option.name == "rod-model" || option.name == "no-tension" ||
-        !regularized_reads)
+    if (unread || r.trace_only || r.flights_only || r.elastic_rod || option.name == "rod-model" ||
+        (rig.regularized_contacts && (option.name == "no-tension" || !regularized_reads)))
       sub.get_option("--" + option.name)->group("");
   }
   const std::string group = "The " + std::string(rig.name) + " rig";

@@ -7,6 +7,7 @@
 #include "hertzdash/simulation/run/law_runs.hpp"
 
 #include "hertzdash/model/restitution.hpp"
+#include "hertzdash/model/two_spheres.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -27,11 +28,13 @@ double EngineContact::effective_modulus_Pa(EngineImpactKind k) const {
 }
 
 double EngineContact::reduced_mass_kg(EngineImpactKind k) const {
-  return k == EngineImpactKind::sphere_sphere ? mass_kg / 2 : mass_kg;
+  const Sphere each{radius_m, mass_kg, sphere};
+  return k == EngineImpactKind::sphere_sphere ? hertzdash::reduced_mass_kg(each, each) : mass_kg;
 }
 
 double EngineContact::reduced_radius_m(EngineImpactKind k) const {
-  return k == EngineImpactKind::sphere_sphere ? radius_m / 2 : radius_m;
+  const Sphere each{radius_m, mass_kg, sphere};
+  return k == EngineImpactKind::sphere_sphere ? hertzdash::reduced_radius_m(each, each) : radius_m;
 }
 
 DropTestSetup engine_impact_setup(const EngineContact& c, EngineImpactKind k) {

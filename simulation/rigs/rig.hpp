@@ -118,6 +118,10 @@ struct Rig {
   /// Its impact sequence from validated inputs, a box in prescribed motion (null: the rig has none
   /// to analyse; a variant with a box of its own is refused by the maker, naming its input).
   RigSequenceMaker sequence = nullptr;
+  /// Its contacts are the rigid rod's in regularising variables (the impact-sequence rigs): its
+  /// help leaves out the tension clamp and the options only other integrators read. False for a
+  /// rig that runs one impact as `simulate` does, with any integrator.
+  bool regularized_contacts = true;
 };
 
 /// Every registered rig (simulation/rigs/rig_table.cpp), in the order of the CLI's commands.
@@ -168,6 +172,7 @@ struct RigDefinition {
   Run (*run)(const RunOptions&, const PaperParameters&, const RigInputs&);
   RigResult (*outcome)(const Run&);
   RigSequenceMaker sequence = nullptr;
+  bool regularized_contacts = true;
 };
 
 /// The Rig of a definition: its schemas without accessors, its run tabulated through them.
@@ -176,7 +181,7 @@ Rig make_rig(const RigDefinition<Run, Impact>& d) {
   Rig rig{.name = d.name, .summary = d.summary, .inputs = d.inputs, .run_options_not_read = d.run_options_not_read,
           .not_read_because = d.not_read_because, .run_option_notes = d.run_option_notes,
           .default_integrator = d.default_integrator, .instantaneous_reads = d.instantaneous_reads, .refuse = d.refuse, .results = {}, .table_description = d.table_description,
-          .table = {}, .run = {}, .sequence = d.sequence};
+          .table = {}, .run = {}, .sequence = d.sequence, .regularized_contacts = d.regularized_contacts};
   for (const auto& f : d.results) rig.results.push_back(f.field);
   for (const auto& c : d.table) rig.table.push_back(c.column);
   rig.run = [d](const RunOptions& options, const PaperParameters& paper, const RigInputs& inputs) {

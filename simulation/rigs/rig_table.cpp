@@ -3,6 +3,7 @@
 #include "hertzdash/simulation/rigs/oscillator_rig.hpp"
 #include "hertzdash/simulation/rigs/rig.hpp"
 #include "hertzdash/simulation/rigs/shaker_rig.hpp"
+#include "hertzdash/simulation/rigs/spheres_rig.hpp"
 #include "hertzdash/simulation/rigs/walls_rig.hpp"
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@ std::span<const Rig> rigs() {
       shaker_rig(),
       walls_rig(),
       oscillator_rig(),
+      spheres_rig(),
   };
   return table;
 }

@@ -25,7 +25,7 @@ def cli_json(*args):
 
 
 def test_every_rig_is_a_function_and_a_command():
-    assert hertzdash.rigs() == ["shaker", "walls", "oscillator"]
+    assert hertzdash.rigs() == ["shaker", "walls", "oscillator", "spheres"]
     for rig in hertzdash.rigs():
         assert callable(getattr(hertzdash, rig))
         assert subprocess.run([BIN, rig, "--help"], capture_output=True).returncode == 0
@@ -41,6 +41,21 @@ def test_oscillator_gives_the_programs_numbers():
                          "0.002", "--impacts", "4", "--transient", "100")
     assert d["e_effective"] == pytest.approx(0.7, rel=1e-12)
     assert len(d["impact_phase"]) == 4
+
+
+def test_two_beads_give_the_programs_numbers():
+    # Two glass beads head-on (the README's example): the function, hertzdash.run and the command
+    # agree; equal spheres leave with v (1 -+ e)/2 in the frame where the second rested.
+    kw = dict(density=2500, ball_radius=1e-3, ball_E=63e9, ball_nu=0.22, restitution=0.9, impact_velocity=1,
+              damping="tsuji-dem")
+    d = hertzdash.spheres(**kw)
+    assert d == hertzdash.run("spheres", **kw)
+    assert d == cli_json("spheres", "--density", "2500", "--ball-radius", "1e-3", "--ball-E", "63e9", "--ball-nu", "0.22",
+                         "--restitution", "0.9", "--impact-velocity", "1", "--damping", "tsuji-dem")
+    assert d["e_effective"] == pytest.approx(0.9, rel=1e-6)
+    assert d["second_velocity_after_mps"] == pytest.approx(0.95, rel=1e-6)
+    with pytest.raises(ValueError, match="second_density"):
+        hertzdash.spheres(**kw, second_mass=1e-3, second_density=7800)
 
 
 def test_shaker_gives_the_programs_numbers():
