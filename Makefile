@@ -12,7 +12,7 @@ FUZZ_SECONDS   ?= 60
 # Extra CMake arguments for every configuration, e.g. CMAKE_ARGS=-DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 CMAKE_ARGS     ?=
 
-.PHONY: all deps deps-paper deps-peers deps-engines configure build test figures convergence uncertainty paper bench build-times sanitize fuzz clean
+.PHONY: all deps deps-paper deps-peers deps-engines configure build test figures convergence uncertainty gas paper bench build-times sanitize fuzz clean
 
 all: build
 
@@ -65,6 +65,12 @@ convergence: build
 uncertainty: build
 	$(BUILD)/validation/uncertainty --full --out $(FIGURES) --generated paper/generated
 	for gp in validation/uncertainty/*.gp; do validation/draw_figure.sh $$gp $(FIGURES) || exit 1; done
+
+# The granular gas at its full size (8000 spheres, each law for 12 Haff times on LAMMPS under
+# mpirun -n 2, a few minutes; `make figures` runs 1000): its CSV, figure and the article's \gas macros.
+gas: build deps-engines
+	$(BUILD)/validation/gas_cooling --full --out $(FIGURES) --generated paper/generated
+	validation/draw_figure.sh validation/gas_cooling/gas_cooling.gp $(FIGURES)
 
 # The article: every study and figure, then latexmk in paper/. The date in the PDF
 # is the last commit's (SOURCE_DATE_EPOCH), so the same commit gives the same PDF.

@@ -262,7 +262,7 @@ TEST_CASE("granular gas on LAMMPS under mpirun -n 2: a constant e cools by Haff'
     CAPTURE(seed);
     gas.seed = seed;
     const test::ScratchDir dir;
-    const std::vector<TemperatureSample> T = run_granular_gas(gas, 2, dir.path);
+    const std::vector<TemperatureSample> T = run_granular_gas(gas, 2, dir.path).temperature;
     const HaffFit f = fit_haff_exponent(gas, T);
     std::printf("granular gas, seed %d: T0 %.4e J (asked %.4e), from t1 = %.4g s (tau = %.4g s) to %.4g s: exponent %.4f\n",
                 seed, T.front().temperature_J, gas.initial_temperature_J(), f.t1_s, f.tau_s, T.back().time_s, f.exponent);

@@ -14,7 +14,16 @@
 // so T(t) = T1 / (1 + (t - t1)/tau)^2 from any T1 = T(t1), tau = 2 / (B sqrt(T1)).
 // chi = (1 - phi/2) / (1 - phi)^3 (Carnahan and Starling) at volume fraction phi.
 // The contact is tsuji-dem (LAMMPS's damping tsuji at the e_L that gives e), whose e does not
-// depend on the impact speed: the law above holds at every temperature.
+// depend on the impact speed: the law above holds at every temperature; or kuwabara-kono (LAMMPS's
+// damping viscoelastic), whose e rises as the gas cools (simulation/export/gas_cooling.hpp predicts
+// its cooling from hertzdash's e(g)).
+//
+// Clustering: a cooling gas large enough against its mean free path (and inelastic enough) loses
+// its homogeneity (Goldhirsch and Zanetti 1993). The deck can count the particles in each of c^3
+// cells; their index of dispersion D = var/mean is S(0) = (1 - phi)^4 / (1 + 2 phi)^2 for a
+// homogeneous hard-sphere gas (Carnahan-Starling's compressibility; 1 for an ideal gas), and grows
+// as clusters form.
+#include "hertzdash/simulation/export/engine_contact.hpp"
 #include "hertzdash/simulation/export/engine_models.hpp"
 
 #include <filesystem>
@@ -33,6 +42,11 @@ struct GranularGas {
   int steps_per_contact = 20;      ///< the time step: the contact time at the start over this
   double duration_haff_times = 6;  ///< the run, in units of tau at the start
   int seed = 4928459;              ///< LAMMPS's velocity create seed
+  std::string law = "tsuji-dem";   ///< tsuji-dem (e constant), or kuwabara-kono (e at reference_speed_mps)
+  int cells_per_side = 0;          ///< > 0: the deck counts the particles in cells_per_side^3 cells
+  /// The typical relative speed at the start, sqrt(6) v_th [m/s] (sqrt(2) v_th per component over
+  /// three): where kuwabara-kono's e is `restitution`, and the time step's contact.
+  double reference_speed_mps() const;
   double mass_kg() const;
   int particles() const { return particles_per_side * particles_per_side * particles_per_side; }
   double box_side_m() const;
@@ -45,18 +59,47 @@ struct GranularGas {
   double haff_time_s(double temperature_J) const;
   /// T0 = m v_th^2 [J].
   double initial_temperature_J() const;
+  /// Enskog's collision frequency of one particle, 4 sqrt(pi) n sigma^2 chi sqrt(T/m) [1/s].
+  double collision_frequency_per_s(double temperature_J) const;
+  /// S(0) = (1 - phi)^4 / (1 + 2 phi)^2: the cells' index of dispersion in a homogeneous gas.
+  double homogeneous_dispersion() const;
 };
 
+/// The contact of two of the gas's spheres as exported (kuwabara-kono's A calibrated on the pair
+/// at reference_speed_mps).
+EngineContact gas_contact(const GranularGas& gas);
+
 /// The LAMMPS deck of the gas: lattice start, Gaussian velocities of zero total momentum, the
-/// thermo output (time, total kinetic energy) about 300 times over the run.
+/// LAMMPS model equal to the gas's law (engine_models.hpp), the thermo output (time, total kinetic
+/// energy) about 300 times over the run, and with cells_per_side the cells' counts as often.
 std::string granular_gas_deck(const GranularGas& gas);
 
 struct TemperatureSample {
   double time_s, temperature_J;  ///< T = (2/3) KE / N
 };
 
-/// Runs `mpirun -n ranks lmp` (ranks 1: lmp alone) on the deck in `directory` and reads T(t).
-std::vector<TemperatureSample> run_granular_gas(const GranularGas& gas, int ranks, const std::filesystem::path& directory);
+struct DispersionSample {
+  double time_s, dispersion;  ///< the cells' var/mean of their particle counts
+};
+
+struct GasRun {
+  std::vector<TemperatureSample> temperature;
+  std::vector<DispersionSample> dispersion;  ///< empty without cells_per_side
+  double loop_seconds = 0;                   ///< LAMMPS's loop time (wall clock of the run's steps)
+};
+
+/// Runs `mpirun -n ranks lmp` (ranks 1: lmp alone) on the deck in `directory` and reads T(t), the
+/// cells' dispersion and the loop time.
+GasRun run_granular_gas(const GranularGas& gas, int ranks, const std::filesystem::path& directory);
+
+/// The centre of the first window of five successive samples from `from_s` on whose mean cells'
+/// dispersion exceeds twice the homogeneous gas's (the gas has begun to cluster: with c^3 cells, one
+/// sample of D scatters by S(0) sqrt(2/(c^3 - 1)), 10 % at c = 6 and 28 % at c = 3, the average of
+/// five by sqrt(5) less), or +inf if it never does.
+double clustering_onset_s(const GranularGas& gas, const std::vector<DispersionSample>& dispersion, double from_s);
+
+/// Enskog's count of collisions over the run, (N/2) int omega(T(t)) dt, from the measured T(t).
+double enskog_collisions(const GranularGas& gas, const std::vector<TemperatureSample>& temperature);
 
 struct HaffFit {
   double t1_s = 0, T1_J = 0;  ///< where the fit starts: half a Haff time in, the lattice forgotten

@@ -114,7 +114,7 @@ int main(int argc, char** argv) try {
   for (int seed : seeds) {
     gas.seed = seed;
     const TemporaryDirectory dir("granular gas");
-    const std::vector<TemperatureSample> T = run_granular_gas(gas, gas_ranks, dir.path);
+    const std::vector<TemperatureSample> T = run_granular_gas(gas, gas_ranks, dir.path).temperature;
     const HaffFit f = fit_haff_exponent(gas, T);
     exponent_sum += f.exponent;
     exponent_sq += f.exponent * f.exponent;
