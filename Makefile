@@ -66,8 +66,8 @@ uncertainty: build
 	$(BUILD)/validation/uncertainty --full --out $(FIGURES) --generated paper/generated
 	for gp in validation/uncertainty/*.gp; do validation/draw_figure.sh $$gp $(FIGURES) || exit 1; done
 
-# The granular gas at its full size (8000 spheres, each law for 12 Haff times on LAMMPS under
-# mpirun -n 2, a few minutes; `make figures` runs 1000): its CSV, figure and the article's \gas macros.
+# The granular gas at its full size (13824 spheres, each law for 40 Haff times on LAMMPS under
+# mpirun -n 2, a few minutes; `make figures` runs 1000 for 12): its CSV, figure and the article's \gas macros.
 gas: build deps-engines
 	$(BUILD)/validation/gas_cooling --full --out $(FIGURES) --generated paper/generated
 	validation/draw_figure.sh validation/gas_cooling/gas_cooling.gp $(FIGURES)

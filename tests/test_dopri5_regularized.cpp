@@ -107,6 +107,19 @@ TEST_CASE("dopri5-regularized: with the tension clamp the run is dopri5's in the
   CHECK(a.work.rhs_evaluations == b.work.rhs_evaluations);
 }
 
+namespace {
+
+/// A law with a material constant (kuwabara-kono's A, lee-herrmann's gamma) given one of its size
+/// for the impact c (Law::material_constant_scale); every other law's settings as they are.
+template <class Law>
+DampingSettings with_material_constant(DampingSettings d, const ImpactConditions& c) {
+  if constexpr (MaterialTimeConstantLaw<Law>)
+    Law::set_material_constant(d, Law::material_constant_scale(undamped_hertz_max_deformation_m(c.K, c.mass_kg, c.v0_mps), c.v0_mps));
+  return d;
+}
+
+}  // namespace
+
 TEST_CASE("RootPolynomialLaw: force_of_root(u, v) equals force(u^2, v) for every law that declares it",
           "[regularized][damping]") {
   // The declaration is the same force written in u = x^{1/2}: equal to rounding
@@ -117,9 +130,7 @@ TEST_CASE("RootPolynomialLaw: force_of_root(u, v) equals force(u^2, v) for every
   for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
     if constexpr (RootPolynomialLaw<Law>) {
       ++declared;
-      DampingSettings d = setup.damping;
-      d.viscous_time_constant_s = 1e-4;  // a viscoelastic law's A [s]: the identity holds for any
-      const Law law(c, d);
+      const Law law(c, with_material_constant<Law>(setup.damping, c));  // the identity holds for any constant
       for (double x : {0.0, 1e-7, 1e-5, 2.4e-4})
         for (double v : {0.626, 0.1, 0.0, -0.5}) {
           const double scale = std::abs(law.force(x, 0.0)) + std::abs(law.force(x, v) - law.force(x, 0.0)) + 1e-300;
@@ -148,9 +159,7 @@ TEST_CASE("ForceJet: force_of_root on jets gives the force and its partial deriv
   int checked = 0;
   for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
     if constexpr (RootPolynomialLaw<Law>) {
-      DampingSettings d = setup.damping;
-      d.viscous_time_constant_s = 1e-4;
-      const Law law(c, d);
+      const Law law(c, with_material_constant<Law>(setup.damping, c));
       const double scale = std::abs(law.force_of_root(u_scale, v_scale));  // the force's scale [N]
       for (double u : {0.0, 0.1 * u_scale, u_scale})
         for (double v : {0.626, 0.0, -0.5}) {
@@ -200,11 +209,10 @@ TEST_CASE("SpeedDerivativeLaw: dF/dv0 of every law that declares it equals diffe
   // gives dF/dv0 at fixed (u, xdot), checked against differences (check_speed_derivative).
   const DropTestSetup s = steel_drop();
   const double K = hertz_stiffness(s), v0 = 0.4, e = 0.5;
-  DampingSettings d = s.damping;
-  d.viscous_time_constant_s = 1e-4;
   int checked = 0;
   for_each_damping_law([&]<class Law>(std::type_identity<Law>) {
-    if constexpr (SpeedDerivativeLaw<Law>) checked += check_speed_derivative<Law>(K, s.mass_kg, v0, e, d);
+    if constexpr (SpeedDerivativeLaw<Law>)
+      checked += check_speed_derivative<Law>(K, s.mass_kg, v0, e, with_material_constant<Law>(s.damping, {K, s.mass_kg, v0, e}));
   });
   CHECK(checked >= 12 * 9);
   // Hunt-Crossley's closed form: dF/dv0 = -K u^3 chi xdot / v0 (chi = 3 (1 - e)/(2 v0)).

@@ -50,7 +50,7 @@ TEST_CASE("gas cooling: the viscoelastic gas's rate tends to T^{8/5}, the series
   const RestitutionCurve e(c, 1e-5 * v, 10 * v, 61);
   const double m = gas.mass_kg(), n = gas.number_density_per_m3(), chi = gas.contact_correlation();
   const double K = hertz_stiffness(gas.diameter_m / 4, gas.material, gas.material);
-  const double b = c.time_constant_s * std::pow(K / (m / 2), 0.4), C1 = 1.15344, C2 = 0.79826;
+  const double b = c.material_constant * std::pow(K / (m / 2), 0.4), C1 = 1.15344, C2 = 0.79826;
   const auto moment = [&](double k, double T) {  // int_0^inf p(g) g^k dg, p Gaussian of variance 2T/m
     const double s = std::sqrt(2 * T / m);
     return std::pow(s, k) * std::pow(2, k / 2) * std::tgamma((k + 1) / 2) / (2 * std::sqrt(std::numbers::pi));

@@ -144,7 +144,7 @@ TEST_CASE("a command's help fits a screen: one short line per option, the long f
     CHECK(r.out.find("Mass of the falling body [kg] (default: Table 1)\n") != std::string::npos);
     // A text option's valid values stay: "(one of: steel, ...)"; a long list is counted.
     CHECK(r.out.find("(one of: steel, duralumin-a, duralumin-b, duralumin-c) (default: steel)\n") != std::string::npos);
-    CHECK(r.out.find("Damping law (see `hertzdash models`) (one of 14 values) (default: hongo)\n") != std::string::npos);
+    CHECK(r.out.find("Damping law (see `hertzdash models`) (one of 15 values) (default: hongo)\n") != std::string::npos);
     // The inputs of one law are folded into one line of names when the help runs long.
     CHECK(r.out.find("Inputs of one law (--damping LAW): --zeta TEXT, --omega-n TEXT") != std::string::npos);
   }

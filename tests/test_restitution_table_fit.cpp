@@ -292,9 +292,9 @@ TEST_CASE("fit --restitution-table --compare-laws --cross-validate: tied laws sh
 
 // Issue 45: a table of 1,000 speeds cross-validated took 224 s without a word, 1e5 rows compared
 // over every law gave no answer. The prediction (restitution_fit.cpp: 17 units a contact, 10
-// iterations of 2 p + 2 evaluations of every distinct speed, one fit per fold, 14 laws): 1,000
+// iterations of 2 p + 2 evaluations of every distinct speed, one fit per fold, 15 laws): 1,000
 // speeds, p = 1, left out one by one: 17 x 1000 x 40 x 1001 = 6.8e8; 1e5 speeds, every law:
-// 17 x 1e5 x 40 x 14 = 9.5e8; both above 6e7 and refused at once (exit 2, the file named, nothing
+// 17 x 1e5 x 40 x 15 = 1.0e9; both above 6e7 and refused at once (exit 2, the file named, nothing
 // on stdout). The same table fitted once (6.8e5) runs.
 TEST_CASE("fit --restitution-table: a request predicted beyond its work bound is refused before it runs",
           "[restitution_fit][cli]") {

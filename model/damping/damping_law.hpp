@@ -54,10 +54,21 @@ struct DampingSettings {
   std::vector<std::pair<std::string_view, double>> law_values;
 
   /// The value given for the law's input `p`, else its declared default.
-  double number(const ParameterDecl& p) const {
+  double number(const ParameterDecl& p) const { return given(p).value_or(p.default_number); }
+  /// The value given for the law's input `p`, if one was.
+  std::optional<double> given(const ParameterDecl& p) const {
     for (const auto& [key, value] : law_values)
       if (key == p.key) return value;
-    return p.default_number;
+    return std::nullopt;
+  }
+  /// Gives the law's input `p` the value `value` (replacing one given before).
+  void set(const ParameterDecl& p, double value) {
+    for (auto& [key, v] : law_values)
+      if (key == p.key) {
+        v = value;
+        return;
+      }
+    law_values.emplace_back(p.key, value);
   }
 };
 
@@ -143,12 +154,18 @@ concept SpeedDerivativeLaw = RootPolynomialLaw<L> && requires(const L& law, doub
   { law.force_speed_derivative(u, u) } -> std::same_as<double>;
 };
 
-/// Optional for a law: damping set by a material time constant A [s]
-/// (DampingSettings::viscous_time_constant_s) instead of by the input e, so that its
-/// restitution depends on the impact speed (the viscoelastic Hertz law). Such a law declares
-/// `static constexpr bool material_time_constant = true` and requires A in its constructor;
-/// when the user gives none, the simulator supplies it by calibrating the law's restitution to
-/// the input e at the reference speed (simulation/run/viscous_time_constant.hpp).
+/// Optional for a law: damping set by a material constant of the pair (the viscoelastic Hertz
+/// law's time constant A [s], DampingSettings::viscous_time_constant_s; a damping rate gamma [1/s],
+/// a law number) instead of by the input e, so that its restitution depends on the impact speed.
+/// Such a law declares `static constexpr bool material_time_constant = true`, its constant first
+/// in its `parameters`, and
+///   static std::optional<double> material_constant(const DampingSettings&);  // the value given
+///   static void set_material_constant(DampingSettings&, double);
+///   static double material_constant_scale(double X_m, double v0_mps);  // its size for an impact of
+///                                                                       // undamped deformation X at v0
+/// and requires the constant in its constructor; when the user gives none, the simulator supplies
+/// it by calibrating the law's restitution to the input e at the reference speed
+/// (simulation/run/viscous_time_constant.hpp), its damping growing with the constant from none at 0.
 /// Optional for a law: `static constexpr bool conservative = true` declares that the contact
 /// returns all the energy it stores, e_effective = 1 (the undamped Hertz law). Every other law
 /// dissipates, e_effective < 1. Either way no law creates energy: an e_effective above 1 beyond
@@ -158,7 +175,12 @@ template <class L>
 concept ConservativeLaw = DampingLaw<L> && requires { requires L::conservative; };
 
 template <class L>
-concept MaterialTimeConstantLaw = DampingLaw<L> && requires { requires L::material_time_constant; };
+concept MaterialTimeConstantLaw = DampingLaw<L> && requires(DampingSettings& s, double x) {
+  requires L::material_time_constant;
+  { L::material_constant(s) } -> std::same_as<std::optional<double>>;
+  L::set_material_constant(s, x);
+  { L::material_constant_scale(x, x) } -> std::same_as<double>;
+};
 
 /// A list of laws as types (the registered ones: RegisteredLaws, model/damping/registered_law_types.hpp).
 template <DampingLaw... L> struct LawList {};

@@ -22,4 +22,5 @@ set(HERTZDASH_REGISTERED_LAWS
   GharibHurmuzlu       gharib_hurmuzlu.hpp
   TsujiDem             tsuji_dem.hpp
   KuwabaraKono         kuwabara_kono.hpp
+  LeeHerrmann          lee_herrmann.hpp
 )

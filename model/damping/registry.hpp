@@ -18,7 +18,7 @@ struct RegisteredLaw {
   LawInfo info;
   ParameterDecls parameters;    ///< law_parameters<Law>(): the inputs it reads besides (e, v0, K, m)
   bool conservative;            ///< ConservativeLaw: returns all the energy it stores
-  bool material_time_constant;  ///< MaterialTimeConstantLaw: damping by a time constant A, not by e
+  bool material_time_constant;  ///< MaterialTimeConstantLaw: damping by a material constant (parameters[0]), not by e
   bool root_polynomial;         ///< RootPolynomialLaw: offers force_of_root (the regularised integrators)
 };
 

@@ -52,7 +52,7 @@ DropTestSetup engine_impact_setup(const EngineContact& c, EngineImpactKind k) {
   s.impact_velocity_mps = c.speed_mps;
   s.gravity_mps2 = 0;
   s.damping = c.damping;
-  if (c.time_constant_s > 0) s.damping.viscous_time_constant_s = c.time_constant_s;
+  if (c.material_constant > 0) law_runs(c.law).set_material_constant(s.damping, c.material_constant);
   validate(s);
   return s;
 }
@@ -89,10 +89,10 @@ EngineContact make_engine_contact(const DropTestSetup& setup, const std::string&
   c.restitution = setup.restitution;
   c.speed_mps = approach_speed(setup);
   c.damping = setup.damping;
-  if (const auto calibrate = law_runs(law).calibrated_time_constant) {
+  if (const LawRuns& runs = law_runs(law); runs.calibrated_time_constant) {
     DropTestSetup pair = engine_impact_setup(c, EngineImpactKind::sphere_sphere);
-    if (!pair.damping.viscous_time_constant_s) pair = calibrate(pair);
-    c.time_constant_s = *pair.damping.viscous_time_constant_s;
+    if (!runs.material_constant(pair.damping)) pair = runs.calibrated_time_constant(pair);
+    c.material_constant = *runs.material_constant(pair.damping);
     c.calibration_speed_mps = setup.damping.reference_velocity_mps > 0 ? setup.damping.reference_velocity_mps : c.speed_mps;
   }
   predict_impacts(c);

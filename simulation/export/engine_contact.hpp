@@ -36,9 +36,11 @@ struct EngineContact {
   Material wall;                  ///< the wall's E [Pa] (inf: rigid) and nu
   double restitution = 0;         ///< the law's input e (kuwabara-kono: e of the pair at speed_mps)
   DampingSettings damping;        ///< the law's settings
-  double time_constant_s = 0;     ///< kuwabara-kono's A [s] (calibrated on the pair); 0 for other laws
-  /// Where A was calibrated: the pair's approach speed at which its e is `restitution` [m/s]
-  /// (`reference-velocity`, default speed_mps); 0 for a law without a material time constant.
+  /// The law's material constant (kuwabara-kono's A [s], lee-herrmann's gamma [1/s]), calibrated on
+  /// the pair; 0 for a law without one.
+  double material_constant = 0;
+  /// Where it was calibrated: the pair's approach speed at which its e is `restitution` [m/s]
+  /// (`reference-velocity`, default speed_mps); 0 for a law without a material constant.
   double calibration_speed_mps = 0;
   double speed_mps = 0;           ///< the approach speed of both impacts [m/s] (relative for the pair)
   /// The engine clamps the force at zero (YADE): the law runs with the tension clamp, and

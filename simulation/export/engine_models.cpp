@@ -89,7 +89,7 @@ double lammps_wall_modulus(const EngineContact& c) { return 2 * (1 - c.sphere.nu
 /// with K = (4/3) E* sqrt(R*). LAMMPS's viscoelastic eta_n0 (eta_n = eta_n0 a m*, a = sqrt(R* x))
 /// and gran/hertz/history's gamma_n (m* gamma_n sqrt(R* x)) both.
 double kuwabara_kono_damping_per_mass(const EngineContact& c, EngineImpactKind k) {
-  return 4 * c.effective_modulus_Pa(k) * c.time_constant_s / (3 * c.reduced_mass_kg(k));
+  return 4 * c.effective_modulus_Pa(k) * c.material_constant / (3 * c.reduced_mass_kg(k));
 }
 
 /// pair_style granular's lines: hertz/material with `damping` and its coefficient, no friction.
@@ -111,6 +111,21 @@ std::string lammps_viscoelastic_pair(const EngineContact& c) {
 std::string lammps_viscoelastic_wall(const EngineContact& c) {
   return lammps_granular_wall(c, kuwabara_kono_damping_per_mass(c, wall), "viscoelastic");
 }
+/// lee-herrmann's dashpot m* gamma xdot: damping mass_velocity takes eta_n0 = gamma for every contact,
+/// damping velocity eta_n0 = gamma m* [N s/m], one value per pair of masses (the pair's and the wall's).
+std::string lammps_mass_velocity_pair(const EngineContact& c) {
+  return lammps_granular_pair(c, c.material_constant, "mass_velocity");
+}
+std::string lammps_mass_velocity_wall(const EngineContact& c) {
+  return lammps_granular_wall(c, c.material_constant, "mass_velocity");
+}
+std::string lammps_velocity_pair(const EngineContact& c) {
+  return lammps_granular_pair(c, c.material_constant * c.reduced_mass_kg(pair), "velocity");
+}
+std::string lammps_velocity_wall(const EngineContact& c) {
+  return lammps_granular_wall(c, c.material_constant * c.reduced_mass_kg(wall), "velocity");
+}
+
 std::string lammps_tsuji_pair(const EngineContact& c) {
   return lammps_granular_pair(c, tsuji_engine_restitution_input(c.restitution), "tsuji");
 }
@@ -178,6 +193,12 @@ std::string yade_mindlin_wall(const EngineContact& c) {
 EngineCoefficient viscoelastic_input(const EngineContact& c, EngineImpactKind k) {
   return {"eta_n0 [1/(m s)]", kuwabara_kono_damping_per_mass(c, k)};
 }
+EngineCoefficient mass_velocity_input(const EngineContact& c, EngineImpactKind) {
+  return {"eta_n0 [1/s] (damping mass_velocity)", c.material_constant};
+}
+EngineCoefficient velocity_input(const EngineContact& c, EngineImpactKind k) {
+  return {"eta_n0 [N s/m] (damping velocity)", c.material_constant * c.reduced_mass_kg(k)};
+}
 EngineCoefficient tsuji_input(const EngineContact& c, EngineImpactKind) {
   return {"e_L (damping tsuji)", tsuji_engine_restitution_input(c.restitution)};
 }
@@ -197,6 +218,12 @@ constexpr EngineModel models[] = {
     {Engine::lammps, "gran-hertz-history", "pair_style gran/hertz/history", "kuwabara-kono",
      "equal: kn = (4/3) E*, gamma_n = 4 E* A / (3 m*) (A kuwabara-kono's material time constant)", hertz_history_pair,
      hertz_history_wall, hertz_history_input, nullptr},
+    {Engine::lammps, "granular-mass-velocity", "pair_style granular, hertz/material, damping mass_velocity",
+     "lee-herrmann", "equal: eta_n0 = gamma (lee-herrmann's damping rate)", lammps_mass_velocity_pair,
+     lammps_mass_velocity_wall, mass_velocity_input, nullptr},
+    {Engine::lammps, "granular-velocity", "pair_style granular, hertz/material, damping velocity", "lee-herrmann",
+     "equal contact by contact: eta_n0 = gamma m* (one value per pair of masses: the wall's is its own)",
+     lammps_velocity_pair, lammps_velocity_wall, velocity_input, nullptr},
     {Engine::lammps, "granular-tsuji", "pair_style granular, hertz/material, damping tsuji", "tsuji-dem",
      "equal: the engine's alpha(e_L) = sqrt(5) zeta(e); e_L is not e (the engine's polynomial fit)",
      lammps_tsuji_pair, lammps_tsuji_wall, tsuji_input, lammps_tsuji_restitution},

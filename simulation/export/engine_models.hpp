@@ -12,6 +12,9 @@
 //     fit of Tsuji et al.'s graph: F = K x^{3/2} + alpha sqrt(K m*) x^{1/4} xdot, which is tsuji-dem's
 //     form with sqrt(5) zeta = alpha: equal to tsuji-dem at the e whose exact zeta is alpha(e_L)/sqrt(5).
 //     The deck takes the e_L that gives the law's e (tsuji_engine_restitution_input).
+//   - damping mass_velocity, eta_n = eta_n0 m*: F = K x^{3/2} + eta_n0 m* xdot, lee-herrmann's
+//     K x^{3/2} + m* gamma xdot with gamma = eta_n0: equal; damping velocity, eta_n = eta_n0: the
+//     same law contact by contact, eta_n0 = gamma m* (the deck gives the wall its own value).
 //   pair_style gran/hertz/history, F = sqrt(R* x) (kn x - m* gamma_n xdot): kuwabara-kono with
 //   kn = (4/3) E* and gamma_n = 4 E* A / (3 m*), its wall's kn given to its fix.
 //   The spheres' E_eff is E / (2 (1 - nu^2)) for one material (eq. 3). fix wall/gran takes its wall's

@@ -32,16 +32,19 @@ void check_bounds(const FitParameter& p, double x) {
                                        key_reference(p.option), format_value(x)));
 }
 
-// The A of a material-time-constant law whose e at `speed` is `e` (the simulator's calibration).
+// The material constant of a law that has one (kuwabara-kono's A, lee-herrmann's gamma) whose e at
+// `speed` is `e` (the simulator's calibration).
 double calibrated_time_constant(const RunOptions& base, const PaperParameters& paper, double speed, double e) {
   RunOptions o = base;
   o.restitution = e;
   o.viscous_time_constant_s.reset();
+  if (const RegisteredLaw& law = registered_law(base.damping); law.material_time_constant)
+    o.law_numbers.erase(std::string(law.parameters.front().key));
   o.air_density_kg_per_m3.reset();  // one contact: no flight, no drag
   o.drag_coefficient.reset();
   const DropTestSetup s = restitution_fit_detail::restitution_contact(o, paper, speed);
   const LawRuns& runs = law_runs(base.damping);
-  return runs.calibrated_time_constant ? *runs.calibrated_time_constant(s).damping.viscous_time_constant_s : 0.0;
+  return runs.calibrated_time_constant ? *runs.material_constant(runs.calibrated_time_constant(s).damping) : 0.0;
 }
 
 }  // namespace
@@ -70,7 +73,8 @@ std::vector<double> fit_detail::law_starting_values(const RunOptions& base, cons
     require_read(base, *find_run_option(p.option), "(fitted)");
     double x;
     if (p.option == "restitution" && !base.restitution) x = e;
-    else if (p.option == "viscous-time-constant" && !base.viscous_time_constant_s)
+    else if (registered_law(base.damping).material_time_constant &&
+             p.option == registered_law(base.damping).parameters.front().key && !material_constant_given(base))
       x = calibrated_time_constant(base, paper, speed_mps, e);
     else x = initial_values(base, paper, {p}).front();
     check_bounds(p, x);

@@ -134,7 +134,8 @@ constexpr ParameterDecl steps_per_contact{
     .help = "Time steps per predicted contact time: the decks' time step"};
 constexpr ParameterDecl export_decks[] = {
     engine,
-    {.key = "engine-model", .type = T::text, .choices = "granular-viscoelastic, gran-hertz-history, granular-tsuji (lammps); hertz (liggghts); mindlin (yade)",
+    {.key = "engine-model", .type = T::text, .choices = "granular-viscoelastic, granular-mass-velocity, granular-velocity, gran-hertz-history, granular-tsuji (lammps); "
+                                                 "hertz (liggghts); mindlin (yade)",
      .default_value = "the engine's model equal to --damping", .default_source = "computed",
      .help = "The engine's contact model; it must equal the law --damping names"},
     {.key = "out", .type = T::text, .choices = "a directory", .default_value = "none",

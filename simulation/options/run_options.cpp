@@ -459,6 +459,13 @@ void require_read(const RunOptions& o, const RunOption& option, const std::strin
     throw InvalidParameter(option.name, value, fmt::format("given only with {} (what reads it); {}", r.describe(), run));
 }
 
+std::optional<std::string_view> material_constant_given(const RunOptions& o) {
+  if (o.viscous_time_constant_s) return "viscous-time-constant";
+  for (const RegisteredLaw& law : registered_law_table())
+    if (law.material_time_constant && o.law_numbers.contains(law.parameters.front().key)) return law.parameters.front().key;
+  return std::nullopt;
+}
+
 DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   check_given_options(o);  // every given value is within its declared range from here on
   DropTestSetup s = paper_setup(paper, o.rod, o.height_m.value_or(default_height_m));
@@ -482,7 +489,8 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   if (o.ball_yield_stress_Pa) s.ball_yield_stress_Pa = *o.ball_yield_stress_Pa;
   // The rod preset supplies the mass, the flat's material and e: with all of them given it
   // supplies nothing, and the run names no rod.
-  if ((o.mass_kg || o.density_kg_per_m3) && o.rod_E_Pa && o.rod_nu && (o.restitution || o.viscous_time_constant_s) &&
+  const std::optional<std::string_view> constant_given = material_constant_given(o);
+  if ((o.mass_kg || o.density_kg_per_m3) && o.rod_E_Pa && o.rod_nu && (o.restitution || constant_given) &&
       o.rod_model == "rigid")
     s.rod_preset.clear();
   if (o.rod_E_Pa) s.rod.E_Pa = *o.rod_E_Pa;
@@ -504,7 +512,7 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
     s.damping.law_values.emplace_back(option->decl.key, value);
   }
   const std::vector<std::string>& reading_e = find_run_option("restitution")->readers.laws;  // the dissipative laws
-  const bool law_reads_e = !o.viscous_time_constant_s &&
+  const bool law_reads_e = !constant_given &&
                            std::find(reading_e.begin(), reading_e.end(), o.damping) != reading_e.end();
   s.restitution_of_other_pair = law_reads_e && !o.restitution &&
                                 (o.mass_kg || o.density_kg_per_m3 || o.ball_E_Pa || o.ball_nu || o.ball_radius_m ||
@@ -522,13 +530,16 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
   if (o.drag_coefficient && !s.air_drag.active())
     throw InvalidParameter("drag-coefficient", format_value(*o.drag_coefficient),
                            "given only with `air-density` > 0 (without air there is no drag)");
-  if (o.viscous_time_constant_s && o.reference_velocity_mps)
+  if (constant_given && o.reference_velocity_mps)
     throw InvalidParameter("reference-velocity", format_value(*o.reference_velocity_mps),
-                           "omitted when `viscous-time-constant` is given (the reference speed only calibrates A)");
-  if (o.viscous_time_constant_s && o.restitution)
+                           fmt::format("omitted when `{}` is given (the reference speed only calibrates the law's "
+                                       "material constant)",
+                                       *constant_given));
+  if (constant_given && o.restitution)
     throw InvalidParameter("restitution", format_value(*o.restitution),
-                           "omitted when `viscous-time-constant` is given (the law's damping is then the time "
-                           "constant; e only calibrates it)");
+                           fmt::format("omitted when `{}` is given (the law's damping is then that material "
+                                       "constant; e only calibrates it)",
+                                       *constant_given));
   return s;
 }
 

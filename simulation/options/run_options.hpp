@@ -186,6 +186,10 @@ void require_read(const RunOptions& o, const RunOption& option, const std::strin
 
 /// The paper's set-up for the chosen rod with the given overrides; validated (throws
 /// InvalidParameter naming the option and its valid range, an unknown law included).
+/// The key of the law's material constant the run gives (`viscous-time-constant`, or a law's own
+/// such as lee-herrmann's `damping-rate`), if it gives one (the law then reads no e).
+std::optional<std::string_view> material_constant_given(const RunOptions& o);
+
 DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper);
 
 /// The solver settings asked for; validated likewise.

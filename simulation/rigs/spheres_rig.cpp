@@ -80,7 +80,7 @@ void refuse(const RunOptions& o, const RigInputs& in) {
   if (!o.mass_kg && !o.density_kg_per_m3)
     throw InvalidParameter("mass", "none", "given, or `density`: the first sphere's (no preset body is a sphere)");
   const std::vector<std::string>& reading_e = find_run_option("restitution")->readers.laws;
-  if (!o.restitution && !o.viscous_time_constant_s && std::ranges::find(reading_e, o.damping) != reading_e.end())
+  if (!o.restitution && !material_constant_given(o) && std::ranges::find(reading_e, o.damping) != reading_e.end())
     throw InvalidParameter("restitution", "none",
                            fmt::format("given for the law {}: the pair's e (the paper's Table 2 is a rod's on nylon)", o.damping));
   if (in.number("second-mass") && in.number("second-density"))

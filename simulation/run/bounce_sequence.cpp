@@ -119,7 +119,7 @@ BounceSequence run_bounce_sequence(const DropTestSetup& setup, std::string_view 
   DropTestSetup s = setup;
   const LawRuns& runs = law_runs(law);
   if (runs.calibrated_time_constant) {
-    if (!s.damping.viscous_time_constant_s) s = runs.calibrated_time_constant(s);
+    if (!runs.material_constant(s.damping)) s = runs.calibrated_time_constant(s);
     out.viscous_time_constant_s = s.damping.viscous_time_constant_s;
   }
   if (!s.elastic_rod) {

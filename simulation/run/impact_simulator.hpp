@@ -100,7 +100,7 @@ DropTestSetup with_calibrated_time_constant(const DropTestSetup& setup) {
   DropTestSetup out = setup;
   if (last && last->K == K && last->mass_kg == c.mass_kg && last->v_mps == v && last->e == c.restitution &&
       last->no_tension == c.no_tension) {
-    out.damping.viscous_time_constant_s = last->A_s;
+    Law::set_material_constant(out.damping, last->A_s);
     return out;
   }
   const double X = hertz_impact_scale_m(K, c.mass_kg, v);
@@ -112,13 +112,13 @@ DropTestSetup with_calibrated_time_constant(const DropTestSetup& setup) {
   DropTestSetup trial = c;
   const double A = solve_viscous_time_constant_s(
       [&](double A_s) {
-        trial.damping.viscous_time_constant_s = A_s;
+        Law::set_material_constant(trial.damping, A_s);
         const ImpactSummary r = simulator.run<Law>(trial);
         return r.separated ? r.e_effective : 0.0;
       },
-      c.restitution, X / v);
+      c.restitution, Law::material_constant_scale(X, v));
   last = Remembered{K, c.mass_kg, v, c.restitution, c.no_tension, A};
-  out.damping.viscous_time_constant_s = A;
+  Law::set_material_constant(out.damping, A);
   return out;
 }
 

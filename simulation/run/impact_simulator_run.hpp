@@ -21,7 +21,7 @@ namespace hertzdash {
 template <DampingLaw Law>
 ImpactSummary ImpactSimulator::run(const DropTestSetup& setup, std::vector<TraceSample>* trace) {
   if constexpr (MaterialTimeConstantLaw<Law>)
-    if (!setup.damping.viscous_time_constant_s) return run<Law>(with_calibrated_time_constant<Law>(setup), trace);
+    if (!Law::material_constant(setup.damping)) return run<Law>(with_calibrated_time_constant<Law>(setup), trace);
   validate_fixed_step(setup, settings_);
   ImpactSummary s;
   s.integrator_used = integrator_used(settings_.integrator, impact_needs(setup, RootPolynomialLaw<Law>));

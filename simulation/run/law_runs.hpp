@@ -38,6 +38,11 @@ struct LawRuns {
   /// with_calibrated_time_constant<Law>(setup) for a MaterialTimeConstantLaw; nullptr for a law
   /// without a material time constant.
   DropTestSetup (*calibrated_time_constant)(const DropTestSetup& setup);
+  /// Law::material_constant for a MaterialTimeConstantLaw (the constant given or calibrated, if
+  /// any); nullptr for a law without one.
+  std::optional<double> (*material_constant)(const DampingSettings& damping);
+  /// Law::set_material_constant for such a law; nullptr for a law without one.
+  void (*set_material_constant)(DampingSettings& damping, double value);
   /// The bounce sequence of the elastic rod (setup.elastic_rod set, a non-iterated omega_n):
   /// chooses the integrator (out.integrator_used) and appends every impact to out.impacts
   /// (simulation/run/elastic_bounces.hpp).

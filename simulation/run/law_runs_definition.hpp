@@ -40,6 +40,18 @@ template <DampingLaw Law> constexpr DropTestSetup (*time_constant_calibration())
   else return nullptr;
 }
 
+/// Law::material_constant for a law with a material time constant, else nullptr.
+template <DampingLaw Law> constexpr std::optional<double> (*material_constant_getter())(const DampingSettings&) {
+  if constexpr (MaterialTimeConstantLaw<Law>) return &Law::material_constant;
+  else return nullptr;
+}
+
+/// Law::set_material_constant for a law with a material time constant, else nullptr.
+template <DampingLaw Law> constexpr void (*material_constant_setter())(DampingSettings&, double) {
+  if constexpr (MaterialTimeConstantLaw<Law>) return &Law::set_material_constant;
+  else return nullptr;
+}
+
 }  // namespace detail
 
 template <DampingLaw Law> const LawRuns& law_runs_of() {
@@ -47,6 +59,8 @@ template <DampingLaw Law> const LawRuns& law_runs_of() {
       .run_impact = [](ImpactSimulator& simulator, const DropTestSetup& setup,
                        std::vector<TraceSample>* trace) { return simulator.run<Law>(setup, trace); },
       .calibrated_time_constant = detail::time_constant_calibration<Law>(),
+      .material_constant = detail::material_constant_getter<Law>(),
+      .set_material_constant = detail::material_constant_setter<Law>(),
       .run_elastic_bounces = &detail::run_elastic_bounce_sequence<Law>,
       .make_soft_contact = {&make_soft_contact_of<Law, HarmonicForcing>, &make_soft_contact_of<Law, SprungPrimary>},
   };

@@ -82,7 +82,7 @@ std::unique_ptr<SoftContact<Env>> make_soft_contact_of(const DropTestSetup& setu
   if (setup.elastic_rod) throw InvalidParameter("rod-model", "elastic", "rigid for `" + cmd + "`");
   DropTestSetup calibrated = setup;
   if constexpr (MaterialTimeConstantLaw<Law>)
-    if (!setup.damping.viscous_time_constant_s) calibrated = with_calibrated_time_constant<Law>(setup);
+    if (!Law::material_constant(setup.damping)) calibrated = with_calibrated_time_constant<Law>(setup);
   const IntegratorKind used = integrator_used(solver.integrator, ImpactNeeds{.root_polynomial_law = RootPolynomialLaw<Law>});
   std::unique_ptr<SoftContact<Env>> out;
   with_integrator_row(used, [&]<class Row>(std::type_identity<Row>) {

@@ -47,7 +47,7 @@ ContactTangentRun make_contact_tangent(std::string_view law, const DropTestSetup
         return std::make_unique<LawForceJets<Law>>(c, s);
       };
       if constexpr (MaterialTimeConstantLaw<Law>)
-        if (!setup.damping.viscous_time_constant_s) calibrated = with_calibrated_time_constant<Law>(setup);
+        if (!Law::material_constant(setup.damping)) calibrated = with_calibrated_time_constant<Law>(setup);
     }
   });
   if (!make) return {};

@@ -21,7 +21,8 @@ law_table = 'none                #555555  2  1.4 ' . \
             'hu-guo              #e84393  2  1.4 ' . \
             'gharib-hurmuzlu     #e67e22  3  1.4 ' . \
             'tsuji-dem           #27ae60  1  1.4 ' . \
-            'kuwabara-kono       #8e44ad  1  1.2 '
+            'kuwabara-kono       #8e44ad  1  1.2 ' . \
+            'lee-herrmann        #6d4c41  2  1.6 '
 # The position of `name` in the table's first column, 0 if it has none.
 law_row(name) = sum [k = 1:words(law_table) / 4] (word(law_table, 4 * k - 3) eq name ? k : 0)
 law_field(name, j, fallback) = law_row(name) > 0 ? word(law_table, 4 * law_row(name) - 4 + j) : fallback

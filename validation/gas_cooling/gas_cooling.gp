@@ -17,7 +17,7 @@ do for [format in 'pdf png'] {
   set multiplot
   set origin 0, 0.2; set size 0.5, 0.8
   set logscale x
-  set xtics (1, 2, 5, 10)
+  set xtics (1, 2, 5, 10, 20, 50)
   set xlabel 's = 1 + (t - t_1)/{/Symbol t}_1'
   set ylabel '(T / T_1) s^2'
   set key off

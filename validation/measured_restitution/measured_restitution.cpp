@@ -102,10 +102,12 @@ std::vector<FitPoint> in_order_of_speed(std::vector<FitPoint> points) {
 
 std::string law_tt(const std::string& law) { return "\\texttt{" + latex_escaped(law) + "}"; }
 
-/// A fitted parameter in the table: the input e, or a time constant in microseconds.
+/// A fitted parameter in the table: the input e, a time constant in microseconds, a damping rate.
 std::string parameter_cell(const FittedParameter& p) {
   if (p.name == "viscous-time-constant")
     return fmt::format("$A = {:.2f} \\pm {:.2f}$\\,$\\mu$s", 1e6 * p.estimate, 1e6 * p.standard_error);
+  if (p.name == "damping-rate")
+    return fmt::format("$\\gamma = {:.0f} \\pm {:.0f}$\\,s$^{{-1}}$", p.estimate, p.standard_error);
   if (p.name == "restitution") return fmt::format("$e = {:.4f} \\pm {:.4f}$", p.estimate, p.standard_error);
   return fmt::format("{} $= {:.4g} \\pm {:.2g}$", latex_escaped(p.name), p.estimate, p.standard_error);
 }

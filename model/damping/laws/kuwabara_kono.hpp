@@ -1,6 +1,7 @@
 #pragma once
 // KuwabaraKono: the viscoelastic Hertz law, whose damping is a material constant.
 #include "hertzdash/model/damping/damping_law.hpp"
+#include "hertzdash/model/damping/reference_velocity.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <cmath>
@@ -41,6 +42,10 @@ class KuwabaraKono {
       "quasi-static viscoelastic contact: A much shorter than the contact time, speeds far below sound",
       true};
   static constexpr bool material_time_constant = true;
+  /// A is DampingSettings::viscous_time_constant_s; its size for an impact is X / v0 (MaterialTimeConstantLaw).
+  static std::optional<double> material_constant(const DampingSettings& s) { return s.viscous_time_constant_s; }
+  static void set_material_constant(DampingSettings& s, double A_s) { s.viscous_time_constant_s = A_s; }
+  static double material_constant_scale(double X_m, double v0_mps) { return X_m / v0_mps; }
   /// The law's own inputs (fields of DampingSettings: the simulator's calibration of A reads them).
   static constexpr ParameterDecl parameters[] = {
       {.key = "viscous-time-constant",
@@ -51,13 +56,7 @@ class KuwabaraKono {
        .default_source = "computed: the A whose restitution at `reference-velocity` is the input e",
        .help = "Material time constant A [s] >= 0: F = K (x^{3/2} + A x^{1/2} xdot); replaces the calibration from e",
        .fittable = true},
-      {.key = "reference-velocity",
-       .unit = "m/s",
-       .column_unit = "mps",
-       .range = NumberRange::positive(),
-       .default_value = "the approach speed",
-       .default_source = "computed: the approach speed of the run's first impact",
-       .help = "Approach speed [m/s] > 0 at which the law's restitution is the input e (the calibration of A)"},
+      reference_velocity_parameter,
   };
 
   KuwabaraKono(const ImpactConditions& c, const DampingSettings& s)
