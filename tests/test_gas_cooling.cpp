@@ -15,6 +15,24 @@
 
 using namespace hertzdash;
 
+namespace {
+
+/// The gas of granular_gas.hpp with the viscoelastic law (e = 0.8 at its reference speed), and
+/// hertzdash's e(g) of its contact from 10^-decades of that speed to ten times it.
+struct ViscoelasticGas {
+  GranularGas gas;
+  RestitutionCurve e;
+  explicit ViscoelasticGas(double decades, int points)
+      : gas([] {
+          GranularGas g;
+          g.law = "kuwabara-kono";
+          return g;
+        }()),
+        e(gas_contact(gas), std::pow(10, -decades) * gas.reference_speed_mps(), 10 * gas.reference_speed_mps(), points) {}
+};
+
+}  // namespace
+
 TEST_CASE("gas cooling: a constant e gives Haff's law, dT/dt = -B T^{3/2} and T = T1/(1 + (t - t1)/tau)^2", "[export][gas]") {
   // tsuji-dem returns its e at every speed to the solver's 1e-10 (tests/test_damping_law_restitution.cpp),
   // so the quadrature of p(g) g^3 (1 - e^2) is sqrt(2/pi) s^3 (1 - e^2) and the rate is Haff's -B T^{3/2}
@@ -43,11 +61,10 @@ TEST_CASE("gas cooling: the viscoelastic gas's rate tends to T^{8/5}, the series
   // T = 1e-4 T0 (beta about 0.07) to 1e-6 T0, beta falls by 100^{1/10}, so the slope's departure
   // from the series must fall by 100^{1/5} = 2.5 (measured: 1.7e-3, then 6.6e-4; the table of e, 61
   // points over six decades, moves it by less than 1e-5: unchanged with 40).
-  GranularGas gas;
-  gas.law = "kuwabara-kono";
+  const ViscoelasticGas viscoelastic(5, 61);
+  const GranularGas& gas = viscoelastic.gas;
+  const RestitutionCurve& e = viscoelastic.e;
   const EngineContact c = gas_contact(gas);
-  const double v = gas.reference_speed_mps();
-  const RestitutionCurve e(c, 1e-5 * v, 10 * v, 61);
   const double m = gas.mass_kg(), n = gas.number_density_per_m3(), chi = gas.contact_correlation();
   const double K = hertz_stiffness(gas.diameter_m / 4, gas.material, gas.material);
   const double b = c.material_constant * std::pow(K / (m / 2), 0.4), C1 = 1.15344, C2 = 0.79826;
@@ -83,22 +100,16 @@ TEST_CASE("granular gas on LAMMPS with the viscoelastic contact: its temperature
   // 6 % about its mean, and a gas of soft spheres cools a few per cent slower than Enskog's rate
   // (the constant-e gas of tests/test_engine_export.cpp: exponent 1.96); so the mean of T/T_pred over
   // a run must be 1 within 0.1, the mean over three seeds within 0.06.
-  GranularGas gas;
-  gas.law = "kuwabara-kono";
-  const EngineContact c = gas_contact(gas);
-  const double v = gas.reference_speed_mps();
-  const RestitutionCurve e(c, 1e-3 * v, 10 * v, 40);
+  ViscoelasticGas viscoelastic(3, 40);
+  GranularGas& gas = viscoelastic.gas;
   double sum = 0;
   for (int seed : {4928459, 11, 33}) {
     CAPTURE(seed);
     gas.seed = seed;
     const test::ScratchDir dir;
     const std::vector<TemperatureSample> T = run_granular_gas(gas, 2, dir.path).temperature;
-    std::size_t i1 = 0;
-    while (T[i1].time_s < 0.5 * gas.haff_time_s(gas.initial_temperature_J())) ++i1;
-    const auto predicted = predicted_cooling(T[i1].temperature_J, T[i1].time_s, T.back().time_s, static_cast<int>(T.size() - i1),
-                                             gas.mass_kg(), gas.diameter_m, gas.number_density_per_m3(),
-                                             gas.contact_correlation(), e);
+    const std::size_t i1 = first_sample_after_start(gas, T);
+    const auto predicted = predicted_from(gas, viscoelastic.e, T, i1);
     double mean = 0;
     for (std::size_t i = i1; i < T.size(); ++i) mean += T[i].temperature_J / predicted[i - i1].temperature_J;
     mean /= static_cast<double>(T.size() - i1);

@@ -176,11 +176,24 @@ double enskog_collisions(const GranularGas& gas, const std::vector<TemperatureSa
   return gas.particles() / 2.0 * integral;
 }
 
-HaffFit fit_haff_exponent(const GranularGas& gas, const std::vector<TemperatureSample>& samples) {
+std::size_t first_sample_after_start(const GranularGas& gas, const std::vector<TemperatureSample>& samples) {
   const double t_start = 0.5 * gas.haff_time_s(gas.initial_temperature_J());
   std::size_t i1 = 0;
   while (i1 < samples.size() && samples[i1].time_s < t_start) ++i1;
   if (i1 + 2 >= samples.size()) throw std::runtime_error("the granular gas ran for less than half a Haff time");
+  return i1;
+}
+
+std::vector<CoolingSample> predicted_from(const GranularGas& gas, const RestitutionCurve& e,
+                                          const std::vector<TemperatureSample>& samples, std::size_t from) {
+  // The thermo output is evenly spaced in steps, so in time: predicted_cooling's samples fall on it.
+  return predicted_cooling(samples[from].temperature_J, samples[from].time_s, samples.back().time_s,
+                           static_cast<int>(samples.size() - from), gas.mass_kg(), gas.diameter_m,
+                           gas.number_density_per_m3(), gas.contact_correlation(), e);
+}
+
+HaffFit fit_haff_exponent(const GranularGas& gas, const std::vector<TemperatureSample>& samples) {
+  const std::size_t i1 = first_sample_after_start(gas, samples);
   HaffFit f{samples[i1].time_s, samples[i1].temperature_J, gas.haff_time_s(samples[i1].temperature_J), 0};
   // log(T/T1) = -a log(1 + (t - t1)/tau): a line through the origin.
   double xy = 0, xx = 0;

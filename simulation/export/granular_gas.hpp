@@ -25,6 +25,7 @@
 // as clusters form.
 #include "hertzdash/simulation/export/engine_contact.hpp"
 #include "hertzdash/simulation/export/engine_models.hpp"
+#include "hertzdash/simulation/export/gas_cooling.hpp"
 
 #include <filesystem>
 #include <vector>
@@ -97,6 +98,15 @@ GasRun run_granular_gas(const GranularGas& gas, int ranks, const std::filesystem
 /// sample of D scatters by S(0) sqrt(2/(c^3 - 1)), 10 % at c = 6 and 28 % at c = 3, the average of
 /// five by sqrt(5) less), or +inf if it never does.
 double clustering_onset_s(const GranularGas& gas, const std::vector<DispersionSample>& dispersion, double from_s);
+
+/// The index of the first sample from half a Haff time of the start on (the lattice start
+/// forgotten), where the comparisons with kinetic theory begin; std::runtime_error if the run is
+/// shorter than that and two more samples.
+std::size_t first_sample_after_start(const GranularGas& gas, const std::vector<TemperatureSample>& samples);
+
+/// Kinetic theory's T (gas_cooling.hpp) at the times of samples[from...], from samples[from]'s T.
+std::vector<CoolingSample> predicted_from(const GranularGas& gas, const RestitutionCurve& e,
+                                          const std::vector<TemperatureSample>& samples, std::size_t from);
 
 /// Enskog's count of collisions over the run, (N/2) int omega(T(t)) dt, from the measured T(t).
 double enskog_collisions(const GranularGas& gas, const std::vector<TemperatureSample>& temperature);

@@ -82,14 +82,10 @@ int main(int argc, char** argv) try {
     const EngineContact contact = gas_contact(gas);
     const double v = gas.reference_speed_mps();
     const RestitutionCurve e(contact, 1e-3 * v, 10 * v, 40);
-    const double t_start = 0.5 * gas.haff_time_s(gas.initial_temperature_J());
-    std::size_t i1 = 0;
-    while (run.temperature[i1].time_s < t_start) ++i1;
+    const std::size_t i1 = first_sample_after_start(gas, run.temperature);
     const std::vector<TemperatureSample> measured(run.temperature.begin() + static_cast<long>(i1), run.temperature.end());
     const double t1 = measured.front().time_s, T1 = measured.front().temperature_J, tau1 = gas.haff_time_s(T1);
-    const std::vector<CoolingSample> predicted =
-        predicted_cooling(T1, t1, measured.back().time_s, static_cast<int>(measured.size()), gas.mass_kg(), gas.diameter_m,
-                          gas.number_density_per_m3(), gas.contact_correlation(), e);
+    const std::vector<CoolingSample> predicted = predicted_from(gas, e, run.temperature, i1);
     const double clustered = clustering_onset_s(gas, run.dispersion, t1);
     std::vector<double> scaled, ratio, predicted_ratio;
     double worst = 0, ratio_sum = 0, ratio_count = 0;
