@@ -920,8 +920,9 @@ PYBIND11_MODULE(hertzdash, m) {
   m.def("export_decks", &py_export_decks, py::arg("engine"), py::arg("out"), py::arg("engine_model") = "",
         py::arg("steps_per_contact") = py::none(),
         ("export_decks(engine, out, engine_model='', steps_per_contact=None, **options) -> dict\n\nA contact's "
-         "input decks for LAMMPS or LIGGGHTS (engine 'lammps' or 'liggghts') written into the existing directory "
-         "out (sphere_sphere.in, sphere_wall.in, contact_lines.in), for the engine model equal to the law `damping` "
+         "input decks for LAMMPS, LIGGGHTS or YADE (engine " + engine_names() + ") written into the existing "
+         "directory out (sphere_sphere.in, sphere_wall.in, contact_lines.in; .py for yade), for the engine model "
+         "equal to the law `damping` "
          "names, exactly `hertzdash export --engine E --out DIR --json` (docs/engines.md): hertzdash's prediction "
          "of each impact under impacts.\n\n" +
          options)

@@ -32,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -274,4 +275,15 @@ TEST_CASE("granular gas on LAMMPS under mpirun -n 2: a constant e cools by Haff'
     sum += f.exponent;
   }
   CHECK(std::abs(sum / 3 - 2) < 0.1);
+}
+
+TEST_CASE("an engine run that hangs is killed at its timeout, with the processes it started", "[export][engines]") {
+  // `sh -c 'sleep 30 & sleep 30'` stands for an mpirun and its rank: the timeout (1 s) kills its
+  // process group, so the call returns in about a second, not thirty, naming the program and the limit.
+  const test::ScratchDir dir;
+  const auto start = std::chrono::steady_clock::now();
+  CHECK_THROWS_WITH(run_in_directory({"sh", "-c", "sleep 30 & sleep 30"}, dir.path, dir.path / "screen", "",
+                                     std::chrono::seconds(1)),
+                    Catch::Contains("sh ran past 1 s and was killed"));
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(10));
 }

@@ -13,7 +13,9 @@
 #include <spawn.h>
 #include <sstream>
 #include <stdexcept>
+#include <csignal>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -42,7 +44,8 @@ std::string line_starting(const std::string& output, std::string_view prefix) {
 }  // namespace
 
 std::string run_in_directory(std::vector<std::string> args, const std::filesystem::path& directory,
-                             const std::filesystem::path& screen, const std::string& install_hint) {
+                             const std::filesystem::path& screen, const std::string& install_hint,
+                             std::chrono::seconds timeout) {
   posix_spawn_file_actions_t actions;
   if (posix_spawn_file_actions_init(&actions) != 0)
     throw std::runtime_error(fmt::format("cannot prepare {}'s output in {}", args[0], directory.string()));
@@ -62,13 +65,33 @@ std::string run_in_directory(std::vector<std::string> args, const std::filesyste
   std::vector<char*> env{isolated.data()};
   for (char** e = environ; *e; ++e) env.push_back(*e);
   env.push_back(nullptr);
+  // Its own process group, so that a timeout kills mpirun's ranks with it.
+  posix_spawnattr_t attributes;
+  if (posix_spawnattr_init(&attributes) != 0 || posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP) != 0 ||
+      posix_spawnattr_setpgroup(&attributes, 0) != 0) {
+    posix_spawn_file_actions_destroy(&actions);
+    throw std::runtime_error(fmt::format("cannot prepare {}'s process group", args[0]));
+  }
   pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), env.data());
+  const int spawned = posix_spawnp(&pid, argv[0], &actions, &attributes, argv.data(), env.data());
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   if (spawned != 0) throw std::runtime_error(fmt::format("cannot run {}: {}; {}", args[0], std::strerror(spawned), install_hint));
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error(fmt::format("waiting for {} failed", args[0]));
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) throw std::runtime_error(fmt::format("waiting for {} failed", args[0]));
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(-pid, SIGKILL);
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      throw std::runtime_error(fmt::format("{} ran past {} s and was killed (its output: {})", args[0], timeout.count(),
+                                           screen.string()));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   std::ostringstream said;
   said << std::ifstream(screen).rdbuf();
   const std::string error = line_starting(said.str(), "ERROR");
