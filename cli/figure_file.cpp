@@ -3,29 +3,21 @@
 #include "hertzdash/io/temporary_directory.hpp"
 
 #include "hertzdash/io/atomic_file.hpp"
+#include "hertzdash/io/child_process.hpp"
 #include "hertzdash/io/remove_on_signal.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 
 #include <fmt/format.h>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cstdint>
-#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
-
-extern char** environ;
 
 namespace hertzdash::cli {
 
@@ -54,10 +46,7 @@ std::string figure_format(const std::string& option, const std::filesystem::path
 
 void require_gnuplot(const std::string& option, const std::filesystem::path& path) {
   figure_format(option, path);
-  const char* env = std::getenv("PATH");
-  std::istringstream dirs(env ? env : "");
-  for (std::string dir; std::getline(dirs, dir, ':');)
-    if (!dir.empty() && access((std::filesystem::path(dir) / "gnuplot").c_str(), X_OK) == 0) return;
+  if (on_path("gnuplot")) return;
   throw InvalidParameter(option, path.string(), "given where gnuplot is installed (it draws the figure; debian-packages.txt)");
 }
 
@@ -90,30 +79,16 @@ void draw_figure_from_files(const std::string& script, const std::string& kind, 
   for (const std::filesystem::path& f : files) args.push_back(f.string());
   const std::filesystem::path messages = dir.path / "gnuplot.err";
 
-  posix_spawn_file_actions_t actions;
-  if (posix_spawn_file_actions_init(&actions) != 0 ||
-      posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0) != 0 ||
-      posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600) != 0)
-    throw std::runtime_error("cannot prepare gnuplot's output for the figure " + path.string());
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0)
-    throw std::runtime_error(fmt::format("cannot run gnuplot for the figure {}: {} (install gnuplot; "
-                                         "debian-packages.txt)",
-                                         path.string(), std::strerror(spawned)));
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error("waiting for gnuplot failed");
+  // gnuplot stays in the terminal's process group: a Ctrl-C reaches it at once.
+  const ChildProcess gnuplot{.args = args, .directory = {}, .output = "/dev/null", .errors = messages, .environment = {},
+                             .own_process_group = false, .timeout = std::nullopt};
+  const ChildExit exit = run_child(gnuplot, fmt::format(" (the figure {}; install gnuplot: debian-packages.txt)", path.string()));
   std::ostringstream said;
   said << std::ifstream(messages).rdbuf();
   std::error_code ec;
   // gnuplot only warns of a data file it cannot read, and draws an empty plot: a failure here.
   const std::uintmax_t size = std::filesystem::file_size(drawn, ec);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || ec || size == 0 ||
+  if (!exit.succeeded() || ec || size == 0 ||
       said.str().find("Cannot find or open file") != std::string::npos)
     throw std::runtime_error(fmt::format("gnuplot could not draw the figure {}: {}", path.string(), said.str()));
   std::ostringstream figure;
