@@ -144,6 +144,7 @@ TEST_CASE("CLI export: the decks run in the engine as written and give the JSON'
       {"--engine abaqus --damping tsuji-dem", "--engine"},
       {"--engine yade --damping tsuji-dem --restitution 0.99", "--restitution"},  // above Thornton's fit's reach
       {"--engine yade --damping tsuji-dem --rod-E inf", "--rod-E"},
+      {"--engine yade --damping tsuji-dem --restitution 0.1", "--restitution"},  // clamped: above e^-2 only
       {"--engine lammps", "--damping = hongo"},  // the default law: no LAMMPS model equals it
       {"--engine lammps --damping tsuji-dem --engine-model granular-viscoelastic", "--damping"},
       {"--engine lammps --damping tsuji-dem --engine-model hertz", "--engine-model"},

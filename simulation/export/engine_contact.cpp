@@ -2,12 +2,13 @@
 #include "hertzdash/simulation/export/engine_contact.hpp"
 
 #include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/restitution.hpp"
+#include "hertzdash/model/two_spheres.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 #include "hertzdash/simulation/run/impact_summary.hpp"
 #include "hertzdash/simulation/run/law_runs.hpp"
 
-#include "hertzdash/model/restitution.hpp"
-#include "hertzdash/model/two_spheres.hpp"
+#include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
@@ -79,6 +80,12 @@ void predict_impacts(EngineContact& c) {
 EngineContact make_engine_contact(const DropTestSetup& setup, const std::string& law, bool tension_clamped) {
   if (tension_clamped && law != "tsuji-dem")
     throw std::invalid_argument("an engine's clamped contact is known for tsuji-dem alone, not " + law);
+  // The clamped law's e falls to e^-2 as zeta -> 1 (clamped_restitution); below, it is overdamped.
+  if (tension_clamped && !(setup.restitution > std::exp(-2.0)))
+    throw InvalidParameter("restitution", format_value(setup.restitution),
+                           fmt::format("above e^-2 = {:.4f} for an engine that clamps the force at zero (tsuji-dem "
+                                       "clamped reaches no lower e while underdamped)",
+                                       std::exp(-2.0)));
   EngineContact c;
   c.law = law;
   c.tension_clamped = tension_clamped;
