@@ -96,11 +96,9 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   r.first = {given.ball_radius_m, given.mass_kg, given.ball};
   r.second.radius_m = in.number("second-radius").value_or(r.first.radius_m);
   r.second.material = {in.number("second-E").value_or(r.first.material.E_Pa), in.number("second-nu").value_or(r.first.material.nu)};
-  r.second.mass_kg = in.number("second-mass").value_or(
-      in.number("second-density") ? sphere_mass_kg(r.second.radius_m, *in.number("second-density"))
-      : options.density_kg_per_m3 && !in.number("second-radius") ? r.first.mass_kg
-      : options.density_kg_per_m3 ? sphere_mass_kg(r.second.radius_m, *options.density_kg_per_m3)
-                                  : r.first.mass_kg);
+  // Its mass: given, or from its density, or from the first's density at its own radius, or the first's.
+  const std::optional<double> density = in.number("second-density") ? in.number("second-density") : options.density_kg_per_m3;
+  r.second.mass_kg = in.number("second-mass").value_or(density ? sphere_mass_kg(r.second.radius_m, *density) : r.first.mass_kg);
   const double v = *given.impact_velocity_mps;
   r.setup = two_spheres_contact(given, r.first, r.second, v);
   const SolverSettings solver = resolve_solver(options);
