@@ -10,19 +10,23 @@
 //     --json. Exit 0 with a converged spectrum, 3 when the run stopped or did not converge.
 //   - `hertzdash basins RIG` (simulation/rigs/rig_basins.hpp): --section-phase, the grid's ranges
 //     and resolution, the cells' runs, --threads, --json, --csv FILE, --mkdir. Exit 0 with the
-//     grid, 3 when no default range exists (the rig's run gives no attractor).
+//     grid, 3 when no default range exists (the rig's run gives no attractor). Under `mpirun -n N`
+//     the N processes share the grid's rows and process 0 writes the result.
 // Bad input exits 2, the option named (cli/main.cpp).
 #include "cli/analysis_command.hpp"
 
 #include "cli/number_options.hpp"
+#include "cli/process_group.hpp"
 #include "cli/output_files.hpp"
 #include "cli/rig_options.hpp"
 #include "hertzdash/simulation/options/command_options.hpp"
 #include "hertzdash/simulation/options/run_options.hpp"
 #include "hertzdash/simulation/reports/orbit_report.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
+#include <thread>
 #include <vector>
 
 namespace hertzdash::cli {
@@ -116,7 +120,18 @@ Command add_basins_command(CLI::App& app) {
   return add_analysis_command(
       app, "basins", "The basins of attraction of a rig's section: which attractor each start reaches",
       "The basins of attraction", [](const AnalysisRequest& r) {
-        const BasinsResult result = run_basins(*r.rig, r.run, load_paper_parameters(), r.inputs, basins_request(r.given));
+        // Under an MPI launcher the processes share the grid's rows (simulation/orbits/basins.hpp),
+        // the cores of a machine shared among its processes; process 0 writes everything.
+        const ProcessGroup group;
+        BasinsRequest request = basins_request(r.given);
+        if (group.size() > 1) {
+          request.rank = group.rank(), request.ranks = group.size();
+          request.gather = [&group](const std::string& mine) { return group.gather(mine); };
+          if (!r.given.number("threads"))
+            request.threads = std::max(1u, std::thread::hardware_concurrency() / static_cast<unsigned>(group.local_size()));
+        }
+        const BasinsResult result = run_basins(*r.rig, r.run, load_paper_parameters(), r.inputs, request);
+        if (group.rank() > 0) return result.failure.empty() ? 0 : 3;
         if (!r.csv_path.empty()) {
           create_output_directories(r.csv_path, r.mkdir);
           basins_csv(*r.rig, result).save(r.csv_path);

@@ -74,6 +74,42 @@ TEST_CASE("basins: the bouncing ball's period-1 orbit and the body at rest share
   CHECK(counted == 12 * 12);
 }
 
+TEST_CASE("basins shared among processes: each runs its rows, process 0 numbers the grid as one process does",
+          "[orbit]") {
+  // Three processes in one: the ranks' gathers are played here (rank 1 and 2 hand their text to
+  // process 0's gather, which returns all three in rank order; tests/basins_mpi.sh runs mpirun).
+  // Their texts carry each phase in its shortest exact decimal, so process 0 sees the same outcomes
+  // as if it had run every row: the same cells, attractors and phases, to the bit.
+  const Basins alone = compute_basins(ball, grid(2));
+  std::vector<std::string> texts(3);
+  for (int rank : {1, 2}) {
+    BasinOptions o = grid(1);
+    o.rank = rank, o.ranks = 3;
+    o.gather = [&texts, rank](const std::string& mine) {
+      texts[static_cast<std::size_t>(rank)] = mine;
+      return std::vector<std::string>{};
+    };
+    CHECK(compute_basins(ball, o).elsewhere);
+  }
+  BasinOptions o = grid(2);
+  o.rank = 0, o.ranks = 3;
+  o.gather = [&texts](const std::string& mine) {
+    texts[0] = mine;
+    return texts;
+  };
+  const Basins shared = compute_basins(ball, o);
+  CHECK_FALSE(shared.elsewhere);
+  CHECK(shared.cell == alone.cell);
+  CHECK(shared.inside_wall == alone.inside_wall);
+  REQUIRE(shared.attractors.size() == alone.attractors.size());
+  for (std::size_t k = 0; k < alone.attractors.size(); ++k) {
+    CHECK(shared.attractors[k].phases == alone.attractors[k].phases);
+    CHECK(shared.attractors[k].cells == alone.attractors[k].cells);
+  }
+  // 12 rows over 3 processes: 4 each; rank 1's text has 4 x 12 lines.
+  CHECK(std::count(texts[1].begin(), texts[1].end(), '\n') == 4 * 12);
+}
+
 TEST_CASE("basins: the orbit Newton finds lies in its own basin", "[orbit]") {
   // Shooting from the apex of the closed form (half a cycle after the impact: y = A sin theta* +
   // g T^2/8, u = 0), then a 2 x 2 grid of starts within 1e-3 of the scales around the orbit: a

@@ -12,6 +12,9 @@
 // velocity slowest): whatever the threads, the same grid gives the same numbers.
 // Threads: each runs whole rows on a spec of its own (`make_spec`, called once per thread before
 // they start), so a soft contact, which a spec's copies share, is never run by two threads at once.
+// Processes (MPI ranks, the caller's `gather`): process r of R runs the rows r, r + R, ..., each on
+// its threads, and sends their outcomes as text (every number in its shortest exact decimal) to
+// process 0, which numbers the attractors over the whole grid: the same numbers as one process.
 #include "hertzdash/simulation/shaker/impact_sequence.hpp"
 
 #include <functional>
@@ -27,6 +30,10 @@ struct BasinOptions {
   int transient = 400, kept = 32;
   double phase_tolerance = 1e-4;  ///< cycles
   unsigned threads = 1;
+  int rank = 0, ranks = 1;   ///< this process among the processes that share the grid's rows
+  /// With ranks > 1: sends this process's text to process 0 and returns every process's, in rank
+  /// order, there (empty on the others). Set by the caller (cli/process_group.hpp: MPI).
+  std::function<std::vector<std::string>(const std::string&)> gather;
 };
 
 /// One attractor the grid reached.
@@ -42,6 +49,7 @@ struct Basins {
   std::vector<int> cell;  ///< per cell (row-major, velocity slowest): its attractor's index, or -1 for a start inside a wall
   std::vector<BasinAttractor> attractors;
   long inside_wall = 0;   ///< cells whose start lies inside a wall
+  bool elsewhere = false; ///< a process other than 0 of several: the grid was numbered on process 0
 };
 
 /// The basins on the grid of `o` of the prescribed-box sequence `make_spec()` (the start's

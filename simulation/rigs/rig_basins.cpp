@@ -40,6 +40,7 @@ BasinsResult run_basins(const Rig& rig, const RunOptions& options, const PaperPa
   BasinOptions& g = out.grid;
   g.resolution = request.resolution, g.transient = request.cell_transient, g.kept = request.cell_impacts;
   g.threads = request.threads > 0 ? request.threads : std::max(1u, std::thread::hardware_concurrency());
+  g.rank = request.rank, g.ranks = request.ranks, g.gather = request.gather;
   if (!request.position_min_m || !request.velocity_min_mps || !request.section_phase) {
     // The rig's own attractor gives what is not given.
     const SectionGuess guess = section_guess(spec, request.section_phase, 1);
@@ -63,6 +64,7 @@ BasinsResult run_basins(const Rig& rig, const RunOptions& options, const PaperPa
   out.inputs.emplace_back("resolution", std::to_string(g.resolution));
   out.inputs.emplace_back("cell_transient", std::to_string(g.transient));
   out.inputs.emplace_back("cell_impacts", std::to_string(g.kept));
+  out.inputs.emplace_back("processes", std::to_string(g.ranks));  // how it ran: the result does not depend on it
   // Each thread its own copy of the rig's sequence (its own soft contact).
   out.basins = compute_basins([&] { return rig.sequence(options, paper, inputs).sequence.spec; }, g);
   return out;

@@ -16,6 +16,9 @@ struct BasinsRequest {
   std::optional<double> section_phase, position_min_m, position_max_m, velocity_min_mps, velocity_max_mps;
   int resolution = 64, cell_transient = 400, cell_impacts = 32;
   unsigned threads = 0;  ///< 0: the machine's cores
+  /// The processes sharing the grid's rows (BasinOptions: rank, ranks, gather; MPI in the program).
+  int rank = 0, ranks = 1;
+  std::function<std::vector<std::string>(const std::string&)> gather;
 };
 /// The request of the options given by key (`basins`' declarations); InvalidParameter naming a
 /// key outside its range, or a range's bound without the other.
