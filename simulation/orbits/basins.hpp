@@ -33,7 +33,7 @@ struct BasinOptions {
   int rank = 0, ranks = 1;   ///< this process among the processes that share the grid's rows
   /// With ranks > 1: sends this process's text to process 0 and returns every process's, in rank
   /// order, there (empty on the others). Set by the caller (cli/process_group.hpp: MPI).
-  std::function<std::vector<std::string>(const std::string&)> gather;
+  std::function<std::vector<std::string>(const std::string&)> gather = {};
 };
 
 /// One attractor the grid reached.

@@ -18,7 +18,7 @@ struct BasinsRequest {
   unsigned threads = 0;  ///< 0: the machine's cores
   /// The processes sharing the grid's rows (BasinOptions: rank, ranks, gather; MPI in the program).
   int rank = 0, ranks = 1;
-  std::function<std::vector<std::string>(const std::string&)> gather;
+  std::function<std::vector<std::string>(const std::string&)> gather = {};
 };
 /// The request of the options given by key (`basins`' declarations); InvalidParameter naming a
 /// key outside its range, or a range's bound without the other.
