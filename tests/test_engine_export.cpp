@@ -35,6 +35,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <numbers>
 #include <string>
@@ -287,4 +288,25 @@ TEST_CASE("an engine run that hangs is killed at its timeout, with the processes
                                      std::chrono::seconds(1)),
                     Catch::Contains("sh failed: ran past 1 s and was killed"));
   CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(10));
+}
+
+TEST_CASE("an engine runs where HOME is not set (YADE reads it at start)", "[export][engines]") {
+  // YADE 2023.02a stops with KeyError: 'HOME' without one; run_in_directory gives it the run's
+  // directory. The glass beads' sphere on the wall, e within the bound derived at the top of this file.
+  const EngineModel& model = engine_model(Engine::yade, "", "tsuji-dem");
+  const EngineContact c = glass_beads(model);
+  struct WithoutHome {  // HOME restored however the run ends
+    const char* home = std::getenv("HOME");
+    std::string saved = home ? home : "";
+    WithoutHome() { unsetenv("HOME"); }
+    ~WithoutHome() {
+      if (home) setenv("HOME", saved.c_str(), 1);
+    }
+  };
+  EngineImpactResult got;
+  {
+    const WithoutHome without;
+    got = run(model, c, EngineImpactKind::sphere_wall, 100);
+  }
+  CHECK(std::abs(got.restitution - c.on_wall.restitution) < 0.3 * std::pow(100, -1.25));
 }

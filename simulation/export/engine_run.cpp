@@ -36,9 +36,12 @@ std::string run_in_directory(std::vector<std::string> args, const std::filesyste
   // (a few tenths of a second each run, and one more process to wait for under load); isolated,
   // it runs as the one process it is. mpirun ignores it. Its own process group, so that a timeout
   // kills mpirun's ranks with it.
+  // YADE reads HOME at start (its IPython profile) and stops with a KeyError without one: a
+  // run with no HOME (a bare CI container) gives it the run's directory.
+  std::vector<std::string> environment{"OMPI_MCA_ess_singleton_isolated=1"};
+  if (!std::getenv("HOME")) environment.push_back("HOME=" + directory.string());
   const ChildProcess child{.args = std::move(args), .directory = directory, .output = screen, .errors = {},
-                           .environment = {"OMPI_MCA_ess_singleton_isolated=1"}, .own_process_group = true,
-                           .timeout = timeout};
+                           .environment = std::move(environment), .own_process_group = true, .timeout = timeout};
   const ChildExit exit = run_child(child, "; " + install_hint);
   std::ostringstream said;
   said << std::ifstream(screen).rdbuf();
