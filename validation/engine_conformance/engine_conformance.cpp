@@ -125,7 +125,7 @@ int main(int argc, char** argv) try {
   const double sd = seeds.size() > 1 ? std::sqrt(std::max(0.0, (exponent_sq - n * mean * mean) / (n - 1))) : NAN;
   const double gas_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - gas_start).count();
 
-  LatexMacros macros("validation/engine_conformance: the contact exported to LAMMPS and LIGGGHTS and run there", provenance);
+  LatexMacros macros("validation/engine_conformance: the contact exported to LAMMPS, LIGGGHTS and YADE and run there", provenance);
   macros.add("engStepsPerContact", steps, "{:.0f}");
   macros.add("engBeadRadiusMm", 1e3 * beads.ball_radius_m, "{:g}");
   macros.add("engBeadModulusGPa", 1e-9 * beads.ball.E_Pa, "{:g}");
