@@ -70,6 +70,14 @@
 
 namespace hertzdash {
 
+/// Where a regularised contact's integration in tau [s/m^{1/2}] ends: beyond its events (separation,
+/// or t reaching the observation window t_obs [s]) for a contact whose u stays above 1e-7 of its
+/// scale X^{1/2} on average (dt/dtau = 2u). `scale` is the system's state_scale() (u, v, t, ...).
+template <class Scale>
+double regularised_tau_end(double t_obs_s, const Scale& scale) {
+  return 1e7 * (t_obs_s + scale[2]) / (2.0 * scale[0]);
+}
+
 /// The regularised equations (see above), (du, dv, dt, dz...)/dtau as a tuple, at the state y
 /// with the force F there, of the environment env and 1/mu = inverse_mass [1/kg], over any scalar
 /// type (double, power series, jets): the one right-hand side of ContactSystem and of its

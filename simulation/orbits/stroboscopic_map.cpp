@@ -150,9 +150,10 @@ SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
         image.failure = fmt::format("the contact beginning at t = {:.9g} s spans the section's time", t);
         return image;
       }
-      const ContactTangent c = spec_.soft_tangent(i.wall, t, v0, 2.0 / spec_.frequency_Hz);
+      const ContactTangent c = spec_.soft_tangent(i.wall, t, v0, soft_contact_window_s(spec_.frequency_Hz));
       if (!c.separated) {
-        image.failure = fmt::format("the contact beginning at t = {:.9g} s did not end within 2 drive cycles", t);
+        image.failure = fmt::format("the contact beginning at t = {:.9g} s did not end within {:g} drive cycles", t,
+                                    soft_contact_window_cycles);
         return image;
       }
       const double V_sep = box.velocity_mps(t_sep), A_sep = box.acceleration_mps2(t_sep);

@@ -55,9 +55,7 @@ class SoftContactOf final : public SoftContact<Env> {
     ContactSystem<Law, Env> sys(ImpactConditions{K_, mass_kg_, v0_mps, e_}, damping_, env, t_obs_s);
     SoftContactObserver<ContactSystem<Law, Env>, Env> observer{&sys, &out};
     auto y = sys.initial_state();
-    // tau is bounded by the events (separation, or t reaching t_obs); the end lies beyond them
-    // for a contact whose u stays above 1e-7 of its scale X^{1/2} on average (dt/dtau = 2u).
-    const double tau_end = 1e7 * (t_obs_s + sys.state_scale()[2]) / (2.0 * sys.state_scale()[0]);
+    const double tau_end = regularised_tau_end(t_obs_s, sys.state_scale());
     out.work = Row::integrate(sys, y, 0.0, tau_end, solver_, workspace_, observer);
     return out;
   }

@@ -4,6 +4,7 @@
 #include "hertzdash/simulation/run/soft_contact_tangent.hpp"
 
 #include "hertzdash/integrators/dormand_prince.hpp"
+#include "hertzdash/model/contact_system.hpp"
 #include "hertzdash/model/contact_tangent_system.hpp"
 #include "hertzdash/model/damping/registered_law_types.hpp"
 #include "hertzdash/model/hertz.hpp"
@@ -59,8 +60,7 @@ ContactTangentRun make_contact_tangent(std::string_view law, const DropTestSetup
     TangentSystem sys(*force, env, K, m, v0, t_obs);
     TangentSystem::State y = sys.initial_state();
     SeparationObserver observer;
-    // tau is bounded by the events, as in SoftContactOf::run (simulation/run/soft_contact_run.hpp).
-    const double tau_end = 1e7 * (t_obs + sys.state_scale()[2]) / (2.0 * sys.state_scale()[0]);
+    const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
     ContactTangent out;
     out.work = integrate_dormand_prince(sys, y, 0.0, tau_end, options, observer);
     constexpr int D = TangentSystem::base_dimension;

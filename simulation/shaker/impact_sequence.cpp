@@ -331,8 +331,7 @@ class SequenceRun {
       if (!(impact.impact_speed_mps < s_.hertz_speed_limit_mps))  // a touch of a scale far beyond the contact's
         ++beyond_hertz_, fastest_ = std::max(fastest_, impact.impact_speed_mps), speed_limit_ = s_.hertz_speed_limit_mps;
     } else {
-      const double t_obs = 2.0 / s_.frequency_Hz;
-      const SoftImpact c = s_.soft(hit, ti, impact.impact_speed_mps, X, V, t_obs);
+      const SoftImpact c = s_.soft(hit, ti, impact.impact_speed_mps, X, V, soft_contact_window_s(s_.frequency_Hz));
       out_.work.add_work(c.work);
       if (!(impact.impact_speed_mps < c.hertz_speed_limit_mps))
         ++beyond_hertz_, fastest_ = std::max(fastest_, impact.impact_speed_mps), speed_limit_ = c.hertz_speed_limit_mps;

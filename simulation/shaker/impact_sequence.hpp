@@ -69,6 +69,11 @@ const char* to_string(ShakerImpactModel m);
 /// The model spelled `name`; InvalidParameter("impact-model", ...) otherwise.
 ShakerImpactModel parse_shaker_impact_model(std::string_view name);
 
+/// How long a soft contact is followed [drive cycles]: one that lasts longer ends the run (the
+/// sequence's) or fails the map's image (simulation/orbits/stroboscopic_map.cpp).
+inline constexpr double soft_contact_window_cycles = 2;
+/// That window [s] for a drive of frequency f [Hz].
+inline double soft_contact_window_s(double frequency_Hz) { return soft_contact_window_cycles / frequency_Hz; }
 /// The most impacts one drive cycle may hold before the body is taken as carried (chatter).
 inline constexpr int max_impacts_per_cycle = 10000;
 /// The most impacts (transient plus kept) of one run.
