@@ -310,3 +310,19 @@ TEST_CASE("an engine runs where HOME is not set (YADE reads it at start)", "[exp
   }
   CHECK(std::abs(got.restitution - c.on_wall.restitution) < 0.3 * std::pow(100, -1.25));
 }
+
+TEST_CASE("an engine run that stops without an ERROR line is run once more, one with an ERROR line is not",
+          "[export][engines]") {
+  // A shell stands for the engine. It fails its first run (exit status 3, no message) and succeeds
+  // the second: the call returns the second run's output. One that always fails is reported with
+  // both runs. One that prints the engine's own ERROR line (the deck's fault) is not run again.
+  const test::ScratchDir dir;
+  const auto run_sh = [&](const std::string& script) {
+    return run_in_directory({"sh", "-c", script}, dir.path, dir.path / "screen", "", std::chrono::seconds(60));
+  };
+  CHECK(run_sh("if [ -e once ]; then echo second; else touch once; exit 3; fi") == "second\n");
+  CHECK_THROWS_WITH(run_sh("exit 3"), Catch::Contains("sh failed: exit status 3") &&
+                                          Catch::Contains("(run twice; the first time: sh failed: exit status 3"));
+  CHECK_THROWS_WITH(run_sh("if [ -e twice ]; then echo second; else touch twice; echo 'ERROR: no such style'; exit 1; fi"),
+                    Catch::Contains("ERROR: no such style") && !Catch::Contains("run twice"));
+}

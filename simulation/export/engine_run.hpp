@@ -20,7 +20,8 @@ inline constexpr std::chrono::seconds engine_run_timeout{900};
 /// Throws std::runtime_error saying the program cannot start (with `install_hint`), that it
 /// failed (its first line that starts with "ERROR", or its exit status or signal, with the end of
 /// its output), or that it ran past `timeout` (then it and every process it started, its process
-/// group, are killed: a hung engine does not hang its caller).
+/// group, are killed: a hung engine does not hang its caller). A run that stops without an ERROR
+/// line, before the timeout, is run once more (a transient failure seen once, cause unknown).
 std::string run_in_directory(std::vector<std::string> args, const std::filesystem::path& directory,
                              const std::filesystem::path& screen, const std::string& install_hint,
                              std::chrono::seconds timeout = engine_run_timeout);
