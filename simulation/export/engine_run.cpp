@@ -44,8 +44,9 @@ std::string run_in_directory(std::vector<std::string> args, const std::filesyste
                            .environment = std::move(environment), .own_process_group = true, .timeout = timeout};
   // A run that stops without the engine's own ERROR line (an exit status or a signal, no
   // message) and before the timeout is run once more: once in some ten runs of the whole suite on
-  // two loaded cores, a LAMMPS run in `conformance` failed that way and not again (cause not
-  // found). An ERROR line (the deck's fault) and a timeout are final.
+  // two loaded cores, the `conformance` test failed beside an mpirun and not again, its message
+  // lost (an engine's start under load is the likely cause, not a proven one). An ERROR line (the
+  // deck's fault) and a timeout are final.
   std::string first_failure;
   for (int attempt = 1;; ++attempt) {
     const ChildExit exit = run_child(child, "; " + install_hint);
