@@ -7,7 +7,15 @@
 #include "hertzdash/model/drop_test_setup.hpp"
 #include "hertzdash/model/hertz.hpp"
 
+#include <cmath>
+#include <numbers>
+
 namespace hertzdash {
+
+/// The mass of a solid sphere of radius R [m] and density rho [kg/m^3]: (4/3) pi R^3 rho [kg].
+inline double sphere_mass_kg(double radius_m, double density_kg_per_m3) {
+  return 4.0 / 3.0 * std::numbers::pi * std::pow(radius_m, 3) * density_kg_per_m3;
+}
 
 struct Sphere {
   double radius_m;    ///< R [m]

@@ -20,6 +20,9 @@ struct RegisteredLaw {
   bool conservative;            ///< ConservativeLaw: returns all the energy it stores
   bool material_time_constant;  ///< MaterialTimeConstantLaw: damping by a material constant (parameters[0]), not by e
   bool root_polynomial;         ///< RootPolynomialLaw: offers force_of_root (the regularised integrators)
+  /// The declaration of its material constant (its first input: kuwabara-kono's
+  /// viscous-time-constant, lee-herrmann's damping-rate), or nullptr for a law without one.
+  const ParameterDecl* material_constant() const { return material_time_constant ? &parameters.front() : nullptr; }
 };
 
 /// Every registered law, in registration order.

@@ -21,7 +21,7 @@ const char* to_string(EngineImpactKind k) {
 }
 
 double EngineContact::density_kg_per_m3() const {
-  return mass_kg / (4.0 / 3.0 * std::numbers::pi * radius_m * radius_m * radius_m);
+  return mass_kg / sphere_mass_kg(radius_m, 1.0);
 }
 
 double EngineContact::effective_modulus_Pa(EngineImpactKind k) const {

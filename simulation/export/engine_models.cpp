@@ -12,6 +12,7 @@
 #include <iterator>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace hertzdash {
 
@@ -56,16 +57,15 @@ double yade_lowest_input() {
                     "YADE's en at zeta = 1");
 }
 
-/// The e YADE's en gives just below e_Y = 1 (the fit's beta_n(1) is not 0).
-double yade_highest_below_one() { return clamped_restitution(std::sqrt(6.0 / 5.0) * yade_thornton_beta(std::nextafter(1.0, 0.0))); }
-
 }  // namespace
 
 double yade_mindlin_restitution(double e_Y) { return clamped_restitution(yade_zeta(e_Y)); }
 
 double yade_mindlin_restitution_input(double e) {
   if (e == 1.0) return 1.0;
-  const double lo = yade_lowest_input(), lowest = yade_mindlin_restitution(lo), highest = yade_highest_below_one();
+  // The fit's beta_n(1^-) is not 0: just below e_Y = 1 it gives its highest e.
+  const double lo = yade_lowest_input(), lowest = yade_mindlin_restitution(lo),
+               highest = yade_mindlin_restitution(std::nextafter(1.0, 0.0));
   if (!(e >= lowest && e <= highest))
     throw InvalidParameter("restitution", fmt::format("{:.6g}", e),
                            fmt::format("in [{:.6g}, {:.6g}] or 1 for YADE's Mindlin en (Thornton et al.'s fit reaches "
@@ -146,13 +146,13 @@ std::string hertz_history_wall(const EngineContact& c) {
   return "fix wall all wall/gran hertz/history " + hertz_history_coefficients(c, wall) + " zplane 0.0 NULL\n";
 }
 
-/// LIGGGHTS: type 1 the spheres, type 2 the wall's material.
 /// An engine whose wall is a material of its own needs its modulus finite.
 void require_finite_wall(const EngineContact& c, std::string_view engine) {
   if (!std::isfinite(c.wall.E_Pa))
     throw InvalidParameter("rod-E", "inf", fmt::format("a finite modulus for {} (its walls are of a material of their own)", engine));
 }
 
+/// LIGGGHTS: type 1 the spheres, type 2 the wall's material.
 std::string liggghts_materials(const EngineContact& c) {
   require_finite_wall(c, "LIGGGHTS");
   const std::string e = number(c.restitution);
@@ -302,17 +302,24 @@ std::string yade_deck_text(const EngineModel& model, const EngineContact& c, Eng
   return s;
 }
 
-std::vector<std::string> lammps_command(const std::string& deck) { return {"lmp", "-in", deck, "-log", "none"}; }
-std::vector<std::string> liggghts_command(const std::string& deck) { return {"liggghts", "-in", deck, "-log", "none"}; }
-std::vector<std::string> yade_command(const std::string& deck) { return {"yade", "-n", "-x", deck}; }
+/// LAMMPS and LIGGGHTS read the deck as their input and write no log file; YADE runs it without a
+/// window (-n) and exits at its end (-x).
+std::vector<std::string> lammps_arguments(const std::string& deck) { return {"-in", deck, "-log", "none"}; }
+std::vector<std::string> yade_arguments(const std::string& deck) { return {"-n", "-x", deck}; }
 
 constexpr EngineProgram programs[] = {
-    {Engine::lammps, "lammps", "lmp", ".in", lammps_command, lammps_deck_text},
-    {Engine::liggghts, "liggghts", "liggghts", ".in", liggghts_command, lammps_deck_text},
-    {Engine::yade, "yade", "yade", ".py", yade_command, yade_deck_text},
+    {Engine::lammps, "lammps", "lmp", ".in", lammps_arguments, lammps_deck_text},
+    {Engine::liggghts, "liggghts", "liggghts", ".in", lammps_arguments, lammps_deck_text},
+    {Engine::yade, "yade", "yade", ".py", yade_arguments, yade_deck_text},
 };
 
 }  // namespace
+
+std::vector<std::string> EngineProgram::command(const std::string& deck) const {
+  std::vector<std::string> line{std::string(program)};
+  for (std::string& a : arguments(deck)) line.push_back(std::move(a));
+  return line;
+}
 
 std::span<const EngineProgram> engines() { return programs; }
 

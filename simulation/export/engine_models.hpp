@@ -51,10 +51,12 @@ struct EngineProgram {
   std::string_view name;            ///< --engine: "lammps"
   std::string_view program;         ///< looked up on PATH: "lmp"
   std::string_view deck_extension;  ///< ".in", ".py"
-  /// The command line that runs the deck `deck` in its directory (program first).
-  std::vector<std::string> (*command)(const std::string& deck);
+  /// The program's arguments that run the deck `deck` in its directory.
+  std::vector<std::string> (*arguments)(const std::string& deck);
   /// The text of an impact's deck (after its header), given its time step, steps and force file.
   std::string (*deck_text)(const EngineModel&, const EngineContact&, EngineImpactKind, const EngineDeck&);
+  /// The command line that runs the deck `deck`: the program, then its arguments.
+  std::vector<std::string> command(const std::string& deck) const;
 };
 
 /// Every registered engine.

@@ -6,6 +6,7 @@
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/model/two_spheres.hpp"
 
 #include <fmt/format.h>
 
@@ -35,7 +36,7 @@ double gas_timestep_s(const GranularGas& g) {
 
 }  // namespace
 
-double GranularGas::mass_kg() const { return density_kg_per_m3 * pi * diameter_m * diameter_m * diameter_m / 6; }
+double GranularGas::mass_kg() const { return sphere_mass_kg(diameter_m / 2, density_kg_per_m3); }
 
 double GranularGas::box_side_m() const {
   return particles_per_side * diameter_m * std::cbrt(pi / (6 * volume_fraction));

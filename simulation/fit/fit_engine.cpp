@@ -586,8 +586,8 @@ FitResult fit(FitData& data, const std::string& law, const FitSettings& request,
 
 
 std::vector<FitParameter> law_fit_parameters(const RunOptions& base) {
-  if (const RegisteredLaw& law = registered_law(base.damping); law.material_time_constant)
-    return parse_fit_parameters(std::string(law.parameters.front().key));
+  if (const ParameterDecl* constant = registered_law(base.damping).material_constant())
+    return parse_fit_parameters(std::string(constant->key));
   if (reads_option(base, "restitution")) return parse_fit_parameters("restitution");
   return {};
 }

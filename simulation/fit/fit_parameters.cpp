@@ -38,8 +38,8 @@ double calibrated_time_constant(const RunOptions& base, const PaperParameters& p
   RunOptions o = base;
   o.restitution = e;
   o.viscous_time_constant_s.reset();
-  if (const RegisteredLaw& law = registered_law(base.damping); law.material_time_constant)
-    o.law_numbers.erase(std::string(law.parameters.front().key));
+  if (const ParameterDecl* constant = registered_law(base.damping).material_constant())
+    o.law_numbers.erase(std::string(constant->key));
   o.air_density_kg_per_m3.reset();  // one contact: no flight, no drag
   o.drag_coefficient.reset();
   const DropTestSetup s = restitution_fit_detail::restitution_contact(o, paper, speed);
@@ -73,8 +73,8 @@ std::vector<double> fit_detail::law_starting_values(const RunOptions& base, cons
     require_read(base, *find_run_option(p.option), "(fitted)");
     double x;
     if (p.option == "restitution" && !base.restitution) x = e;
-    else if (registered_law(base.damping).material_time_constant &&
-             p.option == registered_law(base.damping).parameters.front().key && !material_constant_given(base))
+    else if (const ParameterDecl* constant = registered_law(base.damping).material_constant();
+             constant && p.option == constant->key && !material_constant_given(base))
       x = calibrated_time_constant(base, paper, speed_mps, e);
     else x = initial_values(base, paper, {p}).front();
     check_bounds(p, x);

@@ -6,6 +6,7 @@
 #include "hertzdash/model/drop_test_parameters.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/omega_n_variant.hpp"
+#include "hertzdash/model/two_spheres.hpp"
 #include "hertzdash/simulation/run/integrator_table.hpp"
 #include "hertzdash/simulation/run/result_checks.hpp"
 #include "hertzdash/simulation/run/step_resolution.hpp"
@@ -14,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -462,7 +462,7 @@ void require_read(const RunOptions& o, const RunOption& option, const std::strin
 std::optional<std::string_view> material_constant_given(const RunOptions& o) {
   if (o.viscous_time_constant_s) return "viscous-time-constant";
   for (const RegisteredLaw& law : registered_law_table())
-    if (law.material_time_constant && o.law_numbers.contains(law.parameters.front().key)) return law.parameters.front().key;
+    if (const ParameterDecl* d = law.material_constant(); d && o.law_numbers.contains(d->key)) return d->key;
   return std::nullopt;
 }
 
@@ -479,7 +479,7 @@ DropTestSetup resolve_setup(const RunOptions& o, const PaperParameters& paper) {
     if (o.mass_kg)
       throw InvalidParameter("density", format_value(*o.density_kg_per_m3),
                              "omitted when `mass` is given (the density gives the ball's mass)");
-    s.mass_kg = 4.0 / 3.0 * std::numbers::pi * std::pow(s.ball_radius_m, 3) * *o.density_kg_per_m3;
+    s.mass_kg = sphere_mass_kg(s.ball_radius_m, *o.density_kg_per_m3);
   }
   // The default yield stress is the paper's nylon hemisphere's. A sphere whose modulus, Poisson
   // ratio and radius are all given, or a dropped ball (`density`), is a body of the user's own,

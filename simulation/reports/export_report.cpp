@@ -15,11 +15,10 @@ namespace {
 constexpr auto pair = EngineImpactKind::sphere_sphere;
 constexpr auto wall = EngineImpactKind::sphere_wall;
 
-/// The law's material constant as a column: its declaration (the law's first input) spelled as the
-/// run's recorded inputs spell it ("viscous_time_constant_s"), and its unit.
-std::pair<std::string, std::string> material_constant_column(const std::string& law) {
-  const ParameterDecl& d = registered_law(law).parameters.front();
-  return {column_name(*find_run_option(d.key)), std::string(d.unit)};
+/// The law's material constant as a column, spelled as the run's recorded inputs spell it
+/// ("viscous_time_constant_s").
+std::string material_constant_column(const std::string& law) {
+  return column_name(*find_run_option(registered_law(law).material_constant()->key));
 }
 
 Parameters deck_parameters(const EngineExport& e) {
@@ -38,7 +37,7 @@ Parameters deck_parameters(const EngineExport& e) {
                {"wall_nu", g(c.wall.nu)},
                {"restitution", g(c.restitution)}};
   if (c.material_constant > 0) {
-    p.emplace_back(material_constant_column(c.law).first, g(c.material_constant));
+    p.emplace_back(material_constant_column(c.law), g(c.material_constant));
     p.emplace_back("calibration_speed_mps", g(c.calibration_speed_mps));
   }
   p.emplace_back("speed_mps", g(c.speed_mps));
@@ -114,10 +113,9 @@ std::string export_text(const EngineExport& e) {
                    c.mass_kg, c.density_kg_per_m3(), c.sphere.E_Pa, c.sphere.nu);
   s += fmt::format("  wall         E = {:.6g} Pa, nu = {:.6g}\n", c.wall.E_Pa, c.wall.nu);
   s += fmt::format("  law          e = {:.6g}", c.restitution);
-  if (c.material_constant > 0) {
-    const auto [name, unit] = material_constant_column(c.law);
-    s += fmt::format(", {} = {:.6g} (calibrated on the spheres at {:.6g} m/s)", name, c.material_constant, c.calibration_speed_mps);
-  }
+  if (c.material_constant > 0)
+    s += fmt::format(", {} = {:.6g} (calibrated on the spheres at {:.6g} m/s)", material_constant_column(c.law),
+                     c.material_constant, c.calibration_speed_mps);
   s += "\n";
   s += fmt::format("  {:<14} {:>12} {:>14} {:>14} {:>14}\n", "impact", "speed_mps", "restitution", "contact_time_s",
                    "peak_force_N");
@@ -140,7 +138,7 @@ nlohmann::ordered_json to_json(const EngineExport& e) {
   j["relation"] = e.model->relation;
   j["restitution"] = c.restitution;
   if (c.material_constant > 0) {
-    j[material_constant_column(c.law).first] = c.material_constant;
+    j[material_constant_column(c.law)] = c.material_constant;
     j["calibration_speed_mps"] = c.calibration_speed_mps;
   }
   j["speed_mps"] = c.speed_mps;

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 namespace hertzdash {
@@ -67,10 +66,6 @@ struct Run {
     std::vector<SpheresImpact> impacts;
   } run;
 };
-
-double sphere_mass_kg(double radius_m, double density_kg_per_m3) {
-  return 4.0 / 3.0 * std::numbers::pi * radius_m * radius_m * radius_m * density_kg_per_m3;
-}
 
 /// Inputs the spheres need that a drop test defaults: the speed, the first mass, e (where the law reads it).
 void refuse(const RunOptions& o, const RigInputs& in) {
