@@ -42,9 +42,6 @@ constexpr RigOptionNote notes[] = {
     {"mass", "Mass of the first sphere [kg] (required, or --density)"},
     {"density", "Density of the first sphere [kg/m^3], instead of --mass (and the second's, unless it has its own "
                 "--second-mass or --second-density)"},
-    {"ball-radius", "Radius of the first sphere [m] (default: 0.0127)"},
-    {"ball-E", "Young's modulus of the first sphere [Pa] (default: 2.0e9)"},
-    {"ball-nu", "Poisson ratio of the first sphere (default: 0.40)"},
     {"ball-yield-stress", "Yield stress of the first sphere [Pa]: its onset of yield under the contact is flagged "
                           "(default: inf, no check)"},
     {"restitution", "The pair's coefficient of restitution e in (0,1] at --reference-velocity (required by a law that "
