@@ -22,15 +22,14 @@ do for [format in 'pdf png'] {
   set xlabel 'Impact speed U (m/s)'
   set xrange [0:7.2]
   set xtics 1
-  set label 1 at graph 0.04, 0.07 left front
   # (a) e(U): the other laws first, the paper's law on top, the measured points over all.
   set origin 0, 0.3
   set size 0.5, 0.7
   set ylabel 'Coefficient of restitution e'
-  set yrange [0.77:0.89]
+  set yrange [0.74:0.89]
   set ytics 0.02
   set format y '%.2f'
-  set label 1 '(a) measured and fitted'
+  set label 1 '(a) fits' at graph 0.96, 0.07 right front
   plot for [i=1:words(laws)] curves using (word(laws, i) eq paper_law ? NaN : pick(word(laws, i), column('impact_speed_mps'))):'e_effective' \
          with lines lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i)), \
        curves using (pick(paper_law, column('impact_speed_mps'))):'e_effective' \
@@ -40,9 +39,9 @@ do for [format in 'pdf png'] {
   set origin 0.5, 0.3
   set size 0.5, 0.7
   set ylabel 'Measured - fitted e'
-  set yrange [-0.04:0.04]
-  set ytics 0.02
-  set label 1 '(b) residuals'
+  set yrange [-0.08:0.10]
+  set ytics 0.04
+  set label 1 '(b) residuals' at graph 0.96, 0.93 right front
   set arrow 1 from graph 0, first 0 to graph 1, first 0 nohead lc rgb '#555555' dt 3 lw 1.0
   plot for [i=1:words(laws)] points using (word(laws, i) eq paper_law ? NaN : pick(word(laws, i), column('impact_speed_mps'))):'residual' \
          with linespoints pt 7 ps 0.35 lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i)), \
