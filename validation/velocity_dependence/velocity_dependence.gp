@@ -13,7 +13,7 @@ do for [format in 'pdf png'] {
   load here.'/../damping_laws/law_styles.gnuplot'
   laws = law_names(data)
   v20 = sqrt(2 * real(csv_parameter(data, 'gravity_mps2')) * 0.02)
-  call here.'/../output.gnuplot' out.'/velocity_dependence' format full_width_in 4.4
+  call here.'/../output.gnuplot' out.'/velocity_dependence' format full_width_in 4.8
   set multiplot
   set logscale x
   set xlabel 'Impact speed v_0 (m/s)'
@@ -26,8 +26,8 @@ do for [format in 'pdf png'] {
   set arrow 1 from v20, graph 0 to v20, graph 1 nohead lc rgb '#555555' dt 3 lw 1.0
   do for [k=1:2] {
     model = k == 1 ? 'rigid' : 'elastic'
-    set origin (k - 1) * 0.5, 0.3
-    set size 0.5, 0.7
+    set origin (k - 1) * 0.5, 0.34
+    set size 0.5, 0.66
     set label 1 sprintf('(%s) %s', k == 1 ? 'a' : 'b', k == 1 ? 'rigid model' : 'elastic rod')
     plot for [i=1:words(laws)] data using (pick(word(laws, i), model, column('impact_velocity_mps'))):'e_effective' \
          with lines lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i))
@@ -35,11 +35,11 @@ do for [format in 'pdf png'] {
   unset arrow 1
   unset arrow 1
   set origin 0, 0.01
-  set size 1, 0.27
+  set size 1, 0.31
   set margins 0, 0, 0, 0
   eval key_panel
   eval key_row
-  set key maxrows 5
+  set key maxrows 6
   plot for [i=1:words(laws)] NaN with lines lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i)) title word(laws, i), \
        NaN with lines lc rgb '#555555' dt 3 lw 1.0 title 'drop from 20 mm'
   unset multiplot
