@@ -93,15 +93,48 @@ TEST_CASE("CLI orbit: bad input exits 2 naming the option", "[orbit]") {
   const auto period = run_cli(ball + "--gamma 1.3 --period 0");
   CHECK(period.exit_code == 2);
   CHECK_THAT(period.err, Catch::Contains("--period"));
-  // No rig: the rigs `orbit` takes are listed. The walls' impact damper is not analysed yet.
+  // No rig: the rigs `orbit` takes are listed.
   const auto none = run_cli("orbit");
   CHECK(none.exit_code == 2);
   CHECK(none.out.empty());
   CHECK(none.err == "hertzdash: `hertzdash orbit` takes one of: shaker, walls, oscillator (hertzdash orbit --help)\n");
-  const auto damper = run_cli("orbit walls --rig damper");
-  CHECK(damper.exit_code == 2);
-  CHECK(damper.out.empty());
-  CHECK_THAT(damper.err, Catch::Contains("--rig = damper"));
+  // The box's half of a guess belongs to a box of its own (the damper), which needs it.
+  const auto box_half = run_cli(ball + "--gamma 1.3 --section-phase 0.5 --guess-position 0.01 --guess-velocity 0 "
+                                       "--guess-box-position 0");
+  CHECK(box_half.exit_code == 2);
+  CHECK_THAT(box_half.err, Catch::Contains("--guess-box-position = 0") && Catch::Contains("damper"));
+  const auto damper_half = run_cli("orbit walls --rig damper --section-phase 0.5 --guess-position 0.01 --guess-velocity 0");
+  CHECK(damper_half.exit_code == 2);
+  CHECK_THAT(damper_half.err, Catch::Contains("--guess-box-position"));
+  // The damper's soft contacts carry the primary's state: their variational equations are not written.
+  const auto soft_damper = run_cli("orbit walls --rig damper --impact-model soft");
+  CHECK(soft_damper.exit_code == 2);
+  CHECK(soft_damper.out.empty());
+  CHECK_THAT(soft_damper.err, Catch::Contains("--impact-model = soft") && Catch::Contains("instantaneous"));
+  // Basins are drawn over the body's (y, u) beside a box that the start does not move.
+  const auto basins = run_cli("basins walls --rig damper");
+  CHECK(basins.exit_code == 2);
+  CHECK_THAT(basins.err, Catch::Contains("--rig = damper"));
+}
+
+TEST_CASE("CLI orbit: the impact damper's four-dimensional section from its own run", "[orbit]") {
+  // The default damper settles on a period-1 orbit with 3 impacts (the rig's own run). Its
+  // multipliers' product is det M = e^(2k) exp(-C T/M) (simulation/orbits/stroboscopic_map.hpp):
+  // k = 3 impacts, e = 0.795 (the paper's steel rod), C/M = 2 zeta sqrt(k/M) = 2 (0.02) sqrt(15791.4)
+  // = 5.02654 1/s over T = 1/20 s (the default frequency).
+  const auto r = run_cli("orbit walls --rig damper --json");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["converged"] == true);
+  CHECK(j["impacts_per_period"] == 3);
+  for (const char* key : {"position_m", "velocity_mps", "box_position_m", "box_velocity_mps"})
+    CHECK(j["section_state"].contains(key));
+  REQUIRE(j["multiplier_moduli"].size() == 4);
+  double product = 1;
+  for (const auto& m : j["multiplier_moduli"]) product *= m.get<double>();
+  const double e = j["inputs"]["restitution"].get<double>();
+  CHECK(product == Approx(std::pow(e, 6) * std::exp(-2 * 0.02 * std::sqrt(157914.0 / 10) / 20)).epsilon(1e-9));
 }
 
 TEST_CASE("CLI orbit: no orbit to find exits 3 with the reason, the output standing", "[orbit]") {

@@ -81,7 +81,12 @@ constexpr ParameterDecl guess_position{.key = "guess-position", .unit = "m", .ra
             "guess-velocity and section-phase)"};
 constexpr ParameterDecl guess_velocity{.key = "guess-velocity", .unit = "m/s", .range = R::open(-infinity, infinity),
     .default_value = "none", .help = "Newton's start: the body's velocity [m/s] at the section phase"};
-constexpr ParameterDecl orbit[] = {orbit_period, section_phase, guess_position, guess_velocity, json};
+constexpr ParameterDecl guess_box_position{.key = "guess-box-position", .unit = "m", .range = R::open(-infinity, infinity),
+    .default_value = "none", .help = "Newton's start, a box of its own (walls --rig damper): the primary's position [m]"};
+constexpr ParameterDecl guess_box_velocity{.key = "guess-box-velocity", .unit = "m/s", .range = R::open(-infinity, infinity),
+    .default_value = "none", .help = "Newton's start, a box of its own: the primary's velocity [m/s]"};
+constexpr ParameterDecl orbit[] = {orbit_period,       section_phase,      guess_position, guess_velocity,
+                                   guess_box_position, guess_box_velocity, json};
 // `hertzdash continue RIG` (simulation/rigs/rig_continuation.hpp, docs/orbits.md): the orbit's
 // options for the first branch's start, and the parameter's range.
 constexpr ParameterDecl continuation[] = {
@@ -92,7 +97,7 @@ constexpr ParameterDecl continuation[] = {
      .help = "The parameter's value at the start, where the first orbit is found"},
     {.key = "to", .range = R::open(-infinity, infinity), .default_value = "required",
      .help = "The parameter's value towards which the branches are followed"},
-    orbit_period, section_phase, guess_position, guess_velocity,
+    orbit_period, section_phase, guess_position, guess_velocity, guess_box_position, guess_box_velocity,
     {.key = "max-points", .range = R::integer(10, 100000), .default_value = "2000", .default_number = 2000,
      .default_source = "chosen", .help = "Branch points at most, over all branches"},
     json, file("csv", "Write the branches to this CSV file, one row per point, the events as comments"), mkdir};

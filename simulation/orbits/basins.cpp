@@ -24,7 +24,7 @@ struct CellOutcome {
 
 CellOutcome settle(ImpactSequenceSpec spec, double t_s, double y, double u, const BasinOptions& o) {
   CellOutcome out;
-  if (!(smallest_gap_m(spec, t_s, y) > 0)) return {.inside_wall = true, .attractor = {}};
+  if (!(smallest_gap_m(spec, t_s, Eigen::Vector2d(y, u)) > 0)) return {.inside_wall = true, .attractor = {}};
   spec = in_flight_from(std::move(spec), t_s, y, u);
   spec.transient = o.transient, spec.impacts = o.kept;
   const ImpactSequence run = run_impact_sequence(spec);

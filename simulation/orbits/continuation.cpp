@@ -2,7 +2,7 @@
 #include "hertzdash/simulation/orbits/continuation.hpp"
 
 #include "hertzdash/model/invalid_parameter.hpp"
-#include "hertzdash/simulation/orbits/planar_algebra.hpp"
+#include "hertzdash/simulation/orbits/section_algebra.hpp"
 
 #include <fmt/format.h>
 
@@ -28,8 +28,9 @@ const char* to_string(BranchEventType type) {
 
 namespace {
 
-using Vector3 = Eigen::Vector3d;
-using Jacobian = Eigen::Matrix<double, 2, 3>;
+// x = (zeta, mu) of n + 1 entries for a section of dimension n, and F's n x (n + 1) Jacobian.
+using Vector = Eigen::VectorXd;
+using Jacobian = Eigen::MatrixXd;
 
 constexpr double residual_tolerance = 1e-10, step_tolerance = 1e-9, mu_step = 1e-6;
 constexpr double h_first = 0.01, h_most = 0.03, h_least = 1e-7, h_approach = 1e-5, h_located = 1e-12;
@@ -41,10 +42,10 @@ constexpr double grazing_near = 1e-2;   // of the rig's scales: a grazing approa
 
 /// A corrected point: x, its image, Jacobian and tangent.
 struct Point {
-  Vector3 x;
+  Vector x;
   SectionImage image;
   Jacobian J;
-  Vector3 tangent;
+  Vector tangent;
   int corrector_steps = 0;
 };
 
@@ -57,15 +58,15 @@ struct BranchStart {
 
 class Tracer {
  public:
-  Tracer(const SequenceFamily& family, const ContinuationOptions& o) : family_(family), o_(o), s_(o.scale) {}
+  Tracer(const SequenceFamily& family, const ContinuationOptions& o) : family_(family), o_(o), s_(o.scale), n_(o.scale.size()) {}
 
   Continuation run() {
     // Newton at mu = 0 first (natural parameter), then the tangent towards mu = 1.
     const PeriodicOrbit first = find_periodic_orbit(map(0.0, o_.period), o_.start, s_);
     if (!first.converged) throw std::runtime_error("no periodic orbit at the start: " + first.failure);
-    std::optional<Point> p = point_at(Vector3(first.state(0) / s_(0), first.state(1) / s_(1), 0.0), o_.period);
+    std::optional<Point> p = point_at(scaled(first.state, 0.0), o_.period);
     if (!p) throw std::runtime_error("the start's Jacobian cannot be evaluated");
-    if (p->tangent(2) < 0) p->tangent = -p->tangent;
+    if (p->tangent(n_) < 0) p->tangent = -p->tangent;
     std::deque<BranchStart> queue{{o_.period, *p, false}};
     for (int branch = 0; !queue.empty(); ++branch) {
       follow(branch, queue.front(), queue);
@@ -78,59 +79,68 @@ class Tracer {
   double lambda(double mu) const { return o_.from + mu * (o_.to - o_.from); }
   StroboscopicMap map(double mu, int period) const { return StroboscopicMap(family_(lambda(mu)), o_.section_phase, period); }
 
+  /// x = (z / scale, mu), and z back from x.
+  Vector scaled(const Eigen::VectorXd& z, double mu) const {
+    Vector x(n_ + 1);
+    x << z.cwiseQuotient(s_), mu;
+    return x;
+  }
+  Eigen::VectorXd state(const Vector& x) const { return x.head(n_).cwiseProduct(s_); }
+  double mu(const Vector& x) const { return x(n_); }
+
   /// The image of x, or its failure (a parameter outside its range included).
-  SectionImage image(const Vector3& x, int period) const {
+  SectionImage image(const Vector& x, int period) const {
     try {
-      return map(x(2), period)(Eigen::Vector2d(x(0) * s_(0), x(1) * s_(1)));
+      return map(mu(x), period)(state(x));
     } catch (const InvalidParameter& e) {
       SectionImage failed;
       failed.failure = e.what();
       return failed;
     }
   }
-  Eigen::Vector2d residual(const Vector3& x, const SectionImage& im) const {
-    return {im.state(0) / s_(0) - x(0), im.state(1) / s_(1) - x(1)};
+  Eigen::VectorXd residual(const Vector& x, const SectionImage& im) const {
+    return im.state.cwiseQuotient(s_) - x.head(n_);
   }
   /// The Jacobian at x (its image given), or nothing where a neighbour in mu fails.
-  std::optional<Jacobian> jacobian(const Vector3& x, const SectionImage& im, int period) const {
-    Jacobian J;
-    J.leftCols<2>() = s_.cwiseInverse().asDiagonal() * (im.monodromy - Eigen::MatrixXd::Identity(2, 2)) * s_.asDiagonal();
+  std::optional<Jacobian> jacobian(const Vector& x, const SectionImage& im, int period) const {
+    Jacobian J(n_, n_ + 1);
+    J.leftCols(n_) = s_.cwiseInverse().asDiagonal() * (im.monodromy - Eigen::MatrixXd::Identity(n_, n_)) * s_.asDiagonal();
     // Central, or one-sided where a neighbour lies past a grazing (other impacts) or its range.
-    Vector3 up = x, down = x;
-    up(2) += mu_step, down(2) -= mu_step;
+    Vector up = x, down = x;
+    up(n_) += mu_step, down(n_) -= mu_step;
     const SectionImage a = image(up, period), b = image(down, period);
     auto same = [&](const SectionImage& n) { return n.failure.empty() && n.impacts.size() == im.impacts.size(); };
-    if (same(a) && same(b)) J.col(2) = (residual(up, a) - residual(down, b)) / (2 * mu_step);
-    else if (same(a)) J.col(2) = (residual(up, a) - residual(x, im)) / mu_step;
-    else if (same(b)) J.col(2) = (residual(x, im) - residual(down, b)) / mu_step;
+    if (same(a) && same(b)) J.col(n_) = (residual(up, a) - residual(down, b)) / (2 * mu_step);
+    else if (same(a)) J.col(n_) = (residual(up, a) - residual(x, im)) / mu_step;
+    else if (same(b)) J.col(n_) = (residual(x, im) - residual(down, b)) / mu_step;
     else return std::nullopt;
     return J;
   }
-  std::optional<Point> point_at(const Vector3& x, int period) const {
+  std::optional<Point> point_at(const Vector& x, int period) const {
     SectionImage im = image(x, period);
     if (!im.failure.empty()) return std::nullopt;
     const std::optional<Jacobian> J = jacobian(x, im, period);
     if (!J) return std::nullopt;
-    Vector3 t = planar::cross(J->row(0).transpose(), J->row(1).transpose());
-    if (!(t.norm() > 0)) return std::nullopt;
-    return Point{x, std::move(im), *J, t.normalized(), 0};
+    const Vector t = section::null_vector(*J);
+    if (!t.allFinite()) return std::nullopt;
+    return Point{x, std::move(im), *J, t, 0};
   }
 
   /// The corrector from a + h t (bordered Newton), with the tangent oriented along a's; or nothing.
-  std::optional<Point> correct(const Point& a, double h, int period, const Vector3& direction) const {
-    const Vector3 predicted = a.x + h * direction;
-    Vector3 x = predicted;
+  std::optional<Point> correct(const Point& a, double h, int period, const Vector& direction) const {
+    const Vector predicted = a.x + h * direction;
+    Vector x = predicted;
     for (int k = 0; k < max_corrector_steps; ++k) {
       const SectionImage im = image(x, period);
       if (!im.failure.empty()) return std::nullopt;
       const std::optional<Jacobian> J = jacobian(x, im, period);
       if (!J) return std::nullopt;
-      Eigen::Matrix3d A;
-      A.topRows<2>() = *J;
-      A.row(2) = direction.transpose();
-      Vector3 rhs;
+      Eigen::MatrixXd A(n_ + 1, n_ + 1);
+      A.topRows(n_) = *J;
+      A.row(n_) = direction.transpose();
+      Vector rhs(n_ + 1);
       rhs << -residual(x, im), -direction.dot(x - predicted);
-      const Vector3 dx = planar::solve(A, rhs);
+      const Vector dx = section::solve(A, rhs);
       if (!dx.allFinite()) return std::nullopt;
       x += dx;
       if (dx.norm() < step_tolerance) {
@@ -145,13 +155,22 @@ class Tracer {
   }
 
   /// Test functions of an event at a point: fold det(M - I), period doubling det(M + I),
-  /// Neimark-Sacker det M - 1 (NaN unless the multipliers are complex).
-  static std::array<double, 3> tests(const SectionImage& im) {
-    const Eigen::Matrix2d M = im.monodromy, I = Eigen::Matrix2d::Identity();
-    const double tr = M.trace(), det = planar::det(M);
-    // det M - 1 only where it is more than round-off (e = 1 without damping: det M = 1 exactly).
-    const bool complex = tr * tr < 4 * det && std::abs(det - 1) > 1e-12;
-    return {planar::det(M - I), planar::det(M + I), complex ? det - 1 : std::nan("")};
+  /// Neimark-Sacker the product of |lambda|^2 - 1 over the complex pairs (NaN without one; in two
+  /// dimensions det M - 1), then the number of complex pairs: the product's sign change is a
+  /// crossing only between points with as many pairs (a pair that turns real inside the circle
+  /// flips it too).
+  static std::array<double, 4> tests(const SectionImage& im) {
+    const Eigen::MatrixXd& M = im.monodromy;
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(M.rows(), M.cols());
+    double product = 1;
+    int pairs = 0;
+    for (const std::complex<double> l : section::eigenvalues(M)) {
+      if (!(l.imag() > 0)) continue;
+      const double d = std::norm(l) - 1;
+      // Only where it is more than round-off (e = 1 without damping: |lambda| = 1 exactly).
+      if (std::abs(d) > 1e-12) product *= d, ++pairs;
+    }
+    return {section::det(M - I), section::det(M + I), pairs > 0 ? product : std::nan(""), static_cast<double>(pairs)};
   }
 
   /// Bisection on the step from a for the point where `good` turns false; the last good point.
@@ -170,8 +189,8 @@ class Tracer {
 
   void add_point(int branch, int period, const Point& p) {
     const SectionImage& im = p.image;
-    BranchPoint row{.branch = branch, .period = period, .parameter = lambda(p.x(2)),
-                    .state = Eigen::Vector2d(p.x(0) * s_(0), p.x(1) * s_(1)),
+    BranchPoint row{.branch = branch, .period = period, .parameter = lambda(mu(p.x)),
+                    .state = state(p.x),
                     .multipliers = floquet_multipliers(im.monodromy), .stable = false,
                     .impacts = static_cast<int>(im.impacts.size()), .impact_phases = {},
                     .min_impact_speed_mps = im.min_impact_speed_mps,
@@ -181,7 +200,7 @@ class Tracer {
     out_.points.push_back(std::move(row));
   }
   void add_event(BranchEventType type, int branch, int period, const Point& p) {
-    out_.events.push_back({type, lambda(p.x(2)), branch, period, Eigen::Vector2d(p.x(0) * s_(0), p.x(1) * s_(1))});
+    out_.events.push_back({type, lambda(mu(p.x)), branch, period, state(p.x)});
   }
   /// How close an orbit is to grazing, in the rig's scales: its slowest impact, or its closest
   /// approach to a wall in flight, whichever is smaller.
@@ -220,7 +239,7 @@ class Tracer {
         if (grazing_measure(g.image) < grazing_close) {
           add_point(branch, period, g);
           add_event(BranchEventType::grazing, branch, period, g);
-          return end(fmt::format("grazing at {:.9g}", lambda(g.x(2))));
+          return end(fmt::format("grazing at {:.9g}", lambda(mu(g.x))));
         }
       }
       // Where the corrector fails and the predicted point has other impacts, grazing lies ahead on
@@ -240,39 +259,39 @@ class Tracer {
         // and nearing it (else the corrector failed for another reason).
         if (!approaching || !(qa < grazing_near) || !(qp > qa))
           return end(fmt::format("the step fell below {} at {} = {:.9g} (a corrector that does not converge)", h_least,
-                                 "the parameter", lambda(a.x(2))));
-        const double mu = a.x(2) - qa * (a.x(2) - previous->x(2)) / (qa - qp);
+                                 "the parameter", lambda(mu(a.x))));
+        const double mu_g = mu(a.x) - qa * (mu(a.x) - mu(previous->x)) / (qa - qp);
         Point g = a;
-        g.x(2) = mu;
+        g.x(n_) = mu_g;
         add_event(BranchEventType::grazing, branch, period, g);
         return end(fmt::format("grazing at {:.9g} (the secant of the slowest impact or closest flight to zero; the "
                                "last point, at {:.9g}, {:.3g} of the rig's scale from it)",
-                               lambda(mu), lambda(a.x(2)), qa));
+                               lambda(mu_g), lambda(mu(a.x)), qa));
       }
       if (!first_step) {
-        const std::array<double, 3> ta = tests(a.image), tb = tests(b->image);
+        const std::array<double, 4> ta = tests(a.image), tb = tests(b->image);
         for (int k = 0; k < 3; ++k) {
           if (!(ta[k] * tb[k] < 0)) continue;  // NaN: no complex pair at one end
+          if (k == 2 && ta[3] != tb[3]) continue;  // a pair turned real or complex on the way
           const double sign_a = ta[k] < 0 ? -1 : 1;
           const Point e = *locate(a, h, period, [k, sign_a](const Point& p) { return tests(p.image)[k] * sign_a > 0; });
           const BranchEventType type = k == 0 ? BranchEventType::fold
                                        : k == 1 ? BranchEventType::period_doubling
                                                 : BranchEventType::neimark_sacker;
-          const double mu = e.x(2);
-          if (mu < 0 || mu > 1) continue;
+          if (mu(e.x) < 0 || mu(e.x) > 1) continue;
           add_event(type, branch, period, e);
           if (type == BranchEventType::period_doubling && 2 * period <= o_.max_period) queue.push_back(doubled(e, period));
         }
       }
       first_step = false;
       // The range: land on mu = 1 by Newton at lambda = to, or end where the branch leaves it.
-      if (b->x(2) > 1 || b->x(2) < 0) {
-        if (b->x(2) > 1) {
-          const double f = (1 - a.x(2)) / (b->x(2) - a.x(2));
-          const Vector3 guess = a.x + f * (b->x - a.x);
-          const PeriodicOrbit last = find_periodic_orbit(map(1.0, period), Eigen::Vector2d(guess(0) * s_(0), guess(1) * s_(1)), s_);
+      if (mu(b->x) > 1 || mu(b->x) < 0) {
+        if (mu(b->x) > 1) {
+          const double f = (1 - mu(a.x)) / (mu(b->x) - mu(a.x));
+          const Vector guess = a.x + f * (b->x - a.x);
+          const PeriodicOrbit last = find_periodic_orbit(map(1.0, period), state(guess), s_);
           if (last.converged)
-            if (std::optional<Point> p = point_at(Vector3(last.state(0) / s_(0), last.state(1) / s_(1), 1.0), period))
+            if (std::optional<Point> p = point_at(scaled(last.state, 1.0), period))
               add_point(branch, period, *p);
           return end(fmt::format("reached {:.9g}", o_.to));
         }
@@ -281,7 +300,7 @@ class Tracer {
       add_point(branch, period, *b);
       if (near_section(b->image))
         return end(fmt::format("an impact reached the section phase {:.6g} at {:.9g}: another section phase follows it further",
-                               o_.section_phase, lambda(b->x(2))));
+                               o_.section_phase, lambda(mu(b->x))));
       if (b->corrector_steps <= 3) h = std::min(1.3 * h, h_most);
       previous = std::move(a);
       a = std::move(*b);
@@ -291,24 +310,25 @@ class Tracer {
   /// The branch of period 2N from a period doubling at e: along (v, 0), v the eigenvector of -1
   /// (the null vector of M + I there).
   BranchStart doubled(const Point& e, int period) const {
-    const Eigen::Vector2d v = planar::null_vector(e.image.monodromy + Eigen::Matrix2d::Identity());
+    const Eigen::VectorXd v = section::null_vector(e.image.monodromy + Eigen::MatrixXd::Identity(n_, n_));
     // At the branch point P^{2N}'s Jacobian has a two-dimensional null space (the old branch's
     // tangent and (v, 0)): its tangent is set, not computed.
-    Point start{e.x, image(e.x, 2 * period), e.J, Vector3(v(0) / s_(0), v(1) / s_(1), 0.0).normalized(), 0};
+    Point start{e.x, image(e.x, 2 * period), e.J, scaled(v, 0.0).normalized(), 0};
     return {2 * period, start, true};  // an image that failed ends the branch at once (follow)
   }
 
   const SequenceFamily& family_;
   const ContinuationOptions& o_;
-  Eigen::Vector2d s_;
+  Eigen::VectorXd s_;
+  Eigen::Index n_;  // the section's dimension
   Continuation out_;
 };
 
 }  // namespace
 
 Continuation continue_periodic_orbits(const SequenceFamily& family, const ContinuationOptions& options) {
-  if (options.start.size() != 2 || options.scale.size() != 2 || !(options.scale.array() > 0).all())
-    throw std::invalid_argument("continue_periodic_orbits: a start and positive scales of the 2-dimensional section");
+  if (options.start.size() != options.scale.size() || options.scale.size() < 2 || !(options.scale.array() > 0).all())
+    throw std::invalid_argument("continue_periodic_orbits: a start and positive scales of the section, of one dimension");
   return Tracer(family, options).run();
 }
 

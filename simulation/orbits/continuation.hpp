@@ -9,8 +9,9 @@
 // (saltation matrices, no differences); dF/dmu by a central difference in mu alone (step 1e-6;
 // error ~1e-10; one-sided where a neighbour lies past a grazing), which only steers: points and
 // multipliers come from M.
-//   - tangent t: the null vector of the 2x3 Jacobian (the cross product of its rows), oriented
-//     along the last one;
+//   - tangent t: the null vector of the n x (n + 1) Jacobian (n the section's dimension: the
+//     cross product of its rows for n = 2, the SVD beyond; simulation/orbits/section_algebra.hpp),
+//     oriented along the last one;
 //   - predictor x + h t; corrector: Newton on [F(x); t.(x - x_pred)] = 0 (bordered), converged
 //     where |F| < 1e-10 and the step < 1e-9;
 //   - step h from 0.01, times 1.3 after a corrector of at most 3 steps, halved after a failed one
@@ -23,9 +24,10 @@
 //   - period doubling: det(M + I) changes sign (a multiplier through -1). The branch of period 2N
 //     is followed from there too (while 2N <= max_period): at the branch point it leaves along
 //     (v, 0), v the eigenvector of M for -1, P^{2N} having a pitchfork there;
-//   - Neimark-Sacker: a complex pair crossing the unit circle, det M - 1 changing sign (by more
-//     than 1e-12) while the multipliers are complex (a 2-dimensional map with e < 1 has
-//     |lambda|^2 = det M < 1: none);
+//   - Neimark-Sacker: a complex pair crossing the unit circle, the product of |lambda|^2 - 1 over
+//     the complex pairs (each by more than 1e-12) changing sign between points with as many
+//     pairs (in two dimensions det M - 1: a prescribed box with e < 1 has |lambda|^2 = det M < 1,
+//     none; the damper's four can);
 //   - grazing: the orbit's impacts per period change on the way (an impact born at zero relative
 //     speed, or a flight touching a wall: the map is not smooth there), and the branch ends there.
 //     From the side where the orbit has fewer impacts (the new one not yet born) the corrector

@@ -49,7 +49,10 @@ LyapunovSpectrum lyapunov_spectrum(const StroboscopicMap& map, const Eigen::Vect
   out.per_impact = per(sum, out.impacts);
   out.sum_per_impact = sum.sum() / static_cast<double>(std::max(out.impacts, 1L));
   const ImpactSequenceSpec& spec = map.spec();
-  const double T = 1 / spec.frequency_Hz, c_over_m = spec.body.damping_N_s_per_m() / spec.body.mass_kg;
+  // det M = e^(2k) exp(-(c/m + C/M) N T) (stroboscopic_map.hpp), C/M for a box of its own.
+  const double T = 1 / spec.frequency_Hz,
+               c_over_m = spec.body.damping_N_s_per_m() / spec.body.mass_kg +
+                          (spec.prescribed ? 0.0 : spec.box.damping_N_s_per_m() / spec.box.mass_kg);
   out.expected_sum_per_impact =
       spec.soft ? std::numeric_limits<double>::quiet_NaN()
                 : 2 * std::log(spec.restitution) -

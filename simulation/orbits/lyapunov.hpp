@@ -9,6 +9,7 @@
 // (1/n) log |det(M_n ... M_1)|: for instantaneous impacts each impact gives log e^2 and each
 // period of flight -c T/m (Liouville), so the sum per impact is 2 ln e - (c/m) T periods/impacts
 // (`expected_sum_per_impact`), whatever the trajectory: a check of the accumulation to round-off.
+// A box of its own (the damper's primary, mass M, dashpot C) adds -C T/M per period.
 // Soft impacts have no such closed form (a contact's determinant depends on its speed and phase):
 // there it is NaN.
 // Convergence: the exponents per impact of the first and of the second half of the run, whose
@@ -34,7 +35,7 @@ struct LyapunovSpectrum {
   std::vector<double> per_period;   ///< largest first [1/period]
   std::vector<double> per_impact;   ///< the same over the impacts [1/impact]
   double sum_per_impact = 0;
-  double expected_sum_per_impact = 0;  ///< 2 ln e - (c/m) T periods/impacts; NaN for soft impacts
+  double expected_sum_per_impact = 0;  ///< 2 ln e - (c/m [+ C/M]) T periods/impacts; NaN for soft impacts
   double half_difference = 0;          ///< max_i |lambda_i(first half) - lambda_i(second half)| per impact
   bool converged = false;              ///< half_difference < tolerance max_i |lambda_i|
   /// The running estimate per impact at periods 1, 2, 4, ..., and at the end.

@@ -1,12 +1,11 @@
 // Shooting for periodic orbits and their Floquet multipliers (simulation/orbits/periodic_orbit.hpp).
 #include "hertzdash/simulation/orbits/periodic_orbit.hpp"
 
-#include "hertzdash/simulation/orbits/planar_algebra.hpp"
+#include "hertzdash/simulation/orbits/section_algebra.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace hertzdash {
@@ -23,8 +22,7 @@ double scaled_norm(const Eigen::VectorXd& g, const Eigen::VectorXd& scale) {
 }  // namespace
 
 std::vector<std::complex<double>> floquet_multipliers(const Eigen::MatrixXd& monodromy) {
-  const std::array<std::complex<double>, 2> lambda = planar::eigenvalues(monodromy);
-  return {lambda.begin(), lambda.end()};
+  return section::eigenvalues(monodromy);
 }
 
 bool is_stable(const std::vector<std::complex<double>>& multipliers) {
@@ -50,12 +48,12 @@ PeriodicOrbit find_periodic_orbit(const StroboscopicMap& map, const Eigen::Vecto
       orbit.failure = fmt::format("no convergence in {} Newton steps (scaled residual {:.3g})", orbit.iterations, residual);
       break;
     }
-    const Eigen::Matrix2d J = image.monodromy - Eigen::Matrix2d::Identity();
-    if (std::abs(planar::det(J)) <= 1e-14 * J.squaredNorm()) {
+    const Eigen::MatrixXd J = image.monodromy - Eigen::MatrixXd::Identity(z.size(), z.size());
+    if (std::abs(section::det(J)) <= 1e-14 * std::pow(J.norm(), static_cast<double>(z.size()))) {
       orbit.failure = "a multiplier equals 1 (a fold): Newton's matrix M - I is singular";
       break;
     }
-    const Eigen::VectorXd step = planar::inverse(J) * (z - image.state);
+    const Eigen::VectorXd step = section::solve(J, z - image.state);
     bool accepted = false;
     for (double lambda = 1; !accepted && lambda >= std::ldexp(1.0, -max_halvings); lambda /= 2) {
       const Eigen::VectorXd trial = z + lambda * step;

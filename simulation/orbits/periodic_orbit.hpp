@@ -35,7 +35,7 @@ struct PeriodicOrbit {
   double min_flight_gap_m = 0;               ///< its closest approach to a wall in flight (SectionImage)
 };
 
-/// The Floquet multipliers of the 2x2 `monodromy`, largest modulus first (planar_algebra.hpp).
+/// The Floquet multipliers of the square `monodromy`, largest modulus first (section_algebra.hpp).
 std::vector<std::complex<double>> floquet_multipliers(const Eigen::MatrixXd& monodromy);
 
 /// Every multiplier's modulus below 1 - 1e-9 (see above).

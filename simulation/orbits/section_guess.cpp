@@ -54,7 +54,7 @@ SectionGuess section_guess(const ImpactSequenceSpec& spec, std::optional<double>
   double t_s = (std::floor(t_end * f) + guess.section_phase) / f;
   if (t_s <= t_end) t_s += 1 / f;
   const ImpactSequence to_section =
-      run_impact_sequence(flow_spec(spec, t_end, run.end_position_m, run.end_velocity_mps, t_s));
+      run_impact_sequence(flow_spec(spec, t_end, section_state(spec, run), t_s));
   if (to_section.end_carried || to_section.sticking_episodes > 0) {
     guess.failure = "the brute-force attractor sticks to the wall (a sticking orbit: the map is not smooth there)";
     return guess;
@@ -63,7 +63,7 @@ SectionGuess section_guess(const ImpactSequenceSpec& spec, std::optional<double>
     guess.failure = "the flow to the section ended before it: " + to_section.end_reason;
     return guess;
   }
-  guess.state = Eigen::Vector2d(to_section.end_position_m, to_section.end_velocity_mps);
+  guess.state = section_state(spec, to_section);
   return guess;
 }
 

@@ -21,7 +21,7 @@ struct SectionGuess {
   int period = 0;        ///< drive cycles of the brute-force attractor (0: none detected)
   int impacts_per_period = 0;
   double section_phase = 0;  ///< in [0, 1)
-  Eigen::VectorXd state;     ///< (y [m], u [m/s]) at the section
+  Eigen::VectorXd state;     ///< at the section (section_coordinates: (y [m], u [m/s]), a box of its own's (X, V))
 };
 
 /// The middle of the widest arc of [0, 1) free of the impacts at drive phases `phases`, each

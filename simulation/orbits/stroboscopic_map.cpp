@@ -13,7 +13,7 @@ namespace hertzdash {
 
 namespace {
 
-/// Phi(tau): the flight's fundamental matrix, the free responses from (1, 0) and (0, 1).
+/// Phi(tau): one oscillator's flight's fundamental matrix, the free responses from (1, 0) and (0, 1).
 Eigen::Matrix2d flight_matrix(const ForcedOscillator& body, double tau_s) {
   ForcedOscillator free = body;
   free.force_amplitude_N = 0;
@@ -22,6 +22,15 @@ Eigen::Matrix2d flight_matrix(const ForcedOscillator& body, double tau_s) {
   Eigen::Matrix2d phi;
   phi << from_position.position_m(tau_s), from_velocity.position_m(tau_s), from_position.velocity_mps(tau_s),
       from_velocity.velocity_mps(tau_s);
+  return phi;
+}
+
+/// The section's flight matrix over tau [s]: the body's block, and the box's for a box of its own.
+Eigen::MatrixXd section_flight_matrix(const ImpactSequenceSpec& spec, double tau_s) {
+  if (spec.prescribed) return flight_matrix(spec.body, tau_s);
+  Eigen::MatrixXd phi = Eigen::MatrixXd::Zero(4, 4);
+  phi.topLeftCorner<2, 2>() = flight_matrix(spec.body, tau_s);
+  phi.bottomRightCorner<2, 2>() = flight_matrix(spec.box, tau_s);
   return phi;
 }
 
@@ -54,6 +63,43 @@ double min_interior_gap(const OscillatorMotion& body, const OscillatorMotion& bo
   return least;
 }
 
+/// The monodromy over the run `run` from z at t_s for a box of its own, instantaneous impacts (see
+/// the header), the image's closeness to grazing updated on the way.
+Eigen::MatrixXd own_box_monodromy(const ImpactSequenceSpec& spec, double t_s, const Eigen::VectorXd& z,
+                                  const ImpactSequence& run, SectionImage& image) {
+  const ForcedOscillator &body = spec.body, &primary = spec.box;
+  const double e = spec.restitution, m = body.mass_kg, beta = (1 + e) / (m + primary.mass_kg);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(4, 4);
+  double t_prev = t_s;
+  OscillatorMotion flight(body, t_s, z(0), z(1)), box(primary, t_s, z(2), z(3));
+  auto flight_gap = [&](double t_end) {
+    image.min_flight_gap_m =
+        std::min(image.min_flight_gap_m, min_interior_gap(flight, box, spec.walls, t_prev, t_end, spec.frequency_Hz));
+  };
+  for (const SequenceImpact& i : run.impacts) {
+    const double t = i.time_s, sigma = spec.walls[static_cast<std::size_t>(i.wall)].sigma;
+    const double y = flight.position_m(t), u_minus = flight.velocity_mps(t), X = box.position_m(t),
+                 V_minus = box.velocity_mps(t);
+    flight_gap(t);
+    const double jump = beta * (V_minus - u_minus);
+    const double u_plus = u_minus + primary.mass_kg * jump, V_plus = V_minus - m * jump;
+    Eigen::Matrix4d R = Eigen::Matrix4d::Identity();
+    R(1, 1) = 1 - primary.mass_kg * beta, R(1, 3) = primary.mass_kg * beta;
+    R(3, 1) = m * beta, R(3, 3) = 1 - m * beta;
+    const Eigen::Vector4d f_minus(u_minus, acceleration(body, t, y, u_minus), V_minus, acceleration(primary, t, X, V_minus)),
+        f_plus(u_plus, acceleration(body, t, y, u_plus), V_plus, acceleration(primary, t, X, V_plus)),
+        n(sigma, 0, -sigma, 0);
+    const Eigen::Matrix4d S = R + (f_plus - R * f_minus) * n.transpose() / n.dot(f_minus);
+    M = S * section_flight_matrix(spec, t - t_prev) * M;
+    t_prev = t;
+    flight = OscillatorMotion(body, t, y, u_plus);
+    box = OscillatorMotion(primary, t, X, V_plus);
+    image.min_impact_speed_mps = std::min(image.min_impact_speed_mps, i.impact_speed_mps);
+  }
+  flight_gap(*spec.end_time_s);
+  return section_flight_matrix(spec, *spec.end_time_s - t_prev) * M;
+}
+
 }  // namespace
 
 const char* monodromy_method(const ImpactSequenceSpec& spec) {
@@ -71,48 +117,71 @@ ImpactSequenceSpec in_flight_from(ImpactSequenceSpec spec, double t0_s, double y
   return spec;
 }
 
-ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps, double t_end_s) {
-  spec = in_flight_from(std::move(spec), t0_s, y0_m, u0_mps);
+ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, const Eigen::VectorXd& z, double t_end_s) {
+  spec = in_flight_from(std::move(spec), t0_s, z(0), z(1));
+  if (!spec.prescribed) spec.X0_m = z(2), spec.V0_mps = z(3);
   spec.transient = 0;
   spec.impacts = max_shaker_impacts;
   spec.end_time_s = t_end_s;
   return spec;
 }
 
-double smallest_gap_m(const ImpactSequenceSpec& spec, double t_s, double y_m) {
+namespace {
+constexpr SectionCoordinate body_coordinates[] = {{"position_m", "the body's position y"},
+                                                  {"velocity_mps", "the body's velocity u"},
+                                                  {"box_position_m", "the box's (the primary's) position X"},
+                                                  {"box_velocity_mps", "the box's velocity V"}};
+}  // namespace
+
+std::span<const SectionCoordinate> section_coordinates(const ImpactSequenceSpec& spec) {
+  return std::span(body_coordinates).first(spec.prescribed ? 2 : 4);
+}
+
+Eigen::VectorXd section_state(const ImpactSequenceSpec& spec, const ImpactSequence& run) {
+  if (spec.prescribed) return Eigen::Vector2d(run.end_position_m, run.end_velocity_mps);
+  return Eigen::Vector4d(run.end_position_m, run.end_velocity_mps, run.end_box_position_m, run.end_box_velocity_mps);
+}
+
+double smallest_gap_m(const ImpactSequenceSpec& spec, double t_s, const Eigen::VectorXd& z) {
+  const double X = spec.prescribed ? spec.prescribed->position_m(t_s) : z(2);
   double gap = std::numeric_limits<double>::infinity();
-  for (const SequenceWall& w : spec.walls) gap = std::min(gap, w.sigma * (y_m - spec.prescribed->position_m(t_s) - w.offset_m));
+  for (const SequenceWall& w : spec.walls) gap = std::min(gap, w.sigma * (z(0) - X - w.offset_m));
   return gap;
 }
 
 StroboscopicMap::StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles)
     : t_s_(section_phase / spec.frequency_Hz), cycles_(cycles) {
-  if (!spec.prescribed || (spec.soft && !spec.soft_tangent))
-    throw std::invalid_argument("StroboscopicMap: a prescribed box, and soft impacts with their tangents");
+  if (spec.soft && (!spec.prescribed || !spec.soft_tangent))
+    throw std::invalid_argument("StroboscopicMap: soft impacts on a prescribed box, with their tangents");
   if (cycles < 1) throw std::invalid_argument("StroboscopicMap: cycles >= 1");
-  spec_ = flow_spec(std::move(spec), t_s_, 0, 0, t_s_ + cycles / spec.frequency_Hz);
+  const Eigen::VectorXd origin = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(section_coordinates(spec).size()));
+  spec_ = flow_spec(std::move(spec), t_s_, origin, t_s_ + cycles / spec.frequency_Hz);
 }
 
-double StroboscopicMap::smallest_gap_m(const Eigen::VectorXd& z) const { return hertzdash::smallest_gap_m(spec_, t_s_, z(0)); }
+double StroboscopicMap::smallest_gap_m(const Eigen::VectorXd& z) const { return hertzdash::smallest_gap_m(spec_, t_s_, z); }
 
 SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
-  SectionImage image{.state = z, .monodromy = Eigen::MatrixXd::Identity(2, 2), .impacts = {},
+  SectionImage image{.state = z, .monodromy = Eigen::MatrixXd::Identity(z.size(), z.size()), .impacts = {},
                      .min_impact_speed_mps = std::numeric_limits<double>::infinity(),
                      .min_flight_gap_m = std::numeric_limits<double>::infinity(), .failure = {}};
   if (!(smallest_gap_m(z) > 0)) {
-    image.failure = fmt::format("the state (y = {:.9g} m, u = {:.9g} m/s) is not above the wall", z(0), z(1));
+    image.failure = fmt::format("the state (y = {:.9g} m, u = {:.9g} m/s) is not {}", z(0), z(1),
+                                spec_.walls.size() == 1 ? "above the wall" : "between the walls");
     return image;
   }
-  ImpactSequenceSpec spec = spec_;
-  spec.y0_m = z(0);
-  spec.u0_mps = z(1);
-  ImpactSequence run = run_impact_sequence(spec);
+  ImpactSequence run = run_impact_sequence(flow_spec(spec_, t_s_, z, *spec_.end_time_s));
   if (run.sticking_episodes > 0 || run.end_carried) {
     image.failure = "the body is carried by a wall on the way (a sticking orbit: the map is not smooth there)";
     return image;
   }
   if (!(run.end_time_s == *spec_.end_time_s)) {
     image.failure = run.end_reason;
+    return image;
+  }
+  if (!spec_.prescribed) {
+    image.monodromy = own_box_monodromy(spec_, t_s_, z, run, image);
+    image.state = section_state(spec_, run);
+    image.impacts = std::move(run.impacts);
     return image;
   }
   const ForcedOscillator& body = spec_.body;
@@ -170,7 +239,7 @@ SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
   }
   M = flight_matrix(body, *spec_.end_time_s - t_prev) * M;
   flight_gap(*spec_.end_time_s);
-  image.state = Eigen::Vector2d(run.end_position_m, run.end_velocity_mps);
+  image.state = section_state(spec_, run);
   image.monodromy = M;
   image.impacts = std::move(run.impacts);
   return image;

@@ -1,7 +1,8 @@
 #pragma once
-// The stroboscopic map of a rig whose box moves as prescribed (the shaker's wall, the driven box,
-// the impact oscillator's stop at rest), with instantaneous or soft impacts: the body's state
-// z = (y [m], u [m/s]) at the drive phase phi_s is carried over N drive periods by the
+// The stroboscopic map of a rig on the impact-sequence driver: a box that moves as prescribed (the
+// shaker's wall, the driven box, the impact oscillator's stop at rest), with instantaneous or soft
+// impacts, or a box of its own (the impact damper's primary; below), with instantaneous impacts.
+// The body's state z = (y [m], u [m/s]) at the drive phase phi_s is carried over N drive periods by the
 // impact-sequence driver (simulation/shaker/impact_sequence.hpp, its `end_time_s`), and its
 // Jacobian, the monodromy matrix, follows from the flights' fundamental matrices and the impacts'
 // saltation matrices (no finite differences):
@@ -18,6 +19,17 @@
 // with f-+ = (u-+, a(t, y, u-+)) the flight's vector field before and after. For a free flight
 // (a = -g) this is S = [[-e, 0], [(1 + e)(g + X'')/(V - u-), -e]], det S = e^2; det Phi =
 // exp(-c tau/m); so det M = e^(2k) exp(-c N T/m) for k impacts in N periods.
+// A box of its own (the impact damper's primary, mass M, X'' from its spring, dashpot and drive),
+// instantaneous impacts: the state is z = (y, u, X, V), the flight's Phi the two oscillators'
+// blocks, and an impact conserves momentum (simulation/shaker/impact_sequence.hpp), so with
+// beta = (1 + e)/(m + M)
+//   u+ = u + M beta (V - u),   V+ = V - m beta (V - u),   positions unchanged,
+// R = dr/dz the identity but for the rows of u (1 - M beta in u's column, M beta in V's) and V
+// (m beta, 1 - m beta); the gap h = sigma (y - X - offset) does not depend on t, so
+//   S = R + (f+ - R f-) n^T / (n.f-),   n = sigma (1, 0, -1, 0),   n.f- = sigma (u- - V-),
+// f = (u, a_body, V, a_box). det R = -e (its (u, V) block) and n^T R^-1 = n^T (R keeps the
+// positions), so det S = det R (n.f+ / n.f-) = (-e)(-e) = e^2 as for a prescribed box; with
+// det Phi = exp(-(c/m + C/M) tau), det M = e^(2k) exp(-(c/m + C/M) N T).
 // Soft impacts (the same rigs, any law that declares dF/dv0): a contact begins at t_on at relative
 // speed v0 and ends t_c later at relative speed v_sep, and its variational equations give
 // J = d(t_c, v_sep)/d(t_on, v0) (simulation/run/soft_contact_tangent.hpp). The state's
@@ -31,12 +43,15 @@
 // separations and the next onsets. As the contact stiffens (t_c -> 0, v_sep -> e v0) C tends to
 // the saltation matrix S above: the check of one against the other (tests/test_orbit_soft.cpp).
 // A contact that spans the section's time is refused (the section lies in flight by its choice).
+// Soft impacts on a box of its own are not analysed (their variational equations would carry the
+// primary's state through the contact): refused.
 // Refused (as a failed image, not an exception: Newton steps back from it) are a state inside a
 // wall, a body carried by a wall (a sticking orbit: the map is not smooth there) and a chatter cap.
 #include "hertzdash/simulation/shaker/impact_sequence.hpp"
 
 #include <Eigen/Core>
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -45,16 +60,27 @@ namespace hertzdash {
 /// `spec` started with the body in flight at (t0 [s], y0 [m], u0 [m/s]), no energy account or
 /// samples (the basins' starts, and flow_spec's).
 ImpactSequenceSpec in_flight_from(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps);
-/// `spec` as a flow: in_flight_from(t0, y0, u0) run to t_end [s], every impact kept (the map's
-/// runs, the guess's flow to the section).
-ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, double y0_m, double u0_mps, double t_end_s);
-/// The gap [m] of a body at y [m] at time t [s] to the nearest wall of the prescribed box of
-/// `spec` (< 0: inside it).
-double smallest_gap_m(const ImpactSequenceSpec& spec, double t_s, double y_m);
+/// `spec` as a flow from the section state z at t0 [s] (in flight), run to t_end [s], every
+/// impact kept (the map's runs, the guess's flow to the section).
+ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, const Eigen::VectorXd& z, double t_end_s);
+
+/// One coordinate of the section's state: its key in reports (unit suffixed) and what it is.
+struct SectionCoordinate {
+  const char* key;
+  const char* meaning;
+};
+/// The coordinates of the section of `spec`: the body's position and velocity, then, for a box
+/// of its own (the damper's primary), the box's.
+std::span<const SectionCoordinate> section_coordinates(const ImpactSequenceSpec& spec);
+/// The section's state of a run's end: (y, u), and (X, V) for a box of its own.
+Eigen::VectorXd section_state(const ImpactSequenceSpec& spec, const ImpactSequence& run);
+/// The gap [m] of the section state z at time t [s] to the nearest wall of the box of `spec`
+/// (< 0: inside it).
+double smallest_gap_m(const ImpactSequenceSpec& spec, double t_s, const Eigen::VectorXd& z);
 
 /// The image of one state under the map.
 struct SectionImage {
-  Eigen::VectorXd state;                 ///< (y [m], u [m/s]) N periods later
+  Eigen::VectorXd state;                 ///< z N periods later (section_coordinates)
   Eigen::MatrixXd monodromy;             ///< d state / d start
   std::vector<SequenceImpact> impacts;   ///< the impacts on the way, in order
   double min_impact_speed_mps = 0;       ///< the slowest of them (0 near grazing); inf: none
@@ -71,8 +97,8 @@ const char* monodromy_method(const ImpactSequenceSpec& spec);
 /// The map P^N from phase phi_s of a prescribed-box sequence `spec`.
 class StroboscopicMap {
  public:
-  /// Throws std::invalid_argument if `spec` has a box of its own, soft impacts without their
-  /// tangents (spec.soft_tangent), or cycles < 1.
+  /// Throws std::invalid_argument for soft impacts on a box of its own or without their tangents
+  /// (spec.soft_tangent), or cycles < 1.
   StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles);
   SectionImage operator()(const Eigen::VectorXd& state) const;
   /// The section's time in the first drive period [s], phi_s / f.

@@ -30,6 +30,11 @@ void add_multipliers(nlohmann::ordered_json& j, const std::vector<std::complex<d
   j["multiplier_moduli"] = moduli;
 }
 
+/// The section state z into `j`, one key per coordinate (position_m, velocity_mps, ...).
+void add_state(nlohmann::ordered_json& j, std::span<const SectionCoordinate> coordinates, const Eigen::VectorXd& z) {
+  for (std::size_t k = 0; k < coordinates.size(); ++k) j[coordinates[k].key] = z(static_cast<Eigen::Index>(k));
+}
+
 /// `x` to 1e-8 of its scale: Newton leaves the state uncertain beyond that (its residual is below
 /// 1e-11 of the scales, the state's error that over the conditioning of M - I), and the text shows
 /// no round-off noise (-1e-13 m/s is 0).
@@ -52,9 +57,9 @@ nlohmann::ordered_json to_json(const Rig& rig, const OrbitResult& r) {
   j["period"] = r.period;
   j["section_phase"] = r.section_phase;
   j["guess"] = r.guess;
-  if (o.state.size() == 2) {
+  if (o.state.size() == static_cast<Eigen::Index>(r.coordinates.size())) {
     j["impacts_per_period"] = o.impacts.size();
-    j["section_state"] = {{"position_m", o.state(0)}, {"velocity_mps", o.state(1)}};
+    add_state(j["section_state"], r.coordinates, o.state);
     add_multipliers(j, o.multipliers);
     j["stable"] = o.stable;
     j["newton_residual"] = o.residual;
@@ -82,7 +87,7 @@ std::string orbit_text(const Rig& rig, const OrbitResult& r) {
   std::string out = fmt::format("hertzdash orbit {}: {}\n", rig.name, r.heading);
   auto line = [&](std::string_view name, const std::string& value) { out += fmt::format("  {:<16} {}\n", name, value); };
   line("guess", r.guess);
-  if (o.state.size() != 2) {
+  if (o.state.size() != static_cast<Eigen::Index>(r.coordinates.size())) {
     line("failure", o.failure);
     return out;
   }
@@ -90,8 +95,12 @@ std::string orbit_text(const Rig& rig, const OrbitResult& r) {
   line("period", fmt::format("{} drive cycle{}, {} impact{}", r.period, r.period == 1 ? "" : "s", o.impacts.size(),
                              o.impacts.size() == 1 ? "" : "s"));
   line("section_phase", fmt::format("{:.9g}", r.section_phase));
-  line("section_state", fmt::format("position {:.8g} m, velocity {:.8g} m/s", to_resolution(o.state(0), r.scale(0)),
-                                    to_resolution(o.state(1), r.scale(1))));
+  std::string state;
+  for (std::size_t k = 0; k < r.coordinates.size(); ++k) {
+    const auto i = static_cast<Eigen::Index>(k);
+    state += fmt::format("{}{} {:.8g}", k ? ", " : "", r.coordinates[k].key, to_resolution(o.state(i), r.scale(i)));
+  }
+  line("section_state", state);
   std::string multipliers, moduli;
   for (const std::complex<double> l : o.multipliers) {
     multipliers += (multipliers.empty() ? "" : ", ") + complex_text(l);
@@ -135,8 +144,8 @@ nlohmann::ordered_json to_json(const Rig& rig, const ContinuationResult& r) {
   if (!r.failure.empty()) j["failure"] = r.failure;
   nlohmann::ordered_json branch = nlohmann::ordered_json::array();
   for (const BranchPoint& p : r.continuation.points) {
-    nlohmann::ordered_json point{{"branch", p.branch},      {"period", p.period},        {column, p.parameter},
-                                 {"position_m", p.state(0)}, {"velocity_mps", p.state(1)}};
+    nlohmann::ordered_json point{{"branch", p.branch}, {"period", p.period}, {column, p.parameter}};
+    add_state(point, r.coordinates, p.state);
     add_multipliers(point, p.multipliers);
     point["stable"] = p.stable;
     point["impacts_per_period"] = p.impacts;
@@ -165,8 +174,10 @@ std::string continuation_text(const Rig& rig, const ContinuationResult& r) {
 }
 
 CsvWriter continuation_csv(const Rig& rig, const ContinuationResult& r) {
-  std::vector<std::string> columns{"branch", "period", r.column, "position_m", "velocity_mps"};
-  for (const char* part : {"multiplier_1_re", "multiplier_1_im", "multiplier_2_re", "multiplier_2_im"}) columns.emplace_back(part);
+  std::vector<std::string> columns{"branch", "period", r.column};
+  for (const SectionCoordinate& c : r.coordinates) columns.emplace_back(c.key);
+  for (std::size_t k = 1; k <= r.coordinates.size(); ++k)
+    for (const char* part : {"re", "im"}) columns.push_back(fmt::format("multiplier_{}_{}", k, part));
   for (const char* c : {"stable", "impacts_per_period", "min_impact_speed_mps", "min_flight_gap_m"}) columns.emplace_back(c);
   CsvWriter csv(fmt::format("hertzdash continue {}: one row per branch point (the orbit's state at the section, its "
                             "Floquet multipliers largest first; stable 1 or 0; an infinite closeness: no impact or "
@@ -177,9 +188,9 @@ CsvWriter continuation_csv(const Rig& rig, const ContinuationResult& r) {
   for (const BranchEvent& e : r.continuation.events) csv.add_comment("event: " + event_line(r, e));
   for (const std::string& end : r.continuation.ends) csv.add_comment("end: " + end);
   for (const BranchPoint& p : r.continuation.points) {
-    std::vector<CsvWriter::Cell> row{static_cast<long>(p.branch), static_cast<long>(p.period), p.parameter, p.state(0),
-                                     p.state(1)};
-    for (std::size_t k = 0; k < 2; ++k) {
+    std::vector<CsvWriter::Cell> row{static_cast<long>(p.branch), static_cast<long>(p.period), p.parameter};
+    for (Eigen::Index k = 0; k < p.state.size(); ++k) row.emplace_back(p.state(k));
+    for (std::size_t k = 0; k < r.coordinates.size(); ++k) {
       const std::complex<double> l = k < p.multipliers.size() ? p.multipliers[k] : std::complex<double>(NAN, NAN);
       row.emplace_back(l.real());
       row.emplace_back(l.imag());

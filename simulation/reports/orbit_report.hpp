@@ -16,7 +16,8 @@
 namespace hertzdash {
 
 /// "schema_version", "rig", "method", "converged" (and "failure" where not), "period",
-/// "impacts_per_period", "section_phase", "section_state" {position_m, velocity_mps},
+/// "impacts_per_period", "section_phase", "section_state" {position_m, velocity_mps, and a box of
+/// its own's box_position_m, box_velocity_mps},
 /// "multipliers" [[re, im], ...] largest modulus first, "multiplier_moduli", "stable",
 /// "newton_residual", "newton_iterations", "min_impact_speed_mps", "guess", the orbit's impacts
 /// over its period as arrays ("impact_time_s", "impact_phase", "impact_speed_mps",
@@ -28,8 +29,8 @@ std::string orbit_text(const Rig& rig, const OrbitResult& result);
 
 /// "schema_version", "rig", "method", "parameter", "start" {period, section_phase, guess},
 /// "failure" (only where no branch was followed), "branch" (one object per point: branch, period,
-/// the parameter under its column name with its unit (force_amplitude_N), position_m,
-/// velocity_mps, multipliers [[re, im], ...], multiplier_moduli, stable, impacts_per_period,
+/// the parameter under its column name with its unit (force_amplitude_N), the section state's
+/// coordinates as section_state's, multipliers [[re, im], ...], multiplier_moduli, stable, impacts_per_period,
 /// impact_phase (one per impact), min_impact_speed_mps, min_flight_gap_m),
 /// "events" ({type, parameter, branch, period}), "ends" (per branch, why it ended), "inputs",
 /// "git_revision". An infinite closeness (no impact, no interior minimum) is null.

@@ -36,6 +36,9 @@ BasinsResult run_basins(const Rig& rig, const RunOptions& options, const PaperPa
                         const BasinsRequest& request) {
   RigSequence rs = orbit_sequence(rig, options, paper, inputs);
   const ImpactSequenceSpec& spec = rs.sequence.spec;
+  if (!spec.prescribed)  // the grid is the body's (y, u) beside a box whose motion the start does not change
+    throw InvalidParameter("rig", inputs.text("rig").value_or("damper"),
+                           "a box in prescribed motion for `basins` (a box of its own makes the section four-dimensional)");
   BasinsResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .grid = {}, .basins = {}, .failure = {}};
   BasinOptions& g = out.grid;
   g.resolution = request.resolution, g.transient = request.cell_transient, g.kept = request.cell_impacts;

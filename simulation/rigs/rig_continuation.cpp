@@ -73,7 +73,7 @@ ContinuationResult run_continuation(const Rig& rig, const RunOptions& options, c
                              fmt::format("given when continuing in `{}`: its default changes with it ({} at `from`, {} at `to`)",
                                          key, value(rs.inputs), value(end.inputs)));
   }
-  ContinuationResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .parameter = key,
+  ContinuationResult out{.coordinates = section_coordinates(rs.sequence.spec), .heading = rs.heading, .inputs = std::move(rs.inputs), .parameter = key,
                          .column = own ? input_column(*own) : column_name(*option), .start = orbit_start(rs.sequence.spec, request.orbit),
                          .failure = {}, .continuation = {}};
   out.inputs.emplace_back("parameter", key);

@@ -32,6 +32,7 @@ inline constexpr RigOptionNote orbit_impact_model_note{
 struct OrbitRequest {
   std::optional<int> period;
   std::optional<double> section_phase, guess_position_m, guess_velocity_mps;
+  std::optional<double> guess_box_position_m, guess_box_velocity_mps;  ///< a box of its own's
   ShootingOptions shooting;
 };
 /// The request of the options given by key ("period", "section-phase", ...); InvalidParameter
@@ -46,9 +47,11 @@ struct OrbitStart {
   std::string guess;    ///< where it comes from, in words
   std::string failure;  ///< empty: a start
 };
-/// The start for the instantaneous, prescribed-box sequence `spec` and `request`.
+/// The start for the sequence `spec` and `request`; InvalidParameter naming a guess's half that
+/// the box (of its own or not) wants or does not take.
 OrbitStart orbit_start(const ImpactSequenceSpec& spec, const OrbitRequest& request);
-/// The scales of the rig's state: v_s / f for the position [m], v_s for the velocity [m/s].
+/// The scales of the rig's state: v_s / f for a position [m], v_s for a velocity [m/s]; the box's
+/// (a box of its own) as the body's.
 Eigen::VectorXd orbit_scales(const ImpactSequenceSpec& spec);
 /// The rig's sequence from validated inputs, refused (InvalidParameter) where `orbit` and
 /// `continue` cannot take it: a rig without one, soft impacts of a law without dF/dv0, a box of its own.
@@ -56,6 +59,7 @@ RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const Pape
 
 /// The orbit found, or why not (orbit.converged false: the output stands, as a failed fit's).
 struct OrbitResult {
+  std::span<const SectionCoordinate> coordinates;  ///< the section state's (section_coordinates)
   std::string heading;        ///< the rig's ("instantaneous impacts, e = 0.5")
   Parameters inputs;          ///< the rig's run's, then the request's
   std::string method;         ///< how the monodromy is computed (monodromy_method)

@@ -173,12 +173,6 @@ RigResult outcome(const Run& r) { return sequence_outcome(r, box(r) ? "driven bo
 
 RigSequence sequence(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
   const Run r = resolve(options, paper, in);
-  // The map's section is the body's (y, u) beside a box in prescribed motion; the damper's
-  // primary has a state of its own.
-  if (!box(r))
-    throw InvalidParameter("rig", "damper",
-                           "box for the orbit analyses: the impact damper's primary has a state of its own, not yet "
-                           "analysed");
   return {make_two_walls_sequence(r.setup, r.law, r.solver, r.options), outcome(r).heading, r.inputs};
 }
 
@@ -253,7 +247,7 @@ const Rig& walls_rig() {
                   "oscillator under a harmonic force); exact flights",
        .inputs = inputs, .run_options_not_read = not_read, .not_read_because = "the body starts at rest at mid-gap",
        .run_option_notes = notes, .default_integrator = shaker_default_integrator,
-       .instantaneous_reads = box_reads,  // `orbit walls` analyses the driven box (the damper's is 4-dimensional)
+       .instantaneous_reads = damper_reads,  // `orbit walls` takes either; `refuse` keeps `mass` from the box
        .refuse = refuse, .results = results,
        .table_description = "one row per kept impact (time from the start, the body at rest at mid-gap; phase of the "
                             "drive sin(2 pi f t) in [0,1); wall 0 floor, 1 ceiling; speeds relative to the box)",

@@ -92,6 +92,8 @@ class SequenceRun {
     out_.end_time_s = t_now_;
     out_.end_position_m = body_position(t_now_);
     out_.end_velocity_mps = body_velocity(t_now_);
+    out_.end_box_position_m = box_.position_m(t_now_);
+    out_.end_box_velocity_mps = box_.velocity_mps(t_now_);
     out_.end_carried = carried_;
     if (s_.energy) out_.energy.final_J = energy_now();
     // The soft contacts' own work (the drive, the dashpots and the law's dissipation while in

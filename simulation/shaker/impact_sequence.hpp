@@ -170,6 +170,7 @@ struct ImpactSequence {
   EnergyAccount energy;    ///< zero without an account, NaN with soft impacts
   double end_time_s = 0;
   double end_position_m = 0, end_velocity_mps = 0;  ///< the body's state at end_time_s
+  double end_box_position_m = 0, end_box_velocity_mps = 0;  ///< the box's, X and V, at end_time_s
   bool end_carried = false;                         ///< the body was on a wall at end_time_s
   std::vector<std::string> warnings;  ///< chatter caps, a body that never leaves, a flight without impact
   std::string end_reason;

@@ -124,8 +124,12 @@ def test_orbit_is_the_programs_orbit():
         hertzdash.orbit("shaker", section_phase=0.5, guess_position=0.003, **kw)
     with pytest.raises(ValueError, match="shaker, walls, oscillator"):
         hertzdash.orbit("bounce")
-    with pytest.raises(ValueError, match="damper"):
-        hertzdash.orbit("walls", rig="damper")
+    # The damper's section is four-dimensional: the primary's half of a guess is asked for by name.
+    damper = hertzdash.orbit("walls", rig="damper")
+    assert damper == cli_json("orbit", "walls", "--rig", "damper")
+    assert set(damper["section_state"]) == {"position_m", "velocity_mps", "box_position_m", "box_velocity_mps"}
+    with pytest.raises(ValueError, match="guess_box_position"):
+        hertzdash.orbit("walls", rig="damper", section_phase=0.5, guess_position=0.005, guess_velocity=0)
     # No orbit to find (the body sticks to the wall once a period): a warning, and the dict says why.
     with pytest.warns(UserWarning, match="no periodic orbit found"):
         stuck = hertzdash.orbit("shaker", restitution=0.5, gamma=1.02)
