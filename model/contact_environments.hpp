@@ -43,6 +43,8 @@ struct SprungPrimary {
   double gravity_mps2 = 0, sigma = 1, t_onset_s = 0, X0_m = 0, V0_mps = 0;
 
   static constexpr int extra_dimension = 4;
+  /// (X, V) at onset are the contact's inputs (model/contact_tangent_system.hpp).
+  static constexpr int onset_state_dimension = 2;
   static constexpr bool lands_max_compression = false;
   static constexpr bool stops_at_observation_time = true;
   double reduced_mass_kg(double m) const { return m * primary.mass_kg / (m + primary.mass_kg); }
@@ -55,6 +57,11 @@ struct SprungPrimary {
   std::array<double, 4> initial_extra() const {
     const double theta = primary.omega_rad_per_s * t_onset_s;
     return {X0_m, V0_mps, std::sin(theta), std::cos(theta)};
+  }
+  /// d z0 / d t_onset [1/s] (model/contact_tangent_system.hpp): the drive's phase alone.
+  std::array<double, 4> initial_extra_onset_derivative() const {
+    const double w = primary.omega_rad_per_s;
+    return {0.0, 0.0, w * std::cos(w * t_onset_s), -w * std::sin(w * t_onset_s)};
   }
   std::array<double, 4> extra_scale(double X, double v0) const {
     return {std::max(std::abs(X0_m), X), std::max(std::abs(V0_mps), v0), 1.0, 1.0};
@@ -83,6 +90,7 @@ struct HarmonicForcing {
   double wall_peak_acceleration_mps2 = 0, gravity_mps2 = 0, sigma = 1;
 
   static constexpr int extra_dimension = 2;
+  static constexpr int onset_state_dimension = 0;  ///< a drive's phase only (model/contact_tangent_system.hpp)
   static constexpr bool lands_max_compression = false;
   static constexpr bool stops_at_observation_time = true;
   double reduced_mass_kg(double m) const { return m; }

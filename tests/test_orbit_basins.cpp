@@ -163,3 +163,36 @@ TEST_CASE("CLI basins: the grid as JSON and CSV, bad ranges exit 2 naming the op
   CHECK(half.exit_code == 2);
   CHECK(half.err.find("position-max") != std::string::npos);
 }
+
+TEST_CASE("CLI basins: the impact damper's slice, the cells next to its orbit reaching it", "[orbit]") {
+  // The default damper's orbit (`orbit walls --rig damper`: period 1, 3 impacts, its complex pairs
+  // of modulus 0.89 and 0.50) from the rig's own run; the basins' grid is centred on the same
+  // run's state at the section with the primary started where that run has it, its half-widths half
+  // the gap and the body's speed there, so the four cells around the centre (1/8 of those from it)
+  // start near a stable orbit and reach it: period 1 and the orbit's three impact phases, to the
+  // grid's phase tolerance 1e-4.
+  using hertzdash::test::run_cli;
+  const auto o = run_cli("orbit walls --rig damper --json");
+  REQUIRE(o.exit_code == 0);
+  const nlohmann::json orbit = nlohmann::json::parse(o.out);
+  std::vector<double> phases = orbit["impact_phase"].get<std::vector<double>>();
+  std::ranges::sort(phases);
+  const auto r = run_cli("basins walls --rig damper --resolution 8 --threads 2 --json");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["section_phase"].get<double>() == Approx(orbit["section_phase"].get<double>()).margin(1e-12));
+  CHECK(j["inputs"]["box_position_m"].get<double>() ==
+        Approx(orbit["section_state"]["box_position_m"].get<double>()).margin(1e-9));
+  for (const int row : {3, 4})
+    for (const int col : {3, 4}) {
+      const int index = j["cell"][row][col].get<int>();
+      REQUIRE(index >= 0);  // not inside a wall
+      const nlohmann::json& a = j["attractors"][static_cast<std::size_t>(index)];
+      CHECK(a["kind"] == "periodic");
+      CHECK(a["period"] == 1);
+      const std::vector<double> reached = a["impact_phase"].get<std::vector<double>>();
+      REQUIRE(reached.size() == 3);
+      for (std::size_t k = 0; k < 3; ++k) CHECK(reached[k] == Approx(phases[k]).margin(1e-4));
+    }
+}

@@ -54,7 +54,7 @@ PeriodicOrbit orbit_of(const ImpactSequenceSpec& spec) {
 /// hunt-crossley's e* at e: the rebound of a contact with nothing else acting (no gravity, no
 /// wall motion), at an arbitrary speed (e* does not depend on it).
 double hunt_crossley_restitution(const DropTestSetup& s) {
-  const ContactTangentRun contact = make_contact_tangent("hunt-crossley", s, tight());
+  const ContactTangentRun<HarmonicForcing> contact = make_contact_tangent<HarmonicForcing>("hunt-crossley", s, tight());
   const ContactTangent c = contact(HarmonicForcing{}, 0.3, 1.0);
   REQUIRE(c.separated);
   return c.rebound_speed_mps / 0.3;
@@ -72,7 +72,7 @@ TEST_CASE("soft contact tangents: d(t_c, v_sep)/d(t_on, v0) from the variational
   const std::string law = GENERATE("hunt-crossley", "hongo");
   CAPTURE(law);
   const DropTestSetup s = stiffened_steel_pair(1, e);
-  const ContactTangentRun contact = make_contact_tangent(law, s, tight());
+  const ContactTangentRun<HarmonicForcing> contact = make_contact_tangent<HarmonicForcing>(law, s, tight());
   REQUIRE(contact);
   const ShakerOptions o = shaker(ShakerImpactModel::soft);
   const double g = s.gravity_mps2, T = 1 / f_Hz, v0 = g * T / (1 + e), t_on = 0.1 * T;

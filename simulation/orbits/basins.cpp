@@ -24,8 +24,11 @@ struct CellOutcome {
 
 CellOutcome settle(ImpactSequenceSpec spec, double t_s, double y, double u, const BasinOptions& o) {
   CellOutcome out;
-  if (!(smallest_gap_m(spec, t_s, Eigen::Vector2d(y, u)) > 0)) return {.inside_wall = true, .attractor = {}};
+  const Eigen::VectorXd z = spec.prescribed ? Eigen::VectorXd(Eigen::Vector2d(y, u))
+                                            : Eigen::VectorXd(Eigen::Vector4d(y, u, o.box_position_m, o.box_velocity_mps));
+  if (!(smallest_gap_m(spec, t_s, z) > 0)) return {.inside_wall = true, .attractor = {}};
   spec = in_flight_from(std::move(spec), t_s, y, u);
+  if (!spec.prescribed) spec.X0_m = o.box_position_m, spec.V0_mps = o.box_velocity_mps;
   spec.transient = o.transient, spec.impacts = o.kept;
   const ImpactSequence run = run_impact_sequence(spec);
   BasinAttractor& a = out.attractor;

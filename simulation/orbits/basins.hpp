@@ -1,6 +1,7 @@
 #pragma once
-// Basins of attraction of a prescribed-box rig's stroboscopic section (docs/orbits.md): a grid of
-// starts z = (y [m], u [m/s]) at the drive phase phi_s, each run by the impact-sequence driver
+// Basins of attraction of a rig's stroboscopic section (docs/orbits.md): a grid of starts z = (y
+// [m], u [m/s]) of the body at the drive phase phi_s (a box of its own, the damper's primary,
+// started at the same (X, V) from every cell: a slice of its four-dimensional section), each run by the impact-sequence driver
 // (simulation/shaker/impact_sequence.hpp) for `transient` impacts and then `kept` more, and
 // classified by the attractor it settles on:
 //   - a periodic attractor: its period N (drive cycles, impact_pattern.hpp), its impacts per
@@ -26,6 +27,7 @@ namespace hertzdash {
 struct BasinOptions {
   double section_phase = 0;  ///< phi_s in [0, 1)
   double position_min_m = 0, position_max_m = 0, velocity_min_mps = 0, velocity_max_mps = 0;
+  double box_position_m = 0, box_velocity_mps = 0;  ///< a box of its own: its state at every start
   int resolution = 64;       ///< cells per axis (cell centres)
   int transient = 400, kept = 32;
   double phase_tolerance = 1e-4;  ///< cycles
@@ -52,8 +54,8 @@ struct Basins {
   bool elsewhere = false; ///< a process other than 0 of several: the grid was numbered on process 0
 };
 
-/// The basins on the grid of `o` of the prescribed-box sequence `make_spec()` (the start's
-/// position, velocity and time set per cell). std::invalid_argument for a grid of fewer than 2
+/// The basins on the grid of `o` of the sequence `make_spec()` (the start's position, velocity and
+/// time set per cell, a box of its own's state from `o`). std::invalid_argument for a grid of fewer than 2
 /// cells per axis or an empty range.
 Basins compute_basins(const std::function<ImpactSequenceSpec()>& make_spec, const BasinOptions& o);
 

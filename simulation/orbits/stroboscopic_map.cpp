@@ -63,8 +63,9 @@ double min_interior_gap(const OscillatorMotion& body, const OscillatorMotion& bo
   return least;
 }
 
-/// The monodromy over the run `run` from z at t_s for a box of its own, instantaneous impacts (see
-/// the header), the image's closeness to grazing updated on the way.
+/// The monodromy over the run `run` from z at t_s for a box of its own (see the header), the
+/// image's closeness to grazing updated on the way; its failure set where a soft contact spans the
+/// section's time or does not end.
 Eigen::MatrixXd own_box_monodromy(const ImpactSequenceSpec& spec, double t_s, const Eigen::VectorXd& z,
                                   const ImpactSequence& run, SectionImage& image) {
   const ForcedOscillator &body = spec.body, &primary = spec.box;
@@ -81,6 +82,41 @@ Eigen::MatrixXd own_box_monodromy(const ImpactSequenceSpec& spec, double t_s, co
     const double y = flight.position_m(t), u_minus = flight.velocity_mps(t), X = box.position_m(t),
                  V_minus = box.velocity_mps(t);
     flight_gap(t);
+    image.min_impact_speed_mps = std::min(image.min_impact_speed_mps, i.impact_speed_mps);
+    if (spec.soft) {
+      // The contact's block Q (J + E_11) P (the header): P the onset's (t_on, v0, X_on, V_on) from
+      // the state before it at fixed time, Q the state after it from (t_sep, v_sep, X_sep, V_sep).
+      const double v0 = i.impact_speed_mps, offset = spec.walls[static_cast<std::size_t>(i.wall)].offset_m;
+      const ContactTangent c = spec.soft_tangent(i.wall, t, v0, X, V_minus, soft_contact_window_s(spec.frequency_Hz));
+      const double t_sep = t + c.contact_time_s;
+      if (!c.separated || !(t_sep < *spec.end_time_s)) {
+        image.failure = c.separated ? fmt::format("the contact beginning at t = {:.9g} s spans the section's time", t)
+                                    : fmt::format("the contact beginning at t = {:.9g} s did not end within {:g} drive cycles",
+                                                  t, soft_contact_window_cycles);
+        return M;
+      }
+      const double A = acceleration(primary, t, X, V_minus), a = acceleration(body, t, y, u_minus);
+      const double X_sep = c.other_state(0), V_sep = c.other_state(1), y_sep = X_sep + offset,
+                   u_plus = V_sep + sigma * c.rebound_speed_mps;
+      const Eigen::RowVector4d onset(sigma / v0, 0, -sigma / v0, 0);  // dt_on
+      Eigen::Matrix4d P;
+      P.row(0) = onset;
+      P.row(1) = sigma * (A - a) * onset + Eigen::RowVector4d(0, -sigma, 0, sigma);
+      P.row(2) = V_minus * onset + Eigen::RowVector4d(0, 0, 1, 0);
+      P.row(3) = A * onset + Eigen::RowVector4d(0, 0, 0, 1);
+      Eigen::Matrix4d J = c.jacobian, Q;
+      J(0, 0) += 1;  // t_sep = t_on + t_c
+      Q.col(0) = -Eigen::Vector4d(u_plus, acceleration(body, t_sep, y_sep, u_plus), V_sep,
+                                  acceleration(primary, t_sep, X_sep, V_sep));
+      Q.col(1) << 0, sigma, 0, 0;
+      Q.col(2) << 1, 0, 1, 0;
+      Q.col(3) << 0, 1, 0, 1;
+      M = Q * J * P * section_flight_matrix(spec, t - t_prev) * M;
+      t_prev = t_sep;
+      flight = OscillatorMotion(body, t_sep, y_sep, u_plus);
+      box = OscillatorMotion(primary, t_sep, X_sep, V_sep);
+      continue;
+    }
     const double jump = beta * (V_minus - u_minus);
     const double u_plus = u_minus + primary.mass_kg * jump, V_plus = V_minus - m * jump;
     Eigen::Matrix4d R = Eigen::Matrix4d::Identity();
@@ -94,7 +130,6 @@ Eigen::MatrixXd own_box_monodromy(const ImpactSequenceSpec& spec, double t_s, co
     t_prev = t;
     flight = OscillatorMotion(body, t, y, u_plus);
     box = OscillatorMotion(primary, t, X, V_plus);
-    image.min_impact_speed_mps = std::min(image.min_impact_speed_mps, i.impact_speed_mps);
   }
   flight_gap(*spec.end_time_s);
   return section_flight_matrix(spec, *spec.end_time_s - t_prev) * M;
@@ -151,8 +186,7 @@ double smallest_gap_m(const ImpactSequenceSpec& spec, double t_s, const Eigen::V
 
 StroboscopicMap::StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles)
     : t_s_(section_phase / spec.frequency_Hz), cycles_(cycles) {
-  if (spec.soft && (!spec.prescribed || !spec.soft_tangent))
-    throw std::invalid_argument("StroboscopicMap: soft impacts on a prescribed box, with their tangents");
+  if (spec.soft && !spec.soft_tangent) throw std::invalid_argument("StroboscopicMap: soft impacts with their tangents");
   if (cycles < 1) throw std::invalid_argument("StroboscopicMap: cycles >= 1");
   const Eigen::VectorXd origin = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(section_coordinates(spec).size()));
   spec_ = flow_spec(std::move(spec), t_s_, origin, t_s_ + cycles / spec.frequency_Hz);
@@ -180,6 +214,7 @@ SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
   }
   if (!spec_.prescribed) {
     image.monodromy = own_box_monodromy(spec_, t_s_, z, run, image);
+    if (!image.failure.empty()) return image;
     image.state = section_state(spec_, run);
     image.impacts = std::move(run.impacts);
     return image;
@@ -219,7 +254,7 @@ SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
         image.failure = fmt::format("the contact beginning at t = {:.9g} s spans the section's time", t);
         return image;
       }
-      const ContactTangent c = spec_.soft_tangent(i.wall, t, v0, soft_contact_window_s(spec_.frequency_Hz));
+      const ContactTangent c = spec_.soft_tangent(i.wall, t, v0, 0, 0, soft_contact_window_s(spec_.frequency_Hz));
       if (!c.separated) {
         image.failure = fmt::format("the contact beginning at t = {:.9g} s did not end within {:g} drive cycles", t,
                                     soft_contact_window_cycles);

@@ -1,7 +1,7 @@
 #pragma once
 // The stroboscopic map of a rig on the impact-sequence driver: a box that moves as prescribed (the
 // shaker's wall, the driven box, the impact oscillator's stop at rest), with instantaneous or soft
-// impacts, or a box of its own (the impact damper's primary; below), with instantaneous impacts.
+// impacts, or a box of its own (the impact damper's primary; below), with either.
 // The body's state z = (y [m], u [m/s]) at the drive phase phi_s is carried over N drive periods by the
 // impact-sequence driver (simulation/shaker/impact_sequence.hpp, its `end_time_s`), and its
 // Jacobian, the monodromy matrix, follows from the flights' fundamental matrices and the impacts'
@@ -19,9 +19,9 @@
 // with f-+ = (u-+, a(t, y, u-+)) the flight's vector field before and after. For a free flight
 // (a = -g) this is S = [[-e, 0], [(1 + e)(g + X'')/(V - u-), -e]], det S = e^2; det Phi =
 // exp(-c tau/m); so det M = e^(2k) exp(-c N T/m) for k impacts in N periods.
-// A box of its own (the impact damper's primary, mass M, X'' from its spring, dashpot and drive),
-// instantaneous impacts: the state is z = (y, u, X, V), the flight's Phi the two oscillators'
-// blocks, and an impact conserves momentum (simulation/shaker/impact_sequence.hpp), so with
+// A box of its own (the impact damper's primary, mass M, X'' from its spring, dashpot and drive):
+// the state is z = (y, u, X, V), the flight's Phi the two oscillators' blocks, and an
+// instantaneous impact conserves momentum (simulation/shaker/impact_sequence.hpp), so with
 // beta = (1 + e)/(m + M)
 //   u+ = u + M beta (V - u),   V+ = V - m beta (V - u),   positions unchanged,
 // R = dr/dz the identity but for the rows of u (1 - M beta in u's column, M beta in V's) and V
@@ -43,8 +43,14 @@
 // separations and the next onsets. As the contact stiffens (t_c -> 0, v_sep -> e v0) C tends to
 // the saltation matrix S above: the check of one against the other (tests/test_orbit_soft.cpp).
 // A contact that spans the section's time is refused (the section lies in flight by its choice).
-// Soft impacts on a box of its own are not analysed (their variational equations would carry the
-// primary's state through the contact): refused.
+// A soft contact with a box of its own also takes the box's state (X_on, V_on) at onset and gives
+// it at separation, J = d(t_c, v_sep, X_sep, V_sep)/d(t_on, v0, X_on, V_on) (the SprungPrimary
+// contact's variational equations), and with n.dz = sigma (dy - dX), A the box's free acceleration
+// and a- the body's at onset, f+ the vector field after,
+//   dt_on = sigma (dy - dX)/v0,  dv0 = sigma (A - a-) dt_on + sigma (dV - du),
+//   dX_on = dX + V- dt_on,  dV_on = dV + A dt_on                          (P, 4 x 4),
+//   dz+ = (dX_sep, dV_sep + sigma dv_sep, dX_sep, dV_sep) - f+ dt_sep      (Q, 4 x 4),
+// the block again Q (J + E11) P: y_sep = X_sep + offset and u+ = V_sep + sigma v_sep.
 // Refused (as a failed image, not an exception: Newton steps back from it) are a state inside a
 // wall, a body carried by a wall (a sticking orbit: the map is not smooth there) and a chatter cap.
 #include "hertzdash/simulation/shaker/impact_sequence.hpp"
@@ -97,8 +103,8 @@ const char* monodromy_method(const ImpactSequenceSpec& spec);
 /// The map P^N from phase phi_s of a prescribed-box sequence `spec`.
 class StroboscopicMap {
  public:
-  /// Throws std::invalid_argument for soft impacts on a box of its own or without their tangents
-  /// (spec.soft_tangent), or cycles < 1.
+  /// Throws std::invalid_argument for soft impacts without their tangents (spec.soft_tangent), or
+  /// cycles < 1.
   StroboscopicMap(ImpactSequenceSpec spec, double section_phase, int cycles);
   SectionImage operator()(const Eigen::VectorXd& state) const;
   /// The section's time in the first drive period [s], phi_s / f.

@@ -36,26 +36,33 @@ BasinsResult run_basins(const Rig& rig, const RunOptions& options, const PaperPa
                         const BasinsRequest& request) {
   RigSequence rs = orbit_sequence(rig, options, paper, inputs);
   const ImpactSequenceSpec& spec = rs.sequence.spec;
-  if (!spec.prescribed)  // the grid is the body's (y, u) beside a box whose motion the start does not change
-    throw InvalidParameter("rig", inputs.text("rig").value_or("damper"),
-                           "a box in prescribed motion for `basins` (a box of its own makes the section four-dimensional)");
   BasinsResult out{.heading = rs.heading, .inputs = std::move(rs.inputs), .grid = {}, .basins = {}, .failure = {}};
   BasinOptions& g = out.grid;
   g.resolution = request.resolution, g.transient = request.cell_transient, g.kept = request.cell_impacts;
   g.threads = request.threads > 0 ? request.threads : std::max(1u, std::thread::hardware_concurrency());
   g.rank = request.rank, g.ranks = request.ranks, g.gather = request.gather;
-  if (!request.position_min_m || !request.velocity_min_mps || !request.section_phase) {
+  // A box of its own starts every cell where the rig's own attractor has it at the section.
+  if (!request.position_min_m || !request.velocity_min_mps || !request.section_phase || !spec.prescribed) {
     // The rig's own attractor gives what is not given.
     const SectionGuess guess = section_guess(spec, request.section_phase, 1);
     if (!guess.failure.empty()) {
-      out.failure = "the rig's own run gives no attractor to place the grid at (give --section-phase and the four "
-                    "bounds): " + guess.failure;
+      out.failure = spec.prescribed ? "the rig's own run gives no attractor to place the grid at (give --section-phase "
+                                      "and the four bounds): " + guess.failure
+                                    : "the rig's own run gives no attractor to start the primary from (a box of its "
+                                      "own starts every cell where the run's attractor has it): " + guess.failure;
       return out;
     }
     g.section_phase = guess.section_phase;
+    if (!spec.prescribed) g.box_position_m = guess.state(2), g.box_velocity_mps = guess.state(3);
+    // The window: the rig's scales around the attractor's state, at most the walls' span across
+    // (two walls: the clearance), and for a box of its own (whose speed scale is the primary's
+    // acceleration's) the body's own speed at the section.
     const Eigen::VectorXd s = orbit_scales(spec);
-    g.position_min_m = guess.state(0) - s(0), g.position_max_m = guess.state(0) + s(0);
-    g.velocity_min_mps = guess.state(1) - s(1), g.velocity_max_mps = guess.state(1) + s(1);
+    double dy = s(0), du = s(1);
+    if (spec.walls.size() == 2) dy = std::min(dy, 0.5 * std::abs(spec.walls[1].offset_m - spec.walls[0].offset_m));
+    if (!spec.prescribed && std::abs(guess.state(1)) > 0) du = std::abs(guess.state(1));
+    g.position_min_m = guess.state(0) - dy, g.position_max_m = guess.state(0) + dy;
+    g.velocity_min_mps = guess.state(1) - du, g.velocity_max_mps = guess.state(1) + du;
   }
   if (request.section_phase) g.section_phase = *request.section_phase;
   if (request.position_min_m) g.position_min_m = *request.position_min_m, g.position_max_m = *request.position_max_m;
@@ -64,6 +71,10 @@ BasinsResult run_basins(const Rig& rig, const RunOptions& options, const PaperPa
                                    {"position_max_m", g.position_max_m}, {"velocity_min_mps", g.velocity_min_mps},
                                    {"velocity_max_mps", g.velocity_max_mps}})
     out.inputs.emplace_back(key, fmt::format("{}", value));
+  if (!spec.prescribed) {
+    out.inputs.emplace_back("box_position_m", fmt::format("{}", g.box_position_m));
+    out.inputs.emplace_back("box_velocity_mps", fmt::format("{}", g.box_velocity_mps));
+  }
   out.inputs.emplace_back("resolution", std::to_string(g.resolution));
   out.inputs.emplace_back("cell_transient", std::to_string(g.transient));
   out.inputs.emplace_back("cell_impacts", std::to_string(g.kept));

@@ -38,10 +38,6 @@ RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const Pape
     throw InvalidParameter("rig", std::string(rig.name), "a rig on the impact-sequence driver with a prescribed box");
   check_rig_inputs(rig, options, inputs);
   RigSequence rs = rig.sequence(options, paper, inputs);
-  if (rs.sequence.spec.soft && !rs.sequence.spec.prescribed)
-    throw InvalidParameter("impact-model", "soft",
-                           "instantaneous on a box of its own (the damper's primary): its soft contacts' variational "
-                           "equations would carry the primary's state through the contact, not yet written");
   if (rs.sequence.spec.soft && !rs.sequence.spec.soft_tangent)
     throw InvalidParameter("damping", options.damping,
                            fmt::format("a law whose force declares its dependence on the impact speed, for a soft "

@@ -16,13 +16,11 @@ namespace hertzdash {
 
 namespace {
 
-using TangentSystem = ContactTangentSystem<HarmonicForcing>;
-
-/// Keeps the separation's state.
+/// Keeps whether the contact separated.
 struct SeparationObserver {
   bool separated = false;
-  void on_step(double, const TangentSystem::State&) {}
-  void on_event(int which, double, const TangentSystem::State&, EventAction) {
+  template <class State> void on_step(double, const State&) {}
+  template <class State> void on_event(int which, double, const State&, EventAction) {
     separated = separated || which == event_index(TangentContactEvent::separation);
   }
 };
@@ -39,7 +37,9 @@ std::string contact_tangent_laws() {
   return out;
 }
 
-ContactTangentRun make_contact_tangent(std::string_view law, const DropTestSetup& setup, const SolverSettings& solver) {
+template <class Env>
+ContactTangentRun<Env> make_contact_tangent(std::string_view law, const DropTestSetup& setup, const SolverSettings& solver) {
+  using TangentSystem = ContactTangentSystem<Env>;
   LawMaker make = nullptr;
   DropTestSetup calibrated = setup;
   with_damping_law(law, [&]<class Law>(std::type_identity<Law>) {
@@ -55,21 +55,34 @@ ContactTangentRun make_contact_tangent(std::string_view law, const DropTestSetup
   const double K = hertz_stiffness(calibrated), m = calibrated.mass_kg, e = calibrated.restitution;
   const DampingSettings damping = calibrated.damping;
   const DormandPrinceOptions options{.rtol = solver.rtol, .atol = solver.atol, .singular_points = false};
-  return [make, K, m, e, damping, options](const HarmonicForcing& env, double v0, double t_obs) {
+  return [make, K, m, e, damping, options](const Env& env, double v0, double t_obs) {
     const std::unique_ptr<ContactForceJets> force = make(ImpactConditions{K, env.reduced_mass_kg(m), v0, e}, damping);
     TangentSystem sys(*force, env, K, m, v0, t_obs);
-    TangentSystem::State y = sys.initial_state();
+    typename TangentSystem::State y = sys.initial_state();
     SeparationObserver observer;
     const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
     ContactTangent out;
     out.work = integrate_dormand_prince(sys, y, 0.0, tau_end, options, observer);
-    constexpr int D = TangentSystem::base_dimension;
+    // Rows t_c = t, v_sep = -v, the other body's z_k; column p from S_p (see the header).
+    constexpr int D = TangentSystem::base_dimension, P = TangentSystem::parameters, N = Env::onset_state_dimension;
     out.separated = observer.separated;
     out.contact_time_s = y[2];
     out.rebound_speed_mps = -y[1];
-    out.jacobian << y[D + 2], y[2 * D + 2], -y[D + 1], -y[2 * D + 1];
+    out.other_state = y.template segment<N>(3);
+    out.jacobian.resize(P, P);
+    for (int p = 0; p < P; ++p) {
+      const int S = (1 + p) * D;
+      out.jacobian(0, p) = y[S + 2];
+      out.jacobian(1, p) = -y[S + 1];
+      for (int k = 0; k < N; ++k) out.jacobian(2 + k, p) = y[S + 3 + k];
+    }
     return out;
   };
 }
+
+template ContactTangentRun<HarmonicForcing> make_contact_tangent<HarmonicForcing>(std::string_view, const DropTestSetup&,
+                                                                                  const SolverSettings&);
+template ContactTangentRun<SprungPrimary> make_contact_tangent<SprungPrimary>(std::string_view, const DropTestSetup&,
+                                                                              const SolverSettings&);
 
 }  // namespace hertzdash

@@ -16,8 +16,9 @@ void set_harmonic_soft_contacts(SequenceSetUp& out, std::string_view law, const 
   out.spec.soft = [contact, environment](Wall wall, double t, double v0, double, double, double t_obs) {
     return soft_impact(contact->run(environment(wall, t), v0, t_obs));
   };
-  if (ContactTangentRun tangent = make_contact_tangent(law, setup, solver))
-    out.spec.soft_tangent = [tangent = std::move(tangent), environment](Wall wall, double t, double v0, double t_obs) {
+  if (ContactTangentRun<HarmonicForcing> tangent = make_contact_tangent<HarmonicForcing>(law, setup, solver))
+    out.spec.soft_tangent = [tangent = std::move(tangent), environment](Wall wall, double t, double v0, double, double,
+                                                                        double t_obs) {
       return tangent(environment(wall, t), v0, t_obs);
     };
 }

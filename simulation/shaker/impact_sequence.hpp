@@ -112,10 +112,12 @@ template <class Env> SoftImpact soft_impact(const SoftContactOutcome<Env>& c) {
 using SoftImpactRun =
     std::function<SoftImpact(Wall wall, double t_onset_s, double v0_mps, double X_m, double V_mps, double t_obs_s)>;
 
-/// The soft contact with wall `wall` beginning at t_onset [s] at relative speed v0 > 0 [m/s] and
-/// its derivatives with respect to (t_onset, v0) (simulation/run/soft_contact_tangent.hpp), a
-/// prescribed box's: what simulation/orbits/ needs for a soft orbit's monodromy.
-using SoftTangentRun = std::function<ContactTangent(Wall wall, double t_onset_s, double v0_mps, double t_obs_s)>;
+/// The soft contact with wall `wall` beginning at t_onset [s] at relative speed v0 > 0 [m/s], a box
+/// of its own at X [m], V [m/s] (a prescribed box ignores them), and its derivatives with respect
+/// to (t_onset, v0) and a box of its own's (X, V) (simulation/run/soft_contact_tangent.hpp): what
+/// simulation/orbits/ needs for a soft orbit's monodromy.
+using SoftTangentRun =
+    std::function<ContactTangent(Wall wall, double t_onset_s, double v0_mps, double X_m, double V_mps, double t_obs_s)>;
 
 /// A rig's sequence (see above). The oscillators' w is the drive's.
 struct ImpactSequenceSpec {
@@ -131,8 +133,8 @@ struct ImpactSequenceSpec {
   std::optional<double> end_time_s{};  ///< set: the run also ends there [s] (> t0)
   double restitution = 1;   ///< instantaneous impacts' e
   SoftImpactRun soft{};    ///< set: soft impacts
-  /// Soft impacts on a prescribed box: the same contacts with their tangents, for
-  /// simulation/orbits/ (the driver does not read it); empty for a law without dF/dv0.
+  /// Soft impacts: the same contacts with their tangents, for simulation/orbits/ (the driver does
+  /// not read it); empty for a law without dF/dv0.
   SoftTangentRun soft_tangent{};
   /// Soft impacts: the speed at which the undamped Hertz deformation reaches the ball radius
   /// (HertzScale::speed_at_bound_mps of a valid set-up) [m/s]; impacts at or beyond it are counted

@@ -77,6 +77,11 @@ SequenceSetUp make_two_walls_sequence(const DropTestSetup& setup, std::string_vi
       s.X_m = c.environment[0], s.V_mps = c.environment[1];
       return s;
     };
+    if (ContactTangentRun<SprungPrimary> tangent = make_contact_tangent<SprungPrimary>(law, setup, solver))
+      spec.soft_tangent = [tangent = std::move(tangent), free, g, sigma](Wall wall, double t, double v0, double X, double V,
+                                                                          double t_obs) {
+        return tangent(SprungPrimary{free, g, sigma(wall), t, X, V}, v0, t_obs);
+      };
   } else if (options.impact_model == ShakerImpactModel::soft) {
     set_harmonic_soft_contacts(out, law, setup, solver, "hertzdash walls",
                                [drive = options.drive, g, sigma](Wall wall, double t) {

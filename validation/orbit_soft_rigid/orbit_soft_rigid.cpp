@@ -51,7 +51,7 @@ SolverSettings solver() { return gbs8_regularized_solver(1e-10); }
 /// hunt-crossley's restitution e* at e: a contact with nothing else acting (e* does not depend on
 /// the speed or the stiffness).
 double restitution_of_law(double e) {
-  const ContactTangent c = make_contact_tangent(law, stiffened_steel_pair(1, e), solver())(HarmonicForcing{}, 0.3, 1.0);
+  const ContactTangent c = make_contact_tangent<HarmonicForcing>(law, stiffened_steel_pair(1, e), solver())(HarmonicForcing{}, 0.3, 1.0);
   if (!c.separated) throw std::runtime_error("the free contact did not separate");
   return c.rebound_speed_mps / 0.3;
 }
