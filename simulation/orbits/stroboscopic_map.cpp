@@ -198,6 +198,10 @@ SectionImage StroboscopicMap::operator()(const Eigen::VectorXd& z) const {
   SectionImage image{.state = z, .monodromy = Eigen::MatrixXd::Identity(z.size(), z.size()), .impacts = {},
                      .min_impact_speed_mps = std::numeric_limits<double>::infinity(),
                      .min_flight_gap_m = std::numeric_limits<double>::infinity(), .failure = {}};
+  if (!z.allFinite()) {  // a Newton step through a singular matrix: refused before any contact sees it
+    image.failure = "a state that is not finite";
+    return image;
+  }
   if (!(smallest_gap_m(z) > 0)) {
     image.failure = fmt::format("the state (y = {:.9g} m, u = {:.9g} m/s) is not {}", z(0), z(1),
                                 spec_.walls.size() == 1 ? "above the wall" : "between the walls");

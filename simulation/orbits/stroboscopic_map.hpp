@@ -51,8 +51,8 @@
 //   dX_on = dX + V- dt_on,  dV_on = dV + A dt_on                          (P, 4 x 4),
 //   dz+ = (dX_sep, dV_sep + sigma dv_sep, dX_sep, dV_sep) - f+ dt_sep      (Q, 4 x 4),
 // the block again Q (J + E11) P: y_sep = X_sep + offset and u+ = V_sep + sigma v_sep.
-// Refused (as a failed image, not an exception: Newton steps back from it) are a state inside a
-// wall, a body carried by a wall (a sticking orbit: the map is not smooth there) and a chatter cap.
+// Refused (as a failed image, not an exception: Newton steps back from it) are a state that is not
+// finite, a state inside a wall, a body carried by a wall (a sticking orbit: the map is not smooth there) and a chatter cap.
 #include "hertzdash/simulation/shaker/impact_sequence.hpp"
 
 #include <Eigen/Core>
