@@ -15,6 +15,8 @@
 #include "hertzdash/simulation/paper/paper_parameters.hpp"
 #include "hertzdash/simulation/shaker/two_walls.hpp"
 #include "masri_caughey.hpp"
+#include "monodromy_differences.hpp"
+#include "stiffening_convergence.hpp"
 #include "validation/common/steel_rod_setups.hpp"
 
 #include <catch2/catch.hpp>
@@ -148,20 +150,8 @@ TEST_CASE("orbit damper: the monodromy against central differences, and det M al
   const StroboscopicMap map(spec, exact->section_phase, 3);
   const Eigen::Vector4d s = scales(spec);
   const Eigen::Vector4d z = exact->section + 0.01 * s;
-  const SectionImage image = map(z);
-  REQUIRE(image.failure.empty());
+  const SectionImage image = test::require_monodromy_matches_differences(map, z, s, 1e-6);
   REQUIRE(image.impacts.size() >= 4);
-  for (int j = 0; j < 4; ++j) {
-    Eigen::Vector4d dz = Eigen::Vector4d::Zero();
-    dz(j) = 1e-6 * s(j);
-    const SectionImage plus = map(z + dz), minus = map(z - dz);
-    REQUIRE(plus.impacts.size() == image.impacts.size());
-    REQUIRE(minus.impacts.size() == image.impacts.size());
-    for (int i = 0; i < 4; ++i) {
-      const double fd = (plus.state(i) - minus.state(i)) / (2 * dz(j)) * s(j) / s(i);
-      CHECK(std::abs(image.monodromy(i, j) * s(j) / s(i) - fd) < 1e-6 * (1 + std::abs(fd)));
-    }
-  }
   // k impacts in 3 periods: det M = e^(2k) exp(-3 C T/M) whatever the trajectory.
   const double k = static_cast<double>(image.impacts.size());
   const double det = std::pow(e, 2 * k) * std::exp(-3 * 2 * 0.02 * std::sqrt(15791.4) / 24);
@@ -290,34 +280,23 @@ TEST_CASE("soft orbit damper: the monodromy equals central differences of the ma
   REQUIRE(o.converged);
   REQUIRE(o.impacts.size() == 2);
   const StroboscopicMap map(spec, symmetric_orbit(22, 1, soft_setup(1).mass_kg, e)->section_phase, 1);
-  const Eigen::Vector4d s = scales(spec);
-  const SectionImage image = map(o.state);
-  REQUIRE(image.failure.empty());
+  test::require_monodromy_matches_differences(map, o.state, scales(spec), 1e-4);
   // A state that is not finite (the primary's velocity NaN, which no gap test sees; a Newton step
   // through a singular matrix) is a failed image, not an exception from a contact's scales.
   const Eigen::Vector4d nan_velocity(o.state(0), o.state(1), o.state(2), std::nan(""));
   CHECK_FALSE(map(nan_velocity).failure.empty());
-  for (int j = 0; j < 4; ++j) {
-    Eigen::Vector4d dz = Eigen::Vector4d::Zero();
-    dz(j) = 1e-6 * s(j);
-    const SectionImage plus = map(o.state + dz), minus = map(o.state - dz);
-    for (int i = 0; i < 4; ++i) {
-      const double fd = (plus.state(i) - minus.state(i)) / (2 * dz(j)) * s(j) / s(i);
-      CHECK(std::abs(image.monodromy(i, j) * s(j) / s(i) - fd) < 1e-4 * (1 + std::abs(fd)));
-    }
-  }
 }
 
 TEST_CASE("soft orbit damper: the multipliers converge to the instantaneous map's as the contact stiffens, order 1 in t_c/T",
           "[orbit][soft]") {
-  // As for the shaker (tests/test_orbit_soft.cpp): against the instantaneous damper with
+  // As for the shaker (tests/stiffening_convergence.hpp): against the instantaneous damper with
   // hunt-crossley's e* (a free two-body contact's, whatever the masses: chi v0 alone sets it), the
-  // soft orbit's multipliers err by O(t_c/T) (the primary's spring, dashpot and drive acting
-  // during the contact), so a tenfold stiffness divides the error by 10^0.4. The test asserts the
-  // observed order within 0.15 of 1 and the error below 3 t_c/T.
+  // soft orbit's multipliers err by O(t_c/T), the primary's spring, dashpot and drive acting
+  // during the contact.
   const ContactTangent free = make_contact_tangent<HarmonicForcing>("hunt-crossley", soft_setup(1), tight())(HarmonicForcing{}, 0.3, 1.0);
   REQUIRE(free.separated);
   const double e_star = free.rebound_speed_mps / 0.3;
+  std::printf("damper: e* = %.9f\n", e_star);
   const std::optional<DamperOrbit> exact = symmetric_orbit(22, 1, soft_setup(1).mass_kg, e_star);
   REQUIRE(exact);
   DropTestSetup rigid_setup = soft_setup(1);
@@ -325,23 +304,5 @@ TEST_CASE("soft orbit damper: the multipliers converge to the instantaneous map'
   const ImpactSequenceSpec rigid_spec = make_two_walls_sequence(rigid_setup, "hunt-crossley", tight(), damper(22)).spec;
   const PeriodicOrbit rigid = find_periodic_orbit(StroboscopicMap(rigid_spec, exact->section_phase, 1), exact->section,
                                                   scales(rigid_spec));
-  REQUIRE(rigid.converged);
-  std::printf("damper: e* = %.9f; instantaneous multipliers %.9f %+.9fi\n%8s %12s %12s %8s\n", e_star,
-              rigid.multipliers[0].real(), rigid.multipliers[0].imag(), "k", "t_c/T", "|dlambda|", "order");
-  double last_error = 0, last_tc = 0;
-  for (const double k : {1.0, 10.0, 100.0}) {
-    const PeriodicOrbit soft = soft_orbit(soft_damper_spec(k, 22), 22, e_star);
-    INFO(soft.failure);
-    REQUIRE(soft.converged);
-    REQUIRE(soft.impacts.size() == 2);
-    const double tc = soft.impacts[0].contact_time_s * 22;
-    // The largest pair, complex conjugate in both: compare the upper halves.
-    auto upper = [](const PeriodicOrbit& o) { return o.multipliers[0].imag() >= 0 ? o.multipliers[0] : o.multipliers[1]; };
-    const double error = std::abs(upper(soft) - upper(rigid));
-    const double order = last_error > 0 ? std::log(error / last_error) / std::log(tc / last_tc) : 0;
-    std::printf("%8g %12.4e %12.4e %8.3f\n", k, tc, error, order);
-    CHECK(error < 3 * tc);
-    if (last_error > 0) CHECK(order == Approx(1.0).margin(0.15));
-    last_error = error, last_tc = tc;
-  }
+  test::check_stiffening_convergence(rigid, 22, 2, [&](double k) { return soft_orbit(soft_damper_spec(k, 22), 22, e_star); });
 }

@@ -13,6 +13,8 @@
 #include "hertzdash/simulation/orbits/section_guess.hpp"
 #include "hertzdash/simulation/shaker/shaker.hpp"
 #include "validation/common/steel_rod_setups.hpp"
+#include "monodromy_differences.hpp"
+#include "stiffening_convergence.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -107,51 +109,21 @@ TEST_CASE("soft orbit: the shaker's soft monodromy equals central differences of
   REQUIRE(o.converged);
   const SectionGuess g = section_guess(spec, std::nullopt, std::nullopt);
   const StroboscopicMap map(spec, g.section_phase, 1);
-  const Eigen::Vector2d s = scales(), z = o.state;
-  const SectionImage image = map(z);
-  REQUIRE(image.failure.empty());
-  for (int j = 0; j < 2; ++j) {
-    Eigen::Vector2d dz = Eigen::Vector2d::Zero();
-    dz(j) = 1e-6 * s(j);
-    const SectionImage plus = map(z + dz), minus = map(z - dz);
-    for (int i = 0; i < 2; ++i) {
-      const double fd = (plus.state(i) - minus.state(i)) / (2 * dz(j)) * s(j) / s(i);
-      CHECK(std::abs(image.monodromy(i, j) * s(j) / s(i) - fd) < 1e-4 * (1 + std::abs(fd)));
-    }
-  }
+  test::require_monodromy_matches_differences(map, o.state, scales(), 1e-4);
 }
 
 TEST_CASE("soft orbit: the multipliers converge to the instantaneous map's as the contact stiffens, at order 1 in t_c/T",
           "[orbit][soft]") {
   // The soft period-1 orbit's multipliers against the instantaneous orbit's with hunt-crossley's
-  // e* (the rigid limit). The soft contact lasts t_c ~ K^{-2/5}, and everything it changes -- the
-  // table moving and accelerating during it, gravity acting on it -- is O(t_c/T), so the
-  // multipliers' error is first order in t_c/T: a tenfold stiffness divides it by 10^{0.4} =
-  // 2.51. The table prints k, t_c/T, |dlambda| and the observed order log(err ratio)/log(t_c
-  // ratio); the test asserts the order within 0.15 of 1 (the O((t_c/T)^2) rest moves it by
-  // t_c/T ~ 1e-3 here) and the error below 3 t_c/T.
+  // e* (the rigid limit), the table moving and accelerating and gravity acting during the contact
+  // (tests/stiffening_convergence.hpp).
   const double e_star = hunt_crossley_restitution(stiffened_steel_pair(1, e));
+  std::printf("shaker: e* = %.9f\n", e_star);
   DropTestSetup rigid_setup = stiffened_steel_pair(1, e);
   rigid_setup.restitution = e_star;
   const PeriodicOrbit rigid = orbit_of(make_shaker_sequence(rigid_setup, "hunt-crossley", tight(),
                                                             shaker(ShakerImpactModel::instantaneous)).spec);
-  REQUIRE(rigid.converged);
-  std::printf("e* = %.9f; instantaneous multipliers %.9f %+.9fi\n%8s %12s %12s %8s\n", e_star, rigid.multipliers[0].real(),
-              rigid.multipliers[0].imag(), "k", "t_c/T", "|dlambda|", "order");
-  double last_error = 0, last_tc = 0;
-  for (double k : {1.0, 10.0, 100.0}) {
-    const PeriodicOrbit soft = orbit_of(make_shaker_sequence(stiffened_steel_pair(k, e), "hunt-crossley", tight(),
-                                                             shaker(ShakerImpactModel::soft)).spec);
-    REQUIRE(soft.converged);
-    REQUIRE(soft.impacts.size() == 1);
-    const double tc = soft.impacts[0].contact_time_s * f_Hz;
-    // Both pairs complex conjugate: compare the upper halves.
-    auto upper = [](const PeriodicOrbit& o) { return o.multipliers[0].imag() >= 0 ? o.multipliers[0] : o.multipliers[1]; };
-    const double error = std::abs(upper(soft) - upper(rigid));
-    const double order = last_error > 0 ? std::log(error / last_error) / std::log(tc / last_tc) : 0;
-    std::printf("%8g %12.4e %12.4e %8.3f\n", k, tc, error, order);
-    CHECK(error < 3 * tc);
-    if (last_error > 0) CHECK(order == Approx(1.0).margin(0.15));
-    last_error = error, last_tc = tc;
-  }
+  test::check_stiffening_convergence(rigid, f_Hz, 1, [](double k) {
+    return orbit_of(make_shaker_sequence(stiffened_steel_pair(k, e), "hunt-crossley", tight(), shaker(ShakerImpactModel::soft)).spec);
+  });
 }
