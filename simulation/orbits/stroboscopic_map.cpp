@@ -189,7 +189,8 @@ StroboscopicMap::StroboscopicMap(ImpactSequenceSpec spec, double section_phase, 
   if (spec.soft && !spec.soft_tangent) throw std::invalid_argument("StroboscopicMap: soft impacts with their tangents");
   if (cycles < 1) throw std::invalid_argument("StroboscopicMap: cycles >= 1");
   const Eigen::VectorXd origin = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(section_coordinates(spec).size()));
-  spec_ = flow_spec(std::move(spec), t_s_, origin, t_s_ + cycles / spec.frequency_Hz);
+  const double t_end = t_s_ + cycles / spec.frequency_Hz;
+  spec_ = flow_spec(std::move(spec), t_s_, origin, t_end);
 }
 
 double StroboscopicMap::smallest_gap_m(const Eigen::VectorXd& z) const { return hertzdash::smallest_gap_m(spec_, t_s_, z); }
