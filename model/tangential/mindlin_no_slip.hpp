@@ -1,0 +1,16 @@
+#pragma once
+// Mindlin's no-slip tangential stiffness with a Coulomb limit: k_t = 8 G* a, a = sqrt(R* x) the
+// contact radius (Mindlin, J. Appl. Mech. 16 (1949) 259), the tangential spring of the DEM codes'
+// Hertz-Mindlin contact (LAMMPS `tangential mindlin`, LIGGGHTS `tangential_history`, YADE's
+// Ip2_FrictMat_FrictMat_MindlinPhys) and of Maw, Barber and Fawcett's elastic oblique impact.
+#include "hertzdash/model/tangential/tangential_model.hpp"
+
+namespace hertzdash {
+
+inline constexpr TangentialModelInfo mindlin_no_slip{
+    .name = "mindlin-no-slip",
+    .citation = "Mindlin, J. Appl. Mech. 16 (1949) 259; the DEM codes' Hertz-Mindlin",
+    .formula = "k_t = 8 G* sqrt(R* x), |T| <= mu F_n",
+    .stiffness_N_per_m = [](const TangentialPair& p, double x) { return 8 * p.shear_modulus_Pa * std::sqrt(p.radius_m * x); }};
+
+}  // namespace hertzdash

@@ -1,0 +1,33 @@
+#pragma once
+// What a tangential contact model declares (model/tangential/registry.hpp lists the registered
+// ones; model/oblique_contact.hpp runs them): its name and citation, the formula in words, and
+// its tangential stiffness k_t(x) [N/m] at the normal overlap x [m] for the pair. The force is
+// carried as a state T [N] (the spring's force, incremental: dT/dt = -k_t(x) s while the contact
+// sticks, s the contact point's slip velocity), bounded by the Coulomb cone |T| <= mu F_n
+// (model/oblique_contact.hpp): the DEM codes' spring with a Coulomb limit.
+#include <cmath>
+#include <string_view>
+
+namespace hertzdash {
+
+/// The pair's elastic constants a tangential model reads.
+struct TangentialPair {
+  double shear_modulus_Pa = 0;          ///< G* = (2 - nu1)/G1 + (2 - nu2)/G2 inverted [Pa] (Mindlin 1949)
+  double radius_m = 0;                  ///< R* [m], the normal contact's
+  double linear_stiffness_N_per_m = 0;  ///< k_t of a linear spring [N/m] (linear-spring only)
+};
+
+struct TangentialModelInfo {
+  std::string_view name, citation, formula;
+  /// k_t [N/m] at the overlap x >= 0 [m].
+  double (*stiffness_N_per_m)(const TangentialPair& pair, double overlap_m);
+};
+
+/// G* of Mindlin's tangential compliance: 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, G = E/(2 (1 + nu))
+/// [Pa]; a rigid body (E = +inf) contributes nothing.
+inline double tangential_shear_modulus_Pa(double E1_Pa, double nu1, double E2_Pa, double nu2) {
+  auto share = [](double E, double nu) { return std::isinf(E) ? 0.0 : (2 - nu) * 2 * (1 + nu) / E; };
+  return 1 / (share(E1_Pa, nu1) + share(E2_Pa, nu2));
+}
+
+}  // namespace hertzdash

@@ -1,0 +1,129 @@
+// One oblique impact (simulation/run/oblique_impact.hpp): the law chosen by name among the
+// registered ones, its force's jet type-erased (NormalForceJet), so that the oblique system and
+// Dormand-Prince are compiled once.
+#include "hertzdash/simulation/run/oblique_impact.hpp"
+
+#include "hertzdash/integrators/dormand_prince.hpp"
+#include "hertzdash/model/contact_system.hpp"
+#include "hertzdash/model/damping/registered_law_types.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+#include "hertzdash/model/oblique_contact.hpp"
+#include "hertzdash/model/parameter.hpp"
+#include "hertzdash/model/tangential/registry.hpp"
+#include "hertzdash/simulation/run/impact_simulator.hpp"  // with_calibrated_time_constant
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+namespace hertzdash {
+
+namespace {
+
+/// A law's force and its partials: exact for a law with force_of_root, else forward differences
+/// with relative steps 1e-6 (as the contact system's peak-force event).
+template <DampingLaw Law>
+class LawNormalForce final : public NormalForceJet {
+ public:
+  LawNormalForce(const ImpactConditions& c, const DampingSettings& s, double u_scale, double v_scale)
+      : law_(c, s), du_(1e-6 * u_scale), dv_(1e-6 * v_scale) {}
+  ForceJet at(double u, double xdot) const override {
+    if constexpr (RootPolynomialLaw<Law>) {
+      return law_.force_of_root(root_leaf(u), rate_leaf(xdot));
+    } else {
+      const double F = law_.force(u * u, xdot), du = std::max(1e-6 * u, du_);
+      return {F, {(law_.force((u + du) * (u + du), xdot) - F) / du, (law_.force(u * u, xdot + dv_) - F) / dv_}};
+    }
+  }
+
+ private:
+  Law law_;
+  double du_, dv_;
+};
+
+struct Observer {
+  bool separated = false;
+  double peak_force_N = 0;
+  const NormalForceJet* force = nullptr;
+  void on_step(double, const ObliqueContactSystem::State&) {}
+  void on_event(int which, double, const ObliqueContactSystem::State& y, EventAction) {
+    if (which == static_cast<int>(ObliqueContactEvent::separation)) separated = true;
+    if (which == static_cast<int>(ObliqueContactEvent::peak_normal_force))
+      peak_force_N = std::max(peak_force_N, force->at(std::max(y[0], 0.0), y[1]).value);
+  }
+};
+
+void validate(const ObliqueImpactSpec& s) {
+  if (!find_tangential_model(s.tangential_model)) {
+    std::string names;
+    for (const TangentialModelInfo* m : registered_tangential_models) names += (names.empty() ? "" : ", ") + std::string(m->name);
+    throw InvalidParameter("tangential-model", s.tangential_model, "one of " + names);
+  }
+  if (!(s.friction >= 0 && std::isfinite(s.friction))) throw InvalidParameter("friction", format_value(s.friction), ">= 0");
+  if (!(s.incidence_angle_deg >= 0 && s.incidence_angle_deg < 90))
+    throw InvalidParameter("incidence-angle", format_value(s.incidence_angle_deg), "in [0, 90) degrees from the normal");
+  if (!(s.speed_mps > 0 && std::isfinite(s.speed_mps)))
+    throw InvalidParameter("impact-velocity", format_value(s.speed_mps), "> 0");
+  if (!(s.inertia_factor > 0 && s.inertia_factor <= 1))
+    throw InvalidParameter("inertia-factor", format_value(s.inertia_factor), "in (0, 1] (I / (m R^2): 2/5 solid, 2/3 thin shell)");
+  if (!std::isfinite(s.spin_rad_per_s)) throw InvalidParameter("spin", format_value(s.spin_rad_per_s), "finite");
+  if (s.linear_stiffness_N_per_m && !(*s.linear_stiffness_N_per_m > 0 && std::isfinite(*s.linear_stiffness_N_per_m)))
+    throw InvalidParameter("tangential-stiffness", format_value(*s.linear_stiffness_N_per_m), "> 0");
+}
+
+}  // namespace
+
+ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
+  validate(spec);
+  const double theta = spec.incidence_angle_deg * std::numbers::pi / 180;
+  const double v0 = spec.speed_mps * std::cos(theta), w0 = spec.speed_mps * std::sin(theta);
+  DropTestSetup setup = spec.setup;
+  setup.impact_velocity_mps = v0;
+  const double m = setup.mass_kg, K = hertz_stiffness(setup), X = undamped_hertz_max_deformation_m(K, m, v0);
+  std::unique_ptr<NormalForceJet> force;
+  with_damping_law(spec.law, [&]<class Law>(std::type_identity<Law>) {
+    DropTestSetup calibrated = setup;
+    if constexpr (MaterialTimeConstantLaw<Law>)
+      if (!Law::material_constant(setup.damping)) calibrated = with_calibrated_time_constant<Law>(setup);
+    force = std::make_unique<LawNormalForce<Law>>(ImpactConditions{K, m, v0, setup.restitution}, calibrated.damping,
+                                                   std::sqrt(X), v0);
+  });
+  if (!force) throw InvalidParameter("damping", spec.law, "a registered damping law");
+
+  ObliqueImpactResult out;
+  TangentialContact c{.model = find_tangential_model(spec.tangential_model), .pair = {}, .friction = spec.friction,
+                      .inertia_factor = spec.inertia_factor, .radius_m = setup.ball_radius_m};
+  c.pair.shear_modulus_Pa = tangential_shear_modulus_Pa(setup.ball.E_Pa, setup.ball.nu, setup.rod.E_Pa, setup.rod.nu);
+  c.pair.radius_m = setup.ball_radius_m;
+  if (c.model->name == "linear-spring") {
+    c.pair.linear_stiffness_N_per_m =
+        spec.linear_stiffness_N_per_m.value_or(8 * c.pair.shear_modulus_Pa * std::sqrt(c.pair.radius_m * X));
+    out.linear_stiffness_N_per_m = c.pair.linear_stiffness_N_per_m;
+  }
+  // Followed for at most 100 undamped Hertz contact times: a contact that lasts longer has not
+  // separated (a law whose dashpot holds the sphere).
+  const double t_obs = 100 * undamped_hertz_contact_time_factor() * X / v0;
+  ObliqueContactSystem sys(*force, c, K, m, {v0, w0, spec.spin_rad_per_s}, t_obs);
+  ObliqueContactSystem::State y = sys.initial_state();
+  Observer observer{.separated = false, .peak_force_N = 0, .force = force.get()};
+  const DormandPrinceOptions options{.rtol = spec.solver.rtol, .atol = spec.solver.atol, .singular_points = false};
+  out.work = integrate_dormand_prince(sys, y, 0.0, regularised_tau_end(t_obs, sys.state_scale()), options, observer);
+  using I = ObliqueContactSystem::Index;
+  const double vn = -y[I::v], s = sys.slip_mps(y);
+  out.separated = observer.separated;
+  out.contact_time_s = y[I::t];
+  out.normal_restitution = vn / v0;
+  out.tangential_velocity_after_mps = y[I::w];
+  out.spin_after_rad_per_s = y[I::omega];
+  out.tangential_restitution = w0 != 0 ? y[I::w] / w0 : std::nan("");
+  out.rebound_angle_deg = std::atan(s / vn) * 180 / std::numbers::pi;
+  out.centre_rebound_angle_deg = std::atan(y[I::w] / vn) * 180 / std::numbers::pi;
+  out.sliding_fraction = y[I::t_slide] / y[I::t];
+  out.tangential_work_J = y[I::W];
+  out.peak_normal_force_N = observer.peak_force_N;
+  return out;
+}
+
+}  // namespace hertzdash

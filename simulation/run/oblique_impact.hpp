@@ -1,0 +1,50 @@
+#pragma once
+// One oblique impact of a sphere on a flat (model/oblique_contact.hpp): any registered damping law
+// normal to the surface, any registered tangential model (model/tangential/registry.hpp) along it,
+// friction and spin, integrated by adaptive Dormand-Prince 5(4) in the regularising variables at
+// the run's tolerances (the stick/slip switch rules out the extrapolation rows). The normal law is
+// calibrated at the normal speed v cos(theta), as a head-on impact at that speed (kuwabara-kono's
+// time constant the same way).
+#include "hertzdash/model/drop_test_setup.hpp"
+#include "hertzdash/ode/ode_system.hpp"
+#include "hertzdash/simulation/run/solver_settings.hpp"
+
+#include <optional>
+#include <string>
+
+namespace hertzdash {
+
+struct ObliqueImpactSpec {
+  DropTestSetup setup;  ///< validated: the sphere (mass, radius, material), the flat, e and the law's inputs
+  std::string law;      ///< a registered damping law
+  std::string tangential_model = "mindlin-no-slip";
+  double friction = 0;                 ///< Coulomb's mu >= 0
+  double incidence_angle_deg = 0;      ///< from the normal, in [0, 90)
+  double speed_mps = 0;                ///< the centre's speed at onset, > 0
+  double spin_rad_per_s = 0;           ///< omega0, the contact point sliding at w + R omega
+  double inertia_factor = 0.4;         ///< kappa = I/(m R^2), (0, 1]: 2/5 solid, 2/3 thin shell
+  std::optional<double> linear_stiffness_N_per_m;  ///< linear-spring's k_t (default: Mindlin's 8 G* a at the
+                                                   ///< undamped Hertz maximum overlap of the normal impact)
+  SolverSettings solver;
+};
+
+struct ObliqueImpactResult {
+  bool separated = false;
+  double contact_time_s = 0;
+  double normal_restitution = 0;          ///< normal rebound over approach speed
+  double tangential_velocity_after_mps = 0, spin_after_rad_per_s = 0;
+  double tangential_restitution = 0;      ///< w_after / w_before (NaN where w_before = 0)
+  double rebound_angle_deg = 0;           ///< atan(s_after / v_n,after): the contact point's velocity
+  double centre_rebound_angle_deg = 0;    ///< atan(w_after / v_n,after)
+  double sliding_fraction = 0;            ///< of the contact time on the Coulomb cone
+  double tangential_work_J = 0;           ///< int T s dt: the tangential force's work on the sphere
+  double peak_normal_force_N = 0;
+  double linear_stiffness_N_per_m = 0;    ///< the k_t a linear spring used (0 for other models)
+  IntegrationStats work;
+};
+
+/// Throws InvalidParameter naming `tangential-model`, `friction`, `incidence-angle`,
+/// `impact-velocity`, `inertia-factor`, `tangential-stiffness` or `damping` (an unknown law).
+ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec);
+
+}  // namespace hertzdash
