@@ -175,7 +175,7 @@ TEST_CASE("CLI restitution: an iterated --omega-n exits 2 naming the option and 
 TEST_CASE("CLI: an unknown or missing subcommand exits 2 and lists the subcommands", "[cli]") {
   // Issue 19: `hertzdash frobnicate` said "A subcommand is required".
   const std::string listed =
-      "simulate, models, parameters, restitution, bounce, shaker, walls, oscillator, spheres, orbit, continue, lyapunov, basins, fit, "
+      "simulate, models, parameters, restitution, bounce, shaker, walls, oscillator, spheres, oblique, orbit, continue, lyapunov, basins, fit, "
       "export, "
       "conformance, sweep "
       "(hertzdash --help)";

@@ -15,6 +15,27 @@ inline constexpr std::array<const TangentialModelInfo*, 2> registered_tangential
     &linear_spring,
 };
 
+/// The registered models' names, as a text input's choices ("a, b"); checked against the list
+/// at compile time.
+inline constexpr std::string_view tangential_model_choices = "mindlin-no-slip, linear-spring";
+
+namespace detail {
+consteval bool tangential_choices_match() {
+  std::string_view rest = tangential_model_choices;
+  for (std::size_t i = 0; i < registered_tangential_models.size(); ++i) {
+    const std::string_view name = registered_tangential_models[i]->name;
+    if (rest.substr(0, name.size()) != name) return false;
+    rest.remove_prefix(name.size());
+    if (i + 1 < registered_tangential_models.size()) {
+      if (rest.substr(0, 2) != ", ") return false;
+      rest.remove_prefix(2);
+    }
+  }
+  return rest.empty();
+}
+static_assert(tangential_choices_match(), "tangential_model_choices must list registered_tangential_models in order");
+}  // namespace detail
+
 /// The model named `name`, or nullptr.
 inline const TangentialModelInfo* find_tangential_model(std::string_view name) {
   for (const TangentialModelInfo* m : registered_tangential_models)

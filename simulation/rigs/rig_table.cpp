@@ -1,5 +1,6 @@
 // The registered rigs (simulation/rigs/rig.hpp), one line each, and what every rig shares: its
 // inputs' lookup and checks.
+#include "hertzdash/simulation/rigs/oblique_rig.hpp"
 #include "hertzdash/simulation/rigs/oscillator_rig.hpp"
 #include "hertzdash/simulation/rigs/rig.hpp"
 #include "hertzdash/simulation/rigs/shaker_rig.hpp"
@@ -19,6 +20,7 @@ std::span<const Rig> rigs() {
       walls_rig(),
       oscillator_rig(),
       spheres_rig(),
+      oblique_rig(),
   };
   return table;
 }

@@ -25,7 +25,7 @@ def cli_json(*args):
 
 
 def test_every_rig_is_a_function_and_a_command():
-    assert hertzdash.rigs() == ["shaker", "walls", "oscillator", "spheres"]
+    assert hertzdash.rigs() == ["shaker", "walls", "oscillator", "spheres", "oblique"]
     for rig in hertzdash.rigs():
         assert callable(getattr(hertzdash, rig))
         assert subprocess.run([BIN, rig, "--help"], capture_output=True).returncode == 0

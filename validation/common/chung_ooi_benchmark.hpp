@@ -29,6 +29,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -120,15 +121,15 @@ struct CurvePoint {
   double force_N;
 };
 
-/// A digitised curve of the benchmark: two columns separated by blanks, um or us against kN,
-/// returned in m or s against N. Numbers are decimal (io/decimal_number.hpp). Throws DataError
-/// naming FILE:LINE (and :COL for a field that is not a decimal number or is out of the range of
-/// a double) on a line that is not two numbers.
-inline std::vector<CurvePoint> read_digitised_curve(const std::filesystem::path& file) {
+/// A digitised curve's points in the units of its file: two columns separated by blanks. Numbers
+/// are decimal (io/decimal_number.hpp). Throws DataError naming FILE:LINE (and :COL for a field
+/// that is not a decimal number or is out of the range of a double) on a line that is not two
+/// numbers.
+inline std::vector<std::array<double, 2>> read_two_columns(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw DataError("cannot read " + file.string());
   constexpr const char* blanks = " \t\r";
-  std::vector<CurvePoint> points;
+  std::vector<std::array<double, 2>> points;
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {
     const std::string where = file.string() + ":" + std::to_string(n);
@@ -144,9 +145,17 @@ inline std::vector<CurvePoint> read_digitised_curve(const std::filesystem::path&
     if (values.empty()) continue;
     if (values.size() != 2)
       throw DataError(where + ": expected two numbers, got " + std::to_string(values.size()) + ": '" + line + "'");
-    points.push_back({values[0] * 1e-6, values[1] * 1e3});
+    points.push_back({values[0], values[1]});
   }
   if (points.empty()) throw DataError(file.string() + ": no points");
+  return points;
+}
+
+/// A digitised force curve of tests 1 and 2: um or us against kN, returned in m or s against N
+/// (read_two_columns).
+inline std::vector<CurvePoint> read_digitised_curve(const std::filesystem::path& file) {
+  std::vector<CurvePoint> points;
+  for (const auto& [a, F] : read_two_columns(file)) points.push_back({a * 1e-6, F * 1e3});
   return points;
 }
 
