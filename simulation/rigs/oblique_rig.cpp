@@ -69,11 +69,7 @@ struct Run {
 };
 
 void refuse(const RunOptions& o, const RigInputs& in) {
-  check_given_options(o);
-  if (!o.impact_velocity_mps)
-    throw InvalidParameter("impact-velocity", "none", "given: the sphere's speed [m/s] (`hertzdash oblique` has no drop)");
-  if (!o.mass_kg && !o.density_kg_per_m3)
-    throw InvalidParameter("mass", "none", "given, or `density`: the sphere's (no preset body is a sphere)");
+  require_free_sphere(o, "the sphere's speed [m/s] (`hertzdash oblique` has no drop)", "the sphere's");
   const std::string model = in.text("tangential-model").value_or(std::string(tangential_model.default_value));
   if (in.number("tangential-stiffness") && model != "linear-spring")
     throw InvalidParameter("tangential-stiffness", format_value(*in.number("tangential-stiffness")),

@@ -132,6 +132,12 @@ const Rig* find_rig(std::string_view name);
 /// A rig's declared input called `key`, or nullptr.
 const ParameterDecl* find_rig_input(const Rig& rig, std::string_view key);
 
+/// For a rig whose sphere meets its counterpart at `impact-velocity` in free space (no drop, no
+/// preset body): the options given checked, then the speed and the sphere's mass (or density)
+/// required, refused naming `impact-velocity` (`speed_is`: what it is here) or `mass`
+/// (`whose_mass`: "the first sphere's").
+void require_free_sphere(const RunOptions& options, std::string_view speed_is, std::string_view whose_mass);
+
 /// Checks `inputs` against `rig`'s declarations (a key it does not declare, a number outside its
 /// range, a text not among its choices), `options` against run_options_not_read, then the rig's
 /// own refusals (Rig::refuse). Reads no file and runs nothing: a case file checks it when read.

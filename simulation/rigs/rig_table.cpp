@@ -37,6 +37,13 @@ const ParameterDecl* find_rig_input(const Rig& rig, std::string_view key) {
   return nullptr;
 }
 
+void require_free_sphere(const RunOptions& o, std::string_view speed_is, std::string_view whose_mass) {
+  check_given_options(o);  // what is given first: a malformed number before a missing one
+  if (!o.impact_velocity_mps) throw InvalidParameter("impact-velocity", "none", fmt::format("given: {}", speed_is));
+  if (!o.mass_kg && !o.density_kg_per_m3)
+    throw InvalidParameter("mass", "none", fmt::format("given, or `density`: {} (no preset body is a sphere)", whose_mass));
+}
+
 std::string input_column(const ParameterDecl& d) {
   const std::string keyword = python_keyword(d.key);
   return d.column_unit.empty() ? keyword : keyword + "_" + std::string(d.column_unit);

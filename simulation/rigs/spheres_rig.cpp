@@ -66,11 +66,7 @@ struct Run {
 
 /// Inputs the spheres need that a drop test defaults: the speed, the first mass, e (where the law reads it).
 void refuse(const RunOptions& o, const RigInputs& in) {
-  check_given_options(o);  // what is given first: a malformed number before a missing one
-  if (!o.impact_velocity_mps)
-    throw InvalidParameter("impact-velocity", "none", "given: the spheres' approach speed [m/s] (`hertzdash spheres` has no drop)");
-  if (!o.mass_kg && !o.density_kg_per_m3)
-    throw InvalidParameter("mass", "none", "given, or `density`: the first sphere's (no preset body is a sphere)");
+  require_free_sphere(o, "the spheres' approach speed [m/s] (`hertzdash spheres` has no drop)", "the first sphere's");
   const std::vector<std::string>& reading_e = find_run_option("restitution")->readers.laws;
   if (!o.restitution && !material_constant_given(o) && std::ranges::find(reading_e, o.damping) != reading_e.end())
     throw InvalidParameter("restitution", "none",
