@@ -24,10 +24,14 @@
 // Fawcett 1976). dF_n/dt comes from the law's partials (a force jet): the rates are written in
 // tau, where dF_n/dtau = F_u v + F_v dv/dtau is finite at onset even for a dashpot in x^{1/2} x'.
 //
-// State along tau: (u, v, t, T, w, omega, W, t_slide): W = int T s dt [J], the tangential force's
-// work on the sphere (its tangential and spin energy change, an account of the integration), and
-// t_slide the time on the cone [s]. Events (decreasing through 0): separation u (stops), the
-// normal force's maximum dF_n/dtau (observes), the observation time t_obs - t (stops).
+// State along tau: (u, v, t, T, w, omega, W, t_slide, T*, sigma*, reversed): W = int T s dt [J],
+// the tangential force's work on the sphere (its tangential and spin energy change, an account of
+// the integration), t_slide the time on the cone [s], and for a model that remembers reversals
+// (Mindlin-Deresiewicz) T* the force where the slip last reversed, sigma* the slip's sign since then
+// and whether it has reversed (constant between events: the caller sets them at a reversal and
+// integrates on, reversal_state()). Events (decreasing through 0): separation u (stops), the normal
+// force's maximum dF_n/dtau (observes), the observation time t_obs - t (stops), a reversal of the
+// slip sigma* s (stops; a model without memory: off).
 // The right-hand side switches between sticking and sliding: integrate it with an error-controlled
 // one-step method (dopri5), which steps down across the switch, not an extrapolation method.
 #include "hertzdash/model/force_jet.hpp"
@@ -64,16 +68,16 @@ struct ObliqueOnset {
   double normal_speed_mps = 0, tangential_speed_mps = 0, spin_rad_per_s = 0;
 };
 
-enum class ObliqueContactEvent : int { separation, peak_normal_force, observation_time };
+enum class ObliqueContactEvent : int { separation, peak_normal_force, observation_time, slip_reversal };
 
 class ObliqueContactSystem {
  public:
-  static constexpr int dimension = 8;
-  static constexpr int event_count = 3;
+  static constexpr int dimension = 11;
+  static constexpr int event_count = 4;
   static constexpr bool smooth_at_events = false;  ///< the stick/slip switch is not an event
   using State = Eigen::Matrix<double, dimension, 1>;
   using Events = std::array<double, event_count>;
-  enum Index : int { u, v, t, T, w, omega, W, t_slide };
+  enum Index : int { u, v, t, T, w, omega, W, t_slide, T_turn, slip_sign, reversed };
 
   /// The contact of a sphere of mass m [kg] on stiffness K [N/m^{3/2}] (the undamped Hertz scales
   /// of v0 set the state's), followed for at most t_obs [s].
@@ -87,8 +91,9 @@ class ObliqueContactSystem {
     const double speed = std::max({v0, std::abs(onset.tangential_speed_mps),
                                    std::abs(onset.spin_rad_per_s * tangential.radius_m)});
     // T ~ mu F_n where the cone binds, ~ F_n's own scale where the spring does (mu > 1).
-    scale_ << std::sqrt(X), v0, t_H, std::clamp(tangential.friction, 1e-3, 1.0) * K * X * std::sqrt(X), speed,
-        speed / tangential.radius_m, 0.5 * mass_kg * speed * speed, t_H;
+    const double T_scale = std::clamp(tangential.friction, 1e-3, 1.0) * K * X * std::sqrt(X);
+    scale_ << std::sqrt(X), v0, t_H, T_scale, speed, speed / tangential.radius_m, 0.5 * mass_kg * speed * speed, t_H,
+        T_scale, 1, 1;
   }
 
   State initial_state() const {
@@ -96,7 +101,17 @@ class ObliqueContactSystem {
     y[v] = onset_.normal_speed_mps;
     y[w] = onset_.tangential_speed_mps;
     y[omega] = onset_.spin_rad_per_s;
+    y[slip_sign] = slip_mps(y) < 0 ? -1 : 1;
     return y;
+  }
+
+  /// The state after a reversal of the slip at y: T* = T there, the slip's sign flipped, reversed.
+  State reversal_state(const State& y) const {
+    State z = y;
+    z[T_turn] = y[T];
+    z[slip_sign] = -y[slip_sign];
+    z[reversed] = 1;
+    return z;
   }
   State state_scale() const { return scale_; }
 
@@ -115,7 +130,12 @@ class ObliqueContactSystem {
     const double dF = F.d[0] * y[v] + F.d[1] * dv;               // dF_n/dtau
     const double cone = cone_N(F.value), s = slip_mps(y);
     const double Tc = std::clamp(y[T], -cone, cone);
-    const double stick = -two_u * c_.model->stiffness_N_per_m(c_.pair, uu * uu) * s;  // dT/dtau inside the cone
+    const TangentialState state{.overlap_m = uu * uu, .force_N = Tc, .cone_N = cone, .turn_force_N = y[T_turn],
+                                .reversed = y[reversed] != 0};
+    // dT/dtau inside the cone: the spring, and a model's share of the cone's change (normal_coupling).
+    const double friction_sign = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
+    const double coupled = c_.model->normal_coupling ? c_.model->normal_coupling(state) * friction_sign * c_.friction * dF : 0.0;
+    const double stick = -two_u * c_.model->stiffness_N_per_m(c_.pair, state) * s + coupled;
     double dT = stick, sliding = 0;
     if (std::abs(y[T]) >= cone - cone_band * (cone + scale_[T])) {
       const double sigma = y[T] != 0 ? std::copysign(1.0, y[T]) : (s != 0 ? -std::copysign(1.0, s) : 0.0);
@@ -130,12 +150,14 @@ class ObliqueContactSystem {
     dy[omega] = two_u * c_.radius_m * Tc * inverse_I_;
     dy[W] = two_u * Tc * s;
     dy[t_slide] = two_u * sliding;
+    dy[T_turn] = dy[slip_sign] = dy[reversed] = 0;
   }
 
   void events(double, const State& y, Events& g) const {
     const double uu = std::max(y[u], 0.0);
     const ForceJet F = normal_->at(uu, y[v]);
-    g = {y[u], F.d[0] * y[v] + F.d[1] * (-2 * uu * F.value * inverse_m_), t_obs_s_ - y[t]};
+    g = {y[u], F.d[0] * y[v] + F.d[1] * (-2 * uu * F.value * inverse_m_), t_obs_s_ - y[t],
+         c_.model->remembers_reversals ? y[slip_sign] * slip_mps(y) : 1.0};
   }
 
   EventAction handle_event(int which, double, const State&) const {

@@ -195,3 +195,36 @@ TEST_CASE("oblique impact: Chung and Ooi's test 4 within the tolerances Kratos h
     CHECK(difference / reference < c.tolerance);
   }
 }
+
+TEST_CASE("Mindlin-Deresiewicz: under a constant normal force, Mindlin's loading curve and its Masing unloading", "[oblique]") {
+  // With N fixed (no coupling term) and theta^3 = 1 - T/(mu N), dT/ddelta = 8 G* a theta: with
+  // phi = 1 - T/(mu N), dphi/ddelta = -(8 G* a/(mu N)) phi^{1/3}, so phi^{2/3} = 1 - 16 G* a delta /
+  // (3 mu N) and T = mu N (1 - (1 - 16 G* a delta/(3 mu N))^{3/2}) (Mindlin 1949; Johnson, Contact
+  // Mechanics, eq. 7.42). Unloading from T* after a reversal, theta^3 = 1 - (T* - T)/(2 mu N): the
+  // same curve doubled, T = T* - 2 mu N (1 - (1 - 8 G* a delta'/(3 mu N))^{3/2}). The model's
+  // stiffness integrated by RK4 in delta with 1e4 steps (its phi^{1/3} is smooth up to 0.9 of the
+  // slip distance): 1e-9 of mu N.
+  const TangentialPair pair{.shear_modulus_Pa = 5e10, .radius_m = 1e-3, .linear_stiffness_N_per_m = 0};
+  const double x = 1e-6, N = 10, mu = 0.3, a = std::sqrt(pair.radius_m * x), cone = mu * N;
+  const double k0 = 8 * pair.shear_modulus_Pa * a, slip_distance = 3 * cone / (2 * k0);
+  auto integrate = [&](double T, double T_turn, bool reversed, double direction, double span) {
+    auto rate = [&](double force) {
+      const TangentialState s{.overlap_m = x, .force_N = force, .cone_N = cone, .turn_force_N = T_turn, .reversed = reversed};
+      return direction * mindlin_deresiewicz.stiffness_N_per_m(pair, s);
+    };
+    const int n = 10000;
+    const double h = span / n;
+    for (int i = 0; i < n; ++i) {
+      const double k1 = rate(T), k2 = rate(T + h / 2 * k1), k3 = rate(T + h / 2 * k2), k4 = rate(T + h * k3);
+      T += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    }
+    return T;
+  };
+  const double delta = 0.9 * slip_distance;
+  const double loaded = integrate(0, 0, false, 1, delta);
+  CHECK(std::abs(loaded - cone * (1 - std::pow(1 - 2 * k0 * delta / (3 * cone), 1.5))) < 1e-9 * cone);
+  const double back = 0.9 * 2 * slip_distance * (loaded / cone);  // within the doubled curve's reach
+  const double unloaded = integrate(loaded, loaded, true, -1, std::min(back, 1.8 * slip_distance));
+  const double d = std::min(back, 1.8 * slip_distance);
+  CHECK(std::abs(unloaded - (loaded - 2 * cone * (1 - std::pow(1 - k0 * d / (3 * cone), 1.5)))) < 1e-9 * cone);
+}

@@ -10,6 +10,6 @@ inline constexpr TangentialModelInfo linear_spring{
     .name = "linear-spring",
     .citation = "Cundall and Strack, Geotechnique 29 (1979) 47",
     .formula = "k_t constant, |T| <= mu F_n",
-    .stiffness_N_per_m = [](const TangentialPair& p, double) { return p.linear_stiffness_N_per_m; }};
+    .stiffness_N_per_m = [](const TangentialPair& p, const TangentialState&) { return p.linear_stiffness_N_per_m; }};
 
 }  // namespace hertzdash

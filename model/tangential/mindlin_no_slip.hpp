@@ -11,6 +11,8 @@ inline constexpr TangentialModelInfo mindlin_no_slip{
     .name = "mindlin-no-slip",
     .citation = "Mindlin, J. Appl. Mech. 16 (1949) 259; the DEM codes' Hertz-Mindlin",
     .formula = "k_t = 8 G* sqrt(R* x), |T| <= mu F_n",
-    .stiffness_N_per_m = [](const TangentialPair& p, double x) { return 8 * p.shear_modulus_Pa * std::sqrt(p.radius_m * x); }};
+    .stiffness_N_per_m = [](const TangentialPair& p, const TangentialState& s) {
+      return 8 * p.shear_modulus_Pa * std::sqrt(p.radius_m * s.overlap_m);
+    }};
 
 }  // namespace hertzdash

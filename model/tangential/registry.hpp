@@ -3,6 +3,7 @@
 // its TangentialModelInfo (model/tangential/tangential_model.hpp) plus its line below. The rig
 // `oblique` and every front end read this list.
 #include "hertzdash/model/tangential/linear_spring.hpp"
+#include "hertzdash/model/tangential/mindlin_deresiewicz.hpp"
 #include "hertzdash/model/tangential/mindlin_no_slip.hpp"
 
 #include <array>
@@ -10,14 +11,15 @@
 
 namespace hertzdash {
 
-inline constexpr std::array<const TangentialModelInfo*, 2> registered_tangential_models{
+inline constexpr std::array<const TangentialModelInfo*, 3> registered_tangential_models{
     &mindlin_no_slip,
+    &mindlin_deresiewicz,
     &linear_spring,
 };
 
 /// The registered models' names, as a text input's choices ("a, b"); checked against the list
 /// at compile time.
-inline constexpr std::string_view tangential_model_choices = "mindlin-no-slip, linear-spring";
+inline constexpr std::string_view tangential_model_choices = "mindlin-no-slip, mindlin-deresiewicz, linear-spring";
 
 namespace detail {
 consteval bool tangential_choices_match() {

@@ -17,10 +17,24 @@ struct TangentialPair {
   double linear_stiffness_N_per_m = 0;  ///< k_t of a linear spring [N/m] (linear-spring only)
 };
 
+/// What a model's stiffness may read at an instant of the contact.
+struct TangentialState {
+  double overlap_m = 0;      ///< x >= 0 [m]
+  double force_N = 0;        ///< the spring's force T [N]
+  double cone_N = 0;         ///< mu F_n [N]
+  double turn_force_N = 0;   ///< T where the slip last reversed [N] (a model with memory)
+  bool reversed = false;     ///< the slip has reversed since onset
+};
+
 struct TangentialModelInfo {
   std::string_view name, citation, formula;
-  /// k_t [N/m] at the overlap x >= 0 [m].
-  double (*stiffness_N_per_m)(const TangentialPair& pair, double overlap_m);
+  /// k_t [N/m] in the state `s`.
+  double (*stiffness_N_per_m)(const TangentialPair& pair, const TangentialState& s);
+  /// The model reads turn_force_N and reversed: the contact records each reversal of the slip.
+  bool remembers_reversals = false;
+  /// The share c in [0, 1] of the cone's change that the force follows beside the spring,
+  /// dT/dt = -k_t s + c sigma mu dF_n/dt (sigma: friction's direction, -sign s); null: 0.
+  double (*normal_coupling)(const TangentialState& s) = nullptr;
 };
 
 /// G* of Mindlin's tangential compliance: 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, G = E/(2 (1 + nu))

@@ -47,12 +47,13 @@ class LawNormalForce final : public NormalForceJet {
 };
 
 struct Observer {
-  bool separated = false;
+  bool separated = false, reversal = false;
   double peak_force_N = 0;
   const NormalForceJet* force = nullptr;
   void on_step(double, const ObliqueContactSystem::State&) {}
   void on_event(int which, double, const ObliqueContactSystem::State& y, EventAction) {
     if (which == static_cast<int>(ObliqueContactEvent::separation)) separated = true;
+    if (which == static_cast<int>(ObliqueContactEvent::slip_reversal)) reversal = true;
     if (which == static_cast<int>(ObliqueContactEvent::peak_normal_force))
       peak_force_N = std::max(peak_force_N, force->at(std::max(y[0], 0.0), y[1]).value);
   }
@@ -112,7 +113,17 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   ObliqueContactSystem::State y = sys.initial_state();
   Observer observer{.separated = false, .peak_force_N = 0, .force = force.get()};
   const DormandPrinceOptions options{.rtol = spec.solver.rtol, .atol = spec.solver.atol, .singular_points = false};
-  out.work = integrate_dormand_prince(sys, y, 0.0, regularised_tau_end(t_obs, sys.state_scale()), options, observer);
+  // A model with memory stops at each reversal of the slip; the contact goes on from there with T*
+  // recorded (ObliqueContactSystem::reversal_state).
+  const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
+  for (double tau = 0;;) {
+    observer.reversal = false;
+    const IntegrationStats piece = integrate_dormand_prince(sys, y, tau, tau_end, options, observer);
+    out.work.add_work(piece);
+    if (!observer.reversal) break;
+    y = sys.reversal_state(y);
+    tau = piece.t_final;
+  }
   using I = ObliqueContactSystem::Index;
   const double vn = -y[I::v], s = sys.slip_mps(y);
   out.separated = observer.separated;

@@ -1,0 +1,41 @@
+#pragma once
+// Mindlin and Deresiewicz's partial slip (J. Appl. Mech. 20 (1953) 327) in Thornton's incremental
+// form (J. Appl. Mech. 58 (1991) 1097; Di Renzo and Di Maio, Chem. Eng. Sci. 59 (2004) 525, model
+// "HMD"): the annulus of microslip grows with the tangential force and softens the contact, and
+// the slipped annulus carries mu times the normal force's change,
+//   dT = -8 G* a theta ds + sigma mu (1 - theta) dF_n,   sigma = -sign s,
+//   theta^3 = 1 - |T| / (mu F_n)               first loading,
+//   theta^3 = 1 - |T - T*| / (2 mu F_n)        after a reversal of the slip at T*,
+// so that under a constant normal force N the first loading is Mindlin's curve T = mu N (1 - (1 -
+// 16 G* a delta / (3 mu N))^{3/2}) and the unloading from T* Masing's doubled copy of it; at the cone
+// (theta = 0) T follows the cone, gross sliding. theta is the same for both terms, the one in the
+// normal force's change taken with the friction's direction in loading and unloading alike (a
+// simplification of Thornton's signs for unloading and reloading). As mu grows the coupling term
+// tends to T dF_n/(3 F_n), not to 0: this form is not Mindlin's no-slip spring in that limit
+// (mindlin-no-slip is).
+#include "hertzdash/model/tangential/tangential_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hertzdash {
+
+/// theta^3 of the state (see above); 1 without a cone.
+inline double mindlin_deresiewicz_theta3(const TangentialState& s) {
+  if (!(s.cone_N > 0)) return 1.0;
+  const double excess = s.reversed ? std::abs(s.force_N - s.turn_force_N) / (2 * s.cone_N) : std::abs(s.force_N) / s.cone_N;
+  return std::max(0.0, 1 - excess);
+}
+
+inline constexpr TangentialModelInfo mindlin_deresiewicz{
+    .name = "mindlin-deresiewicz",
+    .citation = "Mindlin and Deresiewicz, J. Appl. Mech. 20 (1953) 327; Thornton, J. Appl. Mech. 58 (1991) 1097",
+    .formula = "k_t = 8 G* a theta, theta^3 = 1 - |T|/(mu F_n), after a reversal 1 - |T - T*|/(2 mu F_n)",
+    .stiffness_N_per_m =
+        [](const TangentialPair& p, const TangentialState& s) {
+          return 8 * p.shear_modulus_Pa * std::sqrt(p.radius_m * s.overlap_m) * std::cbrt(mindlin_deresiewicz_theta3(s));
+        },
+    .remembers_reversals = true,
+    .normal_coupling = [](const TangentialState& s) { return 1 - std::cbrt(mindlin_deresiewicz_theta3(s)); }};
+
+}  // namespace hertzdash
