@@ -134,7 +134,8 @@ class ObliqueContactSystem {
                                 .reversed = y[reversed] != 0};
     // dT/dtau inside the cone: the spring, and a model's share of the cone's change (normal_coupling).
     const double friction_sign = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
-    const double coupled = c_.model->normal_coupling ? c_.model->normal_coupling(state) * friction_sign * c_.friction * dF : 0.0;
+    const double coupled =
+        c_.model->normal_coupling && dF > 0 ? c_.model->normal_coupling(state) * friction_sign * c_.friction * dF : 0.0;
     const double stick = -two_u * c_.model->stiffness_N_per_m(c_.pair, state) * s + coupled;
     double dT = stick, sliding = 0;
     if (std::abs(y[T]) >= cone - cone_band * (cone + scale_[T])) {

@@ -8,7 +8,7 @@
 #include "hertzdash/model/tangential/registry.hpp"
 #include "hertzdash/model/two_spheres.hpp"
 #include "hertzdash/simulation/run/oblique_impact.hpp"
-#include "validation/common/chung_ooi_benchmark.hpp"
+#include "validation/common/chung_ooi_test4.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -24,21 +24,10 @@ namespace {
 
 constexpr double pi = std::numbers::pi, R = 2.5e-3, E = 380e9, nu = 0.23, speed = 3.9;
 
+/// The test-4 alumina sphere (validation/common/chung_ooi_test4.hpp) under `law` with restitution e.
 ObliqueImpactSpec alumina(const std::string& law, double e, double mu, double angle_deg) {
-  ObliqueImpactSpec s;
-  s.setup.mass_kg = sphere_mass_kg(R, 4000);
-  s.setup.ball_radius_m = R;
-  s.setup.ball = {E, nu};
-  s.setup.rod = {std::numeric_limits<double>::infinity(), nu};
+  ObliqueImpactSpec s = chung_ooi_test4(law, "mindlin-no-slip", angle_deg, mu);
   s.setup.restitution = e;
-  s.setup.impact_velocity_mps = speed;
-  s.setup.gravity_mps2 = 0;
-  s.law = law;
-  s.friction = mu;
-  s.incidence_angle_deg = angle_deg;
-  s.speed_mps = speed;
-  s.solver.rtol = 1e-11;
-  s.solver.atol = 1e-13;
   return s;
 }
 
@@ -167,32 +156,14 @@ TEST_CASE("oblique impact: bad input is refused naming the parameter", "[oblique
 TEST_CASE("oblique impact: Chung and Ooi's test 4 within the tolerances Kratos holds its DEM to", "[oblique]") {
   // The alumina sphere at 3.9 m/s, e = 0.98 (tsuji-dem, the DEM codes' viscoelastic Hertz), mu =
   // 0.092, Mindlin's no-slip spring, at each digitised incident angle of the three reference
-  // curves (data/external/chung-ooi-2011/README.md). The error of a curve is the L1 relative error
+  // curves (validation/common/chung_ooi_test4.hpp). The error of a curve is the L1 relative error
   // sum |ours - reference| / sum |reference| (Kratos's Chung_Ooi_class), and Kratos's test asks
   // 1.6 % (tangential restitution), 2.2 % (angular velocity) and 2.5 % (rebound angle). The
   // digitisation alone errs by about 1 % of full scale.
-  const std::filesystem::path dir = chung_ooi_data_dir();
-  struct Curve {
-    const char* file;
-    double tolerance;
-    double (*value)(const ObliqueImpactResult&);
-  };
-  const Curve curves[] = {
-      {"test4_tangential_restitution.dat", 0.016, [](const ObliqueImpactResult& r) { return r.tangential_restitution; }},
-      {"test4_rebound_angular_velocity.dat", 0.022, [](const ObliqueImpactResult& r) { return r.spin_after_rad_per_s; }},
-      {"test4_rebound_angle.dat", 0.025, [](const ObliqueImpactResult& r) { return r.rebound_angle_deg; }},
-  };
-  for (const Curve& c : curves) {
-    double difference = 0, reference = 0;
-    for (const auto& [angle, value] : read_two_columns(dir / c.file)) {
-      const ObliqueImpactResult r = run_oblique_impact(alumina("tsuji-dem", 0.98, 0.092, angle));
-      REQUIRE(r.separated);
-      difference += std::abs(c.value(r) - value);
-      reference += std::abs(value);
-    }
-    std::printf("Chung and Ooi test 4, %s: L1 relative error %.4f (Kratos's tolerance %.3f)\n", c.file, difference / reference,
-                c.tolerance);
-    CHECK(difference / reference < c.tolerance);
+  for (const ChungOoiTest4Curve& c : chung_ooi_test4_curves) {
+    const double error = chung_ooi_test4_error(c, "tsuji-dem", "mindlin-no-slip");
+    std::printf("Chung and Ooi test 4, %s: L1 relative error %.4f (Kratos's tolerance %.3f)\n", c.file, error, c.kratos_tolerance);
+    CHECK(error < c.kratos_tolerance);
   }
 }
 

@@ -3,14 +3,17 @@
 // form (J. Appl. Mech. 58 (1991) 1097; Di Renzo and Di Maio, Chem. Eng. Sci. 59 (2004) 525, model
 // "HMD"): the annulus of microslip grows with the tangential force and softens the contact, and
 // the slipped annulus carries mu times the normal force's change,
-//   dT = -8 G* a theta ds + sigma mu (1 - theta) dF_n,   sigma = -sign s,
+//   dT = -8 G* a theta ds + sigma mu (1 - theta) dF_n,   sigma = -sign s   (first loading, dF_n > 0),
 //   theta^3 = 1 - |T| / (mu F_n)               first loading,
 //   theta^3 = 1 - |T - T*| / (2 mu F_n)        after a reversal of the slip at T*,
 // so that under a constant normal force N the first loading is Mindlin's curve T = mu N (1 - (1 -
 // 16 G* a delta / (3 mu N))^{3/2}) and the unloading from T* Masing's doubled copy of it; at the cone
-// (theta = 0) T follows the cone, gross sliding. theta is the same for both terms, the one in the
-// normal force's change taken with the friction's direction in loading and unloading alike (a
-// simplification of Thornton's signs for unloading and reloading). As mu grows the coupling term
+// (theta = 0) T follows the cone, gross sliding. The term in the normal force's change is kept
+// where Thornton's loading rule is unambiguous, a growing normal force before the slip first
+// reverses; elsewhere the spring and the cone alone (a simplification of Thornton's unloading and
+// reloading terms: taken along the friction's direction there as well, the term gave the sphere
+// tangential energy at 1 degree of incidence, and along the force's own direction the integration
+// ran out of steps). As mu grows the coupling term
 // tends to T dF_n/(3 F_n), not to 0: this form is not Mindlin's no-slip spring in that limit
 // (mindlin-no-slip is).
 #include "hertzdash/model/tangential/tangential_model.hpp"
@@ -36,6 +39,6 @@ inline constexpr TangentialModelInfo mindlin_deresiewicz{
           return 8 * p.shear_modulus_Pa * std::sqrt(p.radius_m * s.overlap_m) * std::cbrt(mindlin_deresiewicz_theta3(s));
         },
     .remembers_reversals = true,
-    .normal_coupling = [](const TangentialState& s) { return 1 - std::cbrt(mindlin_deresiewicz_theta3(s)); }};
+    .normal_coupling = [](const TangentialState& s) { return s.reversed ? 0.0 : 1 - std::cbrt(mindlin_deresiewicz_theta3(s)); }};
 
 }  // namespace hertzdash

@@ -32,8 +32,9 @@ struct TangentialModelInfo {
   double (*stiffness_N_per_m)(const TangentialPair& pair, const TangentialState& s);
   /// The model reads turn_force_N and reversed: the contact records each reversal of the slip.
   bool remembers_reversals = false;
-  /// The share c in [0, 1] of the cone's change that the force follows beside the spring,
-  /// dT/dt = -k_t s + c sigma mu dF_n/dt (sigma: friction's direction, -sign s); null: 0.
+  /// The share c in [0, 1] of the cone's growth that the force follows beside the spring,
+  /// dT/dt = -k_t s + c sigma mu dF_n/dt where dF_n/dt > 0 (sigma: friction's direction, -sign s);
+  /// null: 0.
   double (*normal_coupling)(const TangentialState& s) = nullptr;
 };
 

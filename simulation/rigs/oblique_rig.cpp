@@ -102,9 +102,16 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
 }
 
 RigResult outcome(const Run& r) {
+  std::vector<std::string> warnings;
+  // The tangential force can only take energy from the sphere's sliding and spin: positive work
+  // is the model creating it (an incremental spring stiffening while it unloads).
+  if (r.result.tangential_work_J > 0)
+    warnings.push_back(fmt::format("the tangential force did positive work on the sphere, {:.3g} J: the tangential model "
+                                   "created energy (docs/oblique.md: mindlin-deresiewicz under a varying normal force)",
+                                   r.result.tangential_work_J));
   return {.heading = fmt::format("a sphere at {} deg, damping law '{}', tangential model {}, mu = {}", r.spec.incidence_angle_deg,
                                  r.spec.law, r.spec.tangential_model, r.spec.friction),
-          .scalars = {}, .rows = {}, .warnings = {},
+          .scalars = {}, .rows = {}, .warnings = warnings,
           .end_reason = r.result.separated ? "the sphere separated" : "the sphere did not separate",
           .work = r.result.work, .inputs = r.inputs};
 }
