@@ -137,7 +137,7 @@ TEST_CASE("a trace in the measurements directory is overlaid on Fig. 5", "[pipel
 
 TEST_CASE("a study that cannot run says why and exits 1, never aborts", "[pipeline]") {
   // Every study program pointed at an empty data directory: those that read the paper's tables
-  // stop with exit status 1 and "<study>: error: <the missing file>" on stderr (an uncaught
+  // (or the external benchmark's curves) stop with exit status 1 and "<study>: error: <the missing file>" on stderr (an uncaught
   // exception used to abort with a core dump, status 134); one that reads none runs.
   const fs::path source = HERTZDASH_SOURCE_DIR;
   const fs::path build = fs::path(HERTZDASH_BIN).parent_path();
@@ -161,7 +161,8 @@ TEST_CASE("a study that cannot run says why and exits 1, never aborts", "[pipeli
       if (code == 1) {
         ++failed;
         CHECK(message.rfind(study + ": error: ", 0) == 0);
-        CHECK_THAT(message, Catch::Contains("table1_dimensions.csv") || Catch::Contains("parameters.csv"));
+        CHECK_THAT(message, Catch::Contains("table1_dimensions.csv") || Catch::Contains("parameters.csv") ||
+                                Catch::Contains("external/chung-ooi-2011/"));  // oblique_impacts reads the test-4 curves first
       }
     }
   CHECK(failed >= 10);
