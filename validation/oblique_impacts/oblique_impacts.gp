@@ -23,6 +23,7 @@ do for [format in 'pdf png'] {
   eval quad_panel(1)
   set ylabel 'e_t = w_1 / w_0'
   set yrange [0.4:1.1]
+  set ytics 0.2
   set label 1 '(a)' at graph 0.9, 0.12 font ',10'
   plot for [m in models] data using 'angle_deg':(pick(m, column('tangential_restitution'))) with lines lw 1.5 lc rgb tangential_lc(m) dt tangential_dt(m), \
        ref using 'angle_deg':(curve('tangential_restitution', column('value'))) with points pt 6 ps 0.6 lc rgb 'black'
