@@ -19,16 +19,17 @@
 //     where T = 0): the sphere slides,
 //     dT/dt = sigma mu dF_n/dt, while the spring pushes outwards faster than the cone grows,
 //     sigma (-k_t s) >= mu dF_n/dt; else it sticks again (the first case).
-// At onset F_n = 0 and T = 0: the contact starts on the cone, sliding wherever k_t |s| exceeds
+// At onset T = 0 and, but for a law whose dashpot acts at zero overlap (kelvin-voigt), F_n = 0: the
+// contact starts on the cone, sliding wherever k_t |s| exceeds
 // mu dF_n/dt there (for Mindlin's k_t and Hertz's F_n: |s|/v0 >= mu E*/(4 G*), Maw, Barber and
 // Fawcett 1976). dF_n/dt comes from the law's partials (a force jet): the rates are written in
 // tau, where dF_n/dtau = F_u v + F_v dv/dtau is finite at onset even for a dashpot in x^{1/2} x'.
 //
-// State along tau: (u, v, t, T, w, omega, W, t_slide, T*, sigma*, reversed): W = int T s dt [J],
+// State along tau: (u, v, t, T, w, omega, W, t_slide, T*, sigma*, reversed, mu F_n*): W = int T s dt [J],
 // the tangential force's work on the sphere (its tangential and spin energy change, an account of
 // the integration), t_slide the time on the cone [s], and for a model that remembers reversals
-// (Mindlin-Deresiewicz) T* the force where the slip last reversed, sigma* the slip's sign since then
-// and whether it has reversed (constant between events: the caller sets them at a reversal and
+// (Mindlin-Deresiewicz) T* the force where the slip last reversed and the cone there, sigma* the
+// slip's sign since then and whether it has reversed (constant between events: the caller sets them at a reversal and
 // integrates on, reversal_state()). Events (decreasing through 0): separation u (stops), the normal
 // force's maximum dF_n/dtau (observes), the observation time t_obs - t (stops), a reversal of the
 // slip sigma* s (stops; a model without memory: off).
@@ -72,12 +73,12 @@ enum class ObliqueContactEvent : int { separation, peak_normal_force, observatio
 
 class ObliqueContactSystem {
  public:
-  static constexpr int dimension = 11;
+  static constexpr int dimension = 12;
   static constexpr int event_count = 4;
   static constexpr bool smooth_at_events = false;  ///< the stick/slip switch is not an event
   using State = Eigen::Matrix<double, dimension, 1>;
   using Events = std::array<double, event_count>;
-  enum Index : int { u, v, t, T, w, omega, W, t_slide, T_turn, slip_sign, reversed };
+  enum Index : int { u, v, t, T, w, omega, W, t_slide, T_turn, slip_sign, reversed, cone_turn };
 
   /// The contact of a sphere of mass m [kg] on stiffness K [N/m^{3/2}] (the undamped Hertz scales
   /// of v0 set the state's), followed for at most t_obs [s].
@@ -93,7 +94,7 @@ class ObliqueContactSystem {
     // T ~ mu F_n where the cone binds, ~ F_n's own scale where the spring does (mu > 1).
     const double T_scale = std::clamp(tangential.friction, 1e-3, 1.0) * K * X * std::sqrt(X);
     scale_ << std::sqrt(X), v0, t_H, T_scale, speed, speed / tangential.radius_m, 0.5 * mass_kg * speed * speed, t_H,
-        T_scale, 1, 1;
+        T_scale, 1, 1, T_scale;
   }
 
   State initial_state() const {
@@ -105,10 +106,12 @@ class ObliqueContactSystem {
     return y;
   }
 
-  /// The state after a reversal of the slip at y: T* = T there, the slip's sign flipped, reversed.
+  /// The state after a reversal of the slip at y: T* = T and the cone there, the slip's sign
+  /// flipped, reversed.
   State reversal_state(const State& y) const {
     State z = y;
     z[T_turn] = y[T];
+    z[cone_turn] = cone_N(normal_->at(std::max(y[u], 0.0), y[v]).value);
     z[slip_sign] = -y[slip_sign];
     z[reversed] = 1;
     return z;
@@ -131,7 +134,7 @@ class ObliqueContactSystem {
     const double cone = cone_N(F.value), s = slip_mps(y);
     const double Tc = std::clamp(y[T], -cone, cone);
     const TangentialState state{.overlap_m = uu * uu, .force_N = Tc, .cone_N = cone, .turn_force_N = y[T_turn],
-                                .reversed = y[reversed] != 0};
+                                .turn_cone_N = y[cone_turn], .reversed = y[reversed] != 0};
     // dT/dtau inside the cone: the spring, and a model's share of the cone's change (normal_coupling).
     const double friction_sign = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
     const double coupled =
@@ -151,7 +154,7 @@ class ObliqueContactSystem {
     dy[omega] = two_u * c_.radius_m * Tc * inverse_I_;
     dy[W] = two_u * Tc * s;
     dy[t_slide] = two_u * sliding;
-    dy[T_turn] = dy[slip_sign] = dy[reversed] = 0;
+    dy[T_turn] = dy[slip_sign] = dy[reversed] = dy[cone_turn] = 0;
   }
 
   void events(double, const State& y, Events& g) const {

@@ -56,7 +56,7 @@ TEST_CASE("oblique impact: gross sliding gives the Coulomb impulse, mu times the
   //   w1 = w0 - mu (1 + e_n) v0,   omega1 = omega0 - mu (1 + e_n) v0 / (kappa R),
   // and the slip s = w + R omega falls by mu (1 + e_n) v0 (1 + 1/kappa); it stays positive, so the
   // sliding lasts, where tan(theta) > mu (1 + e_n) (1 + 1/kappa) (0.64 for mu = 0.092, e = 0.98;
-  // tan 80 deg = 5.67). Both tangential models, a damped normal law (hunt-crossley, e = 0.98): the
+  // tan 80 deg = 5.67). Every tangential model, a damped normal law (hunt-crossley, e = 0.98): the
   // identities hold to the integration's tolerance (rtol 1e-11), 1e-8 relative.
   for (const TangentialModelInfo* model : registered_tangential_models) {
     ObliqueImpactSpec s = alumina("hunt-crossley", 0.98, 0.092, 80);

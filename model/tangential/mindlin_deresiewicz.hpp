@@ -5,7 +5,8 @@
 // the slipped annulus carries mu times the normal force's change,
 //   dT = -8 G* a theta ds + sigma mu (1 - theta) dF_n,   sigma = -sign s   (first loading, dF_n > 0),
 //   theta^3 = 1 - |T| / (mu F_n)               first loading,
-//   theta^3 = 1 - |T - T*| / (2 mu F_n)        after a reversal of the slip at T*,
+//   theta^3 = 1 - |T - T*| / (2 mu F_n)        after a reversal of the slip at T*, with T* moving
+//                                              with the cone: T* (F_n / F_n*) (Thornton's rule),
 // so that under a constant normal force N the first loading is Mindlin's curve T = mu N (1 - (1 -
 // 16 G* a delta / (3 mu N))^{3/2}) and the unloading from T* Masing's doubled copy of it; at the cone
 // (theta = 0) T follows the cone, gross sliding. The term in the normal force's change is kept
@@ -13,9 +14,11 @@
 // reverses; elsewhere the spring and the cone alone (a simplification of Thornton's unloading and
 // reloading terms: taken along the friction's direction there as well, the term gave the sphere
 // tangential energy at 1 degree of incidence, and along the force's own direction the integration
-// ran out of steps). As mu grows the coupling term
-// tends to T dF_n/(3 F_n), not to 0: this form is not Mindlin's no-slip spring in that limit
-// (mindlin-no-slip is).
+// ran out of steps). Known defect: after a reversal of the slip the force can still end up
+// pushing the slip along and the sphere gain tangential energy (head-on, spin 100 rad/s, mu = 1:
+// docs/oblique.md); the rig warns of positive tangential work. As mu grows the coupling term
+// tends to T dF_n/(3 F_n), the secant spring's own change with the normal force, not to 0: this
+// form is not the incremental no-slip spring in that limit (mindlin-no-slip is).
 #include "hertzdash/model/tangential/tangential_model.hpp"
 
 #include <algorithm>
@@ -26,7 +29,10 @@ namespace hertzdash {
 /// theta^3 of the state (see above); 1 without a cone.
 inline double mindlin_deresiewicz_theta3(const TangentialState& s) {
   if (!(s.cone_N > 0)) return 1.0;
-  const double excess = s.reversed ? std::abs(s.force_N - s.turn_force_N) / (2 * s.cone_N) : std::abs(s.force_N) / s.cone_N;
+  // After a reversal the turning point scales with the cone (Thornton): held fixed while the cone
+  // shrank, theta reached 0 inside the cone and froze T at a value that could push the slip along.
+  const double turn = s.turn_cone_N > 0 ? s.turn_force_N * s.cone_N / s.turn_cone_N : s.turn_force_N;
+  const double excess = s.reversed ? std::abs(s.force_N - turn) / (2 * s.cone_N) : std::abs(s.force_N) / s.cone_N;
   return std::max(0.0, 1 - excess);
 }
 

@@ -1,8 +1,11 @@
 #pragma once
 // Mindlin's no-slip tangential stiffness with a Coulomb limit: k_t = 8 G* a, a = sqrt(R* x) the
 // contact radius (Mindlin, J. Appl. Mech. 16 (1949) 259), the tangential spring of the DEM codes'
-// Hertz-Mindlin contact (LAMMPS `tangential mindlin`, LIGGGHTS `tangential_history`, YADE's
-// Ip2_FrictMat_FrictMat_MindlinPhys) and of Maw, Barber and Fawcett's elastic oblique impact.
+// Hertz-Mindlin contact, here incremental (dT = -k_t ds) as YADE's Law2_ScGeom_MindlinPhys_Mindlin
+// and Kratos write it; LAMMPS's `tangential mindlin` and LIGGGHTS's keep the displacement instead.
+// Its onset criterion of sliding is Maw, Barber and Fawcett's (1976). An incremental spring whose
+// stiffness falls while it unloads (the overlap shrinking) returns more than it stored: at large mu
+// and small angles the sphere can leave with a little more tangential energy (the rig warns).
 #include "hertzdash/model/tangential/tangential_model.hpp"
 
 namespace hertzdash {

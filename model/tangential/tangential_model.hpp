@@ -23,6 +23,7 @@ struct TangentialState {
   double force_N = 0;        ///< the spring's force T [N]
   double cone_N = 0;         ///< mu F_n [N]
   double turn_force_N = 0;   ///< T where the slip last reversed [N] (a model with memory)
+  double turn_cone_N = 0;    ///< mu F_n there [N]
   bool reversed = false;     ///< the slip has reversed since onset
 };
 

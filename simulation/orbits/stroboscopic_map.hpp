@@ -34,7 +34,7 @@
 // speed v0 and ends t_c later at relative speed v_sep, and its variational equations give
 // J = d(t_c, v_sep)/d(t_on, v0) (simulation/run/soft_contact_tangent.hpp). The state's
 // perturbation before the contact, dz- at fixed time, moves the onset and the speed,
-//   dt_on = sigma dy / v0,   dv0 = (X''(t_on) - a-) dt_on - sigma du        (P = d(t_on, v0)/dz-),
+//   dt_on = sigma dy / v0,   dv0 = sigma (X''(t_on) - a-) dt_on - sigma du  (P = d(t_on, v0)/dz-),
 // and the separation (t_sep = t_on + t_c, y = X + offset, u+ = V + sigma v_sep) gives the
 // perturbation after it at fixed time,
 //   dz+ = (V dt_sep, X'' dt_sep + sigma dv_sep) - f+ dt_sep                 (Q = d dz+/d(t_sep, v_sep)),

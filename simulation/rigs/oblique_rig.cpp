@@ -97,6 +97,7 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
                                     {spin, s.spin_rad_per_s}, {inertia_factor, s.inertia_factor}})
     r.inputs.emplace_back(input_column(decl), fmt::format("{}", value));
   r.inputs.emplace_back(input_column(tangential_model), s.tangential_model);
+  if (s.linear_stiffness_N_per_m) r.inputs.emplace_back(input_column(tangential_stiffness), fmt::format("{}", *s.linear_stiffness_N_per_m));
   r.run.impacts.push_back({s.speed_mps, s.incidence_angle_deg});
   return r;
 }
@@ -104,11 +105,12 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
 RigResult outcome(const Run& r) {
   std::vector<std::string> warnings;
   // The tangential force can only take energy from the sphere's sliding and spin: positive work
-  // is the model creating it (an incremental spring stiffening while it unloads).
+  // is the model creating it (an incremental spring whose stiffness falls while it unloads returns
+  // more than it stored; docs/oblique.md).
   if (r.result.tangential_work_J > 0)
-    warnings.push_back(fmt::format("the tangential force did positive work on the sphere, {:.3g} J: the tangential model "
-                                   "created energy (docs/oblique.md: mindlin-deresiewicz under a varying normal force)",
-                                   r.result.tangential_work_J));
+    warnings.push_back(fmt::format("the tangential force did positive work on the sphere, {:.3g} J: the tangential model {} "
+                                   "created energy (docs/oblique.md)",
+                                   r.result.tangential_work_J, r.spec.tangential_model));
   return {.heading = fmt::format("a sphere at {} deg, damping law '{}', tangential model {}, mu = {}", r.spec.incidence_angle_deg,
                                  r.spec.law, r.spec.tangential_model, r.spec.friction),
           .scalars = {}, .rows = {}, .warnings = warnings,
@@ -138,6 +140,8 @@ constexpr RigFieldOf<Run> results[] = {
      [](const Run& r) -> V { return r.result.sliding_fraction; }},
     {{"tangential_work_J", "J", "the tangential force's work on the sphere, int T s dt"},
      [](const Run& r) -> V { return r.result.tangential_work_J; }},
+    {{"tangential_stiffness_N_per_m", "N/m", "the linear spring's k_t, given or matched (linear-spring; null otherwise)"},
+     [](const Run& r) -> V { return r.spec.tangential_model == "linear-spring" ? V(r.result.linear_stiffness_N_per_m) : V(); }},
 };
 
 constexpr RigColumnOf<ObliqueRow> table[] = {

@@ -50,12 +50,14 @@ struct Observer {
   bool separated = false, reversal = false;
   double peak_force_N = 0;
   const NormalForceJet* force = nullptr;
-  void on_step(double, const ObliqueContactSystem::State&) {}
+  // The largest force: at the located maxima (dF/dtau through 0), at every step, and at onset
+  // (where a dashpot's force peaks for a heavily damped kelvin-voigt: no maximum inside).
+  void note(const ObliqueContactSystem::State& y) { peak_force_N = std::max(peak_force_N, force->at(std::max(y[0], 0.0), y[1]).value); }
+  void on_step(double, const ObliqueContactSystem::State& y) { note(y); }
   void on_event(int which, double, const ObliqueContactSystem::State& y, EventAction) {
     if (which == static_cast<int>(ObliqueContactEvent::separation)) separated = true;
     if (which == static_cast<int>(ObliqueContactEvent::slip_reversal)) reversal = true;
-    if (which == static_cast<int>(ObliqueContactEvent::peak_normal_force))
-      peak_force_N = std::max(peak_force_N, force->at(std::max(y[0], 0.0), y[1]).value);
+    if (which == static_cast<int>(ObliqueContactEvent::peak_normal_force)) note(y);
   }
 };
 
@@ -112,6 +114,7 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   ObliqueContactSystem sys(*force, c, K, m, {v0, w0, spec.spin_rad_per_s}, t_obs);
   ObliqueContactSystem::State y = sys.initial_state();
   Observer observer{.separated = false, .peak_force_N = 0, .force = force.get()};
+  observer.note(y);
   const DormandPrinceOptions options{.rtol = spec.solver.rtol, .atol = spec.solver.atol, .singular_points = false};
   // A model with memory stops at each reversal of the slip; the contact goes on from there with T*
   // recorded (ObliqueContactSystem::reversal_state).
