@@ -118,11 +118,6 @@ class ObliqueContactSystem {
   }
   State state_scale() const { return scale_; }
 
-  /// The tangential force on the sphere [N]: the spring's, within the cone.
-  double tangential_force_N(const State& y) const {
-    const double cone = cone_N(normal_->at(std::max(y[u], 0.0), y[v]).value);
-    return std::clamp(y[T], -cone, cone);
-  }
   /// The contact point's slip velocity s = w + R omega [m/s].
   double slip_mps(const State& y) const { return y[w] + c_.radius_m * y[omega]; }
 

@@ -162,14 +162,11 @@ ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, const Eigen::
 }
 
 namespace {
-constexpr SectionCoordinate body_coordinates[] = {{"position_m", "the body's position y"},
-                                                  {"velocity_mps", "the body's velocity u"},
-                                                  {"box_position_m", "the box's (the primary's) position X"},
-                                                  {"box_velocity_mps", "the box's velocity V"}};
+constexpr std::string_view coordinates[] = {"position_m", "velocity_mps", "box_position_m", "box_velocity_mps"};
 }  // namespace
 
-std::span<const SectionCoordinate> section_coordinates(const ImpactSequenceSpec& spec) {
-  return std::span(body_coordinates).first(spec.prescribed ? 2 : 4);
+std::span<const std::string_view> section_coordinates(const ImpactSequenceSpec& spec) {
+  return std::span(coordinates).first(spec.prescribed ? 2 : 4);
 }
 
 Eigen::VectorXd section_state(const ImpactSequenceSpec& spec, const ImpactSequence& run) {

@@ -59,6 +59,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hertzdash {
@@ -70,14 +71,10 @@ ImpactSequenceSpec in_flight_from(ImpactSequenceSpec spec, double t0_s, double y
 /// impact kept (the map's runs, the guess's flow to the section).
 ImpactSequenceSpec flow_spec(ImpactSequenceSpec spec, double t0_s, const Eigen::VectorXd& z, double t_end_s);
 
-/// One coordinate of the section's state: its key in reports (unit suffixed) and what it is.
-struct SectionCoordinate {
-  const char* key;
-  const char* meaning;
-};
-/// The coordinates of the section of `spec`: the body's position and velocity, then, for a box
-/// of its own (the damper's primary), the box's.
-std::span<const SectionCoordinate> section_coordinates(const ImpactSequenceSpec& spec);
+/// The coordinates of the section of `spec`, as reports name them (unit suffixed): the body's
+/// position_m and velocity_mps, then, for a box of its own (the damper's primary), the box's
+/// box_position_m and box_velocity_mps.
+std::span<const std::string_view> section_coordinates(const ImpactSequenceSpec& spec);
 /// The section's state of a run's end: (y, u), and (X, V) for a box of its own.
 Eigen::VectorXd section_state(const ImpactSequenceSpec& spec, const ImpactSequence& run);
 /// The gap [m] of the section state z at time t [s] to the nearest wall of the box of `spec`

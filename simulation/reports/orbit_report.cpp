@@ -31,8 +31,8 @@ void add_multipliers(nlohmann::ordered_json& j, const std::vector<std::complex<d
 }
 
 /// The section state z into `j`, one key per coordinate (position_m, velocity_mps, ...).
-void add_state(nlohmann::ordered_json& j, std::span<const SectionCoordinate> coordinates, const Eigen::VectorXd& z) {
-  for (std::size_t k = 0; k < coordinates.size(); ++k) j[coordinates[k].key] = z(static_cast<Eigen::Index>(k));
+void add_state(nlohmann::ordered_json& j, std::span<const std::string_view> coordinates, const Eigen::VectorXd& z) {
+  for (std::size_t k = 0; k < coordinates.size(); ++k) j[std::string(coordinates[k])] = z(static_cast<Eigen::Index>(k));
 }
 
 /// `x` to 1e-8 of its scale: Newton leaves the state uncertain beyond that (its residual is below
@@ -98,7 +98,7 @@ std::string orbit_text(const Rig& rig, const OrbitResult& r) {
   std::string state;
   for (std::size_t k = 0; k < r.coordinates.size(); ++k) {
     const auto i = static_cast<Eigen::Index>(k);
-    state += fmt::format("{}{} {:.8g}", k ? ", " : "", r.coordinates[k].key, to_resolution(o.state(i), r.scale(i)));
+    state += fmt::format("{}{} {:.8g}", k ? ", " : "", r.coordinates[k], to_resolution(o.state(i), r.scale(i)));
   }
   line("section_state", state);
   std::string multipliers, moduli;
@@ -175,7 +175,7 @@ std::string continuation_text(const Rig& rig, const ContinuationResult& r) {
 
 CsvWriter continuation_csv(const Rig& rig, const ContinuationResult& r) {
   std::vector<std::string> columns{"branch", "period", r.column};
-  for (const SectionCoordinate& c : r.coordinates) columns.emplace_back(c.key);
+  for (const std::string_view c : r.coordinates) columns.emplace_back(c);
   for (std::size_t k = 1; k <= r.coordinates.size(); ++k)
     for (const char* part : {"re", "im"}) columns.push_back(fmt::format("multiplier_{}_{}", k, part));
   for (const char* c : {"stable", "impacts_per_period", "min_impact_speed_mps", "min_flight_gap_m"}) columns.emplace_back(c);

@@ -29,7 +29,7 @@ struct ContinuationRequest {
 ContinuationRequest continuation_request(const RigInputs& given);
 
 struct ContinuationResult {
-  std::span<const SectionCoordinate> coordinates;  ///< the section state's (section_coordinates)
+  std::span<const std::string_view> coordinates;  ///< the section state's (section_coordinates)
   std::string heading;     ///< the rig's
   Parameters inputs;       ///< the rig's run's at `from`, then the request's
   std::string parameter;   ///< the key continued in

@@ -59,7 +59,7 @@ RigSequence orbit_sequence(const Rig& rig, const RunOptions& options, const Pape
 
 /// The orbit found, or why not (orbit.converged false: the output stands, as a failed fit's).
 struct OrbitResult {
-  std::span<const SectionCoordinate> coordinates;  ///< the section state's (section_coordinates)
+  std::span<const std::string_view> coordinates;  ///< the section state's (section_coordinates)
   std::string heading;        ///< the rig's ("instantaneous impacts, e = 0.5")
   Parameters inputs;          ///< the rig's run's, then the request's
   std::string method;         ///< how the monodromy is computed (monodromy_method)
