@@ -1,7 +1,7 @@
-# Test 2's restitution map: gnuplot -d -c chung_ooi_restitution.gp OUT
+# Test 3's restitution map: gnuplot -d -c chung_ooi_restitution.gp OUT
 # -> OUT/chung_ooi_restitution.pdf, .png from OUT/chung_ooi_restitution.csv (validation/chung_ooi).
 # (a) the effective restitution of every registered law against its input e, Chung & Ooi's
-# test 2 (aluminium sphere on a rigid flat at 0.2 m/s, tension allowed); the dotted diagonal is
+# test 3 (alumina sphere on a rigid flat at 3.9 m/s, tension allowed); the dotted diagonal is
 # e_eff = e. (b) how far that map lies from the same law's map in the paper's steel contact
 # phase: e_eff depends on e alone, so only the solver's error remains. Colours as in
 # restitution_map (damping_laws/law_styles.gnuplot); the legend has a panel of its own.
@@ -22,7 +22,7 @@ do for [format in 'pdf png'] {
   set mxtics 5
   set xlabel 'input restitution e'
   eval two_panels_a
-  set title '(a) test 2'
+  set title '(a) test 3'
   set ylabel 'effective restitution e_{eff}'
   set yrange [0:1.03]
   set ytics 0.2
@@ -30,7 +30,7 @@ do for [format in 'pdf png'] {
        for [i=1:words(laws)] data using (pick(word(laws, i), column('e_input'))):'e_effective' with lines \
          lw law_lw(word(laws, i)) lc rgb law_lc(word(laws, i)) dt law_dt(word(laws, i))
   eval two_panels_b
-  set title '(b) test 2 vs steel'
+  set title '(b) test 3 vs steel'
   set ylabel 'difference in e_{eff}' offset 1, 0
   set logscale y
   set format y '10^{%L}'
