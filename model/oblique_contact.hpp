@@ -134,7 +134,9 @@ class ObliqueContactSystem {
     const double friction_sign = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
     const double coupled =
         c_.model->normal_coupling && dF > 0 ? c_.model->normal_coupling(state) * friction_sign * c_.friction * dF : 0.0;
-    const double stick = -two_u * c_.model->stiffness_N_per_m(c_.pair, state) * s + coupled;
+    // da/a = dx/(2x) = (v/u) dtau while the overlap falls.
+    const double rescaled = c_.model->rescales_with_contact_radius && y[v] < 0 && uu > 0 ? Tc * y[v] / uu : 0.0;
+    const double stick = -two_u * c_.model->stiffness_N_per_m(c_.pair, state) * s + coupled + rescaled;
     double dT = stick, sliding = 0;
     if (std::abs(y[T]) >= cone - cone_band * (cone + scale_[T])) {
       const double sigma = y[T] != 0 ? std::copysign(1.0, y[T]) : (s != 0 ? -std::copysign(1.0, s) : 0.0);

@@ -14,11 +14,12 @@
 // reverses; elsewhere the spring and the cone alone (a simplification of Thornton's unloading and
 // reloading terms: taken along the friction's direction there as well, the term gave the sphere
 // tangential energy at 1 degree of incidence, and along the force's own direction the integration
-// ran out of steps). Known defect: after a reversal of the slip the force can still end up
-// pushing the slip along and the sphere gain tangential energy (head-on, spin 100 rad/s, mu = 1:
-// docs/oblique.md); the rig warns of positive tangential work. As mu grows the coupling term
-// tends to T dF_n/(3 F_n), the secant spring's own change with the normal force, not to 0: this
-// form is not the incremental no-slip spring in that limit (mindlin-no-slip is).
+// ran out of steps). While the overlap falls, T shrinks with the contact radius a beside the
+// spring (dT += T da/a, as mindlin-rescale): without it the softened spring returned more than it
+// had stored after reversals of the slip (head-on, spin 100 rad/s, mu = 1: the sphere left
+// spinning at 124 rad/s; now at 91). As mu grows the coupling term tends to T dF_n/(3 F_n), the
+// secant spring's own change with the normal force, not to 0: this form is not the incremental
+// no-slip spring in that limit (mindlin-no-slip is).
 #include "hertzdash/model/tangential/tangential_model.hpp"
 
 #include <algorithm>
@@ -45,6 +46,7 @@ inline constexpr TangentialModelInfo mindlin_deresiewicz{
           return 8 * p.shear_modulus_Pa * std::sqrt(p.radius_m * s.overlap_m) * std::cbrt(mindlin_deresiewicz_theta3(s));
         },
     .remembers_reversals = true,
-    .normal_coupling = [](const TangentialState& s) { return s.reversed ? 0.0 : 1 - std::cbrt(mindlin_deresiewicz_theta3(s)); }};
+    .normal_coupling = [](const TangentialState& s) { return s.reversed ? 0.0 : 1 - std::cbrt(mindlin_deresiewicz_theta3(s)); },
+    .rescales_with_contact_radius = true};
 
 }  // namespace hertzdash

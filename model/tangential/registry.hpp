@@ -5,21 +5,23 @@
 #include "hertzdash/model/tangential/linear_spring.hpp"
 #include "hertzdash/model/tangential/mindlin_deresiewicz.hpp"
 #include "hertzdash/model/tangential/mindlin_no_slip.hpp"
+#include "hertzdash/model/tangential/mindlin_rescale.hpp"
 
 #include <array>
 #include <string_view>
 
 namespace hertzdash {
 
-inline constexpr std::array<const TangentialModelInfo*, 3> registered_tangential_models{
+inline constexpr std::array<const TangentialModelInfo*, 4> registered_tangential_models{
     &mindlin_no_slip,
+    &mindlin_rescale,
     &mindlin_deresiewicz,
     &linear_spring,
 };
 
 /// The registered models' names, as a text input's choices ("a, b"); checked against the list
 /// at compile time.
-inline constexpr std::string_view tangential_model_choices = "mindlin-no-slip, mindlin-deresiewicz, linear-spring";
+inline constexpr std::string_view tangential_model_choices = "mindlin-no-slip, mindlin-rescale, mindlin-deresiewicz, linear-spring";
 
 namespace detail {
 consteval bool tangential_choices_match() {

@@ -37,6 +37,10 @@ struct TangentialModelInfo {
   /// dT/dt = -k_t s + c sigma mu dF_n/dt where dF_n/dt > 0 (sigma: friction's direction, -sign s);
   /// null: 0.
   double (*normal_coupling)(const TangentialState& s) = nullptr;
+  /// While the overlap falls the force shrinks with the contact radius a = sqrt(R x) beside the
+  /// spring, dT/dt = -k_t s + T (da/dt)/a = -k_t s + T x'/(2 x) (the rescaling of LAMMPS's
+  /// `mindlin_rescale`): with k_t proportional to a the spring then returns at most what it stored.
+  bool rescales_with_contact_radius = false;
 };
 
 /// G* of Mindlin's tangential compliance: 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, G = E/(2 (1 + nu))

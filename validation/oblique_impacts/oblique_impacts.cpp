@@ -102,6 +102,7 @@ int main(int argc, char** argv) try {
     measured += std::abs(value);
   }
   macros.add("obliqueExperimentError", 100 * difference / measured, "{:.1f}");
+  macros.add("obliqueModelCount", static_cast<double>(registered_tangential_models.size()), "{:.0f}");
   macros.add("obliqueGrossSlidingAngle", gross_sliding_deg, "{:g}");
   // Gross sliding's closed form holds while the slip does not reverse: tan(theta) >= mu (1 + e)(1 + 1/kappa).
   {

@@ -8,7 +8,7 @@ out = ARG1
 here = system('dirname '.ARG0)
 data = out.'/oblique_impacts.csv'
 ref = out.'/oblique_impacts_reference.csv'
-models = 'mindlin-no-slip mindlin-deresiewicz linear-spring'
+models = 'mindlin-no-slip mindlin-rescale mindlin-deresiewicz linear-spring'
 pick(m, value) = strcol('model') eq m ? value : NaN
 curve(name, value) = strcol('curve') eq name ? value : NaN
 do for [format in 'pdf png'] {
