@@ -5,6 +5,7 @@
 // The sphere: Chung and Ooi's test-4 alumina (data/external/chung-ooi-2011/README.md), R = 2.5 mm,
 // E = 380 GPa, nu = 0.23, 4000 kg/m^3, on a rigid flat at 3.9 m/s; solid, kappa = 2/5.
 #include "hertzdash/model/hertz.hpp"
+#include "hertzdash/model/oblique_contact.hpp"
 #include "hertzdash/model/tangential/registry.hpp"
 #include "hertzdash/model/two_spheres.hpp"
 #include "hertzdash/simulation/run/oblique_impact.hpp"
@@ -12,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -151,6 +153,85 @@ TEST_CASE("oblique impact: bad input is refused naming the parameter", "[oblique
   refused([](ObliqueImpactSpec& s) { s.incidence_angle_deg = 90; }, "incidence-angle");
   refused([](ObliqueImpactSpec& s) { s.inertia_factor = 0; }, "inertia-factor");
   refused([](ObliqueImpactSpec& s) { s.speed_mps = std::nan(""); }, "impact-velocity");
+  refused([](ObliqueImpactSpec& s) { s.spin_rad_per_s = std::numeric_limits<double>::infinity(); }, "spin");
+  refused([](ObliqueImpactSpec& s) { s.linear_stiffness_N_per_m = -1e6; }, "tangential-stiffness");
+}
+
+namespace {
+
+/// Undamped Hertz, F = K u^3 with u = x^{1/2}: F_u = 3 K u^2, F_xdot = 0.
+class HertzForce final : public NormalForceJet {
+ public:
+  explicit HertzForce(double K) : K_(K) {}
+  ForceJet at(double u, double) const override { return {K_ * u * u * u, {3 * K_ * u * u, 0.0}}; }
+
+ private:
+  double K_;
+};
+
+}  // namespace
+
+TEST_CASE("oblique impact: Mindlin's spring slides at onset exactly above |s|/v0 = mu E*/(4 G*)", "[oblique]") {
+  // At onset T = 0 = mu F_n: the contact starts on the cone, and slides if the spring pushes
+  // outwards faster than the cone grows. In tau (dt = 2u dtau) with T = -sign(s) mu F_n:
+  //   spring: 2u k_t |s| = 2u 8 G* sqrt(R) u |s|,   cone: mu dF_n/dtau = mu 3 K u^2 v,
+  // with K = (4/3) E* sqrt(R): it slides iff 16 G* |s| >= 4 mu E* v, |s|/v >= mu E*/(4 G*), at every
+  // small u (Maw, Barber and Fawcett 1976). The system's own sliding rate dt_slide/dtau = 2u on
+  // the cone, 0 off it, checked 0.1 % either side of the threshold.
+  const double G = tangential_shear_modulus_Pa(E, nu, std::numeric_limits<double>::infinity(), nu);
+  const double E_star = E / (1 - nu * nu), K = 4.0 / 3.0 * E_star * std::sqrt(R), m = sphere_mass_kg(R, 4000), mu = 0.3;
+  const double threshold = mu * E_star / (4 * G), v0 = 1;
+  const HertzForce normal(K);
+  for (const double factor : {0.999, 1.001})
+    for (const double u : {1e-5, 1e-4}) {
+      const TangentialContact tangential{.model = &mindlin_no_slip,
+                                         .pair = {.shear_modulus_Pa = G, .radius_m = R, .linear_stiffness_N_per_m = 0},
+                                         .friction = mu,
+                                         .inertia_factor = 0.4,
+                                         .radius_m = R};
+      const ObliqueOnset onset{.normal_speed_mps = v0, .tangential_speed_mps = factor * threshold * v0, .spin_rad_per_s = 0};
+      const ObliqueContactSystem system(normal, tangential, K, m, onset, 1.0);
+      ObliqueContactSystem::State y = system.initial_state(), dy;
+      y[ObliqueContactSystem::u] = u;
+      y[ObliqueContactSystem::T] = -mu * K * u * u * u;  // on the cone, against the slip
+      system.rhs(0, y, dy);
+      CAPTURE(factor, u);
+      CHECK(dy[ObliqueContactSystem::t_slide] == (factor > 1 ? 2 * u : 0.0));
+    }
+}
+
+TEST_CASE("oblique impact: the rebound depends on tan(theta)/mu, nu and kappa alone (Maw, Barber and Fawcett)",
+          "[oblique]") {
+  // In the units of the normal impact (overlap X, time t_H, force m v_n/t_H) and with T over mu and
+  // s over mu v_n, the equations hold no parameter but the ratio k_t/(dF_n/dx) = 4 G*/E* (nu alone:
+  // 2 (1 - nu)/(2 - nu) on a rigid flat), kappa, the law's dimensionless form (e alone for
+  // tsuji-dem) and the start, s0/(mu v_n) = tan(theta)/mu. So two impacts with the same tan(theta)/mu
+  // give the same normalised slip s1/(mu v_n) and spin R omega1/(mu v_n), whatever R, m, E, v and
+  // mu are: here R x 2, m x 5, E x 3, v x 0.5, mu 0.1 -> 0.3, angle so that tan(theta)/mu is 1, 3
+  // or 8 (sticking, reversing and sliding), every model whose stiffness scales like Mindlin's. To
+  // the tolerance (rtol 1e-11): 1e-7.
+  for (const char* model : {"mindlin-no-slip", "mindlin-rescale", "mindlin-deresiewicz"})
+    for (const char* law : {"none", "tsuji-dem"})
+      for (const double psi : {1.0, 3.0, 8.0}) {
+        auto normalised = [&](double scale_R, double scale_m, double scale_E, double scale_v, double mu) {
+          ObliqueImpactSpec s = alumina(law, 0.9, mu, std::atan(psi * mu) * 180 / pi);
+          s.tangential_model = model;
+          s.setup.ball_radius_m *= scale_R;
+          s.setup.mass_kg *= scale_m;
+          s.setup.ball.E_Pa *= scale_E;
+          s.speed_mps *= scale_v;
+          s.setup.impact_velocity_mps = s.speed_mps;
+          const ObliqueImpactResult r = run_oblique_impact(s);
+          REQUIRE(r.separated);
+          const double vn = s.speed_mps * std::cos(s.incidence_angle_deg * pi / 180);
+          const double spin = s.setup.ball_radius_m * r.spin_after_rad_per_s;
+          return std::array<double, 3>{(r.tangential_velocity_after_mps + spin) / (mu * vn), spin / (mu * vn),
+                                       r.normal_restitution};
+        };
+        const auto a = normalised(1, 1, 1, 1, 0.1), b = normalised(2, 5, 3, 0.5, 0.3);
+        CAPTURE(model, law, psi, a[0], b[0], a[1], b[1]);
+        for (int i = 0; i < 3; ++i) CHECK(std::abs(a[i] - b[i]) < 1e-7 * std::max(1.0, std::abs(a[i])));
+      }
 }
 
 TEST_CASE("oblique impact: Chung and Ooi's test 4 within the tolerances Kratos holds its DEM to", "[oblique]") {
