@@ -1,0 +1,115 @@
+// Measured rebound angles as a kind of data for the fit engine (simulation/fit/oblique_fit.hpp):
+// its rows, starting values, residuals of the rebound angle against the incident angle and folds
+// (each row); the fit and its cross-validation are the engine's.
+#include "hertzdash/simulation/fit/oblique_fit.hpp"
+
+#include "hertzdash/io/csv_table.hpp"
+#include "hertzdash/model/invalid_parameter.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+
+namespace hertzdash {
+
+namespace {
+
+class ReboundAngleData final : public FitData {
+ public:
+  ReboundAngleData(ReboundAngleTable table, ObliqueImpactSpec base) : table_(std::move(table)), base_(std::move(base)) {
+    base_.solver = oblique_fit_solver();
+  }
+
+  std::size_t rows() const override { return table_.incidence_angle_deg.size(); }
+  FitPoint row(std::size_t i) const override {
+    return {std::nullopt, i, 0, table_.incidence_angle_deg[i], table_.rebound_angle_deg[i], 0, 0, 1.0};
+  }
+  std::vector<double> start(const std::vector<FitParameter>& parameters) override {
+    return std::vector<double>(parameters.size(), 0.1);
+  }
+  bool residuals(const std::vector<double>& law, const std::vector<double>&, double* r) override {
+    for (std::size_t i = 0; i < rows(); ++i) {
+      ObliqueImpactResult run;
+      try {
+        run = run_at(law, table_.incidence_angle_deg[i]);
+      } catch (const std::runtime_error& e) {
+        outside_ = e.what();
+        return false;
+      }
+      if (!run.separated) {
+        outside_ = fmt::format("the sphere did not separate at {:g} degrees", table_.incidence_angle_deg[i]);
+        return false;
+      }
+      r[i] = table_.rebound_angle_deg[i] - run.rebound_angle_deg;
+    }
+    return true;
+  }
+  bool sd_known() const override { return false; }
+  double least_variance() const override { return 1e-6 * 1e-6; }  // the runs' accuracy in degrees, and then some
+  std::string outside_domain() const override { return outside_; }
+  // A run takes 5 to 30 ms at the fit's tolerance, 1e4 units on average; a fit about 10
+  // iterations of 2 p + 2 evaluations of every row.
+  FitWork predicted_work(std::size_t p) const override {
+    return {1e4 * static_cast<double>(rows()) * 10.0 * (2.0 * static_cast<double>(p) + 2.0),
+            fmt::format("{}: {} rebound angles, {} parameter{}", table_.source, rows(), p, p == 1 ? "" : "s")};
+  }
+  std::string too_few(std::size_t n, std::size_t p) const override {
+    return fmt::format("{}: {} rebound angles cannot determine {} parameters", table_.source, n, p);
+  }
+  std::size_t folds() const override {
+    if (rows() < 2) throw DataError(table_.source + ": cross-validation leaves out each row in turn and needs two");
+    return rows();
+  }
+  std::string fold_name(std::size_t k) const override { return fmt::format("{:g} degrees", table_.incidence_angle_deg[k]); }
+  std::unique_ptr<FitData> part(std::size_t k, bool held, const std::vector<double>&) const override {
+    ReboundAngleTable t{table_.source, {}, {}};
+    for (std::size_t i = 0; i < rows(); ++i)
+      if ((i == k) == held) {
+        t.incidence_angle_deg.push_back(table_.incidence_angle_deg[i]);
+        t.rebound_angle_deg.push_back(table_.rebound_angle_deg[i]);
+      }
+    return std::make_unique<ReboundAngleData>(std::move(t), base_);
+  }
+  void finish(FitResult& fit, const std::vector<double>&, const std::vector<double>&) override {
+    fit.model_runs = runs_;
+    fit.integrator_used = "dormand-prince";
+    fit.model_solver = base_.solver;
+  }
+
+ private:
+  ObliqueImpactResult run_at(const std::vector<double>& law, double angle_deg) {
+    ObliqueImpactSpec s = base_;
+    s.incidence_angle_deg = angle_deg;
+    s.friction = law[0];
+    ++runs_;
+    return run_oblique_impact(s);
+  }
+
+  ReboundAngleTable table_;
+  ObliqueImpactSpec base_;
+  int runs_ = 0;
+  std::string outside_;
+};
+
+}  // namespace
+
+SolverSettings oblique_fit_solver() {
+  SolverSettings s;
+  s.rtol = 1e-10;
+  s.atol = 1e-12;
+  return s;
+}
+
+FitResult fit_rebound_angles(const ReboundAngleTable& table, const ObliqueImpactSpec& base, const FitSettings& given) {
+  if (table.incidence_angle_deg.size() != table.rebound_angle_deg.size())
+    throw DataError(table.source + ": as many rebound angles as incident angles are needed");
+  FitSettings settings = given;
+  if (settings.parameters.empty()) settings.parameters = {{"friction", 1e-3, 2.0}};
+  for (const FitParameter& p : settings.parameters)
+    if (p.option != "friction") throw InvalidParameter("fit", p.option, "friction, the one parameter fitted to rebound angles");
+  ReboundAngleData data(table, base);
+  return fit(data, base.tangential_model, settings);
+}
+
+}  // namespace hertzdash
