@@ -284,3 +284,81 @@ TEST_CASE("Mindlin-Deresiewicz: under a constant normal force, Mindlin's loading
   const double d = std::min(back, 1.8 * slip_distance);
   CHECK(std::abs(unloaded - (loaded - 2 * cone * (1 - std::pow(1 - k0 * d / (3 * cone), 1.5)))) < 1e-9 * cone);
 }
+
+TEST_CASE("oblique impact of two spheres: a second sphere of huge mass and stiffness is the rigid flat", "[oblique]") {
+  // Two spheres reduce to one of mass m*, radius R* and inertia factor kappa* (oblique_impact.cpp):
+  // with m2 -> inf, R2 -> inf and E2 -> inf, m* -> m1, R* -> R1, kappa* -> kappa1 and E* -> the
+  // flat's. m2 = 1e12 m1, R2 = 1e6 R1, E2 = 1e30 Pa: the differences are ~1e-12 relative, below the
+  // tolerance (rtol 1e-11): 1e-7. Sticking, reversing and sliding contacts, each model.
+  for (const TangentialModelInfo* model : registered_tangential_models)
+    for (const double angle : {5.0, 20.0, 60.0}) {
+      ObliqueImpactSpec flat = alumina("tsuji-dem", 0.98, 0.092, angle);
+      flat.tangential_model = std::string(model->name);
+      flat.spin_rad_per_s = 30;
+      ObliqueImpactSpec pair = flat;
+      pair.second = SecondSphere{.radius_m = 1e6 * R, .mass_kg = 1e12 * flat.setup.mass_kg, .material = {1e30, nu},
+                                 .inertia_factor = 0.4, .spin_rad_per_s = 0};
+      const ObliqueImpactResult a = run_oblique_impact(flat), b = run_oblique_impact(pair);
+      CAPTURE(model->name, angle);
+      CHECK(b.tangential_velocity_after_mps == Approx(a.tangential_velocity_after_mps).epsilon(1e-7));
+      CHECK(b.spin_after_rad_per_s == Approx(a.spin_after_rad_per_s).epsilon(1e-7));
+      CHECK(b.rebound_angle_deg == Approx(a.rebound_angle_deg).epsilon(1e-7).margin(1e-7));
+      CHECK(b.normal_restitution == Approx(a.normal_restitution).epsilon(1e-7));
+      CHECK(std::abs(b.second_tangential_velocity_after_mps) < 1e-9);
+      CHECK(std::isnan(a.second_tangential_velocity_after_mps));
+    }
+}
+
+TEST_CASE("oblique impact of two spheres: gross sliding splits the Coulomb impulse by mass and inertia", "[oblique]") {
+  // Sliding throughout, the tangential impulse on the first sphere is J = -mu P_n, P_n = m* v0 (1 + e_n)
+  // the normal impulse, and -J on the second (m1 w1' = T, m2 w2' = -T, I_i omega_i' = R_i T with the
+  // spins counted so that both add to the slip s = w1 - w2 + R1 omega1 + R2 omega2):
+  //   w1 = w0 + J/m1,  w2 = -J/m2,  omega1 = J/(kappa1 m1 R1),  omega2 = J/(kappa2 m2 R2).
+  // Momentum: m1 w1 + m2 w2 = m1 w0. A glass sphere (R 5 mm) on an alumina one twice its radius,
+  // a thin shell (kappa 2/3) on a solid one, at 80 degrees with mu = 0.1, hunt-crossley at e = 0.9
+  // (no tension, no x^{1/2} dashpot: the cone binds from onset). To the tolerance: 1e-8.
+  ObliqueImpactSpec s = alumina("hunt-crossley", 0.9, 0.1, 80);
+  s.setup.ball_radius_m = 5e-3;
+  s.setup.mass_kg = sphere_mass_kg(5e-3, 2500);
+  s.setup.ball = {63e9, 0.22};
+  s.inertia_factor = 2.0 / 3.0;
+  s.second = SecondSphere{.radius_m = 1e-2, .mass_kg = sphere_mass_kg(1e-2, 4000), .material = {380e9, 0.23},
+                          .inertia_factor = 0.4, .spin_rad_per_s = 0};
+  const ObliqueImpactResult r = run_oblique_impact(s);
+  REQUIRE(r.separated);
+  CHECK(r.sliding_fraction == Approx(1).margin(1e-9));
+  const double m1 = s.setup.mass_kg, m2 = s.second->mass_kg, m_star = m1 * m2 / (m1 + m2);
+  const double theta = 80 * pi / 180, v0 = speed * std::cos(theta), w0 = speed * std::sin(theta);
+  const double J = -0.1 * m_star * v0 * (1 + r.normal_restitution);
+  CHECK(r.tangential_velocity_after_mps == Approx(w0 + J / m1).epsilon(1e-8));
+  CHECK(r.second_tangential_velocity_after_mps == Approx(-J / m2).epsilon(1e-8));
+  CHECK(r.spin_after_rad_per_s == Approx(J / (2.0 / 3.0 * m1 * 5e-3)).epsilon(1e-8));
+  CHECK(r.second_spin_after_rad_per_s == Approx(J / (0.4 * m2 * 1e-2)).epsilon(1e-8));
+  CHECK(m1 * r.tangential_velocity_after_mps + m2 * r.second_tangential_velocity_after_mps == Approx(m1 * w0).epsilon(1e-12));
+}
+
+TEST_CASE("oblique impact of two spheres: Chung and Ooi's test 7, counter-spinning spheres without slip keep their spins",
+          "[oblique]") {
+  // Test 7: two identical spheres (R = 0.1 m, mu = 0.4) meet head-on at +-0.2 m/s spinning so
+  // that their surfaces move together at the contact point, omega2 = -omega1 in the convention
+  // here (s = R omega1 + R omega2 = 0). No slip, so no tangential force: each spin leaves as it
+  // came, exactly (Chung and Ooi's reference curve is that identity), for every model.
+  for (const TangentialModelInfo* model : registered_tangential_models)
+    for (const double omega : {0.1, 1.0, 10.0}) {
+      ObliqueImpactSpec s = alumina("tsuji-dem", 0.5, 0.4, 0);
+      s.tangential_model = std::string(model->name);
+      s.setup.ball_radius_m = 0.1;
+      s.setup.mass_kg = sphere_mass_kg(0.1, 2699);
+      s.setup.ball = {70e9, 0.33};
+      s.speed_mps = 0.4;
+      s.spin_rad_per_s = omega;
+      s.second = SecondSphere{.radius_m = 0.1, .mass_kg = s.setup.mass_kg, .material = s.setup.ball,
+                              .inertia_factor = 0.4, .spin_rad_per_s = -omega};
+      const ObliqueImpactResult r = run_oblique_impact(s);
+      CAPTURE(model->name, omega);
+      REQUIRE(r.separated);
+      CHECK(r.spin_after_rad_per_s == omega);
+      CHECK(r.second_spin_after_rad_per_s == -omega);
+      CHECK(r.tangential_work_J == 0);
+    }
+}

@@ -2,6 +2,7 @@
 #include "hertzdash/simulation/rigs/oblique_rig.hpp"
 
 #include "hertzdash/model/tangential/registry.hpp"
+#include "hertzdash/simulation/rigs/second_sphere_inputs.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
 #include "hertzdash/simulation/run/oblique_impact.hpp"
 
@@ -37,7 +38,20 @@ constexpr ParameterDecl tangential_stiffness{.key = "tangential-stiffness", .uni
     .range = R::positive(), .default_value = "matched",
     .default_source = "Mindlin's 8 G* a at the normal impact's undamped Hertz maximum overlap",
     .help = "Stiffness k_t [N/m] of the linear tangential spring (--tangential-model linear-spring)"};
-constexpr ParameterDecl inputs[] = {incidence_angle, friction, tangential_model, spin, inertia_factor, tangential_stiffness};
+constexpr ParameterDecl second_spin{.key = "second-spin", .unit = "rad/s", .column_unit = "rad_per_s",
+    .range = R::open(-infinity, infinity), .default_value = "0", .default_number = 0, .default_source = "no spin",
+    .help = "The second sphere's angular velocity at onset [rad/s] (with `second-radius`), counted so that the contact "
+            "point slides at w1 - w2 + R1 omega1 + R2 omega2"};
+constexpr ParameterDecl second_inertia_factor{.key = "second-inertia-factor", .range = R::open_closed(0, 1),
+    .default_value = "0.4", .default_number = 0.4, .default_source = "a solid sphere, 2/5",
+    .help = "The second sphere's moment of inertia over m R^2 (with `second-radius`)"};
+namespace sphere2 = second_sphere_inputs;
+constexpr ParameterDecl inputs[] = {incidence_angle, friction,    tangential_model,     spin,          inertia_factor,
+                                    tangential_stiffness, sphere2::radius, sphere2::E, sphere2::nu, sphere2::mass,
+                                    sphere2::density, second_spin, second_inertia_factor};
+/// Given only with a second sphere (`second-radius`).
+constexpr const ParameterDecl* second_sphere_only[] = {&sphere2::E, &sphere2::nu, &sphere2::mass, &sphere2::density,
+                                                       &second_spin, &second_inertia_factor};
 
 constexpr std::string_view not_read[] = {"rod", "height", "gravity", "air-density", "drag-coefficient", "rod-model",
                                          "integrator", "dt", "no-event-location", "cvode-method", "max-step",
@@ -47,11 +61,12 @@ constexpr std::string_view why_not_read =
     "gravity), its contact run by dopri5 in regularising variables (the stick/slip switch rules out the others)";
 
 constexpr RigOptionNote notes[] = {
-    {"impact-velocity", "The sphere's speed at onset [m/s] (required); its normal part v cos(theta) calibrates the law"},
+    {"impact-velocity", "The sphere's speed at onset [m/s] (required), relative to the second sphere if any; its normal "
+                        "part v cos(theta) calibrates the law"},
     {"mass", "Mass of the sphere [kg] (required, or --density)"},
     {"density", "Density of the sphere [kg/m^3], instead of --mass"},
-    {"rod-E", "Young's modulus of the flat [Pa] (inf: rigid)"},
-    {"rod-nu", "Poisson ratio of the flat"},
+    {"rod-E", "Young's modulus of the flat [Pa] (inf: rigid; not with `second-radius`)"},
+    {"rod-nu", "Poisson ratio of the flat (not with `second-radius`)"},
     {"restitution", "The normal coefficient of restitution e in (0,1] (required by a law that reads it)"},
 };
 
@@ -74,6 +89,16 @@ void refuse(const RunOptions& o, const RigInputs& in) {
   if (in.number("tangential-stiffness") && model != "linear-spring")
     throw InvalidParameter("tangential-stiffness", format_value(*in.number("tangential-stiffness")),
                            "given only with `tangential-model` linear-spring");
+  if (in.number(sphere2::radius.key)) {
+    for (const auto& [key, given] : {std::pair{"rod-E", o.rod_E_Pa}, {"rod-nu", o.rod_nu}})
+      if (given) throw InvalidParameter(key, format_value(*given), "omitted with `second-radius` (a second sphere, not a flat)");
+    sphere2::refuse_both_masses(in);
+  } else {
+    for (const ParameterDecl* decl : second_sphere_only)
+      if (in.number(decl->key))
+        throw InvalidParameter(std::string(decl->key), format_value(*in.number(decl->key)),
+                               "given only with `second-radius` (a second sphere instead of the flat)");
+  }
 }
 
 Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
@@ -90,6 +115,12 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   s.spin_rad_per_s = in.number_or_default(spin);
   s.inertia_factor = in.number_or_default(inertia_factor);
   s.linear_stiffness_N_per_m = in.number("tangential-stiffness");
+  if (in.number(sphere2::radius.key)) {
+    const Sphere b = sphere2::resolve(options, in, {setup.ball_radius_m, setup.mass_kg, setup.ball});
+    s.second = SecondSphere{.radius_m = b.radius_m, .mass_kg = b.mass_kg, .material = b.material,
+                            .inertia_factor = in.number_or_default(second_inertia_factor),
+                            .spin_rad_per_s = in.number_or_default(second_spin)};
+  }
   s.solver = resolve_solver(options);
   r.result = run_oblique_impact(s);
   r.inputs = describe_rig_run(setup, s.law, s.solver, not_read);
@@ -98,6 +129,11 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
     r.inputs.emplace_back(input_column(decl), fmt::format("{}", value));
   r.inputs.emplace_back(input_column(tangential_model), s.tangential_model);
   if (s.linear_stiffness_N_per_m) r.inputs.emplace_back(input_column(tangential_stiffness), fmt::format("{}", *s.linear_stiffness_N_per_m));
+  if (s.second)
+    for (const auto& [decl, value] : {std::pair{sphere2::radius, s.second->radius_m}, {sphere2::E, s.second->material.E_Pa},
+                                      {sphere2::nu, s.second->material.nu}, {sphere2::mass, s.second->mass_kg},
+                                      {second_spin, s.second->spin_rad_per_s}, {second_inertia_factor, s.second->inertia_factor}})
+      r.inputs.emplace_back(input_column(decl), fmt::format("{}", value));
   r.run.impacts.push_back({s.speed_mps, s.incidence_angle_deg});
   return r;
 }
@@ -130,10 +166,14 @@ constexpr RigFieldOf<Run> results[] = {
      [](const Run& r) -> V { return r.result.rebound_angle_deg; }},
     {{"centre_rebound_angle_deg", "deg", "the centre's velocity after, from the normal"},
      [](const Run& r) -> V { return r.result.centre_rebound_angle_deg; }},
-    {{"tangential_velocity_after_mps", "m/s", "the centre's tangential velocity after"},
+    {{"tangential_velocity_after_mps", "m/s", "the centre's tangential velocity after (the first sphere's, the second at rest before)"},
      [](const Run& r) -> V { return r.result.tangential_velocity_after_mps; }},
     {{"rebound_angular_velocity_rad_per_s", "rad/s", "the sphere's spin after (the contact point slides at w + R omega)"},
      [](const Run& r) -> V { return r.result.spin_after_rad_per_s; }},
+    {{"second_tangential_velocity_after_mps", "m/s", "the second sphere's tangential velocity after (null on a flat)"},
+     [](const Run& r) -> V { return r.spec.second ? V(r.result.second_tangential_velocity_after_mps) : V(); }},
+    {{"second_rebound_angular_velocity_rad_per_s", "rad/s", "the second sphere's spin after (null on a flat)"},
+     [](const Run& r) -> V { return r.spec.second ? V(r.result.second_spin_after_rad_per_s) : V(); }},
     {{"contact_time_s", "s", "onset to separation"}, [](const Run& r) -> V { return r.result.contact_time_s; }},
     {{"peak_normal_force_N", "N", "largest normal contact force"}, [](const Run& r) -> V { return r.result.peak_normal_force_N; }},
     {{"sliding_fraction", "1", "of the contact time on the Coulomb cone (sliding)"},
@@ -154,8 +194,8 @@ constexpr RigColumnOf<ObliqueRow> table[] = {
 const Rig& oblique_rig() {
   static const Rig rig = make_rig<Run, ObliqueRow>(
       {.name = "oblique",
-       .summary = "A sphere onto a flat at an incidence angle, with friction and spin: any damping law normal to the "
-                  "flat, any tangential model along it",
+       .summary = "A sphere onto a flat (or a second sphere) at an incidence angle, with friction and spin: any damping "
+                  "law normal to the contact, any tangential model along it",
        .inputs = inputs, .run_options_not_read = not_read, .not_read_because = why_not_read, .run_option_notes = notes,
        .default_integrator = {}, .refuse = refuse, .results = results,
        .table_description = "the impact (the sphere's speed and angle at onset)", .table = table, .run = run, .outcome = outcome,

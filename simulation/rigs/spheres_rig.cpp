@@ -3,6 +3,7 @@
 
 #include "hertzdash/model/drop_test_parameters.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
+#include "hertzdash/simulation/rigs/second_sphere_inputs.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"
 
 #include <fmt/format.h>
@@ -17,19 +18,8 @@ namespace {
 
 namespace p = drop_test_parameters;
 using R = NumberRange;
-constexpr ParameterDecl second_radius{.key = "second-radius", .unit = "m", .column_unit = "m", .range = R::positive(),
-    .default_value = "the first sphere's", .default_source = "`ball-radius`", .help = "Radius of the second sphere [m]"};
-constexpr ParameterDecl second_E{.key = "second-E", .unit = "Pa", .column_unit = "Pa", .range = R::positive(),
-    .default_value = "the first sphere's", .default_source = "`ball-E`", .help = "Young's modulus of the second sphere [Pa]"};
-constexpr ParameterDecl second_nu{.key = "second-nu", .range = R::open(-1, 0.5), .default_value = "the first sphere's",
-    .default_source = "`ball-nu`", .help = "Poisson ratio of the second sphere"};
-constexpr ParameterDecl second_mass{.key = "second-mass", .unit = "kg", .column_unit = "kg", .range = R::positive(),
-    .default_value = "the first sphere's", .default_source = "`mass` (or `density`)",
-    .help = "Mass of the second sphere [kg]"};
-constexpr ParameterDecl second_density{.key = "second-density", .unit = "kg/m^3", .column_unit = "kg_per_m3",
-    .range = R::positive(), .default_value = "none", .default_source = "not used unless given",
-    .help = "Density of the second sphere [kg/m^3], instead of `second-mass`"};
-constexpr ParameterDecl inputs[] = {second_radius, second_E, second_nu, second_mass, second_density};
+namespace sphere2 = second_sphere_inputs;
+constexpr ParameterDecl inputs[] = {sphere2::radius, sphere2::E, sphere2::nu, sphere2::mass, sphere2::density};
 
 // The drop's height, the flat and the flights: two spheres in free space have none.
 constexpr std::string_view not_read[] = {"rod", "height", "rod-E", "rod-nu", "gravity", "air-density", "drag-coefficient",
@@ -71,9 +61,7 @@ void refuse(const RunOptions& o, const RigInputs& in) {
   if (!o.restitution && !material_constant_given(o) && std::ranges::find(reading_e, o.damping) != reading_e.end())
     throw InvalidParameter("restitution", "none",
                            fmt::format("given for the law {}: the pair's e (the paper's Table 2 is a rod's on nylon)", o.damping));
-  if (in.number("second-mass") && in.number("second-density"))
-    throw InvalidParameter("second-density", format_value(*in.number("second-density")),
-                           "omitted when `second-mass` is given (the density gives the second sphere's mass)");
+  sphere2::refuse_both_masses(in);
 }
 
 Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs& in) {
@@ -82,17 +70,13 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   if (!options.ball_yield_stress_Pa) given.ball_yield_stress_Pa = INFINITY;  // no preset body is a sphere
   r.law = options.damping;
   r.first = {given.ball_radius_m, given.mass_kg, given.ball};
-  r.second.radius_m = in.number("second-radius").value_or(r.first.radius_m);
-  r.second.material = {in.number("second-E").value_or(r.first.material.E_Pa), in.number("second-nu").value_or(r.first.material.nu)};
-  // Its mass: given, or from its density, or from the first's density at its own radius, or the first's.
-  const std::optional<double> density = in.number("second-density") ? in.number("second-density") : options.density_kg_per_m3;
-  r.second.mass_kg = in.number("second-mass").value_or(density ? sphere_mass_kg(r.second.radius_m, *density) : r.first.mass_kg);
+  r.second = sphere2::resolve(options, in, r.first);
   const double v = *given.impact_velocity_mps;
   r.setup = two_spheres_contact(given, r.first, r.second, v);
   const SolverSettings solver = resolve_solver(options);
   r.inputs = describe_rig_run(given, r.law, solver, not_read);
-  for (const auto& [decl, value] : {std::pair{second_radius, r.second.radius_m}, {second_E, r.second.material.E_Pa},
-                                    {second_nu, r.second.material.nu}, {second_mass, r.second.mass_kg}})
+  for (const auto& [decl, value] : {std::pair{sphere2::radius, r.second.radius_m}, {sphere2::E, r.second.material.E_Pa},
+                                    {sphere2::nu, r.second.material.nu}, {sphere2::mass, r.second.mass_kg}})
     r.inputs.emplace_back(input_column(decl), fmt::format("{}", value));
   ImpactSimulator simulator(solver);
   r.summary = simulator.run(r.setup, r.law);

@@ -10,6 +10,7 @@
 #include "hertzdash/model/oblique_contact.hpp"
 #include "hertzdash/model/parameter.hpp"
 #include "hertzdash/model/tangential/registry.hpp"
+#include "hertzdash/model/two_spheres.hpp"
 #include "hertzdash/simulation/run/impact_simulator.hpp"  // with_calibrated_time_constant
 
 #include <fmt/format.h>
@@ -77,6 +78,32 @@ void validate(const ObliqueImpactSpec& s) {
   if (!std::isfinite(s.spin_rad_per_s)) throw InvalidParameter("spin", format_value(s.spin_rad_per_s), "finite");
   if (s.linear_stiffness_N_per_m && !(*s.linear_stiffness_N_per_m > 0 && std::isfinite(*s.linear_stiffness_N_per_m)))
     throw InvalidParameter("tangential-stiffness", format_value(*s.linear_stiffness_N_per_m), "> 0");
+  if (s.second) {
+    if (!(s.second->inertia_factor > 0 && s.second->inertia_factor <= 1))
+      throw InvalidParameter("second-inertia-factor", format_value(s.second->inertia_factor), "in (0, 1]");
+    if (!std::isfinite(s.second->spin_rad_per_s))
+      throw InvalidParameter("second-spin", format_value(s.second->spin_rad_per_s), "finite");
+  }
+}
+
+/// Two spheres as one (model/oblique_contact.hpp's sphere on a flat): the normal contact of the
+/// reduced mass m* and radius R* (model/two_spheres.hpp), and a sphere of mass m*, radius R* and
+/// inertia factor kappa* whose slip obeys the pair's s' = T (1/m1 + 1/m2 + R1^2/I1 + R2^2/I2):
+/// with w = w1 - w2 (w' = T/m*) and R* omega = R1 omega1 + R2 omega2, R*^2/I* = 1/(kappa1 m1) +
+/// 1/(kappa2 m2), i.e. kappa* = 1 / (m* (1/(kappa1 m1) + 1/(kappa2 m2))), a mean of kappa1 and
+/// kappa2 (kappa itself when they are equal).
+struct EquivalentSphere {
+  DropTestSetup setup;
+  double inertia_factor, spin_rad_per_s;
+};
+EquivalentSphere equivalent_sphere(const ObliqueImpactSpec& spec, double v0) {
+  if (!spec.second) return {spec.setup, spec.inertia_factor, spec.spin_rad_per_s};
+  const SecondSphere& b = *spec.second;
+  const Sphere first{spec.setup.ball_radius_m, spec.setup.mass_kg, spec.setup.ball}, second{b.radius_m, b.mass_kg, b.material};
+  DropTestSetup setup = two_spheres_contact(spec.setup, first, second, v0);
+  const double m = setup.mass_kg, R = setup.ball_radius_m;
+  const double kappa = 1 / (m * (1 / (spec.inertia_factor * first.mass_kg) + 1 / (b.inertia_factor * b.mass_kg)));
+  return {setup, kappa, (first.radius_m * spec.spin_rad_per_s + b.radius_m * b.spin_rad_per_s) / R};
 }
 
 }  // namespace
@@ -85,7 +112,8 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   validate(spec);
   const double theta = spec.incidence_angle_deg * std::numbers::pi / 180;
   const double v0 = spec.speed_mps * std::cos(theta), w0 = spec.speed_mps * std::sin(theta);
-  DropTestSetup setup = spec.setup;
+  const EquivalentSphere equivalent = equivalent_sphere(spec, v0);
+  DropTestSetup setup = equivalent.setup;
   setup.impact_velocity_mps = v0;
   const double m = setup.mass_kg, K = hertz_stiffness(setup), X = undamped_hertz_max_deformation_m(K, m, v0);
   std::unique_ptr<NormalForceJet> force;
@@ -100,7 +128,7 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
 
   ObliqueImpactResult out;
   TangentialContact c{.model = find_tangential_model(spec.tangential_model), .pair = {}, .friction = spec.friction,
-                      .inertia_factor = spec.inertia_factor, .radius_m = setup.ball_radius_m};
+                      .inertia_factor = equivalent.inertia_factor, .radius_m = setup.ball_radius_m};
   c.pair.shear_modulus_Pa = tangential_shear_modulus_Pa(setup.ball.E_Pa, setup.ball.nu, setup.rod.E_Pa, setup.rod.nu);
   c.pair.radius_m = setup.ball_radius_m;
   if (c.model->name == "linear-spring") {
@@ -111,7 +139,7 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   // Followed for at most 100 undamped Hertz contact times: a contact that lasts longer has not
   // separated (a law whose dashpot holds the sphere).
   const double t_obs = 100 * undamped_hertz_contact_time_factor() * X / v0;
-  ObliqueContactSystem sys(*force, c, K, m, {v0, w0, spec.spin_rad_per_s}, t_obs);
+  ObliqueContactSystem sys(*force, c, K, m, {v0, w0, equivalent.spin_rad_per_s}, t_obs);
   ObliqueContactSystem::State y = sys.initial_state();
   Observer observer{.separated = false, .peak_force_N = 0, .force = force.get()};
   observer.note(y);
@@ -134,6 +162,15 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   out.normal_restitution = vn / v0;
   out.tangential_velocity_after_mps = y[I::w];
   out.spin_after_rad_per_s = y[I::omega];
+  if (spec.second) {
+    // The tangential impulse J = m* (w_after - w0) on the first sphere, -J on the second.
+    const SecondSphere& b = *spec.second;
+    const double J = m * (y[I::w] - w0), m1 = spec.setup.mass_kg, R1 = spec.setup.ball_radius_m;
+    out.tangential_velocity_after_mps = w0 + J / m1;
+    out.spin_after_rad_per_s = spec.spin_rad_per_s + J / (spec.inertia_factor * m1 * R1);
+    out.second_tangential_velocity_after_mps = -J / b.mass_kg;
+    out.second_spin_after_rad_per_s = b.spin_rad_per_s + J / (b.inertia_factor * b.mass_kg * b.radius_m);
+  }
   out.tangential_restitution = w0 != 0 ? y[I::w] / w0 : std::nan("");
   out.rebound_angle_deg = std::atan(s / vn) * 180 / std::numbers::pi;
   out.centre_rebound_angle_deg = std::atan(y[I::w] / vn) * 180 / std::numbers::pi;

@@ -9,10 +9,21 @@
 #include "hertzdash/ode/ode_system.hpp"
 #include "hertzdash/simulation/run/solver_settings.hpp"
 
+#include <cmath>
 #include <optional>
 #include <string>
 
 namespace hertzdash {
+
+/// A second sphere the first strikes, instead of a flat: its radius, mass and material, moment of
+/// inertia factor and spin at onset (counted so that the contact point's slip is
+/// w1 - w2 + R1 omega1 + R2 omega2).
+struct SecondSphere {
+  double radius_m = 0, mass_kg = 0;
+  Material material;
+  double inertia_factor = 0.4;
+  double spin_rad_per_s = 0;
+};
 
 struct ObliqueImpactSpec {
   DropTestSetup setup;  ///< validated: the sphere (mass, radius, material), the flat, e and the law's inputs
@@ -25,16 +36,23 @@ struct ObliqueImpactSpec {
   double inertia_factor = 0.4;         ///< kappa = I/(m R^2), (0, 1]: 2/5 solid, 2/3 thin shell
   std::optional<double> linear_stiffness_N_per_m;  ///< linear-spring's k_t (default: Mindlin's 8 G* a at the
                                                    ///< undamped Hertz maximum overlap of the normal impact)
+  /// A second sphere instead of the flat (setup.rod then unread): speed_mps and the angle are the
+  /// first sphere's velocity relative to it, from the line of centres.
+  std::optional<SecondSphere> second;
   SolverSettings solver;
 };
 
 struct ObliqueImpactResult {
   bool separated = false;
   double contact_time_s = 0;
-  double normal_restitution = 0;          ///< normal rebound over approach speed
+  double normal_restitution = 0;          ///< normal rebound over approach speed (relative, for two spheres)
+  /// The (first) sphere's centre's tangential velocity and spin after; for two spheres in the frame
+  /// where the second rested before.
   double tangential_velocity_after_mps = 0, spin_after_rad_per_s = 0;
-  double tangential_restitution = 0;      ///< w_after / w_before (NaN where w_before = 0)
-  double rebound_angle_deg = 0;           ///< atan(s_after / v_n,after): the contact point's velocity
+  /// The second sphere's tangential velocity and spin after (NaN against a flat).
+  double second_tangential_velocity_after_mps = NAN, second_spin_after_rad_per_s = NAN;
+  double tangential_restitution = 0;      ///< relative tangential velocity of the centres after over before (NaN where 0 before)
+  double rebound_angle_deg = 0;           ///< atan(s_after / v_n,after): the contact point's velocity (relative)
   double centre_rebound_angle_deg = 0;    ///< atan(w_after / v_n,after)
   double sliding_fraction = 0;            ///< of the contact time on the Coulomb cone
   double tangential_work_J = 0;           ///< int T s dt: the tangential force's work on the sphere
