@@ -99,6 +99,13 @@ TEST_CASE("oblique: the springs take energy from the sliding and spin, the resca
 }
 
 TEST_CASE("oblique: bad input exits 2 naming the option", "[rigs][oblique]") {
+  auto refused = [](const std::string& command, const char* named) {
+    CAPTURE(command);
+    const auto r = run_cli(command);
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Catch::Contains(named));
+  };
   for (const auto& [args, named] : {std::pair{"--incidence-angle 90", "--incidence-angle"},
                                     {"--friction -1", "--friction"},
                                     {"--tangential-model glue", "--tangential-model"},
@@ -106,24 +113,14 @@ TEST_CASE("oblique: bad input exits 2 naming the option", "[rigs][oblique]") {
                                     {"--tangential-stiffness 1e6", "--tangential-stiffness"},
                                     {"--second-E 1e9", "--second-E"},
                                     {"--second-spin 3", "--second-spin"},
-                                    {"--second-radius 1e-3", "--rod-E"}}) {
-    CAPTURE(args);
-    const auto r = run_cli(alumina + args);
-    CHECK(r.exit_code == 2);
-    CHECK(r.out.empty());
-    CHECK_THAT(r.err, Catch::Contains(named));
-  }
+                                    {"--second-radius 1e-3", "--rod-E"}})
+    refused(alumina + args, named);
   // A second sphere's own inputs, without a flat.
   const std::string pair = "oblique --mass 2.6e-4 --ball-radius 2.5e-3 --impact-velocity 3.9 --second-radius 1e-3 ";
   for (const auto& [args, named] : {std::pair{"--second-inertia-factor 0", "--second-inertia-factor"},
                                     {"--second-mass 1 --second-density 1000", "--second-density"},
-                                    {"--second-spin nan", "--second-spin"}}) {
-    CAPTURE(args);
-    const auto r = run_cli(pair + args);
-    CHECK(r.exit_code == 2);
-    CHECK(r.out.empty());
-    CHECK_THAT(r.err, Catch::Contains(named));
-  }
+                                    {"--second-spin nan", "--second-spin"}})
+    refused(pair + args, named);
   const auto no_speed = run_cli("oblique --mass 1e-3");
   CHECK(no_speed.exit_code == 2);
   CHECK_THAT(no_speed.err, Catch::Contains("--impact-velocity"));

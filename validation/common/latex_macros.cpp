@@ -72,4 +72,14 @@ std::string count_of_total_in_words(int count, int total) {
   return number_in_words(count);
 }
 
+std::string latex_macro_part(std::string_view name) {
+  std::string out;
+  bool upper = true;
+  for (const char c : name) {
+    if (c == '-') upper = true;
+    else out += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c, upper = false;
+  }
+  return out;
+}
+
 }  // namespace hertzdash

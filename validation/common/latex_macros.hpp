@@ -32,6 +32,9 @@ class LatexMacros {
 /// ($0$ for zero).
 std::string latex_scientific(double v);
 
+/// A registered name as a part of a macro's name, letters only: "mindlin-no-slip" -> "MindlinNoSlip".
+std::string latex_macro_part(std::string_view name);
+
 /// `text` safe as LaTeX text (inside a macro argument or a table cell): the ten characters
 /// LaTeX treats specially are escaped, _ % & # $ { } with a backslash, ~ ^ \ as
 /// \textasciitilde{}, \textasciicircum{}, \textbackslash{}; every other byte is kept.

@@ -40,21 +40,6 @@
 
 using namespace hertzdash;
 
-namespace {
-
-/// "mindlin-no-slip" -> "MindlinNoSlip", a LaTeX macro's part.
-std::string macro_part(std::string_view name) {
-  std::string out;
-  bool upper = true;
-  for (const char c : name) {
-    if (c == '-') upper = true;
-    else out += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c, upper = false;
-  }
-  return out;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const std::string law = "tsuji-dem";
@@ -100,7 +85,7 @@ int main(int argc, char** argv) try {
     const std::string ratio = f.cross_validation ? fmt::format("{:.2f}", f.cross_validation->ratio) : "--";
     table += fmt::format("{} & ${:.4f} \\pm {:.4f}$ & {:.2f} & {:.1f} & {} \\\\\n", name, mu.estimate, mu.standard_error,
                          f.sigma, f.aic - best_aic, ratio);
-    const std::string M = "obliqueFit" + macro_part(name);
+    const std::string M = "obliqueFit" + latex_macro_part(name);
     macros.add(M + "Mu", mu.estimate, "{:.3f}");
     macros.add(M + "MuSe", mu.standard_error, "{:.3f}");
     macros.add(M + "Scatter", f.sigma, "{:.2f}");

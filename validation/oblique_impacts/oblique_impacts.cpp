@@ -31,21 +31,6 @@
 
 using namespace hertzdash;
 
-namespace {
-
-/// "mindlin-no-slip" -> "MindlinNoSlip", a LaTeX macro's part.
-std::string macro_part(std::string_view name) {
-  std::string out;
-  bool upper = true;
-  for (const char c : name) {
-    if (c == '-') upper = true;
-    else out += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c, upper = false;
-  }
-  return out;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
   const std::string law = "tsuji-dem";
@@ -89,7 +74,7 @@ int main(int argc, char** argv) try {
     for (const ChungOoiTest4Curve& c : chung_ooi_test4_curves) {
       const double error = chung_ooi_test4_error(c, law, std::string(model->name));
       table += fmt::format(" & {:.1f}\\,\\%", 100 * error);
-      macros.add("oblique" + macro_part(model->name) + std::string("ABC").substr(static_cast<std::size_t>(c_index++), 1), 100 * error, "{:.1f}");
+      macros.add("oblique" + latex_macro_part(model->name) + std::string("ABC").substr(static_cast<std::size_t>(c_index++), 1), 100 * error, "{:.1f}");
       std::printf("%s, %s: L1 relative error %.4f (Kratos's tolerance %.3f)\n", std::string(model->name).c_str(), c.quantity,
                   error, c.kratos_tolerance);
     }
