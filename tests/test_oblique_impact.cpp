@@ -363,7 +363,7 @@ TEST_CASE("oblique impact of two spheres: Chung and Ooi's test 7, counter-spinni
     }
 }
 
-TEST_CASE("oblique impact: Chung and Ooi's test 6 below x = 1, a spinning sphere sliding throughout", "[oblique]") {
+TEST_CASE("oblique impact: Chung and Ooi's tests 6 and 8 below x = 1, spinning spheres sliding throughout", "[oblique]") {
   // Test 6 drops a sphere spinning at omega0 (no tangential velocity) onto a rigid flat: V_st = R omega0
   // the contact point's initial speed, x = (1 + 1/kappa) mu (1 + e) V_cn / V_st = 3.5 mu (1 + e) V_cn / V_st.
   // Sliding throughout (x < 1), the slip falls by mu (1 + e) V_cn (1 + 1/kappa) (the gross-sliding
@@ -378,29 +378,48 @@ TEST_CASE("oblique impact: Chung and Ooi's test 6 below x = 1, a spinning sphere
   const std::vector<std::array<double, 2>> curve = read_two_columns(chung_ooi_data_dir() / "test6_slip_ratio.dat");
   REQUIRE(curve.size() == 17);
   constexpr double mu = 0.4, R_sphere = 0.1, v_n = 0.2, y_tolerance = 0.01 * 0.93, x_factor = 1.05;
-  auto spinning = [&](double omega0) {
+  auto spinning_spec = [&](double omega0) {
     ObliqueImpactSpec s = alumina("hunt-crossley", 0.5, mu, 0);
     s.setup.ball_radius_m = R_sphere;
     s.setup.mass_kg = sphere_mass_kg(R_sphere, 2699);
     s.setup.ball = {70e9, 0.33};
     s.speed_mps = v_n;
     s.spin_rad_per_s = omega0;
-    return run_oblique_impact(s);
+    return s;
   };
-  const double e_n = spinning(0).normal_restitution;
-  int checked = 0;
-  for (const auto& [x, beta] : curve) {
-    if (x >= 1) continue;
-    const double omega0 = 3.5 * mu * (1 + e_n) * v_n / (x * R_sphere);
-    const ObliqueImpactResult r = spinning(omega0);
-    REQUIRE(r.separated);
-    const double s1 = r.tangential_velocity_after_mps + R_sphere * r.spin_after_rad_per_s, run_beta = -s1 / (R_sphere * omega0);
-    CAPTURE(x, beta, run_beta);
-    CHECK(r.sliding_fraction == Approx(1).margin(1e-9));
-    CHECK(run_beta == Approx(x - 1).margin(1e-8));
-    CHECK(beta >= x / x_factor - 1 - y_tolerance);
-    CHECK(beta <= x * x_factor - 1 + y_tolerance);
-    ++checked;
+  // Test 8 is the same for two identical spheres (its cases A and B print the same five points
+  // below x = 1): 1/m_t = 2/m + 2 R^2/I = 7/m and the normal impulse (m/2) V_cn (1 + e), so the slip
+  // again falls by 3.5 mu (1 + e) V_cn. Run with the spin on the first sphere, and shared by both.
+  enum class Pair { none, first_spins, both_spin };
+  for (const Pair pair : {Pair::none, Pair::first_spins, Pair::both_spin}) {
+    auto run = [&](double omega0) {
+      ObliqueImpactSpec s = spinning_spec(omega0);
+      if (pair != Pair::none) {
+        const double share = pair == Pair::both_spin ? 0.5 : 1.0;
+        s.spin_rad_per_s = share * omega0;
+        s.second = SecondSphere{.radius_m = R_sphere, .mass_kg = s.setup.mass_kg, .material = s.setup.ball,
+                                .inertia_factor = 0.4, .spin_rad_per_s = (1 - share) * omega0};
+      }
+      return run_oblique_impact(s);
+    };
+    const double e_n = run(0).normal_restitution;
+    int checked = 0;
+    for (const auto& [x, beta] : curve) {
+      if (x >= 1) continue;
+      const double omega0 = 3.5 * mu * (1 + e_n) * v_n / (x * R_sphere);
+      const ObliqueImpactResult r = run(omega0);
+      REQUIRE(r.separated);
+      // The slip after: w1 - w2 + R (omega1 + omega2), the second's terms 0 on a flat.
+      const double s1 = r.tangential_velocity_after_mps + R_sphere * r.spin_after_rad_per_s +
+                        (pair == Pair::none ? 0.0 : -r.second_tangential_velocity_after_mps + R_sphere * r.second_spin_after_rad_per_s);
+      const double run_beta = -s1 / (R_sphere * omega0);
+      CAPTURE(static_cast<int>(pair), x, beta, run_beta);
+      CHECK(r.sliding_fraction == Approx(1).margin(1e-9));
+      CHECK(run_beta == Approx(x - 1).margin(1e-8));
+      CHECK(beta >= x / x_factor - 1 - y_tolerance);
+      CHECK(beta <= x * x_factor - 1 + y_tolerance);
+      ++checked;
+    }
+    CHECK(checked == 5);
   }
-  CHECK(checked == 5);
 }
