@@ -14,11 +14,13 @@
 // The tangential force is the spring's force T, an incremental spring with stiffness k_t(x) of
 // the model, under the Coulomb cone |T| <= mu F_n (F_n clamped at 0 in tension): a sweeping
 // process, exact in continuous time:
-//   - inside the cone (sticking): dT/dt = -k_t s;
+//   - inside the cone (sticking): dT/dt = -k_t s, plus a model's share c of the cone's growth,
+//     c sigma mu dF_n/dt (normal_coupling, while dF_n/dt > 0), and for a model that rescales,
+//     T (da/dt)/a while the overlap falls (rescales_with_contact_radius, a = sqrt(R x));
 //   - on the cone (|T| = mu F_n, to 1e-7 of it and of T's scale; sign sigma = sign T, or -sign s
 //     where T = 0): the sphere slides,
-//     dT/dt = sigma mu dF_n/dt, while the spring pushes outwards faster than the cone grows,
-//     sigma (-k_t s) >= mu dF_n/dt; else it sticks again (the first case).
+//     dT/dt = sigma mu dF_n/dt, while the sticking rate pushes outwards faster than the cone grows,
+//     sigma (sticking rate) >= mu dF_n/dt; else it sticks again (the first case).
 // At onset T = 0 and, but for a law whose dashpot acts at zero overlap (kelvin-voigt), F_n = 0: the
 // contact starts on the cone, sliding wherever k_t |s| exceeds
 // mu dF_n/dt there (for Mindlin's k_t and Hertz's F_n: |s|/v0 >= mu E*/(4 G*), Maw, Barber and

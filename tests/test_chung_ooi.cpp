@@ -281,8 +281,8 @@ TEST_CASE("Chung & Ooi test 3: the laws that invert their own restitution pass i
   //    1 - 2 zeta^2) (model/restitution.hpp clamped_restitution). At e = 0.2, zeta = 0.4559,
   //    theta_F = 2.195, e_eff = 0.325: it misses test 3 by 0.125.
   //  - hunt-crossley: e_eff = (1 + W0(-(1 + a) e^{-(1 + a)}))/a with a = chi v0 = 1.5 (1 - e).
-  //    As e -> 0, a -> 1.5 and e_eff -> 0.488: the law cannot dissipate more than half the
-  //    rebound speed, whatever e it is given.
+  //    As e -> 0, a -> 1.5 and e_eff -> 0.488: the law cannot take away more than about half
+  //    the impact speed, whatever e it is given.
   // CVODE at rtol 1e-10: e_eff to ~1e-8 (the bound 1e-7 of the restitution tests).
   constexpr double solver_bound = 1e-7, kratos_delta = 1e-3;
   const DropTestSetup base = chung_ooi_setup(benchmark_test("test3"));

@@ -77,8 +77,10 @@ TEST_CASE("oblique: the springs take energy from the sliding and spin, the resca
   // falls cannot: with U = T^2/(2 k_t), k_t proportional to a, dU = (work done on the spring) -
   // U |da|/a in loading and in rescaled unloading, and U = 0 at onset and separation, so the work
   // on the spring over the contact is >= 0, W <= 0 (model/tangential/mindlin_rescale.hpp; on the
-  // cone the force grows slower than the spring would, which takes more). Asserted for both over
-  // sticking, reversing and sliding contacts, including the case where mindlin-no-slip gains.
+  // cone the force grows slower than the spring would, which takes more). That proves it for
+  // mindlin-rescale; mindlin-deresiewicz rescales too but its stiffness 8 G* a theta is not
+  // proportional to a: for it the grid is an observation, not a consequence of the bound. Asserted
+  // for both over sticking, reversing and sliding contacts, including where mindlin-no-slip gains.
   const auto r = run_cli(alumina + "--incidence-angle 20 --friction 100 --damping none --json");
   REQUIRE(r.exit_code == 0);
   CHECK(nlohmann::json::parse(r.out)["tangential_work_J"].get<double>() > 0);

@@ -146,7 +146,7 @@ struct FitPoint {
   std::optional<std::size_t> group;  ///< the row's group (a trace's channel, a recording's drop)
   std::size_t index = 0;             ///< in its group, in file order
   int number = 0;                    ///< a recording's impact number from the drop's first
-  double x = 0;                      ///< the abscissa: time [s] (trace), impact speed [m/s] (table; recording: the model's)
+  double x = 0;                      ///< the abscissa: time [s] (trace), impact speed [m/s] (table; recording: the model's), incident angle [deg] (rebound angles)
   double measured = 0, model = 0, residual = 0;  ///< residual = measured - model, in the data's unit
   double unit = 1;                   ///< sd_i of the residual r_i = residual / unit
 };

@@ -123,7 +123,10 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   }
   s.solver = resolve_solver(options);
   r.result = run_oblique_impact(s);
-  r.inputs = describe_rig_run(setup, s.law, s.solver, not_read);
+  // A second sphere replaces the flat: its rod-E and rod-nu are not read then.
+  std::vector<std::string_view> unread(std::begin(not_read), std::end(not_read));
+  if (s.second) unread.insert(unread.end(), {"rod-E", "rod-nu"});
+  r.inputs = describe_rig_run(setup, s.law, s.solver, unread);
   for (const auto& [decl, value] : {std::pair{incidence_angle, s.incidence_angle_deg}, {friction, s.friction},
                                     {spin, s.spin_rad_per_s}, {inertia_factor, s.inertia_factor}})
     r.inputs.emplace_back(input_column(decl), fmt::format("{}", value));
@@ -160,11 +163,11 @@ constexpr RigFieldOf<Run> results[] = {
     {{"tangential_model", "", "the tangential contact model", false, false, false},
      [](const Run& r) -> V { return r.spec.tangential_model; }},
     {{"normal_restitution", "1", "normal rebound over approach speed"}, [](const Run& r) -> V { return r.result.normal_restitution; }},
-    {{"tangential_restitution", "1", "the centre's tangential velocity after over before (null head-on)"},
+    {{"tangential_restitution", "1", "the centre's tangential velocity after over before, relative to the second sphere if any (null head-on)"},
      [](const Run& r) -> V { return r.result.tangential_restitution; }},
     {{"rebound_angle_deg", "deg", "the contact point's velocity after, from the normal: atan(s / v_n)"},
      [](const Run& r) -> V { return r.result.rebound_angle_deg; }},
-    {{"centre_rebound_angle_deg", "deg", "the centre's velocity after, from the normal"},
+    {{"centre_rebound_angle_deg", "deg", "the centre's velocity after, from the normal (relative to the second sphere if any)"},
      [](const Run& r) -> V { return r.result.centre_rebound_angle_deg; }},
     {{"tangential_velocity_after_mps", "m/s", "the centre's tangential velocity after (the first sphere's, the second at rest before)"},
      [](const Run& r) -> V { return r.result.tangential_velocity_after_mps; }},
