@@ -58,6 +58,28 @@ def test_two_beads_give_the_programs_numbers():
         hertzdash.spheres(**kw, second_mass=1e-3, second_density=7800)
 
 
+def test_oblique_two_spheres_give_the_programs_numbers():
+    # Two glass beads at 30 degrees (hertzdash oblique --second-radius): the function, hertzdash.run
+    # and the command agree. Counter-spinning with no slip (Chung and Ooi's test 7), head-on: no
+    # tangential force, so both spins leave unchanged and no tangential velocity appears.
+    kw = dict(density=2500, ball_radius=1e-3, ball_E=63e9, ball_nu=0.22, restitution=0.9, impact_velocity=1,
+              damping="tsuji-dem", incidence_angle=30, friction=0.2, second_radius=2e-3)
+    d = hertzdash.oblique(**kw)
+    assert d == hertzdash.run("oblique", **kw)
+    assert d == cli_json("oblique", "--density", "2500", "--ball-radius", "1e-3", "--ball-E", "63e9", "--ball-nu", "0.22",
+                         "--restitution", "0.9", "--impact-velocity", "1", "--damping", "tsuji-dem", "--incidence-angle",
+                         "30", "--friction", "0.2", "--second-radius", "2e-3")
+    # Friction slows the first sphere's tangential motion and drags the second along.
+    w0 = math.sin(math.radians(30))
+    assert 0 < d["second_tangential_velocity_after_mps"] < d["tangential_velocity_after_mps"] < w0
+    spin = hertzdash.oblique(**dict(kw, incidence_angle=0, spin=40, second_spin=-20))
+    assert spin["rebound_angular_velocity_rad_per_s"] == 40
+    assert spin["second_rebound_angular_velocity_rad_per_s"] == -20
+    assert spin["tangential_velocity_after_mps"] == 0
+    with pytest.raises(ValueError, match="second_spin"):
+        hertzdash.oblique(**{k: v for k, v in kw.items() if k != "second_radius"}, second_spin=1)
+
+
 def test_shaker_gives_the_programs_numbers():
     # The instantaneous map (e = 0.5) just above its period-doubling threshold
     # sqrt((pi/3)^2 + (10/9)^2) = 1.5268 (docs/shaker.md): period 2, e_effective = e exactly.
