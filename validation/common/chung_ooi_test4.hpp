@@ -1,7 +1,8 @@
 #pragma once
 // Chung and Ooi's test 4 as an oblique impact (data/external/chung-ooi-2011/README.md): the alumina
-// sphere (R = 2.5 mm, E = 380 GPa, nu = 0.23, 4000 kg/m^3) on a rigid flat at 3.9 m/s, e = 0.98 and
-// mu = 0.092, solid (kappa = 2/5), no initial spin; the curve files of the test and their error as
+// sphere of parameters.csv's row test4 (R = 2.5 mm, E = 380 GPa, nu = 0.23, 4000 kg/m^3) on a rigid
+// flat at 3.9 m/s, with the test's e = 0.98 and mu = 0.092 (declared here: not columns of that
+// table), solid (kappa = 2/5), no initial spin; the curve files of the test and their error as
 // Kratos's Chung_Ooi_class measures it. Shared by validation/oblique_impacts and
 // tests/test_oblique_impact.cpp.
 #include "hertzdash/model/two_spheres.hpp"
@@ -14,24 +15,32 @@
 
 namespace hertzdash {
 
-inline constexpr double chung_ooi_test4_radius_m = 2.5e-3, chung_ooi_test4_speed_mps = 3.9;
+/// The test's coefficient of restitution and friction coefficient (Kratos's Materials4.json).
+inline constexpr double chung_ooi_test4_restitution = 0.98, chung_ooi_test4_friction = 0.092;
+
+/// parameters.csv's row test4, read once.
+inline const ChungOoiTest& chung_ooi_test4_bodies() {
+  static const ChungOoiTest test = [] {
+    for (const ChungOoiTest& t : load_chung_ooi_tests())
+      if (t.name == "test4") return t;
+    throw DataError("data/external/chung-ooi-2011/parameters.csv has no row test4");
+  }();
+  return test;
+}
 
 /// The test's impact at `angle_deg` with the normal law `law` (e = 0.98 where it reads one) and
 /// the tangential model `model`, friction `mu` (the test's 0.092 unless given), to rtol 1e-11.
-inline ObliqueImpactSpec chung_ooi_test4(const std::string& law, const std::string& model, double angle_deg, double mu = 0.092) {
+inline ObliqueImpactSpec chung_ooi_test4(const std::string& law, const std::string& model, double angle_deg,
+                                         double mu = chung_ooi_test4_friction) {
+  const ChungOoiTest& bodies = chung_ooi_test4_bodies();
   ObliqueImpactSpec s;
-  s.setup.mass_kg = sphere_mass_kg(chung_ooi_test4_radius_m, 4000);
-  s.setup.ball_radius_m = chung_ooi_test4_radius_m;
-  s.setup.ball = {380e9, 0.23};
-  s.setup.rod = {std::numeric_limits<double>::infinity(), 0.23};
-  s.setup.restitution = 0.98;
-  s.setup.impact_velocity_mps = chung_ooi_test4_speed_mps;
-  s.setup.gravity_mps2 = 0;
+  s.setup = chung_ooi_setup(bodies);
+  s.setup.restitution = chung_ooi_test4_restitution;
   s.law = law;
   s.tangential_model = model;
   s.friction = mu;
   s.incidence_angle_deg = angle_deg;
-  s.speed_mps = chung_ooi_test4_speed_mps;
+  s.speed_mps = bodies.relative_speed_mps;
   s.solver.rtol = 1e-11;
   s.solver.atol = 1e-13;
   return s;
