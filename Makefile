@@ -12,7 +12,7 @@ FUZZ_SECONDS   ?= 60
 # Extra CMake arguments for every configuration, e.g. CMAKE_ARGS=-DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 CMAKE_ARGS     ?=
 
-.PHONY: all deps deps-paper deps-peers deps-engines configure build test figures convergence uncertainty oblique-fit gas paper bench build-times sanitize fuzz clean
+.PHONY: all deps deps-paper deps-peers deps-engines configure build test figures convergence uncertainty gas paper bench build-times sanitize fuzz clean
 
 all: build
 
@@ -65,12 +65,6 @@ convergence: build
 uncertainty: build
 	$(BUILD)/validation/uncertainty --full --out $(FIGURES) --generated paper/generated
 	for gp in validation/uncertainty/*.gp; do validation/draw_figure.sh $$gp $(FIGURES) || exit 1; done
-
-# The measured rebound angles fitted with each tangential model and cross-validated (leave-one-out,
-# two minutes on two cores; `make figures` fits without the cross-validation): its CSV and the
-# article's \obliqueFit macros and table.
-oblique-fit: build
-	$(BUILD)/validation/oblique_fit --full --out $(FIGURES) --generated paper/generated
 
 # The granular gas at its full size (13824 spheres, each law for 40 Haff times on LAMMPS under
 # mpirun -n 2, a few minutes; `make figures` runs 1000 for 12): its CSV, figure and the article's \gas macros.

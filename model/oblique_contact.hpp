@@ -13,30 +13,33 @@
 //
 // The tangential force is the spring's force T, an incremental spring with stiffness k_t(x) of
 // the model, under the Coulomb cone |T| <= mu F_n (F_n clamped at 0 in tension): a sweeping
-// process, exact in continuous time:
+// process, exact in continuous time, its two modes told apart by a state (stick, or slide with
+// the force's sign sigma) that events switch:
 //   - inside the cone (sticking): dT/dt = -k_t s, plus a model's share c of the cone's growth,
 //     c sigma mu dF_n/dt (normal_coupling, while dF_n/dt > 0), and for a model that rescales,
 //     T (da/dt)/a while the overlap falls (rescales_with_contact_radius, a = sqrt(R x));
-//   - on the cone (|T| = mu F_n, to 1e-7 of it and of T's scale; sign sigma = sign T, or -sign s
-//     where T = 0): the sphere slides,
-//     dT/dt = sigma mu dF_n/dt, while the sticking rate pushes outwards faster than the cone grows,
-//     sigma (sticking rate) >= mu dF_n/dt; else it sticks again (the first case).
+//   - on the cone (T = sigma mu F_n): the sphere slides, dT/dt = sigma mu dF_n/dt, while the
+//     sticking rate pushes outwards faster than the cone grows, sigma (sticking rate) >= mu dF_n/dt.
+// The switches are events: sticking ends where |T| reaches the cone (mu F_n - |T| through 0),
+// sliding where the sticking rate stops pushing outwards (sigma (sticking rate) - mu dF_n/dt
+// through 0); the run stops there, sets the mode (settled_mode(), which also projects T onto the
+// cone) and goes on. Each mode's right-hand side is smooth, so the steps need not shrink across a
+// switch.
 // At onset T = 0 and, but for a law whose dashpot acts at zero overlap (kelvin-voigt), F_n = 0: the
 // contact starts on the cone, sliding wherever k_t |s| exceeds
 // mu dF_n/dt there (for Mindlin's k_t and Hertz's F_n: |s|/v0 >= mu E*/(4 G*), Maw, Barber and
 // Fawcett 1976). dF_n/dt comes from the law's partials (a force jet): the rates are written in
 // tau, where dF_n/dtau = F_u v + F_v dv/dtau is finite at onset even for a dashpot in x^{1/2} x'.
 //
-// State along tau: (u, v, t, T, w, omega, W, t_slide, T*, sigma*, reversed, mu F_n*): W = int T s dt [J],
+// State along tau: (u, v, t, T, w, omega, W, t_slide, T*, sigma*, reversed, mu F_n*, mode): W = int T s dt [J],
 // the tangential force's work on the sphere (its tangential and spin energy change, an account of
 // the integration), t_slide the time on the cone [s], and for a model that remembers reversals
 // (Mindlin-Deresiewicz) T* the force where the slip last reversed and the cone there, sigma* the
 // slip's sign since then and whether it has reversed (constant between events: the caller sets them at a reversal and
-// integrates on, reversal_state()). Events (decreasing through 0): separation u (stops), the normal
-// force's maximum dF_n/dtau (observes), the observation time t_obs - t (stops), a reversal of the
-// slip sigma* s (stops; a model without memory: off).
-// The right-hand side switches between sticking and sliding: integrate it with an error-controlled
-// one-step method (dopri5), which steps down across the switch, not an extrapolation method.
+// integrates on, reversal_state()), mode 0 sticking or sigma sliding (constant between events).
+// Events (decreasing through 0): separation u (stops), the normal force's maximum dF_n/dtau
+// (observes), the observation time t_obs - t (stops), a reversal of the slip sigma* s (stops; a
+// model without memory: off), sticking's end (stops) and sliding's end (stops).
 #include "hertzdash/model/force_jet.hpp"
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/tangential/tangential_model.hpp"
@@ -71,16 +74,16 @@ struct ObliqueOnset {
   double normal_speed_mps = 0, tangential_speed_mps = 0, spin_rad_per_s = 0;
 };
 
-enum class ObliqueContactEvent : int { separation, peak_normal_force, observation_time, slip_reversal };
+enum class ObliqueContactEvent : int { separation, peak_normal_force, observation_time, slip_reversal, stick_end, slide_end };
 
 class ObliqueContactSystem {
  public:
-  static constexpr int dimension = 12;
-  static constexpr int event_count = 4;
-  static constexpr bool smooth_at_events = false;  ///< the stick/slip switch is not an event
+  static constexpr int dimension = 13;
+  static constexpr int event_count = 6;
+  static constexpr bool smooth_at_events = false;
   using State = Eigen::Matrix<double, dimension, 1>;
   using Events = std::array<double, event_count>;
-  enum Index : int { u, v, t, T, w, omega, W, t_slide, T_turn, slip_sign, reversed, cone_turn };
+  enum Index : int { u, v, t, T, w, omega, W, t_slide, T_turn, slip_sign, reversed, cone_turn, mode };
 
   /// The contact of a sphere of mass m [kg] on stiffness K [N/m^{3/2}] (the undamped Hertz scales
   /// of v0 set the state's), followed for at most t_obs [s].
@@ -96,7 +99,7 @@ class ObliqueContactSystem {
     // T ~ mu F_n where the cone binds, ~ F_n's own scale where the spring does (mu > 1).
     const double T_scale = std::clamp(tangential.friction, 1e-3, 1.0) * K * X * std::sqrt(X);
     scale_ << std::sqrt(X), v0, t_H, T_scale, speed, speed / tangential.radius_m, 0.5 * mass_kg * speed * speed, t_H,
-        T_scale, 1, 1, T_scale;
+        T_scale, 1, 1, T_scale, 1;
   }
 
   State initial_state() const {
@@ -105,17 +108,44 @@ class ObliqueContactSystem {
     y[w] = onset_.tangential_speed_mps;
     y[omega] = onset_.spin_rad_per_s;
     y[slip_sign] = slip_mps(y) < 0 ? -1 : 1;
-    return y;
+    return settled_mode(y, true);
+  }
+
+  /// y in the mode its rates call for: sliding (T projected onto the cone, with the sign of T, or
+  /// of the friction where T = 0) where the force is on the cone (or `on_cone`: an event put it
+  /// there) and the sticking rate pushes outwards at least as fast as the cone grows, else
+  /// sticking. At onset (`onset`) the rates all vanish with the overlap: they are compared at u =
+  /// 1e-6 of the overlap's scale instead, where their ratio is already the limit's.
+  State settled_mode(const State& y, bool onset = false, bool on_cone = false) const {
+    State z = y;
+    if (onset) z[u] = 1e-6 * scale_[u];
+    const Rates r = rates(z);
+    State out = y;
+    const double sigma = y[T] != 0 ? std::copysign(1.0, y[T]) : r.friction_sign;
+    const double cone = cone_N(normal_->at(std::max(y[u], 0.0), y[v]).value);  // at y itself, not the probe
+    const bool at_cone = on_cone || std::abs(y[T]) >= cone;
+    const bool pushing = r.stick != 0 || r.cone_rate != 0;
+    out[mode] = at_cone && sigma != 0 && pushing && sigma * r.stick >= r.cone_rate ? sigma : 0.0;
+    if (out[mode] != 0) out[T] = out[mode] * cone;
+    return out;
   }
 
   /// The state after a reversal of the slip at y: T* = T and the cone there, the slip's sign
   /// flipped, reversed.
   State reversal_state(const State& y) const {
     State z = y;
-    z[T_turn] = y[T];
     z[cone_turn] = cone_N(normal_->at(std::max(y[u], 0.0), y[v]).value);
+    z[T] = z[T_turn] = force_on_sphere(y, z[cone_turn]);
     z[slip_sign] = -y[slip_sign];
     z[reversed] = 1;
+    return settled_mode(z);
+  }
+
+  /// The state where sliding ends: T on the cone, sticking.
+  State stuck_state(const State& y) const {
+    State z = y;
+    z[T] = force_on_sphere(y, cone_N(normal_->at(std::max(y[u], 0.0), y[v]).value));
+    z[mode] = 0;
     return z;
   }
   State state_scale() const { return scale_; }
@@ -125,42 +155,37 @@ class ObliqueContactSystem {
 
   void rhs(double, const State& y, State& dy) const {
     const double uu = std::max(y[u], 0.0), two_u = 2 * uu;
-    const ForceJet F = normal_->at(uu, y[v]);
-    const double dv = -two_u * F.value * inverse_m_;             // dv/dtau
-    const double dF = F.d[0] * y[v] + F.d[1] * dv;               // dF_n/dtau
-    const double cone = cone_N(F.value), s = slip_mps(y);
-    const double Tc = std::clamp(y[T], -cone, cone);
-    const TangentialState state{.overlap_m = uu * uu, .force_N = Tc, .cone_N = cone, .turn_force_N = y[T_turn],
-                                .turn_cone_N = y[cone_turn], .reversed = y[reversed] != 0};
-    // dT/dtau inside the cone: the spring, and a model's share of the cone's change (normal_coupling).
-    const double friction_sign = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
-    const double coupled =
-        c_.model->normal_coupling && dF > 0 ? c_.model->normal_coupling(state) * friction_sign * c_.friction * dF : 0.0;
-    // da/a = dx/(2x) = (v/u) dtau while the overlap falls.
-    const double rescaled = c_.model->rescales_with_contact_radius && y[v] < 0 && uu > 0 ? Tc * y[v] / uu : 0.0;
-    const double stick = -two_u * c_.model->stiffness_N_per_m(c_.pair, state) * s + coupled + rescaled;
-    double dT = stick, sliding = 0;
-    if (std::abs(y[T]) >= cone - cone_band * (cone + scale_[T])) {
-      const double sigma = y[T] != 0 ? std::copysign(1.0, y[T]) : (s != 0 ? -std::copysign(1.0, s) : 0.0);
-      const double cone_rate = c_.friction * (F.value > 0 ? dF : 0.0);
-      if (sigma != 0 && sigma * stick >= cone_rate) dT = sigma * cone_rate, sliding = 1;
-    }
+    const Rates r = rates(y);
+    const double sliding = y[mode] != 0 ? 1.0 : 0.0, s = slip_mps(y);
+    const double Tc = force_on_sphere(y, r.cone);
     dy[u] = y[v];
-    dy[v] = dv;
+    dy[v] = r.dv;
     dy[t] = two_u;
-    dy[T] = dT;
+    dy[T] = sliding != 0 ? y[mode] * r.cone_rate : r.stick;
     dy[w] = two_u * Tc * inverse_m_;
     dy[omega] = two_u * c_.radius_m * Tc * inverse_I_;
     dy[W] = two_u * Tc * s;
     dy[t_slide] = two_u * sliding;
-    dy[T_turn] = dy[slip_sign] = dy[reversed] = dy[cone_turn] = 0;
+    dy[T_turn] = dy[slip_sign] = dy[reversed] = dy[cone_turn] = dy[mode] = 0;
   }
 
   void events(double, const State& y, Events& g) const {
-    const double uu = std::max(y[u], 0.0);
-    const ForceJet F = normal_->at(uu, y[v]);
-    g = {y[u], F.d[0] * y[v] + F.d[1] * (-2 * uu * F.value * inverse_m_), t_obs_s_ - y[t],
-         c_.model->remembers_reversals ? y[slip_sign] * slip_mps(y) : 1.0};
+    const Rates r = rates(y);
+    // An event is a crossing from > 0, and a switch's function starts near 0 where the last switch
+    // (or onset) left it. Sticking ends where |T| comes within 1e-8 of the cone: a spring that
+    // softens to nothing there (mindlin-deresiewicz's theta = 0) reaches it only as (1 - |T|/cone)^{1/3}
+    // vanishes and would never cross it; near onset, where the cone is small against T's scale, a
+    // margin of 1e-10 of that scale keeps the function > 0 at the start so that a crossing inside
+    // the first step is seen. Sliding ends where the sticking rate falls 1e-6 of the rates below the
+    // cone's: on a softened spring both rates are the cone's, and the rounding of their difference
+    // would otherwise switch back and forth; at onset, where both rates vanish, a margin of 1e-10
+    // of the rates' scale again lets a crossing inside the first step be seen (a linear spring
+    // slides for an instant at onset, where the cone is still closed, then sticks). T is
+    // projected onto the cone at each switch.
+    const double rate_scale = std::abs(r.stick) + std::abs(r.cone_rate);
+    g = {y[u], r.dF, t_obs_s_ - y[t], c_.model->remembers_reversals ? y[slip_sign] * slip_mps(y) : 1.0,
+         y[mode] == 0 ? r.cone * (1 - stick_band) - std::abs(y[T]) + onset_margin * scale_[T] : 1.0,
+         y[mode] != 0 ? y[mode] * r.stick - r.cone_rate + slide_offset * rate_scale + onset_margin * rate_unit() : 1.0};
   }
 
   EventAction handle_event(int which, double, const State&) const {
@@ -170,11 +195,44 @@ class ObliqueContactSystem {
 
  private:
   double cone_N(double normal_force_N) const { return c_.friction * std::max(normal_force_N, 0.0); }
-  /// A force within this fraction of the cone, or of T's scale (mu K X^{3/2}, mu at most 1), counts as on it: a
-  /// step's stages drift off a sliding force by the integration's error (near onset and separation
-  /// more than the small cone itself), and inside the cone the spring's rate (k_t s, far steeper
-  /// than the cone's) would bounce them back, the step control halving its way through each bounce.
-  static constexpr double cone_band = 1e-7;
+  static constexpr double stick_band = 1e-8, onset_margin = 1e-10, slide_offset = 1e-6;
+
+  /// The scale of T's rates in tau, dT/dtau = 2u dT/dt ~ 2 u_scale T_scale / t_H.
+  double rate_unit() const { return 2 * scale_[u] * scale_[T] / scale_[t]; }
+
+  /// The tangential force on the sphere: sliding, sigma mu F_n exactly (T's state follows it, but
+  /// its integration error would put a kink into the right-hand side through a clamp); sticking,
+  /// T, within the cone.
+  double force_on_sphere(const State& y, double cone) const {
+    return y[mode] != 0 ? y[mode] * cone : std::clamp(y[T], -cone, cone);
+  }
+
+  /// The rates in tau at y: dv/dtau, dF_n/dtau, the cone mu F_n and its rate (0 in tension), the
+  /// sticking rate of T (the spring, a model's coupling and rescaling), and -sign of the friction.
+  struct Rates {
+    double dv, dF, cone, cone_rate, stick, friction_sign;
+  };
+  Rates rates(const State& y) const {
+    const double uu = std::max(y[u], 0.0), two_u = 2 * uu;
+    const ForceJet F = normal_->at(uu, y[v]);
+    Rates r{};
+    r.dv = -two_u * F.value * inverse_m_;
+    r.dF = F.d[0] * y[v] + F.d[1] * r.dv;
+    r.cone = cone_N(F.value);
+    r.cone_rate = c_.friction * (F.value > 0 ? r.dF : 0.0);
+    const double s = slip_mps(y), Tc = force_on_sphere(y, r.cone);
+    const TangentialState state{.overlap_m = uu * uu, .force_N = Tc, .cone_N = r.cone, .turn_force_N = y[T_turn],
+                                .turn_cone_N = y[cone_turn], .reversed = y[reversed] != 0};
+    // The friction's direction, -sign s; T's rate inside the cone: the spring, and a model's share
+    // of the cone's change (normal_coupling).
+    r.friction_sign = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
+    const double coupled =
+        c_.model->normal_coupling && r.dF > 0 ? c_.model->normal_coupling(state) * r.friction_sign * c_.friction * r.dF : 0.0;
+    // da/a = dx/(2x) = (v/u) dtau while the overlap falls.
+    const double rescaled = c_.model->rescales_with_contact_radius && y[v] < 0 && uu > 0 ? Tc * y[v] / uu : 0.0;
+    r.stick = -two_u * c_.model->stiffness_N_per_m(c_.pair, state) * s + coupled + rescaled;
+    return r;
+  }
 
   const NormalForceJet* normal_;
   TangentialContact c_;

@@ -85,6 +85,19 @@ TEST_CASE("oblique: the springs take energy from the sliding and spin, the resca
   REQUIRE(r.exit_code == 0);
   CHECK(nlohmann::json::parse(r.out)["tangential_work_J"].get<double>() > 0);
   CHECK_THAT(r.err, Catch::Contains("created energy") && Catch::Contains("mindlin-no-slip"));
+  // A contact that slides for an instant at onset and then sticks: a linear spring at mu = 100
+  // and 1 degree (its stiffness is finite at zero overlap, so it outruns the closed cone at onset;
+  // the cone, mu times Hertz's force, then outgrows it). It must stick all but the onset and the
+  // cone's closing at separation, and take energy; sliding throughout instead would throw the
+  // sphere back at hundreds of m/s (a switching defect found while writing the event-located
+  // stick/slip).
+  for (const char* model : {"linear-spring", "mindlin-rescale", "mindlin-deresiewicz"}) {
+    CAPTURE(model);
+    const nlohmann::json j =
+        oblique_json(std::string("--incidence-angle 1 --friction 100 --damping none --tangential-model ") + model);
+    CHECK(j["sliding_fraction"].get<double>() < 0.01);
+    CHECK(j["tangential_work_J"].get<double>() < 0);
+  }
   for (const char* model : {"mindlin-rescale", "mindlin-deresiewicz"})
     for (const char* angle : {"0", "1", "20", "60"})
       for (const char* friction : {"0.3", "100"})

@@ -48,10 +48,10 @@ class ReboundAngleData final : public FitData {
   bool sd_known() const override { return false; }
   double least_variance() const override { return 1e-6 * 1e-6; }  // the runs' accuracy in degrees, and then some
   std::string outside_domain() const override { return outside_; }
-  // A run takes 5 to 30 ms at the fit's tolerance, 1e4 units on average; a fit about 10
+  // A run takes about 0.1 ms at the fit's tolerance (about 200 steps): 2e2 units, with margin; a fit about 10
   // iterations of 2 p + 2 evaluations of every row.
   FitWork predicted_work(std::size_t p) const override {
-    return {1e4 * static_cast<double>(rows()) * 10.0 * (2.0 * static_cast<double>(p) + 2.0),
+    return {2e2 * static_cast<double>(rows()) * 10.0 * (2.0 * static_cast<double>(p) + 2.0),
             fmt::format("{}: {} rebound angles, {} parameter{}", table_.source, rows(), p, p == 1 ? "" : "s")};
   }
   std::string too_few(std::size_t n, std::size_t p) const override {

@@ -48,7 +48,7 @@ class LawNormalForce final : public NormalForceJet {
 };
 
 struct Observer {
-  bool separated = false, reversal = false;
+  bool separated = false, reversal = false, stick_end = false, slide_end = false;
   double peak_force_N = 0;
   const NormalForceJet* force = nullptr;
   // The largest force: at the located maxima (dF/dtau through 0), at every step, and at onset
@@ -58,6 +58,8 @@ struct Observer {
   void on_event(int which, double, const ObliqueContactSystem::State& y, EventAction) {
     if (which == static_cast<int>(ObliqueContactEvent::separation)) separated = true;
     if (which == static_cast<int>(ObliqueContactEvent::slip_reversal)) reversal = true;
+    if (which == static_cast<int>(ObliqueContactEvent::stick_end)) stick_end = true;
+    if (which == static_cast<int>(ObliqueContactEvent::slide_end)) slide_end = true;
     if (which == static_cast<int>(ObliqueContactEvent::peak_normal_force)) note(y);
   }
 };
@@ -144,15 +146,21 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   Observer observer{.separated = false, .peak_force_N = 0, .force = force.get()};
   observer.note(y);
   const DormandPrinceOptions options{.rtol = spec.solver.rtol, .atol = spec.solver.atol, .singular_points = false};
-  // A model with memory stops at each reversal of the slip; the contact goes on from there with T*
-  // recorded (ObliqueContactSystem::reversal_state).
+  // The run stops where sticking or sliding ends and goes on in the other mode, and for a model
+  // with memory at each reversal of the slip, with T* recorded (ObliqueContactSystem::reversal_state).
+  // A contact that switches more than max_switches times is refused (no run here needs a hundredth).
+  constexpr int max_switches = 100000;
   const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
-  for (double tau = 0;;) {
-    observer.reversal = false;
+  for (double tau = 0, switches = 0;; ++switches) {
+    observer.reversal = observer.stick_end = observer.slide_end = false;
     const IntegrationStats piece = integrate_dormand_prince(sys, y, tau, tau_end, options, observer);
     out.work.add_work(piece);
-    if (!observer.reversal) break;
-    y = sys.reversal_state(y);
+    if (observer.separated || !(observer.reversal || observer.stick_end || observer.slide_end)) break;
+    if (switches >= max_switches)
+      throw std::runtime_error(fmt::format("the contact switched between sticking and sliding more than {} times", max_switches));
+    if (observer.reversal) y = sys.reversal_state(y);
+    else if (observer.stick_end) y = sys.settled_mode(y, false, true);
+    else y = sys.stuck_state(y);
     tau = piece.t_final;
   }
   using I = ObliqueContactSystem::Index;
