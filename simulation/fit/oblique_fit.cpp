@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -15,9 +16,19 @@ namespace hertzdash {
 
 namespace {
 
+/// The linear spring's default k_t (Mindlin's 8 G* a at the undamped Hertz maximum overlap) of the
+/// head-on impact at `base`'s speed.
+double head_on_linear_stiffness(ObliqueImpactSpec base) {
+  base.incidence_angle_deg = 0;
+  base.tangential_model = "linear-spring";
+  base.linear_stiffness_N_per_m.reset();
+  return run_oblique_impact(base).linear_stiffness_N_per_m;
+}
+
 class ReboundAngleData final : public FitData {
  public:
-  ReboundAngleData(ReboundAngleTable table, ObliqueImpactSpec base) : table_(std::move(table)), base_(std::move(base)) {
+  ReboundAngleData(ReboundAngleTable table, ObliqueImpactSpec base, std::vector<std::string> names)
+      : table_(std::move(table)), base_(std::move(base)), names_(std::move(names)) {
     base_.solver = oblique_fit_solver();
   }
 
@@ -26,7 +37,10 @@ class ReboundAngleData final : public FitData {
     return {std::nullopt, i, 0, table_.incidence_angle_deg[i], table_.rebound_angle_deg[i], 0, 0, 1.0};
   }
   std::vector<double> start(const std::vector<FitParameter>& parameters) override {
-    return std::vector<double>(parameters.size(), 0.1);
+    std::vector<double> v;
+    for (const FitParameter& p : parameters)
+      v.push_back(p.option == "friction" ? 0.1 : base_.linear_stiffness_N_per_m.value_or(head_on_linear_stiffness(base_)));
+    return v;
   }
   bool residuals(const std::vector<double>& law, const std::vector<double>&, double* r) override {
     for (std::size_t i = 0; i < rows(); ++i) {
@@ -69,7 +83,7 @@ class ReboundAngleData final : public FitData {
         t.incidence_angle_deg.push_back(table_.incidence_angle_deg[i]);
         t.rebound_angle_deg.push_back(table_.rebound_angle_deg[i]);
       }
-    return std::make_unique<ReboundAngleData>(std::move(t), base_);
+    return std::make_unique<ReboundAngleData>(std::move(t), base_, names_);
   }
   void finish(FitResult& fit, const std::vector<double>&, const std::vector<double>&) override {
     fit.model_runs = runs_;
@@ -81,13 +95,17 @@ class ReboundAngleData final : public FitData {
   ObliqueImpactResult run_at(const std::vector<double>& law, double angle_deg) {
     ObliqueImpactSpec s = base_;
     s.incidence_angle_deg = angle_deg;
-    s.friction = law[0];
+    for (std::size_t j = 0; j < names_.size(); ++j) {
+      if (names_[j] == "friction") s.friction = law[j];
+      else s.linear_stiffness_N_per_m = law[j];
+    }
     ++runs_;
     return run_oblique_impact(s);
   }
 
   ReboundAngleTable table_;
   ObliqueImpactSpec base_;
+  std::vector<std::string> names_;
   int runs_ = 0;
   std::string outside_;
 };
@@ -106,10 +124,44 @@ FitResult fit_rebound_angles(const ReboundAngleTable& table, const ObliqueImpact
     throw DataError(table.source + ": as many rebound angles as incident angles are needed");
   FitSettings settings = given;
   if (settings.parameters.empty()) settings.parameters = {{"friction", 1e-3, 2.0}};
-  for (const FitParameter& p : settings.parameters)
-    if (p.option != "friction") throw InvalidParameter("fit", p.option, "friction, the one parameter fitted to rebound angles");
-  ReboundAngleData data(table, base);
-  return fit(data, base.tangential_model, settings);
+  std::vector<std::string> names;
+  for (const FitParameter& p : settings.parameters) {
+    if (p.option != "friction" && p.option != "tangential-stiffness")
+      throw InvalidParameter("fit", p.option, "friction or tangential-stiffness, the parameters fitted to rebound angles");
+    if (p.option == "tangential-stiffness" && base.tangential_model != "linear-spring")
+      throw InvalidParameter("fit", p.option, "fitted with the tangential model linear-spring only");
+    names.push_back(p.option);
+  }
+  const auto stiffness = std::find(names.begin(), names.end(), "tangential-stiffness");
+  if (stiffness == names.end() || names.size() != 2) {
+    ReboundAngleData data(table, base, names);
+    return fit(data, base.tangential_model, settings);
+  }
+  // mu and k_t together: the least squares have many minima in k_t (the header), so mu alone is
+  // fitted on a grid of k_t, 20 points a decade over a decade and a half either side of k_t0 (the
+  // given stiffness, else the default), within the parameter's bounds, and the best point starts
+  // the joint fit.
+  const std::size_t k = static_cast<std::size_t>(stiffness - names.begin()), m = 1 - k;
+  const double k0 = base.linear_stiffness_N_per_m.value_or(head_on_linear_stiffness(base));
+  FitSettings scan = settings;
+  scan.parameters = {settings.parameters[m]};
+  scan.cross_validate = scan.profile_intervals = false;
+  std::vector<double> best_start(2);
+  double best_chi_square = INFINITY;
+  for (int i = -30; i <= 30; ++i) {
+    const double k_t = k0 * std::pow(10.0, i / 20.0);
+    if (!(k_t > settings.parameters[k].lower && k_t < settings.parameters[k].upper)) continue;
+    ObliqueImpactSpec at = base;
+    at.linear_stiffness_N_per_m = k_t;
+    ReboundAngleData data(table, at, {"friction"});
+    const FitResult r = fit(data, base.tangential_model, scan);
+    if (!r.failed && r.chi_square < best_chi_square)
+      best_chi_square = r.chi_square, best_start[m] = r.parameters[0].estimate, best_start[k] = k_t;
+  }
+  if (!std::isfinite(best_chi_square))
+    throw DataError(table.source + ": mu could not be fitted at any k_t of the scan within the stiffness's bounds");
+  ReboundAngleData data(table, base, names);
+  return fit(data, base.tangential_model, settings, best_start);
 }
 
 }  // namespace hertzdash

@@ -6,13 +6,15 @@
 // (simulation/run/oblique_impact.hpp) per row.
 //
 // Model. At each row's incident angle, the rebound angle of `base` (its sphere, flat, normal law,
-// tangential model, speed and spin) with Coulomb's mu (`friction`) replaced. A linear spring's
-// stiffness is not offered beside mu: the rebound angle of a sticking contact oscillates with k_t
-// (through cos(Omega t_c), Omega^2 = k_t/m_t), so the least squares in (mu, k_t) have many minima.
-// On a virtual experiment (mu = 0.2, k_t = 2e6 N/m, four angles, the test-4 sphere) the sum of
-// squares is 0 at the truth, 3.4 deg^2 at mu = 0.3, but 1245 at k_t = 6e6 and 168 at (0.036, 2e8),
-// where the joint fit stopped, from the default start and from the best of a five-point scan in
-// k_t alike. The runs use Dormand-Prince at rtol
+// tangential model, speed and spin) with the fitted parameters replaced: Coulomb's mu (`friction`)
+// and, for the linear spring, its stiffness (`tangential-stiffness` [N/m]). The rebound angle of
+// a sticking contact oscillates with k_t (through cos(Omega t_c), Omega^2 = k_t/m_t), so the least
+// squares in (mu, k_t) have many minima: on a virtual experiment (mu = 0.2, k_t = 2e6 N/m, four
+// angles, the test-4 sphere) the sum of squares is 0 at the truth, 3.4 deg^2 at mu = 0.3, but 1245
+// at k_t = 6e6 and 168 at (0.036, 2e8), where a joint fit from the default start stopped (and from
+// the best of a five-point scan in k_t). A joint fit therefore starts from a fine scan: mu alone
+// fitted at k_t0 10^(i/20), i = -30..30 (k_t0 the given stiffness, else Mindlin's 8 G* a of the
+// head-on impact), the best point starting the joint fit. The runs use Dormand-Prince at rtol
 // 1e-10, atol 1e-12 of the state's scales: a rebound angle to about 1e-8 degrees, smooth at the
 // scale of the engine's difference step (1e-6 in the unbounded variables).
 //
@@ -36,8 +38,8 @@ struct ReboundAngleTable {
 
 /// Fit `table` with the oblique impacts of `base` (its incidence angle replaced by each row's);
 /// settings.parameters empty: `friction` in [1e-3, 2]. Throws InvalidParameter("fit", ...) for a
-/// parameter other than `friction`, and DataError for a table with no more rows than parameters,
-/// or rows of different lengths.
+/// parameter other than `friction` and `tangential-stiffness` (the latter with linear-spring only),
+/// and DataError for a table with no more rows than parameters, or rows of different lengths.
 FitResult fit_rebound_angles(const ReboundAngleTable& table, const ObliqueImpactSpec& base, const FitSettings& settings);
 
 /// The solver of the fit's runs: rtol 1e-10, atol 1e-12.
