@@ -89,7 +89,7 @@ int main(int argc, char** argv) try {
     if (fits[i].aic < best_aic) best_aic = fits[i].aic, best = trials[i].label;
   }
   std::string table = "\\begin{tabular}{lrrrrr}\n\\toprule\n"
-                      "model & $\\mu$ & $k_t$ (MN/m) & scatter (deg) & $\\Delta$AIC & leave-one-out ratio \\\\\n\\midrule\n";
+                      "model & $\\mu$ & $k_t$ (MN/m) & scatter (deg) & $\\Delta$AIC & CV ratio \\\\\n\\midrule\n";
   for (std::size_t i = 0; i < fits.size(); ++i) {
     const FitResult& f = fits[i];
     const Trial& trial = trials[i];
