@@ -67,6 +67,9 @@ struct TangentialContact {
   double friction = 0;         ///< Coulomb's mu >= 0
   double inertia_factor = 0.4; ///< kappa = I / (m R^2)
   double radius_m = 0;         ///< the sphere's R (its lever arm) [m]
+  /// zeta_t >= 0: a dashpot beside the spring, D = -eta s with eta = 2 zeta_t sqrt(k_t m_t), so that
+  /// a sticking contact's slip is a linear oscillator of damping ratio zeta_t (0: none).
+  double damping_ratio = 0;
 };
 
 /// The onset of an oblique impact: normal speed v0 > 0, tangential w0 and spin omega0.
@@ -91,6 +94,7 @@ class ObliqueContactSystem {
                        const ObliqueOnset& onset, double t_obs_s)
       : normal_(&normal), c_(tangential), inverse_m_(1 / mass_kg),
         inverse_I_(1 / (tangential.inertia_factor * mass_kg * tangential.radius_m * tangential.radius_m)),
+        m_t_(mass_kg * tangential.inertia_factor / (1 + tangential.inertia_factor)),
         onset_(onset), t_obs_s_(t_obs_s) {
     const double v0 = onset.normal_speed_mps, X = undamped_hertz_max_deformation_m(K, mass_kg, v0);
     const double t_H = undamped_hertz_contact_time_factor() * X / v0;
@@ -121,12 +125,13 @@ class ObliqueContactSystem {
     if (onset) z[u] = 1e-6 * scale_[u];
     const Rates r = rates(z);
     State out = y;
-    const double sigma = y[T] != 0 ? std::copysign(1.0, y[T]) : r.friction_sign;
-    const double cone = cone_N(normal_->at(std::max(y[u], 0.0), y[v]).value);  // at y itself, not the probe
-    const bool at_cone = on_cone || std::abs(y[T]) >= cone;
+    const Rates here = rates(y);  // at y itself, not the probe
+    const double total = y[T] + here.damping_N;
+    const double sigma = total != 0 ? std::copysign(1.0, total) : r.friction_sign;
+    const bool at_cone = on_cone || std::abs(total) >= here.cone;
     const bool pushing = r.stick != 0 || r.cone_rate != 0;
     out[mode] = at_cone && sigma != 0 && pushing && sigma * r.stick >= r.cone_rate ? sigma : 0.0;
-    if (out[mode] != 0) out[T] = out[mode] * cone;
+    if (out[mode] != 0) out[T] = out[mode] * here.cone - here.damping_N;
     return out;
   }
 
@@ -134,17 +139,19 @@ class ObliqueContactSystem {
   /// flipped, reversed.
   State reversal_state(const State& y) const {
     State z = y;
-    z[cone_turn] = cone_N(normal_->at(std::max(y[u], 0.0), y[v]).value);
-    z[T] = z[T_turn] = force_on_sphere(y, z[cone_turn]);
+    const Rates r = rates(y);
+    z[cone_turn] = r.cone;
+    z[T] = z[T_turn] = r.force - r.damping_N;  // the spring's force
     z[slip_sign] = -y[slip_sign];
     z[reversed] = 1;
     return settled_mode(z);
   }
 
-  /// The state where sliding ends: T on the cone, sticking.
+  /// The state where sliding ends: the force T + D on the cone, sticking.
   State stuck_state(const State& y) const {
     State z = y;
-    z[T] = force_on_sphere(y, cone_N(normal_->at(std::max(y[u], 0.0), y[v]).value));
+    const Rates r = rates(y);
+    z[T] = r.force - r.damping_N;
     z[mode] = 0;
     return z;
   }
@@ -157,14 +164,14 @@ class ObliqueContactSystem {
     const double uu = std::max(y[u], 0.0), two_u = 2 * uu;
     const Rates r = rates(y);
     const double sliding = y[mode] != 0 ? 1.0 : 0.0, s = slip_mps(y);
-    const double Tc = force_on_sphere(y, r.cone);
     dy[u] = y[v];
     dy[v] = r.dv;
     dy[t] = two_u;
-    dy[T] = sliding != 0 ? y[mode] * r.cone_rate : r.stick;
-    dy[w] = two_u * Tc * inverse_m_;
-    dy[omega] = two_u * c_.radius_m * Tc * inverse_I_;
-    dy[W] = two_u * Tc * s;
+    // Sliding, the spring's force follows the cone less the dashpot's: T + D = sigma mu F_n.
+    dy[T] = sliding != 0 ? y[mode] * r.cone_rate - r.damping_rate : r.spring_rate;
+    dy[w] = two_u * r.force * inverse_m_;
+    dy[omega] = two_u * c_.radius_m * r.force * inverse_I_;
+    dy[W] = two_u * r.force * s;
     dy[t_slide] = two_u * sliding;
     dy[T_turn] = dy[slip_sign] = dy[reversed] = dy[cone_turn] = dy[mode] = 0;
   }
@@ -184,7 +191,7 @@ class ObliqueContactSystem {
     // projected onto the cone at each switch.
     const double rate_scale = std::abs(r.stick) + std::abs(r.cone_rate);
     g = {y[u], r.dF, t_obs_s_ - y[t], c_.model->remembers_reversals ? y[slip_sign] * slip_mps(y) : 1.0,
-         y[mode] == 0 ? r.cone * (1 - stick_band) - std::abs(y[T]) + onset_margin * scale_[T] : 1.0,
+         y[mode] == 0 ? r.cone * (1 - stick_band) - std::abs(y[T] + r.damping_N) + onset_margin * scale_[T] : 1.0,
          y[mode] != 0 ? y[mode] * r.stick - r.cone_rate + slide_offset * rate_scale + onset_margin * rate_unit() : 1.0};
   }
 
@@ -200,17 +207,14 @@ class ObliqueContactSystem {
   /// The scale of T's rates in tau, dT/dtau = 2u dT/dt ~ 2 u_scale T_scale / t_H.
   double rate_unit() const { return 2 * scale_[u] * scale_[T] / scale_[t]; }
 
-  /// The tangential force on the sphere: sliding, sigma mu F_n exactly (T's state follows it, but
-  /// its integration error would put a kink into the right-hand side through a clamp); sticking,
-  /// T, within the cone.
-  double force_on_sphere(const State& y, double cone) const {
-    return y[mode] != 0 ? y[mode] * cone : std::clamp(y[T], -cone, cone);
-  }
-
-  /// The rates in tau at y: dv/dtau, dF_n/dtau, the cone mu F_n and its rate (0 in tension), the
-  /// sticking rate of T (the spring, a model's coupling and rescaling), and -sign of the friction.
+  /// The rates in tau at y: dv/dtau, dF_n/dtau, the cone mu F_n and its rate (0 in tension); the
+  /// dashpot's force D = -eta s and its rate; the tangential force on the sphere (sliding, sigma mu
+  /// F_n exactly: T's state follows it, but its integration error would put a kink into the
+  /// right-hand side through a clamp; sticking, T + D within the cone); the spring's rate while
+  /// sticking (the spring, a model's coupling and rescaling) and the force's, spring and dashpot
+  /// (`stick`, what the cone is compared with); the friction's direction -sign s.
   struct Rates {
-    double dv, dF, cone, cone_rate, stick, friction_sign;
+    double dv, dF, cone, cone_rate, damping_N, damping_rate, force, spring_rate, stick, friction_sign;
   };
   Rates rates(const State& y) const {
     const double uu = std::max(y[u], 0.0), two_u = 2 * uu;
@@ -220,9 +224,27 @@ class ObliqueContactSystem {
     r.dF = F.d[0] * y[v] + F.d[1] * r.dv;
     r.cone = cone_N(F.value);
     r.cone_rate = c_.friction * (F.value > 0 ? r.dF : 0.0);
-    const double s = slip_mps(y), Tc = force_on_sphere(y, r.cone);
-    const TangentialState state{.overlap_m = uu * uu, .force_N = Tc, .cone_N = r.cone, .turn_force_N = y[T_turn],
-                                .turn_cone_N = y[cone_turn], .reversed = y[reversed] != 0};
+    const double s = slip_mps(y);
+    // The spring's force within the cone (sliding: sigma mu F_n less the dashpot's).
+    TangentialState state{.overlap_m = uu * uu, .force_N = std::clamp(y[T], -r.cone, r.cone), .cone_N = r.cone,
+                          .turn_force_N = y[T_turn], .turn_cone_N = y[cone_turn], .reversed = y[reversed] != 0};
+    const double k = c_.model->stiffness_N_per_m(c_.pair, state);
+    double eta = 0, deta = 0;
+    if (c_.damping_ratio > 0 && k > 0) {
+      eta = 2 * c_.damping_ratio * std::sqrt(k * m_t_);
+      // deta/dtau = eta (dk/dtau) / (2k), dk/dtau = (dk/du) v: the overlap's share of k's change.
+      if (uu > 0) {
+        const double du = 1e-6 * uu;
+        TangentialState up = state, down = state;
+        up.overlap_m = (uu + du) * (uu + du), down.overlap_m = (uu - du) * (uu - du);
+        const double dk_du = (c_.model->stiffness_N_per_m(c_.pair, up) - c_.model->stiffness_N_per_m(c_.pair, down)) / (2 * du);
+        deta = eta * dk_du * y[v] / (2 * k);
+      }
+    }
+    r.damping_N = -eta * s;
+    r.force = y[mode] != 0 ? y[mode] * r.cone : std::clamp(y[T] + r.damping_N, -r.cone, r.cone);
+    state.force_N = y[mode] != 0 ? y[mode] * r.cone - r.damping_N : state.force_N;
+    const double Tc = state.force_N;
     // The friction's direction, -sign s; T's rate inside the cone: the spring, and a model's share
     // of the cone's change (normal_coupling).
     r.friction_sign = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
@@ -230,13 +252,16 @@ class ObliqueContactSystem {
         c_.model->normal_coupling && r.dF > 0 ? c_.model->normal_coupling(state) * r.friction_sign * c_.friction * r.dF : 0.0;
     // da/a = dx/(2x) = (v/u) dtau while the overlap falls.
     const double rescaled = c_.model->rescales_with_contact_radius && y[v] < 0 && uu > 0 ? Tc * y[v] / uu : 0.0;
-    r.stick = -two_u * c_.model->stiffness_N_per_m(c_.pair, state) * s + coupled + rescaled;
+    r.spring_rate = -two_u * k * s + coupled + rescaled;
+    // dD/dtau = -(deta/dtau) s - eta ds/dtau, ds/dtau = 2u F (1/m + R^2/I).
+    r.damping_rate = -deta * s - eta * two_u * r.force * (inverse_m_ + c_.radius_m * c_.radius_m * inverse_I_);
+    r.stick = r.spring_rate + r.damping_rate;
     return r;
   }
 
   const NormalForceJet* normal_;
   TangentialContact c_;
-  double inverse_m_, inverse_I_;
+  double inverse_m_, inverse_I_, m_t_;  ///< m_t = m kappa/(1 + kappa): s' = T / m_t
   ObliqueOnset onset_;
   double t_obs_s_;
   State scale_;

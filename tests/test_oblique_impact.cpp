@@ -155,6 +155,7 @@ TEST_CASE("oblique impact: bad input is refused naming the parameter", "[oblique
   refused([](ObliqueImpactSpec& s) { s.speed_mps = std::nan(""); }, "impact-velocity");
   refused([](ObliqueImpactSpec& s) { s.spin_rad_per_s = std::numeric_limits<double>::infinity(); }, "spin");
   refused([](ObliqueImpactSpec& s) { s.linear_stiffness_N_per_m = -1e6; }, "tangential-stiffness");
+  refused([](ObliqueImpactSpec& s) { s.tangential_damping_ratio = -0.1; }, "tangential-damping");
 }
 
 namespace {
@@ -368,6 +369,34 @@ TEST_CASE("oblique impact of two spheres: a sticking pair slips with the pair's 
                     5e-3 * r.second_spin_after_rad_per_s;
   CAPTURE(s1 / s0, std::cos(2.0));
   CHECK(std::abs(s1 / s0 - std::cos(2.0)) < 1e-6);
+}
+
+TEST_CASE("oblique impact: a sticking contact with a tangential dashpot is a damped linear oscillator", "[oblique]") {
+  // A linear spring and a dashpot eta = 2 zeta sqrt(k_t m_t) while the contact sticks: m_t s'' =
+  // T + D, T' = -k_t s, D = -eta s, so s'' + 2 zeta Omega s' + Omega^2 s = 0 with s(0) = s0 and
+  // s'(0) = -eta s0 / m_t = -2 zeta Omega s0 (the dashpot acts from onset, the spring not yet):
+  //   s(t) = s0 e^{-zeta Omega t} (cos(Omega_d t) - zeta / sqrt(1 - zeta^2) sin(Omega_d t)),
+  // Omega_d = Omega sqrt(1 - zeta^2), for the normal contact's duration t_c (kelvin-voigt at e = 1,
+  // its t_c from the run). The test-4 sphere at 10 degrees, m_t = m kappa/(1 + kappa), k_t set so
+  // that Omega t_c = 2, mu = 1e6: the contact slides only for the instant the dashpot's force
+  // exceeds the opening cone, and where it closes, shares of order 1/mu; 1e-6 of s0 asserted.
+  for (const double zeta : {0.1, 0.3}) {
+    ObliqueImpactSpec s = alumina("kelvin-voigt", 1, 0, 10);
+    s.tangential_model = "linear-spring";
+    const double t_c = run_oblique_impact(s).contact_time_s;
+    const double m_t = s.setup.mass_kg * 0.4 / 1.4, Omega = 2 / t_c;
+    s.friction = 1e6;
+    s.linear_stiffness_N_per_m = m_t * Omega * Omega;
+    s.tangential_damping_ratio = zeta;
+    const ObliqueImpactResult r = run_oblique_impact(s);
+    REQUIRE(r.separated);
+    const double s0 = speed * std::sin(10 * pi / 180), s1 = r.tangential_velocity_after_mps + R * r.spin_after_rad_per_s;
+    const double root = std::sqrt(1 - zeta * zeta), Omega_d = Omega * root;
+    const double expected = std::exp(-zeta * Omega * t_c) * (std::cos(Omega_d * t_c) - zeta / root * std::sin(Omega_d * t_c));
+    CAPTURE(zeta, s1 / s0, expected);
+    CHECK(std::abs(s1 / s0 - expected) < 1e-6);
+    CHECK(r.tangential_work_J < 0);
+  }
 }
 
 TEST_CASE("oblique impact of two spheres: Chung and Ooi's test 7, counter-spinning spheres without slip keep their spins",

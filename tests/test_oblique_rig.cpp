@@ -91,6 +91,16 @@ TEST_CASE("oblique: the springs take energy from the sliding and spin, the resca
   // cone's closing at separation, and take energy; sliding throughout instead would throw the
   // sphere back at hundreds of m/s (a switching defect found while writing the event-located
   // stick/slip).
+  // A tangential dashpot only takes: W < 0 with one of damping ratio 0.5 where the contact sticks,
+  // reverses and slides.
+  for (const char* model : {"mindlin-no-slip", "mindlin-rescale", "linear-spring"})
+    for (const char* args : {"--incidence-angle 0 --spin 100 --friction 1", "--incidence-angle 5 --friction 0.3",
+                             "--incidence-angle 60 --friction 0.092"}) {
+      CAPTURE(model, args);
+      const nlohmann::json j =
+          oblique_json(std::string(args) + " --damping none --tangential-damping 0.5 --tangential-model " + model);
+      CHECK(j["tangential_work_J"].get<double>() < 0);
+    }
   for (const char* model : {"linear-spring", "mindlin-rescale", "mindlin-deresiewicz"}) {
     CAPTURE(model);
     const nlohmann::json j =
@@ -128,7 +138,9 @@ TEST_CASE("oblique: bad input exits 2 naming the option", "[rigs][oblique]") {
                                     {"--tangential-stiffness 1e6", "--tangential-stiffness"},
                                     {"--second-E 1e9", "--second-E"},
                                     {"--second-spin 3", "--second-spin"},
-                                    {"--second-radius 1e-3", "--rod-E"}})
+                                    {"--second-radius 1e-3", "--rod-E"},
+                                    {"--tangential-damping -0.1", "--tangential-damping"},
+                                    {"--tangential-damping 0.3 --tangential-model mindlin-deresiewicz", "--tangential-damping"}})
     refused(alumina + args, named);
   // A second sphere's own inputs, without a flat.
   const std::string pair = "oblique --mass 2.6e-4 --ball-radius 2.5e-3 --impact-velocity 3.9 --second-radius 1e-3 ";

@@ -38,6 +38,10 @@ constexpr ParameterDecl tangential_stiffness{.key = "tangential-stiffness", .uni
     .range = R::positive(), .default_value = "matched",
     .default_source = "Mindlin's 8 G* a at the normal impact's undamped Hertz maximum overlap",
     .help = "Stiffness k_t [N/m] of the linear tangential spring (--tangential-model linear-spring)"};
+constexpr ParameterDecl tangential_damping{.key = "tangential-damping", .range = R::non_negative(), .default_value = "0",
+    .default_number = 0, .default_source = "none",
+    .help = "Damping ratio zeta_t >= 0 of a tangential dashpot beside the spring, eta = 2 zeta_t sqrt(k_t m_t): a "
+            "sticking contact's slip oscillates with that damping ratio"};
 constexpr ParameterDecl second_spin{.key = "second-spin", .unit = "rad/s", .column_unit = "rad_per_s",
     .range = R::open(-infinity, infinity), .default_value = "0", .default_number = 0, .default_source = "no spin",
     .help = "The second sphere's angular velocity at onset [rad/s] (with `second-radius`), counted so that the contact "
@@ -46,9 +50,9 @@ constexpr ParameterDecl second_inertia_factor{.key = "second-inertia-factor", .r
     .default_value = "0.4", .default_number = 0.4, .default_source = "a solid sphere, 2/5",
     .help = "The second sphere's moment of inertia over m R^2 (with `second-radius`)"};
 namespace sphere2 = second_sphere_inputs;
-constexpr ParameterDecl inputs[] = {incidence_angle, friction,    tangential_model,     spin,          inertia_factor,
-                                    tangential_stiffness, sphere2::radius, sphere2::E, sphere2::nu, sphere2::mass,
-                                    sphere2::density, second_spin, second_inertia_factor};
+constexpr ParameterDecl inputs[] = {incidence_angle,      friction,        tangential_model, spin,        inertia_factor,
+                                    tangential_stiffness, tangential_damping, sphere2::radius, sphere2::E, sphere2::nu,
+                                    sphere2::mass,        sphere2::density, second_spin,      second_inertia_factor};
 /// Given only with a second sphere (`second-radius`).
 constexpr const ParameterDecl* second_sphere_only[] = {&sphere2::E, &sphere2::nu, &sphere2::mass, &sphere2::density,
                                                        &second_spin, &second_inertia_factor};
@@ -114,6 +118,7 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   s.speed_mps = *setup.impact_velocity_mps;
   s.spin_rad_per_s = in.number_or_default(spin);
   s.inertia_factor = in.number_or_default(inertia_factor);
+  s.tangential_damping_ratio = in.number_or_default(tangential_damping);
   s.linear_stiffness_N_per_m = in.number("tangential-stiffness");
   if (in.number(sphere2::radius.key)) {
     const Sphere b = sphere2::resolve(options, in, {setup.ball_radius_m, setup.mass_kg, setup.ball});
@@ -128,7 +133,8 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   if (s.second) unread.insert(unread.end(), {"rod-E", "rod-nu"});
   r.inputs = describe_rig_run(setup, s.law, s.solver, unread);
   for (const auto& [decl, value] : {std::pair{incidence_angle, s.incidence_angle_deg}, {friction, s.friction},
-                                    {spin, s.spin_rad_per_s}, {inertia_factor, s.inertia_factor}})
+                                    {spin, s.spin_rad_per_s}, {inertia_factor, s.inertia_factor},
+                                    {tangential_damping, s.tangential_damping_ratio}})
     r.inputs.emplace_back(input_column(decl), fmt::format("{}", value));
   r.inputs.emplace_back(input_column(tangential_model), s.tangential_model);
   if (s.linear_stiffness_N_per_m) r.inputs.emplace_back(input_column(tangential_stiffness), fmt::format("{}", *s.linear_stiffness_N_per_m));

@@ -78,6 +78,14 @@ void validate(const ObliqueImpactSpec& s) {
   if (!(s.inertia_factor > 0 && s.inertia_factor <= 1))
     throw InvalidParameter("inertia-factor", format_value(s.inertia_factor), "in (0, 1] (I / (m R^2): 2/5 solid, 2/3 thin shell)");
   if (!std::isfinite(s.spin_rad_per_s)) throw InvalidParameter("spin", format_value(s.spin_rad_per_s), "finite");
+  if (!(s.tangential_damping_ratio >= 0 && std::isfinite(s.tangential_damping_ratio)))
+    throw InvalidParameter("tangential-damping", format_value(s.tangential_damping_ratio), ">= 0");
+  // A stiffness that depends on the force (mindlin-deresiewicz's theta) would make the dashpot's
+  // coefficient depend on it too; its runs with a dashpot did not finish (the modes chattered).
+  if (s.tangential_damping_ratio > 0 && find_tangential_model(s.tangential_model)->remembers_reversals)
+    throw InvalidParameter("tangential-damping", format_value(s.tangential_damping_ratio),
+                           "0 with the tangential model " + s.tangential_model +
+                               " (its stiffness depends on the force; the dashpot is offered with the other models)");
   if (s.linear_stiffness_N_per_m && !(*s.linear_stiffness_N_per_m > 0 && std::isfinite(*s.linear_stiffness_N_per_m)))
     throw InvalidParameter("tangential-stiffness", format_value(*s.linear_stiffness_N_per_m), "> 0");
   if (s.second) {
@@ -130,7 +138,8 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
 
   ObliqueImpactResult out;
   TangentialContact c{.model = find_tangential_model(spec.tangential_model), .pair = {}, .friction = spec.friction,
-                      .inertia_factor = equivalent.inertia_factor, .radius_m = setup.ball_radius_m};
+                      .inertia_factor = equivalent.inertia_factor, .radius_m = setup.ball_radius_m,
+                      .damping_ratio = spec.tangential_damping_ratio};
   c.pair.shear_modulus_Pa = tangential_shear_modulus_Pa(setup.ball.E_Pa, setup.ball.nu, setup.rod.E_Pa, setup.rod.nu);
   c.pair.radius_m = setup.ball_radius_m;
   if (c.model->name == "linear-spring") {

@@ -34,6 +34,7 @@ struct ObliqueImpactSpec {
   double speed_mps = 0;                ///< the centre's speed at onset, > 0
   double spin_rad_per_s = 0;           ///< omega0, the contact point sliding at w + R omega
   double inertia_factor = 0.4;         ///< kappa = I/(m R^2), (0, 1]: 2/5 solid, 2/3 thin shell
+  double tangential_damping_ratio = 0; ///< zeta_t >= 0 of a tangential dashpot, eta = 2 zeta_t sqrt(k_t m_t) (model/oblique_contact.hpp)
   std::optional<double> linear_stiffness_N_per_m;  ///< linear-spring's k_t (default: Mindlin's 8 G* a at the
                                                    ///< undamped Hertz maximum overlap of the normal impact)
   /// A second sphere instead of the flat (setup.rod then unread): speed_mps and the angle are the
