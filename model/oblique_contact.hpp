@@ -23,8 +23,9 @@
 // The switches are events: sticking ends where |T| reaches the cone (mu F_n - |T| through 0),
 // sliding where the sticking rate stops pushing outwards (sigma (sticking rate) - mu dF_n/dt
 // through 0); the run stops there, sets the mode (settled_mode(), which also projects T onto the
-// cone) and goes on. Each mode's right-hand side is smooth, so the steps need not shrink across a
-// switch.
+// cone) and goes on. Each mode's right-hand side is smooth away from onset and separation (a
+// tangential dashpot with Mindlin's stiffness grows as x^{1/4}, its rate singular there), so the
+// steps need not shrink across a switch.
 // At onset T = 0 and, but for a law whose dashpot acts at zero overlap (kelvin-voigt), F_n = 0: the
 // contact starts on the cone, sliding wherever k_t |s| exceeds
 // mu dF_n/dt there (for Mindlin's k_t and Hertz's F_n: |s|/v0 >= mu E*/(4 G*), Maw, Barber and
@@ -115,11 +116,13 @@ class ObliqueContactSystem {
     return settled_mode(y, true);
   }
 
-  /// y in the mode its rates call for: sliding (T projected onto the cone, with the sign of T, or
-  /// of the friction where T = 0) where the force is on the cone (or `on_cone`: an event put it
-  /// there) and the sticking rate pushes outwards at least as fast as the cone grows, else
-  /// sticking. At onset (`onset`) the rates all vanish with the overlap: they are compared at u =
-  /// 1e-6 of the overlap's scale instead, where their ratio is already the limit's.
+  /// y in the mode its rates call for: sliding (with the sign of T + D, or of the friction where it
+  /// is 0) where the force is on the cone (or `on_cone`: an event put it there) and the sticking
+  /// rate pushes outwards at least as fast as the cone grows, else sticking. Either way a force
+  /// T + D at or beyond the cone is projected onto it (T = sigma mu F_n - D): a dashpot acts at
+  /// onset where the cone is still closed. At onset (`onset`) the rates all vanish with the
+  /// overlap: they are compared at u = 1e-6 of the overlap's scale instead, where their ratio is
+  /// already the limit's.
   State settled_mode(const State& y, bool onset = false, bool on_cone = false) const {
     State z = y;
     if (onset) z[u] = 1e-6 * scale_[u];
@@ -131,7 +134,7 @@ class ObliqueContactSystem {
     const bool at_cone = on_cone || std::abs(total) >= here.cone;
     const bool pushing = r.stick != 0 || r.cone_rate != 0;
     out[mode] = at_cone && sigma != 0 && pushing && sigma * r.stick >= r.cone_rate ? sigma : 0.0;
-    if (out[mode] != 0) out[T] = out[mode] * here.cone - here.damping_N;
+    if (at_cone && sigma != 0) out[T] = sigma * here.cone - here.damping_N;
     return out;
   }
 
@@ -187,8 +190,10 @@ class ObliqueContactSystem {
     // cone's: on a softened spring both rates are the cone's, and the rounding of their difference
     // would otherwise switch back and forth; at onset, where both rates vanish, a margin of 1e-10
     // of the rates' scale again lets a crossing inside the first step be seen (a linear spring
-    // slides for an instant at onset, where the cone is still closed, then sticks). T is
-    // projected onto the cone at each switch.
+    // slides for an instant at onset, where the cone is still closed, then sticks). T + D is
+    // projected onto the cone at each switch. After sliding ends, sticking's function starts at
+    // -1e-8 of the cone (plus the margin): the rates then point inwards, so it rises through 0
+    // before it can fall through it.
     const double rate_scale = std::abs(r.stick) + std::abs(r.cone_rate);
     g = {y[u], r.dF, t_obs_s_ - y[t], c_.model->remembers_reversals ? y[slip_sign] * slip_mps(y) : 1.0,
          y[mode] == 0 ? r.cone * (1 - stick_band) - std::abs(y[T] + r.damping_N) + onset_margin * scale_[T] : 1.0,

@@ -101,6 +101,25 @@ TEST_CASE("oblique: the springs take energy from the sliding and spin, the resca
           oblique_json(std::string(args) + " --damping none --tangential-damping 0.5 --tangential-model " + model);
       CHECK(j["tangential_work_J"].get<double>() < 0);
     }
+  // A dashpot acts at onset, where the cone is still closed: the force T + D is projected onto the
+  // cone there. A vanishing dashpot must then change nothing (a reviewer found the linear spring
+  // sticking with T + D beyond the cone, the rebound angle jumping from -18.6 to -47.8 degrees
+  // and W > 0 at zeta = 1e-4); and a dashpot of Mindlin's stiffness grows as x^{1/4} like
+  // tsuji-dem's cone, whose derivative near onset must not be a coarse difference (the reviewer's
+  // spinning sphere reported no sliding at zeta = 0.00447 and full sliding at 0.003 and 0.01).
+  {
+    const std::string hongo = "--incidence-angle 45 --friction 0.3 --damping hongo --restitution 0.9 "
+                              "--tangential-model linear-spring";
+    const nlohmann::json plain = oblique_json(hongo), damped = oblique_json(hongo + " --tangential-damping 1e-4");
+    CHECK(damped["rebound_angle_deg"].get<double>() == Approx(plain["rebound_angle_deg"].get<double>()).margin(0.05));
+    CHECK(damped["tangential_work_J"].get<double>() < 0);
+    const std::string spin = "--incidence-angle 0 --spin 1e5 --friction 0.55 --damping tsuji-dem --restitution 0.514 "
+                             "--tangential-model mindlin-no-slip --tangential-damping ";
+    for (const char* zeta : {"0.003", "0.00447", "0.01"}) {
+      CAPTURE(zeta);
+      CHECK(oblique_json(spin + zeta)["sliding_fraction"].get<double>() > 0.99);
+    }
+  }
   for (const char* model : {"linear-spring", "mindlin-rescale", "mindlin-deresiewicz"}) {
     CAPTURE(model);
     const nlohmann::json j =
@@ -140,6 +159,7 @@ TEST_CASE("oblique: bad input exits 2 naming the option", "[rigs][oblique]") {
                                     {"--second-spin 3", "--second-spin"},
                                     {"--second-radius 1e-3", "--rod-E"},
                                     {"--tangential-damping -0.1", "--tangential-damping"},
+                                    {"--tangential-damping 1", "--tangential-damping"},
                                     {"--tangential-damping 0.3 --tangential-model mindlin-deresiewicz", "--tangential-damping"}})
     refused(alumina + args, named);
   // A second sphere's own inputs, without a flat.

@@ -39,7 +39,7 @@ class ReboundAngleData final : public FitData {
   std::vector<double> start(const std::vector<FitParameter>& parameters) override {
     std::vector<double> v;
     for (const FitParameter& p : parameters)
-      v.push_back(p.option == "friction" ? 0.1 : base_.linear_stiffness_N_per_m.value_or(head_on_linear_stiffness(base_)));
+      v.push_back(p.option == "friction" ? 0.1 : (base_.linear_stiffness_N_per_m ? *base_.linear_stiffness_N_per_m : head_on_linear_stiffness(base_)));
     return v;
   }
   bool residuals(const std::vector<double>& law, const std::vector<double>&, double* r) override {
@@ -142,7 +142,7 @@ FitResult fit_rebound_angles(const ReboundAngleTable& table, const ObliqueImpact
   // given stiffness, else the default), within the parameter's bounds, and the best point starts
   // the joint fit.
   const std::size_t k = static_cast<std::size_t>(stiffness - names.begin()), m = 1 - k;
-  const double k0 = base.linear_stiffness_N_per_m.value_or(head_on_linear_stiffness(base));
+  const double k0 = base.linear_stiffness_N_per_m ? *base.linear_stiffness_N_per_m : head_on_linear_stiffness(base);
   FitSettings scan = settings;
   scan.parameters = {settings.parameters[m]};
   scan.cross_validate = scan.profile_intervals = false;

@@ -38,9 +38,9 @@ constexpr ParameterDecl tangential_stiffness{.key = "tangential-stiffness", .uni
     .range = R::positive(), .default_value = "matched",
     .default_source = "Mindlin's 8 G* a at the normal impact's undamped Hertz maximum overlap",
     .help = "Stiffness k_t [N/m] of the linear tangential spring (--tangential-model linear-spring)"};
-constexpr ParameterDecl tangential_damping{.key = "tangential-damping", .range = R::non_negative(), .default_value = "0",
+constexpr ParameterDecl tangential_damping{.key = "tangential-damping", .range = R::closed_open(0, 1), .default_value = "0",
     .default_number = 0, .default_source = "none",
-    .help = "Damping ratio zeta_t >= 0 of a tangential dashpot beside the spring, eta = 2 zeta_t sqrt(k_t m_t): a "
+    .help = "Damping ratio zeta_t in [0, 1) of a tangential dashpot beside the spring, eta = 2 zeta_t sqrt(k_t m_t): a "
             "sticking contact's slip oscillates with that damping ratio"};
 constexpr ParameterDecl second_spin{.key = "second-spin", .unit = "rad/s", .column_unit = "rad_per_s",
     .range = R::open(-infinity, infinity), .default_value = "0", .default_number = 0, .default_source = "no spin",
