@@ -124,11 +124,11 @@ class ObliqueContactSystem {
   /// overlap: they are compared at u = 1e-6 of the overlap's scale instead, where their ratio is
   /// already the limit's.
   State settled_mode(const State& y, bool onset = false, bool on_cone = false) const {
+    const Rates here = rates(y);  // at y itself, not the probe
     State z = y;
     if (onset) z[u] = 1e-6 * scale_[u];
-    const Rates r = rates(z);
+    const Rates r = onset ? rates(z) : here;
     State out = y;
-    const Rates here = rates(y);  // at y itself, not the probe
     const double total = y[T] + here.damping_N;
     const double sigma = total != 0 ? std::copysign(1.0, total) : r.friction_sign;
     const bool at_cone = on_cone || std::abs(total) >= here.cone;

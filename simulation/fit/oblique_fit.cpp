@@ -20,9 +20,7 @@ namespace {
 /// head-on impact at `base`'s speed.
 double head_on_linear_stiffness(ObliqueImpactSpec base) {
   base.incidence_angle_deg = 0;
-  base.tangential_model = "linear-spring";
-  base.linear_stiffness_N_per_m.reset();
-  return run_oblique_impact(base).linear_stiffness_N_per_m;
+  return matched_linear_stiffness_N_per_m(base);
 }
 
 class ReboundAngleData final : public FitData {

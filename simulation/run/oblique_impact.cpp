@@ -117,7 +117,21 @@ EquivalentSphere equivalent_sphere(const ObliqueImpactSpec& spec, double v0) {
   return {setup, kappa, (first.radius_m * spec.spin_rad_per_s + b.radius_m * b.spin_rad_per_s) / R};
 }
 
+/// Mindlin's 8 G* a at the undamped Hertz maximum overlap X of the normal impact at v0 of `setup`.
+double matched_stiffness_N_per_m(const DropTestSetup& setup, double v0) {
+  const double X = undamped_hertz_max_deformation_m(hertz_stiffness(setup), setup.mass_kg, v0);
+  const TangentialPair pair{.shear_modulus_Pa = tangential_shear_modulus_Pa(setup.ball.E_Pa, setup.ball.nu, setup.rod.E_Pa,
+                                                                            setup.rod.nu),
+                            .radius_m = setup.ball_radius_m, .linear_stiffness_N_per_m = 0};
+  return mindlin_stiffness_N_per_m(pair, {.overlap_m = X});
+}
+
 }  // namespace
+
+double matched_linear_stiffness_N_per_m(const ObliqueImpactSpec& spec) {
+  const double v0 = spec.speed_mps * std::cos(spec.incidence_angle_deg * std::numbers::pi / 180);
+  return matched_stiffness_N_per_m(equivalent_sphere(spec, v0).setup, v0);
+}
 
 ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   validate(spec);
@@ -144,8 +158,7 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   c.pair.shear_modulus_Pa = tangential_shear_modulus_Pa(setup.ball.E_Pa, setup.ball.nu, setup.rod.E_Pa, setup.rod.nu);
   c.pair.radius_m = setup.ball_radius_m;
   if (c.model->name == "linear-spring") {
-    c.pair.linear_stiffness_N_per_m =
-        spec.linear_stiffness_N_per_m.value_or(8 * c.pair.shear_modulus_Pa * std::sqrt(c.pair.radius_m * X));
+    c.pair.linear_stiffness_N_per_m = spec.linear_stiffness_N_per_m.value_or(matched_stiffness_N_per_m(setup, v0));
     out.linear_stiffness_N_per_m = c.pair.linear_stiffness_N_per_m;
   }
   // Followed for at most 100 undamped Hertz contact times: a contact that lasts longer has not

@@ -62,6 +62,10 @@ struct ObliqueImpactResult {
   IntegrationStats work;
 };
 
+/// Mindlin's 8 G* a at the undamped Hertz maximum overlap of the normal impact at v cos(theta): the
+/// linear spring's k_t where none is given.
+double matched_linear_stiffness_N_per_m(const ObliqueImpactSpec& spec);
+
 /// Throws InvalidParameter naming `tangential-model`, `friction`, `incidence-angle`,
 /// `impact-velocity`, `inertia-factor`, `tangential-stiffness` or `damping` (an unknown law).
 ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec);
