@@ -8,8 +8,8 @@
 // e. How much?
 //
 // Runs: the test's set-up as Kratos's script gives it (R = 0.1 m, V_cn = 0.2 m/s, mu = 0.4,
-// e = 0.5, no tangential velocity) with a material of our choice (aluminium, E = 70 GPa, nu =
-// 0.33, 2700 kg/m^3: the test's is not at hand), Mindlin's no-slip spring, at x = 3.5 mu (1 + e)
+// e = 0.5, no tangential velocity) with the test's aluminium alloy (E = 70 GPa, nu = 0.33,
+// 2700 kg/m^3; data/external/chung-ooi-2011/README.md), Mindlin's no-slip spring, at x = 3.5 mu (1 + e)
 // V_cn / V_st from 0.2 to 30 (32 points, 10 reduced), for the laws whose e_eff is their input e:
 // kelvin-voigt and tsuji-dem with tension allowed, kuwabara-kono and lee-herrmann calibrated at
 // the impact speed (tests/test_chung_ooi.cpp, test 3).
@@ -21,8 +21,8 @@
 // the cone is closed, and each dashpot opens the cone faster than the spring loads at onset
 // (kelvin-voigt's and lee-herrmann's force even jumps there), so the contact sticks for its first
 // instants. Above x = 1
-// the laws part by tenths. The test-6 curve digitised from Chung and Ooi (its material unknown)
-// is drawn for orientation, not compared.
+// the laws part by tenths. The test-6 curve of the same alloy digitised from Chung and Ooi is drawn
+// for orientation (validation/chung_ooi_oblique compares the tangential models with it).
 //
 // Writes OUT/oblique_normal_law.csv (law, x, beta), OUT/oblique_normal_law_reference.csv (the
 // digitised points), GENERATED/oblique_normal_law.tex (macros \obliqueLaw...) and
@@ -81,7 +81,7 @@ int main(int argc, char** argv) try {
   for (int i = 0; i < n; ++i) xs.push_back(0.2 * std::pow(150.0, static_cast<double>(i) / (n - 1)));
 
   CsvWriter curves("hertzdash validation/oblique_normal_law: Chung and Ooi's test 6 set-up (R = 0.1 m, V_cn = 0.2 m/s, "
-                   "mu = 0.4, e = 0.5; aluminium, our choice) with mindlin-no-slip under each law whose e_eff is e",
+                   "mu = 0.4, e = 0.5; the test's aluminium alloy) with mindlin-no-slip under each law whose e_eff is e",
                    {{"tangential_model", "mindlin-no-slip"}}, {"model", "x", "beta"});
   // beta = -s1/s0 of `law` at x; the worst |e_n - e| seen.
   double worst_e = 0;
@@ -111,9 +111,9 @@ int main(int argc, char** argv) try {
   for (const double x : table_x) table += x < 1 ? fmt::format(" & ${:+.4f}$", x - 1) : std::string(" & --");
   table += " \\\\\n\\bottomrule\n\\end{tabular}\n";
   CsvWriter reference("hertzdash validation/oblique_normal_law: Chung and Ooi's test 6 curve as digitised in the Kratos DEM "
-                      "tests (data/external/chung-ooi-2011/test6_slip_ratio.dat; material not known)",
+                      "tests (data/external/chung-ooi-2011/test6_aluminium_slip_ratio.dat)",
                       {}, {"x", "beta"});
-  for (const auto& [x, b] : read_two_columns(chung_ooi_data_dir() / "test6_slip_ratio.dat")) reference.add_row({x, b});
+  for (const auto& [x, b] : read_two_columns(chung_ooi_data_dir() / "test6_aluminium_slip_ratio.dat")) reference.add_row({x, b});
 
   // Below x = 1: each law's largest departure from x - 1; above: the laws' spread (largest minus
   // smallest beta) and where it is largest.

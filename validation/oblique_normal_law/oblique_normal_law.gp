@@ -3,7 +3,7 @@
 # OUT/oblique_normal_law_reference.csv (validation/oblique_normal_law). Chung and Ooi's test 6
 # (a spinning sphere on a rigid flat, e = 0.5, mindlin-no-slip) under each law whose e_eff is e:
 # (a) beta = -s1/s0 against x = 3.5 mu (1 + e) V_cn / V_st (the axis labelled x), with the sliding closed form x - 1 and
-# the digitised test-6 curve (its material unknown: for orientation); (b) each law's departure
+# the digitised test-6 curve of the same aluminium alloy (for orientation); (b) each law's departure
 # from x - 1 below x = 1. Colours as in restitution_map (damping_laws/law_styles.gnuplot).
 out = ARG1
 here = system('dirname '.ARG0)
