@@ -31,13 +31,6 @@ using hertzdash::test::hunt_crossley_form_restitution;
 
 namespace {
 
-ChungOoiTest benchmark_test(const std::string& name) {
-  for (const ChungOoiTest& t : load_chung_ooi_tests())
-    if (t.name == name) return t;
-  FAIL("parameters.csv has no row " << name);
-  return {};
-}
-
 UndampedHertzImpact closed_form(const DropTestSetup& s) {
   return undamped_hertz_impact(hertz_stiffness(s), s.mass_kg, *s.impact_velocity_mps);
 }
@@ -55,7 +48,7 @@ TEST_CASE("Chung & Ooi: parameters.csv holds the benchmark's bodies and their on
   // E* = E / (1 - nu^2) = 70e9 / 0.91 = 76.923 GPa. The stored effective values carry 16 digits.
   for (const auto& [name, identical] : {std::pair{"test1", true}, std::pair{"test2", false}}) {
     INFO(name);
-    const ChungOoiTest t = benchmark_test(name);
+    const ChungOoiTest t = chung_ooi_row(name);
     const double m = t.density_kgpm3 * 4.0 / 3.0 * std::numbers::pi * std::pow(t.radius_m, 3);
     CHECK(t.rigid_flat == !identical);
     CHECK(t.effective_mass_kg == Approx(identical ? m / 2 : m).epsilon(1e-14));
@@ -66,11 +59,11 @@ TEST_CASE("Chung & Ooi: parameters.csv holds the benchmark's bodies and their on
     CHECK(s.gravity_mps2 == 0);
     CHECK(*s.impact_velocity_mps == t.relative_speed_mps);
   }
-  CHECK(benchmark_test("test1").relative_speed_mps == 20.0);
-  CHECK(benchmark_test("test2").relative_speed_mps == 0.2);
+  CHECK(chung_ooi_row("test1").relative_speed_mps == 20.0);
+  CHECK(chung_ooi_row("test2").relative_speed_mps == 0.2);
   // Test 3, alumina on a rigid flat (the Kratos test's Materials31.json, test3DEM.mdpa):
   // m = 4000 (4/3) pi (2.5e-3)^3 = 2.6179939e-4 kg, E* = 380e9 / (1 - 0.23^2) = 401.2248 GPa.
-  const ChungOoiTest t3 = benchmark_test("test3");
+  const ChungOoiTest t3 = chung_ooi_row("test3");
   CHECK(t3.rigid_flat);
   CHECK(t3.effective_mass_kg == Approx(2.6179939e-4).epsilon(1e-7));
   CHECK(t3.effective_radius_m == 2.5e-3);
@@ -78,7 +71,7 @@ TEST_CASE("Chung & Ooi: parameters.csv holds the benchmark's bodies and their on
   const DropTestSetup s3 = chung_ooi_setup(t3);
   CHECK(3 * hertz_stiffness(s3) / (4 * std::sqrt(2.5e-3)) == Approx(380e9 / (1 - 0.23 * 0.23)).epsilon(1e-14));
   // Test 4 throws the same alumina sphere at the same resultant speed (Kratos's Materials4.json).
-  const ChungOoiTest t4 = benchmark_test("test4");
+  const ChungOoiTest t4 = chung_ooi_row("test4");
   CHECK(t4.sphere.E_Pa == t3.sphere.E_Pa);
   CHECK(t4.sphere.nu == t3.sphere.nu);
   CHECK(t4.effective_mass_kg == t3.effective_mass_kg);
@@ -105,7 +98,7 @@ TEST_CASE("Chung & Ooi: the textbook numbers of tests 1 and 2 from the closed fo
   for (const Expected& e : {Expected{"test1", 274.113e-6, 10.6969e3, 40.3395e-6, 40.3638e-6},
                             Expected{"test2", 49.7172e-6, 11.3699e3, 731.657e-6, 732.099e-6}}) {
     INFO(e.name);
-    const ChungOoiTest t = benchmark_test(e.name);
+    const ChungOoiTest t = chung_ooi_row(e.name);
     const DropTestSetup s = chung_ooi_setup(t);
     const UndampedHertzImpact u = closed_form(s);
     CHECK(u.max_deformation_m == Approx(e.x_max_m).epsilon(1e-5));
@@ -130,7 +123,7 @@ TEST_CASE("Chung & Ooi: both tests through the simulator meet the closed forms t
   // the same N rtol.
   for (const char* name : {"test1", "test2"}) {
     INFO(name);
-    const DropTestSetup s = chung_ooi_setup(benchmark_test(name));
+    const DropTestSetup s = chung_ooi_setup(chung_ooi_row(name));
     const UndampedHertzImpact u = closed_form(s);
     SolverSettings solver;
     solver.rtol = 1e-10;
@@ -166,7 +159,7 @@ TEST_CASE("Chung & Ooi: the digitised curves lie within their digitisation uncer
   const std::filesystem::path dir = chung_ooi_data_dir();
   int total = 0, vertical_over = 0;
   for (const char* name : {"test1", "test2"}) {
-    const DropTestSetup s = chung_ooi_setup(benchmark_test(name));
+    const DropTestSetup s = chung_ooi_setup(chung_ooi_row(name));
     const UndampedHertzImpact u = closed_form(s);
     const double K = hertz_stiffness(s), m = s.mass_kg, v = *s.impact_velocity_mps;
     auto by_overlap = [K](double x) { return x <= 0 ? 0.0 : K * std::pow(x, 1.5); };
@@ -292,7 +285,7 @@ TEST_CASE("Chung & Ooi test 3: the laws that invert their own restitution pass i
   //    the impact speed, whatever e it is given.
   // CVODE at rtol 1e-10: e_eff to ~1e-8 (the bound 1e-7 of the restitution tests).
   constexpr double solver_bound = 1e-7, kratos_delta = 1e-3;
-  const DropTestSetup base = chung_ooi_setup(benchmark_test("test3"));
+  const DropTestSetup base = chung_ooi_setup(chung_ooi_row("test3"));
   SolverSettings solver;
   solver.rtol = 1e-10;
   solver.atol = 1e-10;

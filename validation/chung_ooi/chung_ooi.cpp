@@ -105,14 +105,8 @@ struct Quantity {
 
 int main(int argc, char** argv) try {
   const StudyArgs args = parse_study_args(argc, argv);
-  const std::vector<ChungOoiTest> all_tests = load_chung_ooi_tests();
-  auto benchmark_test = [&](const std::string& name) {
-    const auto t = std::find_if(all_tests.begin(), all_tests.end(), [&](const ChungOoiTest& c) { return c.name == name; });
-    if (t == all_tests.end()) throw DataError("parameters.csv has no row " + name);
-    return *t;
-  };
   // Tests 1 and 2 have force curves (Parts 1 and 2); test 3 is Part 3.
-  const std::vector<ChungOoiTest> tests{benchmark_test("test1"), benchmark_test("test2")};
+  const std::vector<ChungOoiTest> tests{chung_ooi_row("test1"), chung_ooi_row("test2")};
   const std::filesystem::path data = chung_ooi_data_dir();
 
   Parameters common{{"benchmark", "Chung & Ooi 2011 tests 1, 2 and 3 (data/external/chung-ooi-2011)"},
@@ -140,7 +134,7 @@ int main(int argc, char** argv) try {
   SolverSettings map_solver;
   map_solver.rtol = 1e-10;
   map_solver.atol = 1e-10;
-  for (const auto& [name, value] : describe_run(chung_ooi_setup(benchmark_test("test3")), "all registered laws", map_solver))
+  for (const auto& [name, value] : describe_run(chung_ooi_setup(chung_ooi_row("test3")), "all registered laws", map_solver))
     params.emplace_back("test3." + name, value);
   LatexMacros macros("chung_ooi: Chung & Ooi (2011) benchmark tests 1, 2 and 3", params);
   CsvWriter model_csv("chung_ooi: simulated undamped Hertz contact of Chung & Ooi tests 1 and 2 (law none)", params,
@@ -293,7 +287,7 @@ int main(int argc, char** argv) try {
   // ---- Part 3: test 3, restitution from 0 to 1 ----------------------------------------------
   // Every law, tension allowed and clamped, in test 3's set-up and in the paper's steel contact
   // phase (h = 20 mm), at CVODE rtol 1e-10 and atol 1e-10 of each state component's scale.
-  const ChungOoiTest test3 = benchmark_test("test3");
+  const ChungOoiTest test3 = chung_ooi_row("test3");
   const std::array<DropTestSetup, 2> map_setups{
       chung_ooi_setup(test3), contact_phase_setup(paper_setup(load_paper_parameters(), "steel", 0.02))};
   // Kratos's delta in Chung_Ooi_test_3.py; its points 0.2, ..., 1 (and 0, which the suite refuses).

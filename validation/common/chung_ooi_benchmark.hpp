@@ -100,6 +100,14 @@ inline std::vector<ChungOoiTest> load_chung_ooi_tests(const std::filesystem::pat
   return tests;
 }
 
+/// parameters.csv's row `name`, the table read once.
+inline const ChungOoiTest& chung_ooi_row(const std::string& name) {
+  static const std::vector<ChungOoiTest> tests = load_chung_ooi_tests();
+  for (const ChungOoiTest& t : tests)
+    if (t.name == name) return t;
+  throw DataError("data/external/chung-ooi-2011/parameters.csv has no row " + name);
+}
+
 /// The test as an undamped drop test (restitution 1; run it with the law "none"), mapped as above.
 inline DropTestSetup chung_ooi_setup(const ChungOoiTest& test) {
   DropTestSetup s{};

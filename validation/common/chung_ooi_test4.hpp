@@ -18,15 +18,8 @@ namespace hertzdash {
 /// The test's coefficient of restitution and friction coefficient (Kratos's Materials4.json).
 inline constexpr double chung_ooi_test4_restitution = 0.98, chung_ooi_test4_friction = 0.092;
 
-/// parameters.csv's row test4, read once.
-inline const ChungOoiTest& chung_ooi_test4_bodies() {
-  static const ChungOoiTest test = [] {
-    for (const ChungOoiTest& t : load_chung_ooi_tests())
-      if (t.name == "test4") return t;
-    throw DataError("data/external/chung-ooi-2011/parameters.csv has no row test4");
-  }();
-  return test;
-}
+/// parameters.csv's row test4.
+inline const ChungOoiTest& chung_ooi_test4_bodies() { return chung_ooi_row("test4"); }
 
 /// The test's impact at `angle_deg` with the normal law `law` (e = 0.98 where it reads one) and
 /// the tangential model `model`, friction `mu` (the test's 0.092 unless given), to rtol 1e-11.

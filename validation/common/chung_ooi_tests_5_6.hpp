@@ -57,13 +57,6 @@ inline constexpr double chung_ooi_test6_restitution = 0.5, chung_ooi_test6_frict
 /// A solid sphere's kappa = I/(m R^2), and 1 + 1/kappa: the slip's fall per unit tangential impulse over m.
 inline constexpr double solid_sphere_kappa = 0.4, solid_sphere_slip_factor = 1 + 1 / solid_sphere_kappa;
 
-/// parameters.csv's row `name`.
-inline ChungOoiTest chung_ooi_row(const std::string& name) {
-  for (const ChungOoiTest& t : load_chung_ooi_tests())
-    if (t.name == name) return t;
-  throw DataError("data/external/chung-ooi-2011/parameters.csv has no row " + name);
-}
-
 /// The contact point's initial tangential speed V_st [m/s] at abscissa x of curve c.
 inline double chung_ooi_oblique_slip_mps(const ChungOoiOblique& c, double x, double normal_speed_mps) {
   if (c.test == 5) return x * chung_ooi_test5_friction * normal_speed_mps;
@@ -74,7 +67,7 @@ inline double chung_ooi_oblique_slip_mps(const ChungOoiOblique& c, double x, dou
 /// The impact at abscissa x of curve c under the tangential model `model` (test 5 with the law
 /// "none", test 6 with tsuji-dem), to rtol 1e-10.
 inline ObliqueImpactSpec chung_ooi_oblique_spec(const ChungOoiOblique& c, double x, const std::string& model) {
-  const ChungOoiTest bodies = chung_ooi_row(c.row);
+  const ChungOoiTest& bodies = chung_ooi_row(c.row);
   ObliqueImpactSpec s;
   s.setup = chung_ooi_setup(bodies);
   const double v_n = bodies.relative_speed_mps, v_st = chung_ooi_oblique_slip_mps(c, x, v_n);
