@@ -129,7 +129,7 @@ int main(int argc, char** argv) try {
 
   // The contact point's velocity after over before at test 5's steel point nearest x = 1: the
   // benchmark's and each model's (the header's finding).
-  const ChungOoiOblique& recoil = chung_ooi_oblique_curves[0];
+  const ChungOoiOblique& recoil = chung_ooi_oblique_curve("test5_steel_rebound_slip.dat");
   const auto steel = read_two_columns(chung_ooi_data_dir() / recoil.file);
   const auto near_one = *std::min_element(steel.begin(), steel.end(), [](const auto& a, const auto& b) {
     return std::abs(a[0] - 1) < std::abs(b[0] - 1);

@@ -16,39 +16,45 @@
 // test 6's beta = x - 1 and (t - 3.5 mu (1 + e)) / e with t = V_st / V_cn: gross sliding holds for
 // test 5 at x >= 7, for test 6 at x < 1 (t > 2.1). Shared by validation/chung_ooi_oblique and
 // tests/test_chung_ooi_oblique.cpp.
-#include "hertzdash/model/two_spheres.hpp"
 #include "hertzdash/simulation/run/oblique_impact.hpp"
 #include "validation/common/chung_ooi_benchmark.hpp"
 
 #include <cmath>
-#include <span>
+#include <numbers>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace hertzdash {
 
-/// One of the two tests' curves: its file, test, material row, axes, and the relative L1 error below
+/// One of the two tests' curves: its file, material row, test and axis, and the relative L1 error below
 /// which Kratos's test passes its sliding points (DEM_benchmarks_class.py: test 5 below 2 %; test 6
 /// checks 3 % after ApplyErrorTolerance has set every error below 5 % to 0, so it passes below 5 %).
 struct ChungOoiOblique {
   const char* file;        ///< below data/external/chung-ooi-2011
   const char* row;         ///< parameters.csv's row
-  const char* quantity;    ///< the ordinate, a column name
-  const char* x_label;     ///< the abscissa, in words
   int test;                ///< 5 or 6
   bool spin_axis;          ///< test 5's spin curve (else the recoil); test 6's tangent graph (else beta)
   double kratos_tolerance;
 };
 
 inline constexpr ChungOoiOblique chung_ooi_oblique_curves[] = {
-    {"test5_steel_rebound_slip.dat", "test5-steel", "recoil_slip_over_mu_vn", "V_st/(mu V_cn)", 5, false, 0.02},
-    {"test5_steel_rebound_spin.dat", "test5-steel", "spin_R_over_mu_vn", "V_st/(mu V_cn)", 5, true, 0.02},
-    {"test5_polyethylene_rebound_slip.dat", "test5-polyethylene", "recoil_slip_over_mu_vn", "V_st/(mu V_cn)", 5, false, 0.02},
-    {"test5_polyethylene_rebound_spin.dat", "test5-polyethylene", "spin_R_over_mu_vn", "V_st/(mu V_cn)", 5, true, 0.02},
-    {"test6_aluminium_slip_ratio.dat", "test6-aluminium", "beta", "3.5 mu (1+e) V_cn/V_st", 6, false, 0.05},
-    {"test6_aluminium_recoil_tangent.dat", "test6-aluminium", "recoil_tangent", "V_st/V_cn", 6, true, 0.05},
-    {"test6_nylon_slip_ratio.dat", "test6-nylon", "beta", "3.5 mu (1+e) V_cn/V_st", 6, false, 0.05},
-    {"test6_nylon_recoil_tangent.dat", "test6-nylon", "recoil_tangent", "V_st/V_cn", 6, true, 0.05},
+    {"test5_steel_rebound_slip.dat", "test5-steel", 5, false, 0.02},
+    {"test5_steel_rebound_spin.dat", "test5-steel", 5, true, 0.02},
+    {"test5_polyethylene_rebound_slip.dat", "test5-polyethylene", 5, false, 0.02},
+    {"test5_polyethylene_rebound_spin.dat", "test5-polyethylene", 5, true, 0.02},
+    {"test6_aluminium_slip_ratio.dat", "test6-aluminium", 6, false, 0.05},
+    {"test6_aluminium_recoil_tangent.dat", "test6-aluminium", 6, true, 0.05},
+    {"test6_nylon_slip_ratio.dat", "test6-nylon", 6, false, 0.05},
+    {"test6_nylon_recoil_tangent.dat", "test6-nylon", 6, true, 0.05},
 };
+
+/// The curve of chung_ooi_oblique_curves read from `file`.
+inline const ChungOoiOblique& chung_ooi_oblique_curve(std::string_view file) {
+  for (const ChungOoiOblique& c : chung_ooi_oblique_curves)
+    if (c.file == file) return c;
+  throw std::logic_error("no Chung and Ooi test 5 or 6 curve " + std::string(file));
+}
 
 /// The tests' e and mu (Kratos's benchmark5DEM.mdpa and benchmark6DEM.mdpa; LIGGGHTS-PFM's inputs).
 inline constexpr double chung_ooi_test5_restitution = 1.0, chung_ooi_test5_friction = 0.3;
@@ -57,11 +63,17 @@ inline constexpr double chung_ooi_test6_restitution = 0.5, chung_ooi_test6_frict
 /// A solid sphere's kappa = I/(m R^2), and 1 + 1/kappa: the slip's fall per unit tangential impulse over m.
 inline constexpr double solid_sphere_kappa = 0.4, solid_sphere_slip_factor = 1 + 1 / solid_sphere_kappa;
 
+/// Gross sliding's fall of the slip, (1 + 1/kappa) mu (1 + e) V_cn, over mu V_cn in test 5 (3.5 (1 + e)
+/// = 7) and over V_cn in test 6 (3.5 mu (1 + e) = 2.1).
+inline constexpr double chung_ooi_test5_slip_fall = solid_sphere_slip_factor * (1 + chung_ooi_test5_restitution);
+inline constexpr double chung_ooi_test6_slip_fall =
+    solid_sphere_slip_factor * chung_ooi_test6_friction * (1 + chung_ooi_test6_restitution);
+
 /// The contact point's initial tangential speed V_st [m/s] at abscissa x of curve c.
 inline double chung_ooi_oblique_slip_mps(const ChungOoiOblique& c, double x, double normal_speed_mps) {
   if (c.test == 5) return x * chung_ooi_test5_friction * normal_speed_mps;
   if (c.spin_axis) return x * normal_speed_mps;
-  return solid_sphere_slip_factor * chung_ooi_test6_friction * (1 + chung_ooi_test6_restitution) * normal_speed_mps / x;
+  return chung_ooi_test6_slip_fall * normal_speed_mps / x;
 }
 
 /// The impact at abscissa x of curve c under the tangential model `model` (test 5 with the law
@@ -93,7 +105,7 @@ inline ObliqueImpactSpec chung_ooi_oblique_spec(const ChungOoiOblique& c, double
 /// The curve's ordinate from the run r of its spec s.
 inline double chung_ooi_oblique_value(const ChungOoiOblique& c, double x, const ObliqueImpactSpec& s,
                                       const ObliqueImpactResult& r) {
-  const double R = s.setup.ball_radius_m, v_n = s.speed_mps * std::cos(s.incidence_angle_deg * std::numbers::pi / 180);
+  const double R = s.setup.ball_radius_m, v_n = chung_ooi_row(c.row).relative_speed_mps;
   const double v_st = chung_ooi_oblique_slip_mps(c, x, v_n), v_n_after = r.normal_restitution * v_n;
   const double slip_after = r.tangential_velocity_after_mps + R * r.spin_after_rad_per_s;
   if (c.test == 5)
@@ -102,20 +114,19 @@ inline double chung_ooi_oblique_value(const ChungOoiOblique& c, double x, const 
   return c.spin_axis ? slip_after / v_n_after : -slip_after / v_st;
 }
 
-/// Gross sliding's value of the curve at x (the header): where `gross_sliding_holds`, every model's.
+/// Gross sliding's value of the curve at x (the header): where chung_ooi_oblique_gross_sliding, every model's.
 inline double chung_ooi_oblique_sliding_value(const ChungOoiOblique& c, double x) {
   if (c.test == 5) {
     const double e = chung_ooi_test5_restitution;
-    return c.spin_axis ? -(1 + e) / solid_sphere_kappa : (x - solid_sphere_slip_factor * (1 + e)) / e;
+    return c.spin_axis ? -(1 + e) / solid_sphere_kappa : (x - chung_ooi_test5_slip_fall) / e;
   }
-  const double e = chung_ooi_test6_restitution, fall = solid_sphere_slip_factor * chung_ooi_test6_friction * (1 + e);
-  return c.spin_axis ? (x - fall) / e : x - 1;
+  return c.spin_axis ? (x - chung_ooi_test6_slip_fall) / chung_ooi_test6_restitution : x - 1;
 }
 
 /// Whether the sphere slides throughout at abscissa x of c: the slip after keeps the sign of V_st.
 inline bool chung_ooi_oblique_gross_sliding(const ChungOoiOblique& c, double x) {
-  if (c.test == 5) return x >= solid_sphere_slip_factor * (1 + chung_ooi_test5_restitution);
-  return c.spin_axis ? x > solid_sphere_slip_factor * chung_ooi_test6_friction * (1 + chung_ooi_test6_restitution) : x < 1;
+  if (c.test == 5) return x >= chung_ooi_test5_slip_fall;
+  return c.spin_axis ? x > chung_ooi_test6_slip_fall : x < 1;
 }
 
 }  // namespace hertzdash

@@ -29,9 +29,7 @@
 // GENERATED/oblique_normal_law_table.tex (beta of each law at x = 0.5, 2, 5 and 20);
 // oblique_normal_law.gp draws the figure.
 #include "hertzdash/io/csv_writer.hpp"
-#include "hertzdash/model/two_spheres.hpp"
-#include "hertzdash/simulation/run/oblique_impact.hpp"
-#include "validation/common/chung_ooi_benchmark.hpp"
+#include "validation/common/chung_ooi_tests_5_6.hpp"
 #include "validation/common/latex_macros.hpp"
 #include "validation/common/study_args.hpp"
 
@@ -41,7 +39,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -49,26 +46,15 @@ using namespace hertzdash;
 
 namespace {
 
-constexpr double radius_m = 0.1, normal_speed_mps = 0.2, friction = 0.4, restitution = 0.5;
 constexpr std::array<const char*, 4> exact_laws{"kelvin-voigt", "tsuji-dem", "kuwabara-kono", "lee-herrmann"};
 
-/// The test-6 sphere spinning so that x = 3.5 mu (1 + e) V_cn / V_st, under `law`.
+/// The test's beta curve of the aluminium alloy: its set-up and its digitised points.
+const ChungOoiOblique& test6_beta = chung_ooi_oblique_curve("test6_aluminium_slip_ratio.dat");
+
+/// The test-6 sphere spinning so that x = 3.5 mu (1 + e) V_cn / V_st, under `law` and Mindlin's no-slip spring.
 ObliqueImpactSpec test6(const std::string& law, double x) {
-  ObliqueImpactSpec s;
-  s.setup.mass_kg = sphere_mass_kg(radius_m, 2700);
-  s.setup.ball_radius_m = radius_m;
-  s.setup.ball = {70e9, 0.33};
-  s.setup.rod = {std::numeric_limits<double>::infinity(), 0.33};
-  s.setup.restitution = restitution;
-  s.setup.impact_velocity_mps = normal_speed_mps;
-  s.setup.gravity_mps2 = 0;
+  ObliqueImpactSpec s = chung_ooi_oblique_spec(test6_beta, x, "mindlin-no-slip");
   s.law = law;
-  s.tangential_model = "mindlin-no-slip";
-  s.friction = friction;
-  s.speed_mps = normal_speed_mps;
-  s.spin_rad_per_s = 3.5 * friction * (1 + restitution) * normal_speed_mps / (x * radius_m);
-  s.solver.rtol = 1e-10;
-  s.solver.atol = 1e-12;
   return s;
 }
 
@@ -89,8 +75,8 @@ int main(int argc, char** argv) try {
     const ObliqueImpactSpec s = test6(law, x);
     const ObliqueImpactResult r = run_oblique_impact(s);
     if (!r.separated) throw std::runtime_error(fmt::format("{} at x = {:g}: the sphere did not separate", law, x));
-    worst_e = std::max(worst_e, std::abs(r.normal_restitution - restitution));
-    return -(r.tangential_velocity_after_mps + radius_m * r.spin_after_rad_per_s) / (radius_m * s.spin_rad_per_s);
+    worst_e = std::max(worst_e, std::abs(r.normal_restitution - chung_ooi_test6_restitution));
+    return chung_ooi_oblique_value(test6_beta, x, s, r);
   };
   std::vector<std::vector<double>> beta(exact_laws.size(), std::vector<double>(xs.size()));
   for (std::size_t l = 0; l < exact_laws.size(); ++l)
@@ -113,7 +99,7 @@ int main(int argc, char** argv) try {
   CsvWriter reference("hertzdash validation/oblique_normal_law: Chung and Ooi's test 6 curve as digitised in the Kratos DEM "
                       "tests (data/external/chung-ooi-2011/test6_aluminium_slip_ratio.dat)",
                       {}, {"x", "beta"});
-  for (const auto& [x, b] : read_two_columns(chung_ooi_data_dir() / "test6_aluminium_slip_ratio.dat")) reference.add_row({x, b});
+  for (const auto& [x, b] : read_two_columns(chung_ooi_data_dir() / test6_beta.file)) reference.add_row({x, b});
 
   // Below x = 1: each law's largest departure from x - 1; above: the laws' spread (largest minus
   // smallest beta) and where it is largest.
@@ -134,7 +120,7 @@ int main(int argc, char** argv) try {
   macros.add("obliqueLawSpreadSticking", spread_sticking, "{:.3f}");
   macros.add("obliqueLawSpreadAtX", at_x, "{:.2g}");
   macros.add("obliqueLawCount", static_cast<double>(exact_laws.size()), "{:.0f}");
-  macros.add("obliqueLawRestitution", restitution, "{:g}");
+  macros.add("obliqueLawRestitution", chung_ooi_test6_restitution, "{:g}");
   macros.add_text("obliqueLawWorstRestitution", latex_scientific(worst_e));
   return save_study_outputs(args, "oblique_normal_law",
                             {{"oblique_normal_law.csv", curves}, {"oblique_normal_law_reference.csv", reference}}, table, macros);
