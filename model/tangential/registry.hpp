@@ -2,6 +2,7 @@
 // The registered tangential contact models: a model is one header in model/tangential/ declaring
 // its TangentialModelInfo (model/tangential/tangential_model.hpp) plus its line below. The rig
 // `oblique` and every front end read this list.
+#include "hertzdash/model/tangential/cattaneo_mindlin_mdr.hpp"
 #include "hertzdash/model/tangential/linear_spring.hpp"
 #include "hertzdash/model/tangential/mindlin_deresiewicz.hpp"
 #include "hertzdash/model/tangential/mindlin_no_slip.hpp"
@@ -12,16 +13,17 @@
 
 namespace hertzdash {
 
-inline constexpr std::array<const TangentialModelInfo*, 4> registered_tangential_models{
+inline constexpr std::array<const TangentialModelInfo*, 5> registered_tangential_models{
     &mindlin_no_slip,
     &mindlin_rescale,
     &mindlin_deresiewicz,
     &linear_spring,
+    &cattaneo_mindlin_mdr,
 };
 
 /// The registered models' names, as a text input's choices ("a, b"); checked against the list
 /// at compile time.
-inline constexpr std::string_view tangential_model_choices = "mindlin-no-slip, mindlin-rescale, mindlin-deresiewicz, linear-spring";
+inline constexpr std::string_view tangential_model_choices = "mindlin-no-slip, mindlin-rescale, mindlin-deresiewicz, linear-spring, cattaneo-mindlin-mdr";
 
 namespace detail {
 consteval bool tangential_choices_match() {

@@ -41,6 +41,10 @@ struct TangentialModelInfo {
   /// spring, dT/dt = -k_t s + T (da/dt)/a = -k_t s + T x'/(2 x) (the rescaling of LAMMPS's
   /// `mindlin_rescale`): with k_t proportional to a the spring then returns at most what it stored.
   bool rescales_with_contact_radius = false;
+  /// Coulomb's law holds at every point of the contact, not on the total force: the contact is
+  /// integrated resolved over its area (model/oblique_contact_mdr.hpp), and stiffness_N_per_m is the
+  /// whole contact's while it sticks (the other fields unread).
+  bool resolves_contact_area = false;
 };
 
 /// G* of Mindlin's tangential compliance: 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, G = E/(2 (1 + nu))

@@ -8,6 +8,7 @@
 #include "hertzdash/model/damping/registered_law_types.hpp"
 #include "hertzdash/model/invalid_parameter.hpp"
 #include "hertzdash/model/oblique_contact.hpp"
+#include "hertzdash/model/oblique_contact_mdr.hpp"
 #include "hertzdash/model/parameter.hpp"
 #include "hertzdash/model/tangential/registry.hpp"
 #include "hertzdash/model/two_spheres.hpp"
@@ -15,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -48,15 +50,17 @@ class LawNormalForce final : public NormalForceJet {
   double du_, dv_;
 };
 
+/// What a run observes of either system (its state opens with u and v).
+template <class State>
 struct Observer {
   bool separated = false, reversal = false, stick_end = false, slide_end = false;
   double peak_force_N = 0;
   const NormalForceJet* force = nullptr;
   // The largest force: at the located maxima (dF/dtau through 0), at every step, and at onset
   // (where a dashpot's force peaks for a heavily damped kelvin-voigt: no maximum inside).
-  void note(const ObliqueContactSystem::State& y) { peak_force_N = std::max(peak_force_N, force->at(std::max(y[0], 0.0), y[1]).value); }
-  void on_step(double, const ObliqueContactSystem::State& y) { note(y); }
-  void on_event(int which, double, const ObliqueContactSystem::State& y, EventAction) {
+  void note(const State& y) { peak_force_N = std::max(peak_force_N, force->at(std::max(y[0], 0.0), y[1]).value); }
+  void on_step(double, const State& y) { note(y); }
+  void on_event(int which, double, const State& y, EventAction) {
     if (which == static_cast<int>(ObliqueContactEvent::separation)) separated = true;
     if (which == static_cast<int>(ObliqueContactEvent::slip_reversal)) reversal = true;
     if (which == static_cast<int>(ObliqueContactEvent::stick_end)) stick_end = true;
@@ -83,10 +87,13 @@ void validate(const ObliqueImpactSpec& s) {
     throw InvalidParameter("tangential-damping", format_value(s.tangential_damping_ratio), "in [0, 1) (an underdamped sticking oscillator)");
   // A stiffness that depends on the force (mindlin-deresiewicz's theta) would make the dashpot's
   // coefficient depend on it too; its runs with a dashpot did not finish (the modes chattered).
-  if (s.tangential_damping_ratio > 0 && find_tangential_model(s.tangential_model)->remembers_reversals)
+  const TangentialModelInfo* model = find_tangential_model(s.tangential_model);
+  if (s.tangential_damping_ratio > 0 && (model->remembers_reversals || model->resolves_contact_area))
     throw InvalidParameter("tangential-damping", format_value(s.tangential_damping_ratio),
                            "0 with the tangential model " + s.tangential_model +
-                               " (its stiffness depends on the force; the dashpot is offered with the other models)");
+                               " (its stiffness depends on the force or on the slip over the contact; the dashpot is offered with the other models)");
+  if (model->resolves_contact_area && !(s.contact_cells >= 1 && s.contact_cells <= MdrObliqueContactSystem::max_cells))
+    throw InvalidParameter("contact-cells", std::to_string(s.contact_cells), "in [1, 1024]");
   if (s.linear_stiffness_N_per_m && !(*s.linear_stiffness_N_per_m > 0 && std::isfinite(*s.linear_stiffness_N_per_m)))
     throw InvalidParameter("tangential-stiffness", format_value(*s.linear_stiffness_N_per_m), "> 0");
   if (s.second) {
@@ -124,6 +131,33 @@ double matched_stiffness_N_per_m(const DropTestSetup& setup, double v0) {
                                                                             setup.rod.nu),
                             .radius_m = setup.ball_radius_m, .linear_stiffness_N_per_m = 0};
   return mindlin_stiffness_N_per_m(pair, {.overlap_m = X});
+}
+
+/// The result's fields from the state y after the contact of either system (both name their
+/// components alike), s the slip there: for two spheres each sphere's velocities from the pair's.
+template <class System>
+void read_final_state(const typename System::State& y, double s, const ObliqueImpactSpec& spec, double m, double w0,
+                      double v0, ObliqueImpactResult& out) {
+  using I = typename System::Index;
+  const double vn = -y[I::v];
+  out.contact_time_s = y[I::t];
+  out.normal_restitution = vn / v0;
+  out.tangential_velocity_after_mps = y[I::w];
+  out.spin_after_rad_per_s = y[I::omega];
+  if (spec.second) {
+    // The tangential impulse J = m* (w_after - w0) on the first sphere, -J on the second.
+    const SecondSphere& b = *spec.second;
+    const double J = m * (y[I::w] - w0), m1 = spec.setup.mass_kg, R1 = spec.setup.ball_radius_m;
+    out.tangential_velocity_after_mps = w0 + J / m1;
+    out.spin_after_rad_per_s = spec.spin_rad_per_s + J / (spec.inertia_factor * m1 * R1);
+    out.second_tangential_velocity_after_mps = -J / b.mass_kg;
+    out.second_spin_after_rad_per_s = b.spin_rad_per_s + J / (b.inertia_factor * b.mass_kg * b.radius_m);
+  }
+  out.tangential_restitution = w0 != 0 ? y[I::w] / w0 : std::nan("");
+  out.rebound_angle_deg = std::atan(s / vn) * 180 / std::numbers::pi;
+  out.centre_rebound_angle_deg = std::atan(y[I::w] / vn) * 180 / std::numbers::pi;
+  out.sliding_fraction = y[I::t_slide] / y[I::t];
+  out.tangential_work_J = y[I::W];
 }
 
 }  // namespace
@@ -164,11 +198,28 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   // Followed for at most 100 undamped Hertz contact times: a contact that lasts longer has not
   // separated (a law whose dashpot holds the sphere).
   const double t_obs = 100 * undamped_hertz_contact_time_factor() * X / v0;
-  ObliqueContactSystem sys(*force, c, K, m, {v0, w0, equivalent.spin_rad_per_s}, t_obs);
-  ObliqueContactSystem::State y = sys.initial_state();
-  Observer observer{.separated = false, .peak_force_N = 0, .force = force.get()};
-  observer.note(y);
+  const ObliqueOnset onset{v0, w0, equivalent.spin_rad_per_s};
   const DormandPrinceOptions options{.rtol = spec.solver.rtol, .atol = spec.solver.atol, .singular_points = false};
+  if (c.model->resolves_contact_area) {
+    // Each cell's switches between sticking and sliding are kinks the step control resolves, at a
+    // cost growing as tol^{-0.4}; below rtol 1e-6 the results change by less than the cells' own
+    // error at 200 cells (tests/test_oblique_mdr.cpp), so the tolerances are floored there.
+    const MdrObliqueContactSystem sys(*force, c, K, m, onset, t_obs, spec.contact_cells);
+    MdrObliqueContactSystem::State y = sys.initial_state();
+    Observer<MdrObliqueContactSystem::State> observer{.force = force.get()};
+    observer.note(y);
+    const DormandPrinceOptions floored{.rtol = std::max(options.rtol, mdr_rtol_floor),
+                                       .atol = std::max(options.atol, 1e-2 * mdr_rtol_floor), .singular_points = false};
+    out.work = integrate_dormand_prince(sys, y, 0.0, regularised_tau_end(t_obs, sys.state_scale()), floored, observer);
+    out.separated = observer.separated;
+    out.peak_normal_force_N = observer.peak_force_N;
+    read_final_state<MdrObliqueContactSystem>(y, sys.slip_mps(y), spec, m, w0, v0, out);
+    return out;
+  }
+  ObliqueContactSystem sys(*force, c, K, m, onset, t_obs);
+  ObliqueContactSystem::State y = sys.initial_state();
+  Observer<ObliqueContactSystem::State> observer{.force = force.get()};
+  observer.note(y);
   // The run stops where sticking or sliding ends and goes on in the other mode, and for a model
   // with memory at each reversal of the slip, with T* recorded (ObliqueContactSystem::reversal_state).
   // A contact that switches more than max_switches times is refused (no run here needs a hundredth).
@@ -186,28 +237,9 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
     else y = sys.stuck_state(y);
     tau = piece.t_final;
   }
-  using I = ObliqueContactSystem::Index;
-  const double vn = -y[I::v], s = sys.slip_mps(y);
   out.separated = observer.separated;
-  out.contact_time_s = y[I::t];
-  out.normal_restitution = vn / v0;
-  out.tangential_velocity_after_mps = y[I::w];
-  out.spin_after_rad_per_s = y[I::omega];
-  if (spec.second) {
-    // The tangential impulse J = m* (w_after - w0) on the first sphere, -J on the second.
-    const SecondSphere& b = *spec.second;
-    const double J = m * (y[I::w] - w0), m1 = spec.setup.mass_kg, R1 = spec.setup.ball_radius_m;
-    out.tangential_velocity_after_mps = w0 + J / m1;
-    out.spin_after_rad_per_s = spec.spin_rad_per_s + J / (spec.inertia_factor * m1 * R1);
-    out.second_tangential_velocity_after_mps = -J / b.mass_kg;
-    out.second_spin_after_rad_per_s = b.spin_rad_per_s + J / (b.inertia_factor * b.mass_kg * b.radius_m);
-  }
-  out.tangential_restitution = w0 != 0 ? y[I::w] / w0 : std::nan("");
-  out.rebound_angle_deg = std::atan(s / vn) * 180 / std::numbers::pi;
-  out.centre_rebound_angle_deg = std::atan(y[I::w] / vn) * 180 / std::numbers::pi;
-  out.sliding_fraction = y[I::t_slide] / y[I::t];
-  out.tangential_work_J = y[I::W];
   out.peak_normal_force_N = observer.peak_force_N;
+  read_final_state<ObliqueContactSystem>(y, sys.slip_mps(y), spec, m, w0, v0, out);
   return out;
 }
 
