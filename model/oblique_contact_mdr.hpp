@@ -23,16 +23,21 @@
 // for a damped law F_n is the law's, spread like Hertz's pressure). Each cell's force obeys
 //   sticking:  df_i/dt = -k_i s  (+ f_i (da/dt) / l_i for the edge cell while the contact shrinks:
 //              the part leaving takes its share of the force),
-//   sliding:   df_i/dt = sigma_i dc_i/dt  where |f_i| >= c_i and sigma_i (sticking rate) >= dc_i/dt,
-// a sweeping process per cell whose switches the adaptive steps resolve (no events: the right-hand
-// side is discontinuous across |f_i| = c_i, continuous along a solution); the force on the sphere
-// is T = sum_i clamp(f_i, -c_i, c_i). The sphere and the normal contact are
-// model/oblique_contact.hpp's (regularising u = x^{1/2}, dt/dtau = 2u; s = w + R omega, s' = T/m_t).
+//   sliding:   T_i = sigma_i c_i, while sigma_i (sticking rate) >= dc_i/dt,
+// a sweeping process per cell, exact in continuous time as model/oblique_contact.hpp's is for the
+// whole contact: each cell's mode (0 sticking, or sigma_i sliding) is a state, constant between
+// events, so that the right-hand side is smooth between switches (decided on f_i against c_i
+// inside a step, the stages of a larger step leave a narrow band around the limit and the steps
+// collapse); one event, the least of the cells' switch functions, stops the run at the first
+// switch, and settled() switches every cell that is due. The force on the sphere is
+// T = sum_i T_i, T_i = clamp(f_i, -c_i, c_i) sticking and sigma_i c_i sliding. The sphere and the
+// normal contact are model/oblique_contact.hpp's (regularising u = x^{1/2}, dt/dtau = 2u;
+// s = w + R omega, s' = T/m_t).
 //
-// State along tau: (u, v, t, w, omega, W, t_slide, f_0 ... f_{N-1}); W = int T s dt [J], t_slide
-// the time during which the whole contact slides (|T| on the cone) [s]. Events (decreasing through
+// State along tau: (u, v, t, w, omega, W, t_slide, f_0 ... f_{N-1}, mode_0 ... mode_{N-1}); W =
+// int T s dt [J], t_slide the time during which every cell slides [s]. Events (decreasing through
 // 0): separation u (stops), the normal force's maximum dF_n/dtau (observes), the observation time
-// t_obs - t (stops): model/oblique_contact.hpp's first three, by the same enum.
+// t_obs - t (stops), a cell's switch (stops).
 #include "hertzdash/model/hertz.hpp"
 #include "hertzdash/model/oblique_contact.hpp"
 
@@ -45,13 +50,15 @@
 
 namespace hertzdash {
 
+enum class MdrContactEvent : int { separation, peak_normal_force, observation_time, cell_switch };
+
 class MdrObliqueContactSystem {
  public:
-  static constexpr int max_cells = 1024;
+  static constexpr int max_cells = 512;
   static constexpr int dimension = Eigen::Dynamic;
-  static constexpr int event_count = 3;
+  static constexpr int event_count = 4;
   static constexpr bool smooth_at_events = false;
-  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 7 + max_cells, 1>;
+  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 7 + 2 * max_cells, 1>;
   using Events = std::array<double, event_count>;
   enum Index : int { u, v, t, w, omega, W, t_slide, first_cell };
 
@@ -64,54 +71,82 @@ class MdrObliqueContactSystem {
         G_(tangential.pair.shear_modulus_Pa), R_(tangential.pair.radius_m), inverse_m_(1 / mass_kg),
         inverse_I_(1 / (tangential.inertia_factor * mass_kg * tangential.radius_m * tangential.radius_m)),
         cells_(cells), onset_(onset), t_obs_s_(t_obs_s) {
-    if (cells < 1 || cells > max_cells) throw std::invalid_argument("MdrObliqueContactSystem: cells must be in [1, 1024]");
+    if (cells < 1 || cells > max_cells) throw std::invalid_argument("MdrObliqueContactSystem: cells must be in [1, 512]");
     const double v0 = onset.normal_speed_mps, X = undamped_hertz_max_deformation_m(K, mass_kg, v0);
     h_ = 1.001 * std::sqrt(R_ * X) / cells;
     const double t_H = undamped_hertz_contact_time_factor() * X / v0;
     const double speed = std::max({v0, std::abs(onset.tangential_speed_mps), std::abs(onset.spin_rad_per_s * R_lever_)});
     const double T_scale = std::clamp(mu_, 1e-3, 1.0) * K * X * std::sqrt(X);
-    scale_.resize(first_cell + cells);
+    scale_.resize(first_cell + 2 * cells);
     scale_.head<first_cell>() << std::sqrt(X), v0, t_H, speed, speed / R_lever_, 0.5 * mass_kg * speed * speed, t_H;
-    scale_.tail(cells).setConstant(T_scale / cells);
+    scale_.segment(first_cell, cells).setConstant(T_scale / cells);
+    scale_.tail(cells).setConstant(1.0);
+    // A cell's force rate in tau, dT/dtau = 2u dT/dt ~ 2 u_scale T_cell / t_H.
+    rate_unit_ = 2 * scale_[u] * scale_[first_cell] / t_H;
   }
 
   State initial_state() const {
-    State y = State::Zero(first_cell + cells_);
+    State y = State::Zero(first_cell + 2 * cells_);
     y[v] = onset_.normal_speed_mps;
     y[w] = onset_.tangential_speed_mps;
     y[omega] = onset_.spin_rad_per_s;
-    return y;
+    return settled(y);
   }
   State state_scale() const { return scale_; }
 
   /// The contact point's slip velocity s = w + R omega [m/s].
   double slip_mps(const State& y) const { return y[w] + R_lever_ * y[omega]; }
 
-  /// The tangential force on the sphere T = sum_i clamp(f_i, -c_i, c_i) [N].
+  /// The tangential force on the sphere T = sum_i T_i [N].
   double tangential_force_N(const State& y) const {
     double T = 0;
-    for_each_cell(y, normal(y), [&](int i, const Cell& c) { T += std::clamp(y[first_cell + i], -c.limit, c.limit); });
+    const double s = slip_mps(y);
+    for_each_cell(y, normal(y), [&](int i, const Cell& c) { T += cell_state(y, i, c, s).force; });
     return T;
+  }
+
+  /// y with every cell in the mode its rates call for. A sticking cell at its limit (within
+  /// stick_band) whose sticking rate pushes outwards at least as fast as the limit moves slides, its
+  /// force set on the limit; a sliding cell whose sticking rate has turned inwards sticks, its force
+  /// set stick_band inside the limit so that its switch function starts above 0. A cell out of the
+  /// contact has no force and the mode of the edge of the contact: a cell entering a sliding edge
+  /// slides (at onset, with no cell in contact, every cell slides the friction's way, the cone being
+  /// closed), one entering a stuck edge sticks; a wrong guess is one more switch.
+  State settled(const State& y) const {
+    State z = y;
+    const double s = slip_mps(y), friction = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
+    double edge_mode = friction;
+    int in_contact = 0;
+    for_each_cell(y, normal(y), [&](int i, const Cell& c) {
+      ++in_contact;
+      const CellState now = cell_state(y, i, c, s);
+      double& f = z[first_cell + i];
+      double& mode = z[first_cell + cells_ + i];
+      if (mode == 0 && std::abs(f) >= (1 - stick_band) * c.limit) {
+        const double sigma = f != 0 ? std::copysign(1.0, f) : friction;
+        if (sigma != 0 && sigma * now.stick >= c.limit_rate) mode = sigma, f = sigma * c.limit;
+      } else if (mode != 0 && mode * now.stick < c.limit_rate) {
+        f = mode * (1 - 2 * stick_band) * c.limit;
+        mode = 0;
+      }
+      edge_mode = mode;
+    });
+    for (int i = in_contact; i < cells_; ++i) z[first_cell + i] = 0, z[first_cell + cells_ + i] = edge_mode;
+    return z;
   }
 
   void rhs(double, const State& y, State& dy) const {
     dy.resize(y.size());
     dy.setZero();
-    const double uu = std::max(y[u], 0.0), two_u = 2 * uu, s = slip_mps(y);
-    const double sigma_friction = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
+    const double two_u = 2 * std::max(y[u], 0.0), s = slip_mps(y);
     const Normal n = normal(y);
     double T = 0;
+    bool every_cell_slides = true;  // at onset and in tension, with no cell in contact, the cone is closed
     for_each_cell(y, n, [&](int i, const Cell& c) {
-      const double f = y[first_cell + i];
-      T += std::clamp(f, -c.limit, c.limit);
-      // The edge cell shrinking: the part leaving takes its share f (da/dtau) / l.
-      const double leaving = c.shrinking ? f * c.edge_rate / c.length : 0.0;
-      const double stick = -two_u * c.stiffness * s + leaving;
-      const double sigma = f != 0 ? std::copysign(1.0, f) : sigma_friction;
-      // On the limit within limit_band of it: an integration error that puts f just inside would
-      // otherwise switch it back to sticking, whose rate pushes it out again (chattering).
-      const bool at_limit = std::abs(f) >= (1 - limit_band) * c.limit;
-      dy[first_cell + i] = at_limit && sigma != 0 && sigma * stick >= c.limit_rate ? sigma * c.limit_rate : stick;
+      const CellState cell = cell_state(y, i, c, s);
+      T += cell.force;
+      dy[first_cell + i] = cell.rate;
+      every_cell_slides = every_cell_slides && cell.sliding;
     });
     dy[u] = y[v];
     dy[v] = n.dv;
@@ -119,18 +154,37 @@ class MdrObliqueContactSystem {
     dy[w] = two_u * T * inverse_m_;
     dy[omega] = two_u * R_lever_ * T * inverse_I_;
     dy[W] = two_u * T * s;
-    // On the cone within the cells' band; at onset (and in tension) the cone is closed and T = 0 on it.
-    dy[t_slide] = std::abs(T) >= (1 - 2 * limit_band) * n.cone ? two_u : 0.0;
+    dy[t_slide] = every_cell_slides ? two_u : 0.0;
   }
 
-  void events(double, const State& y, Events& g) const { g = {y[u], normal(y).dF, t_obs_s_ - y[t]}; }
+  /// The cells' switch function is the least of each cell's, each in its own scale and > 0 while
+  /// its mode holds: sticking, (1 - stick_band) c_i - |f_i| over a cell's force scale; sliding,
+  /// sigma_i (sticking rate) - dc_i (plus slide_offset of the two rates, against rounding) over a
+  /// cell's rate scale; plus onset_margin, so that at onset, where every rate vanishes, a crossing
+  /// inside the first step is seen (model/oblique_contact.hpp's margins, for the same reasons).
+  void events(double, const State& y, Events& g) const {
+    const Normal n = normal(y);
+    const double s = slip_mps(y);
+    double least = 1;
+    for_each_cell(y, n, [&](int i, const Cell& c) {
+      const CellState cell = cell_state(y, i, c, s);
+      const double mode = y[first_cell + cells_ + i];
+      const double g_i = mode == 0 ? ((1 - stick_band) * c.limit - std::abs(y[first_cell + i])) / scale_[first_cell]
+                                   : (mode * cell.stick - c.limit_rate +
+                                      slide_offset * (std::abs(cell.stick) + std::abs(c.limit_rate))) / rate_unit_;
+      least = std::min(least, g_i + onset_margin);
+    });
+    g = {y[u], n.dF, t_obs_s_ - y[t], least};
+  }
 
   EventAction handle_event(int which, double, const State&) const {
-    return which == static_cast<int>(ObliqueContactEvent::peak_normal_force) ? EventAction::continue_integration
-                                                                              : EventAction::stop;
+    return which == static_cast<int>(MdrContactEvent::peak_normal_force) ? EventAction::continue_integration
+                                                                         : EventAction::stop;
   }
 
  private:
+  static constexpr double stick_band = 1e-8, onset_margin = 1e-10, slide_offset = 1e-6;
+
   /// The normal law at y: dv/dtau, dF_n/dtau, the cone mu F_n (0 in tension) and its rate in tau.
   struct Normal {
     double F, dv, dF, cone, cone_rate;
@@ -147,28 +201,51 @@ class MdrObliqueContactSystem {
     return n;
   }
 
-  static constexpr double limit_band = 1e-6;
-
-  /// A cell in contact: its length l_i inside [[m]], stiffness 8 G* l_i [N/m], limit c_i [N] and
-  /// the limit's rate in tau, and for the edge cell whether the contact shrinks and da/dtau.
+  /// A cell in contact: its length inside the contact l_i [m], stiffness 8 G* l_i [N/m], limit c_i
+  /// [N] and the limit's rate in tau, and for the edge cell whether the contact shrinks and da/dtau.
   struct Cell {
     double length, stiffness, limit, limit_rate;
     bool shrinking;
     double edge_rate;
   };
+  /// A cell's force on the sphere T_i [N], f_i's rate in tau, its sticking rate (T_i's rate were it
+  /// to stick), and whether it slides.
+  struct CellState {
+    double force, rate, stick;
+    bool sliding;
+  };
+  /// Cell i's state at y, s the slip there, in the mode its state holds. Sticking: force
+  /// clamp(f_i, -c_i, c_i) and rate -2u k_i s, and the edge cell, while the contact shrinks, loses
+  /// the share T_i (da/dtau)/l_i of its force that leaves with the part leaving. Sliding: force
+  /// sigma_i c_i, the limit itself, and f_i held (settled() sets it where the cell sticks again):
+  /// each c_i has a jump in its second derivative where the contact's edge enters or fills the cell,
+  /// which the sum of the limits, mu F_n, does not have, and f_i following c_i would carry each
+  /// into the step control (40 steps a cell at rtol 1e-11, 8000 over a sliding contact of 200).
+  CellState cell_state(const State& y, int i, const Cell& c, double s) const {
+    const double f = y[first_cell + i], mode = y[first_cell + cells_ + i], two_u = 2 * std::max(y[u], 0.0);
+    const double force = mode != 0 ? mode * c.limit : std::clamp(f, -c.limit, c.limit);
+    const double stick = -two_u * c.stiffness * s + (c.shrinking ? force * c.edge_rate / c.length : 0.0);
+    return {force, mode != 0 ? 0.0 : stick, stick, mode != 0};
+  }
+
   /// Calls visit(i, cell) for each cell in contact at y, n the normal law there.
   template <class Visit>
   void for_each_cell(const State& y, const Normal& n, Visit&& visit) const {
     const double uu = std::max(y[u], 0.0);
     if (uu <= 0) return;
-    const double x = uu * uu, a = std::sqrt(R_) * uu, W_total = 2 * a * a * a / (3 * R_);
+    const double a = std::sqrt(R_) * uu, W_total = 2 * a * a * a / (3 * R_);
     // dx/dtau = 2u v; da/dtau = sqrt(R) v; dW_i/dtau = 2u v l_i, dW/dtau = 2u v a.
     const double xdot = 2 * uu * y[v], da = std::sqrt(R_) * y[v];
     const int active = std::min(cells_, static_cast<int>(std::ceil(a / h_)));
     for (int i = 0; i < active; ++i) {
       const double lo = i * h_, hi = std::min(lo + h_, a);
       if (!(hi > lo)) continue;
-      const double length = hi - lo, W_i = x * length - (hi * hi * hi - lo * lo * lo) / (3 * R_), share = W_i / W_total;
+      // W_i = int_lo^hi (a^2 - xi^2)/R dxi = l_i [(a^2 - hi^2) + (a^2 - lo^2) + (a^2 - hi lo)] / (3R), each
+      // difference a product: x l_i - (hi^3 - lo^3)/(3R) lost every digit to cancellation in a cell
+      // the edge is leaving (l_i ~ 1e-15 m), and with it the cell's switch function.
+      const double length = hi - lo;
+      const double W_i = length * ((a - hi) * (a + hi) + (a - lo) * (a + lo) + a * (a - hi) + hi * (a - lo)) / (3 * R_);
+      const double share = W_i / W_total;
       // c_i = mu F W_i / W: dc_i/dtau = mu [dF share + F (dW_i W - W_i dW) / W^2].
       const double rate = n.cone_rate * share + n.cone * xdot * (length * W_total - W_i * a) / (W_total * W_total);
       const bool edge = a < lo + h_;
@@ -180,7 +257,7 @@ class MdrObliqueContactSystem {
   double mu_, R_lever_, G_, R_;
   double inverse_m_, inverse_I_;
   int cells_;
-  double h_ = 0;
+  double h_ = 0, rate_unit_ = 0;
   ObliqueOnset onset_;
   double t_obs_s_;
   State scale_;

@@ -71,9 +71,7 @@ TEST_CASE("oblique impact: gross sliding gives the Coulomb impulse, mu times the
     CHECK(r.normal_restitution == Approx(0.98).epsilon(1e-3));
     CHECK(r.tangential_velocity_after_mps == Approx(w0 - impulse).epsilon(1e-8));
     CHECK(r.spin_after_rad_per_s == Approx(-impulse / (0.4 * R)).epsilon(1e-8));
-    // Resolved over the contact area, sliding is every cell on its limit, which the cells entering
-    // the contact reach within the run's floored rtol (1e-6, mdr_rtol_floor): 10 times that.
-    CHECK(r.sliding_fraction == Approx(1).epsilon(model->resolves_contact_area ? 10 * mdr_rtol_floor : 1e-8));
+    CHECK(r.sliding_fraction == Approx(1).epsilon(1e-8));
     CHECK(r.tangential_restitution == Approx(1 - impulse / w0).epsilon(1e-8));
   }
 }
@@ -292,12 +290,9 @@ TEST_CASE("oblique impact of two spheres: a second sphere of huge mass and stiff
   // Two spheres reduce to one of mass m*, radius R* and inertia factor kappa* (oblique_impact.cpp):
   // with m2 -> inf, R2 -> inf and E2 -> inf, m* -> m1, R* -> R1, kappa* -> kappa1 and E* -> the
   // flat's. m2 = 1e12 m1, R2 = 1e12 R1, E2 = 1e30 Pa: the differences are ~1e-12 relative, below
-  // the tolerance (rtol 1e-11): 1e-7; a model resolved over the contact area runs at rtol 1e-6
-  // (mdr_rtol_floor), whose cells' switches the two runs resolve by different steps: 10 times that.
-  // Sticking, reversing and sliding contacts, each model.
+  // the tolerance (rtol 1e-11): 1e-7. Sticking, reversing and sliding contacts, each model.
   for (const TangentialModelInfo* model : registered_tangential_models)
     for (const double angle : {5.0, 20.0, 60.0}) {
-      const double tol = model->resolves_contact_area ? 10 * mdr_rtol_floor : 1e-7;
       ObliqueImpactSpec flat = alumina("tsuji-dem", 0.98, 0.092, angle);
       flat.tangential_model = std::string(model->name);
       flat.spin_rad_per_s = 30;
@@ -306,10 +301,10 @@ TEST_CASE("oblique impact of two spheres: a second sphere of huge mass and stiff
                                  .inertia_factor = 0.4, .spin_rad_per_s = 0};
       const ObliqueImpactResult a = run_oblique_impact(flat), b = run_oblique_impact(pair);
       CAPTURE(model->name, angle);
-      CHECK(b.tangential_velocity_after_mps == Approx(a.tangential_velocity_after_mps).epsilon(tol));
-      CHECK(b.spin_after_rad_per_s == Approx(a.spin_after_rad_per_s).epsilon(tol));
-      CHECK(b.rebound_angle_deg == Approx(a.rebound_angle_deg).epsilon(tol).margin(tol));
-      CHECK(b.normal_restitution == Approx(a.normal_restitution).epsilon(tol));
+      CHECK(b.tangential_velocity_after_mps == Approx(a.tangential_velocity_after_mps).epsilon(1e-7));
+      CHECK(b.spin_after_rad_per_s == Approx(a.spin_after_rad_per_s).epsilon(1e-7));
+      CHECK(b.rebound_angle_deg == Approx(a.rebound_angle_deg).epsilon(1e-7).margin(1e-7));
+      CHECK(b.normal_restitution == Approx(a.normal_restitution).epsilon(1e-7));
       CHECK(std::abs(b.second_tangential_velocity_after_mps) < 1e-9);
       CHECK(std::isnan(a.second_tangential_velocity_after_mps));
     }

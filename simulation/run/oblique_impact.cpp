@@ -50,10 +50,13 @@ class LawNormalForce final : public NormalForceJet {
   double du_, dv_;
 };
 
-/// What a run observes of either system (its state opens with u and v).
+/// What a run observes of either system (its state opens with u and v; its first three events are
+/// separation, the normal force's maximum and the observation time): the stopping event that is a
+/// switch of the contact (a system's own, by index; -1 for none) and the largest normal force.
 template <class State>
 struct Observer {
-  bool separated = false, reversal = false, stick_end = false, slide_end = false;
+  bool separated = false;
+  int switch_event = -1;
   double peak_force_N = 0;
   const NormalForceJet* force = nullptr;
   // The largest force: at the located maxima (dF/dtau through 0), at every step, and at onset
@@ -62,10 +65,8 @@ struct Observer {
   void on_step(double, const State& y) { note(y); }
   void on_event(int which, double, const State& y, EventAction) {
     if (which == static_cast<int>(ObliqueContactEvent::separation)) separated = true;
-    if (which == static_cast<int>(ObliqueContactEvent::slip_reversal)) reversal = true;
-    if (which == static_cast<int>(ObliqueContactEvent::stick_end)) stick_end = true;
-    if (which == static_cast<int>(ObliqueContactEvent::slide_end)) slide_end = true;
-    if (which == static_cast<int>(ObliqueContactEvent::peak_normal_force)) note(y);
+    else if (which == static_cast<int>(ObliqueContactEvent::peak_normal_force)) note(y);
+    else if (which != static_cast<int>(ObliqueContactEvent::observation_time)) switch_event = which;
   }
 };
 
@@ -93,7 +94,7 @@ void validate(const ObliqueImpactSpec& s) {
                            "0 with the tangential model " + s.tangential_model +
                                " (its stiffness depends on the force or on the slip over the contact; the dashpot is offered with the other models)");
   if (model->resolves_contact_area && !(s.contact_cells >= 1 && s.contact_cells <= MdrObliqueContactSystem::max_cells))
-    throw InvalidParameter("contact-cells", std::to_string(s.contact_cells), "in [1, 1024]");
+    throw InvalidParameter("contact-cells", std::to_string(s.contact_cells), "in [1, 512]");
   if (s.linear_stiffness_N_per_m && !(*s.linear_stiffness_N_per_m > 0 && std::isfinite(*s.linear_stiffness_N_per_m)))
     throw InvalidParameter("tangential-stiffness", format_value(*s.linear_stiffness_N_per_m), "> 0");
   if (s.second) {
@@ -200,17 +201,29 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   const double t_obs = 100 * undamped_hertz_contact_time_factor() * X / v0;
   const ObliqueOnset onset{v0, w0, equivalent.spin_rad_per_s};
   const DormandPrinceOptions options{.rtol = spec.solver.rtol, .atol = spec.solver.atol, .singular_points = false};
+  // The run stops at each switch of the contact (between sticking and sliding, of the whole contact
+  // or of one cell, and for a model with memory at each reversal of the slip), sets the state the
+  // switch calls for and goes on. A contact that switches more than max_switches times is refused
+  // (no run here needs a hundredth).
+  static constexpr int max_switches = 100000;
+  auto too_many = [] {
+    return std::runtime_error(fmt::format("the contact switched between sticking and sliding more than {} times", max_switches));
+  };
   if (c.model->resolves_contact_area) {
-    // Each cell's switches between sticking and sliding are kinks the step control resolves, at a
-    // cost growing as tol^{-0.4}; below rtol 1e-6 the results change by less than the cells' own
-    // error at 200 cells (tests/test_oblique_mdr.cpp), so the tolerances are floored there.
     const MdrObliqueContactSystem sys(*force, c, K, m, onset, t_obs, spec.contact_cells);
     MdrObliqueContactSystem::State y = sys.initial_state();
     Observer<MdrObliqueContactSystem::State> observer{.force = force.get()};
     observer.note(y);
-    const DormandPrinceOptions floored{.rtol = std::max(options.rtol, mdr_rtol_floor),
-                                       .atol = std::max(options.atol, 1e-2 * mdr_rtol_floor), .singular_points = false};
-    out.work = integrate_dormand_prince(sys, y, 0.0, regularised_tau_end(t_obs, sys.state_scale()), floored, observer);
+    const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
+    for (double tau = 0, switches = 0;; ++switches) {
+      observer.switch_event = -1;
+      const IntegrationStats piece = integrate_dormand_prince(sys, y, tau, tau_end, options, observer);
+      out.work.add_work(piece);
+      if (observer.separated || observer.switch_event < 0) break;
+      if (switches >= max_switches) throw too_many();
+      y = sys.settled(y);
+      tau = piece.t_final;
+    }
     out.separated = observer.separated;
     out.peak_normal_force_N = observer.peak_force_N;
     read_final_state<MdrObliqueContactSystem>(y, sys.slip_mps(y), spec, m, w0, v0, out);
@@ -220,20 +233,16 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   ObliqueContactSystem::State y = sys.initial_state();
   Observer<ObliqueContactSystem::State> observer{.force = force.get()};
   observer.note(y);
-  // The run stops where sticking or sliding ends and goes on in the other mode, and for a model
-  // with memory at each reversal of the slip, with T* recorded (ObliqueContactSystem::reversal_state).
-  // A contact that switches more than max_switches times is refused (no run here needs a hundredth).
-  constexpr int max_switches = 100000;
   const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
   for (double tau = 0, switches = 0;; ++switches) {
-    observer.reversal = observer.stick_end = observer.slide_end = false;
+    observer.switch_event = -1;
     const IntegrationStats piece = integrate_dormand_prince(sys, y, tau, tau_end, options, observer);
     out.work.add_work(piece);
-    if (observer.separated || !(observer.reversal || observer.stick_end || observer.slide_end)) break;
-    if (switches >= max_switches)
-      throw std::runtime_error(fmt::format("the contact switched between sticking and sliding more than {} times", max_switches));
-    if (observer.reversal) y = sys.reversal_state(y);
-    else if (observer.stick_end) y = sys.settled_mode(y, false, true);
+    if (observer.separated || observer.switch_event < 0) break;
+    if (switches >= max_switches) throw too_many();
+    using E = ObliqueContactEvent;
+    if (observer.switch_event == static_cast<int>(E::slip_reversal)) y = sys.reversal_state(y);
+    else if (observer.switch_event == static_cast<int>(E::stick_end)) y = sys.settled_mode(y, false, true);
     else y = sys.stuck_state(y);
     tau = piece.t_final;
   }

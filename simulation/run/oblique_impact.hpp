@@ -38,7 +38,7 @@ struct ObliqueImpactSpec {
   std::optional<double> linear_stiffness_N_per_m;  ///< linear-spring's k_t (default: Mindlin's 8 G* a at the
                                                    ///< undamped Hertz maximum overlap of the normal impact)
   /// The cells over the contact radius of a model resolved over the contact area (cattaneo-mindlin-mdr,
-  /// model/oblique_contact_mdr.hpp), in [1, 1024]; its error falls as their square (tests/test_oblique_mdr.cpp).
+  /// model/oblique_contact_mdr.hpp), in [1, 512]; its error falls as their square (tests/test_oblique_mdr.cpp).
   int contact_cells = 200;
   /// A second sphere instead of the flat (setup.rod then unread): speed_mps and the angle are the
   /// first sphere's velocity relative to it, from the line of centres.
@@ -72,9 +72,5 @@ double matched_linear_stiffness_N_per_m(const ObliqueImpactSpec& spec);
 /// Throws InvalidParameter naming `tangential-model`, `friction`, `incidence-angle`,
 /// `impact-velocity`, `inertia-factor`, `contact-cells`, `tangential-stiffness` or `damping` (an unknown law).
 ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec);
-
-/// The least rtol (and 1e-2 of it the least atol) a model resolved over the contact area runs at
-/// (simulation/run/oblique_impact.cpp says why).
-inline constexpr double mdr_rtol_floor = 1e-6;
 
 }  // namespace hertzdash
