@@ -83,6 +83,7 @@ class MdrObliqueContactSystem {
     scale_.tail(cells).setConstant(1.0);
     // A cell's force rate in tau, dT/dtau = 2u dT/dt ~ 2 u_scale T_cell / t_H.
     rate_unit_ = 2 * scale_[u] * scale_[first_cell] / t_H;
+    probe_step_ = 1e-9 * t_H / (2 * scale_[u]);  // the contact lasts about t_H / (2 u_scale) in tau
   }
 
   State initial_state() const {
@@ -93,6 +94,9 @@ class MdrObliqueContactSystem {
     return settled(y);
   }
   State state_scale() const { return scale_; }
+  /// 1e-9 of the contact's duration in tau (about t_H / (2 u_scale)): settled()'s probe ahead, and
+  /// the least progress of a piece of the run that is not a switch undone at once.
+  double probe_step() const { return probe_step_; }
 
   /// The contact point's slip velocity s = w + R omega [m/s].
   double slip_mps(const State& y) const { return y[w] + R_lever_ * y[omega]; }
@@ -109,24 +113,34 @@ class MdrObliqueContactSystem {
   /// stick_band) whose sticking rate pushes outwards at least as fast as the limit moves slides, its
   /// force set on the limit; a sliding cell whose sticking rate has turned inwards sticks, its force
   /// set stick_band inside the limit so that its switch function starts above 0. A cell out of the
-  /// contact has no force and the mode of the edge of the contact: a cell entering a sliding edge
-  /// slides (at onset, with no cell in contact, every cell slides the friction's way, the cone being
-  /// closed), one entering a stuck edge sticks; a wrong guess is one more switch.
-  State settled(const State& y) const {
+  /// contact has no force and the mode of the contact's edge (a wrong guess is one more switch).
+  /// Where the contact's edge crosses into a cell the rates jump (a fresh cell's, or the share the
+  /// part leaving takes), and a mode decided on the rates before the jump is undone just after it,
+  /// at the same instant: the run then settles again `ahead`, comparing the rates at a probe
+  /// probe_step() along the solution (y + dtau dy/dtau), past the jump.
+  State settled(const State& y, bool ahead = false) const {
+    State probe = y, dy;
+    if (ahead) {
+      rhs(0, y, dy);
+      probe += probe_step_ * dy;
+    }
+    // The forces and limits are y's (at onset a cell in contact at the probe has none yet).
+    std::array<double, max_cells> limit{};
+    for_each_cell(y, normal(y), [&](int i, const Cell& c) { limit[i] = c.limit; });
     State z = y;
-    const double s = slip_mps(y), friction = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
+    const double s = slip_mps(probe), friction = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
     double edge_mode = friction;
     int in_contact = 0;
-    for_each_cell(y, normal(y), [&](int i, const Cell& c) {
+    for_each_cell(probe, normal(probe), [&](int i, const Cell& c) {
       ++in_contact;
-      const CellState now = cell_state(y, i, c, s);
+      const CellState now = cell_state(probe, i, c, s);
       double& f = z[first_cell + i];
       double& mode = z[first_cell + cells_ + i];
-      if (mode == 0 && std::abs(f) >= (1 - stick_band) * c.limit) {
+      if (mode == 0 && std::abs(f) >= (1 - stick_band) * limit[i]) {
         const double sigma = f != 0 ? std::copysign(1.0, f) : friction;
-        if (sigma != 0 && sigma * now.stick >= c.limit_rate) mode = sigma, f = sigma * c.limit;
+        if (sigma != 0 && sigma * now.stick >= c.limit_rate) mode = sigma, f = sigma * limit[i];
       } else if (mode != 0 && mode * now.stick < c.limit_rate) {
-        f = mode * (1 - 2 * stick_band) * c.limit;
+        f = mode * (1 - 2 * stick_band) * limit[i];
         mode = 0;
       }
       edge_mode = mode;
@@ -257,7 +271,7 @@ class MdrObliqueContactSystem {
   double mu_, R_lever_, G_, R_;
   double inverse_m_, inverse_I_;
   int cells_;
-  double h_ = 0, rate_unit_ = 0;
+  double h_ = 0, rate_unit_ = 0, probe_step_ = 0;
   ObliqueOnset onset_;
   double t_obs_s_;
   State scale_;

@@ -56,5 +56,5 @@ csv_parameter(file, name) = system(sprintf("sed -n 's/^# %s: //p' '%s' | head -n
 nice_mantissa(m) = m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10
 nice_step(r) = r <= 0 ? 1 : nice_mantissa(r / 3 / 10**floor(log10(r / 3))) * 10**floor(log10(r / 3))
 # One colour and dash per tangential model (validation/oblique_impacts), used identically everywhere.
-tangential_lc(m) = m eq 'mindlin-no-slip' ? '#1f5fbf' : m eq 'mindlin-rescale' ? '#e69f00' : m eq 'mindlin-deresiewicz' ? '#c0392b' : m eq 'linear-spring' ? '#2e8b57' : '#555555'
-tangential_dt(m) = m eq 'mindlin-no-slip' ? 1 : m eq 'mindlin-rescale' ? 3 : m eq 'mindlin-deresiewicz' ? 2 : 4
+tangential_lc(m) = m eq 'mindlin-no-slip' ? '#1f5fbf' : m eq 'mindlin-rescale' ? '#e69f00' : m eq 'mindlin-deresiewicz' ? '#c0392b' : m eq 'linear-spring' ? '#2e8b57' : m eq 'cattaneo-mindlin-mdr' ? '#7b3294' : '#555555'
+tangential_dt(m) = m eq 'mindlin-no-slip' ? 1 : m eq 'mindlin-rescale' ? 3 : m eq 'mindlin-deresiewicz' ? 2 : m eq 'cattaneo-mindlin-mdr' ? 5 : 4

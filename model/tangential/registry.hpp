@@ -9,6 +9,7 @@
 #include "hertzdash/model/tangential/mindlin_rescale.hpp"
 
 #include <array>
+#include <string>
 #include <string_view>
 
 namespace hertzdash {
@@ -41,6 +42,17 @@ consteval bool tangential_choices_match() {
 }
 static_assert(tangential_choices_match(), "tangential_model_choices must list registered_tangential_models in order");
 }  // namespace detail
+
+/// The registered models' names joined by `separator` (", " for a message, " " for gnuplot's
+/// `for [m in models]`).
+inline std::string registered_tangential_model_names(std::string_view separator) {
+  std::string names;
+  for (const TangentialModelInfo* m : registered_tangential_models) {
+    if (!names.empty()) names += separator;
+    names += m->name;
+  }
+  return names;
+}
 
 /// The model named `name`, or nullptr.
 inline const TangentialModelInfo* find_tangential_model(std::string_view name) {

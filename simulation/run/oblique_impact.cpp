@@ -71,11 +71,8 @@ struct Observer {
 };
 
 void validate(const ObliqueImpactSpec& s) {
-  if (!find_tangential_model(s.tangential_model)) {
-    std::string names;
-    for (const TangentialModelInfo* m : registered_tangential_models) names += (names.empty() ? "" : ", ") + std::string(m->name);
-    throw InvalidParameter("tangential-model", s.tangential_model, "one of " + names);
-  }
+  if (!find_tangential_model(s.tangential_model))
+    throw InvalidParameter("tangential-model", s.tangential_model, "one of " + registered_tangential_model_names(", "));
   if (!(s.friction >= 0 && std::isfinite(s.friction))) throw InvalidParameter("friction", format_value(s.friction), ">= 0");
   if (!(s.incidence_angle_deg >= 0 && s.incidence_angle_deg < 90))
     throw InvalidParameter("incidence-angle", format_value(s.incidence_angle_deg), "in [0, 90) degrees from the normal");
@@ -221,7 +218,7 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
       out.work.add_work(piece);
       if (observer.separated || observer.switch_event < 0) break;
       if (switches >= max_switches) throw too_many();
-      y = sys.settled(y);
+      y = sys.settled(y, piece.t_final - tau < sys.probe_step());  // a switch undone at once: look ahead
       tau = piece.t_final;
     }
     out.separated = observer.separated;

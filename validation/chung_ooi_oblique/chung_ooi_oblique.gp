@@ -10,12 +10,12 @@ out = ARG1
 here = system('dirname '.ARG0)
 data = out.'/chung_ooi_oblique.csv'
 ref = out.'/chung_ooi_oblique_reference.csv'
-models = 'mindlin-no-slip mindlin-rescale mindlin-deresiewicz linear-spring'
 pick(c, m, value) = strcol('curve') eq c && strcol('model') eq m ? value : NaN
 curve(c, value) = strcol('curve') eq c ? value : NaN
 do for [format in 'pdf png'] {
   reset
   load here.'/../style.gnuplot'
+  models = csv_parameter(data, 'tangential_models')  # the registered models, in the registry's order
   call here.'/../output.gnuplot' out.'/chung_ooi_oblique' format full_width_in 4.8
   set multiplot
   set key off

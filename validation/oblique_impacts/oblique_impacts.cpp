@@ -38,7 +38,7 @@ int main(int argc, char** argv) try {
 
   CsvWriter curves("hertzdash validation/oblique_impacts: Chung and Ooi's test 4 (alumina on a rigid flat, 3.9 m/s, mu = "
                    "0.092, e = 0.98, tsuji-dem) with each tangential model",
-                   {{"damping", law}}, {"model", "angle_deg", "tangential_restitution", "rebound_angular_velocity_rad_per_s",
+                   {{"damping", law}, {"tangential_models", registered_tangential_model_names(" ")}}, {"model", "angle_deg", "tangential_restitution", "rebound_angular_velocity_rad_per_s",
                                         "rebound_angle_deg", "sliding_fraction"});
   // The smallest angle of the grid from which every model slides all but the onset (sliding
   // fraction above 0.99 there and at every larger angle: a dashpot growing as x^{1/4} xdot makes

@@ -8,12 +8,12 @@ out = ARG1
 here = system('dirname '.ARG0)
 data = out.'/oblique_impacts.csv'
 ref = out.'/oblique_impacts_reference.csv'
-models = 'mindlin-no-slip mindlin-rescale mindlin-deresiewicz linear-spring'
 pick(m, value) = strcol('model') eq m ? value : NaN
 curve(name, value) = strcol('curve') eq name ? value : NaN
 do for [format in 'pdf png'] {
   reset
   load here.'/../style.gnuplot'
+  models = csv_parameter(data, 'tangential_models')  # the registered models, in the registry's order
   call here.'/../output.gnuplot' out.'/oblique_impacts' format full_width_in 4.6
   set multiplot
   set key off
