@@ -111,8 +111,10 @@ class MdrObliqueContactSystem {
 
   /// y with every cell in the mode its rates call for. A sticking cell at its limit (within
   /// stick_band) whose sticking rate pushes outwards at least as fast as the limit moves slides, its
-  /// force set on the limit; a sliding cell whose sticking rate has turned inwards sticks, its force
-  /// set stick_band inside the limit so that its switch function starts above 0. A cell out of the
+  /// force set on the limit; a sliding cell whose sticking rate has turned inwards sticks, and so
+  /// does a sticking cell at its limit moving inwards, each force set stick_band inside the limit:
+  /// every cell's switch function then starts above 0, as the one event, their least, must for any
+  /// later switch to be seen. A cell out of the
   /// contact has no force and the mode of the contact's edge (a wrong guess is one more switch).
   /// Where the contact's edge crosses into a cell the rates jump (a fresh cell's, or the share the
   /// part leaving takes), and a mode decided on the rates before the jump is undone just after it,
@@ -139,6 +141,7 @@ class MdrObliqueContactSystem {
       if (mode == 0 && std::abs(f) >= (1 - stick_band) * limit[i]) {
         const double sigma = f != 0 ? std::copysign(1.0, f) : friction;
         if (sigma != 0 && sigma * now.stick >= c.limit_rate) mode = sigma, f = sigma * limit[i];
+        else f = sigma * (1 - 2 * stick_band) * limit[i];  // at the limit, moving inwards: just inside
       } else if (mode != 0 && mode * now.stick < c.limit_rate) {
         f = mode * (1 - 2 * stick_band) * limit[i];
         mode = 0;

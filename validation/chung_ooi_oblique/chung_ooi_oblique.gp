@@ -72,7 +72,7 @@ do for [format in 'pdf png'] {
   eval key_panel
   eval key_row
   plot for [m in models] NaN with lines lw 1.5 lc rgb tangential_lc(m) dt tangential_dt(m) title m, \
-       NaN with points pt 6 ps 0.8 lc rgb 'black' title 'steel, Al. alloy (digitised)', \
-       NaN with points pt 8 ps 0.8 lc rgb 'black' title 'polyethylene, nylon (digitised)'
+       NaN with points pt 6 ps 0.8 lc rgb 'black' title 'steel, alloy', \
+       NaN with points pt 8 ps 0.8 lc rgb 'black' title 'PE, nylon'
   unset multiplot
 }
