@@ -16,11 +16,15 @@
 // Expected: on the gross-sliding branches (test 5 x >= 7, test 6 x < 1 and tan > 2.1) every model
 // within Kratos's tolerance (tests/test_chung_ooi_oblique.cpp asserts it). Found: so; but on the
 // sticking branches no model follows the curves. At small x the benchmark's test 5 reverses the
-// contact point's tangential velocity (V_st'/V_st about -0.75 at x = 1), while every model here
-// keeps its direction (V_st'/V_st between +0.3 and +0.7): their sticking oscillation over one contact (checked against an independent
-// integration of Mindlin's no-slip spring, tests/test_oblique_impact.cpp) runs almost a whole
-// period. Test 6's sticking branches lie above the curves by up to about 0.5 in beta (the linear
-// spring least far). The whole-curve errors are tens of per cent.
+// contact point's tangential velocity (V_st'/V_st about -0.75 at x = 1), while every spring under
+// one cone keeps its direction (V_st'/V_st between +0.3 and +0.7): their sticking oscillation over
+// one contact (checked against an independent integration of Mindlin's no-slip spring,
+// tests/test_oblique_impact.cpp) runs almost a whole period. Maw, Barber and Fawcett's theory
+// (cattaneo-mindlin-mdr, Coulomb's law at every point) all but stops the contact point at x = 1
+// and reverses it only beyond; it is the closest on test 5 (about 32 % over the steel recoil curve
+// against 40 % for the best spring) and the farthest on test 6. Test 6's sticking branches lie
+// above the curves by up to about 0.5 in beta (the linear spring least far). The whole-curve
+// errors are tens of per cent: the benchmark's sticking branches come from none of these models.
 //
 // Writes OUT/chung_ooi_oblique.csv (curve, model, x, y), OUT/chung_ooi_oblique_reference.csv
 // (curve, x, y), GENERATED/chung_ooi_oblique.tex (macros \chungOoiOblique...) and
