@@ -95,13 +95,13 @@ int main(int argc, char** argv) try {
                       "benchmarks (data/external/chung-ooi-2011/README.md)",
                       {}, {"curve", "x", "y", "gross_sliding"});
   std::string table =
-      "\\begin{tabular}{lrr";
+      "\\setlength{\\tabcolsep}{3pt}\n\\begin{tabular}{lrr";  // eight columns in the text width
   for (std::size_t m = 0; m < registered_tangential_models.size(); ++m) table += "r";
   table += "}\n\\toprule\ncurve & Kratos & sliding";
-  for (const TangentialModelInfo* model : registered_tangential_models) {  // "mindlin-" left out for the width
-    std::string_view name = model->name;
-    if (name.starts_with("mindlin-")) name.remove_prefix(8);
-    table += fmt::format(" & \\texttt{{{}}}", name);
+  for (const TangentialModelInfo* model : registered_tangential_models) {  // two lines, broken after the first hyphen, for the width
+    const std::string_view name = model->name;
+    const std::size_t cut = name.find('-') + 1;  // 0 (one line) where there is none
+    table += fmt::format(" & \\shortstack{{\\texttt{{{}}}\\\\\\texttt{{{}}}}}", name.substr(0, cut), name.substr(cut));
   }
   table += " \\\\\n\\midrule\n";
 
