@@ -131,6 +131,30 @@ double matched_stiffness_N_per_m(const DropTestSetup& setup, double v0) {
   return mindlin_stiffness_N_per_m(pair, {.overlap_m = X});
 }
 
+/// Integrates sys from y (at tau = 0) until separation or the observation time t_obs [s] by
+/// Dormand-Prince, stopping at each switch of the contact (between sticking and sliding, of the
+/// whole contact or of one cell, and for a model with memory at each reversal of the slip) and going
+/// on from switched(y, event, progress), progress the piece's length in tau. A contact that switches
+/// more than max_switches times is refused (no run here needs a hundredth). Returns the work.
+template <class System, class Switched>
+IntegrationStats integrate_switching(const System& sys, typename System::State& y, const DormandPrinceOptions& options,
+                                     double t_obs, Observer<typename System::State>& observer, Switched&& switched) {
+  constexpr int max_switches = 100000;
+  observer.note(y);
+  IntegrationStats work;
+  const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
+  for (double tau = 0, switches = 0;; ++switches) {
+    observer.switch_event = -1;
+    const IntegrationStats piece = integrate_dormand_prince(sys, y, tau, tau_end, options, observer);
+    work.add_work(piece);
+    if (observer.separated || observer.switch_event < 0) return work;
+    if (switches >= max_switches)
+      throw std::runtime_error(fmt::format("the contact switched between sticking and sliding more than {} times", max_switches));
+    y = switched(y, observer.switch_event, piece.t_final - tau);
+    tau = piece.t_final;
+  }
+}
+
 /// The result's fields from the state y after the contact of either system (both name their
 /// components alike), s the slip there: for two spheres each sphere's velocities from the pair's.
 template <class System>
@@ -198,51 +222,27 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
   const double t_obs = 100 * undamped_hertz_contact_time_factor() * X / v0;
   const ObliqueOnset onset{v0, w0, equivalent.spin_rad_per_s};
   const DormandPrinceOptions options{.rtol = spec.solver.rtol, .atol = spec.solver.atol, .singular_points = false};
-  // The run stops at each switch of the contact (between sticking and sliding, of the whole contact
-  // or of one cell, and for a model with memory at each reversal of the slip), sets the state the
-  // switch calls for and goes on. A contact that switches more than max_switches times is refused
-  // (no run here needs a hundredth).
-  static constexpr int max_switches = 100000;
-  auto too_many = [] {
-    return std::runtime_error(fmt::format("the contact switched between sticking and sliding more than {} times", max_switches));
-  };
   if (c.model->resolves_contact_area) {
     const MdrObliqueContactSystem sys(*force, c, K, m, onset, t_obs, spec.contact_cells);
     MdrObliqueContactSystem::State y = sys.initial_state();
     Observer<MdrObliqueContactSystem::State> observer{.force = force.get()};
-    observer.note(y);
-    const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
-    for (double tau = 0, switches = 0;; ++switches) {
-      observer.switch_event = -1;
-      const IntegrationStats piece = integrate_dormand_prince(sys, y, tau, tau_end, options, observer);
-      out.work.add_work(piece);
-      if (observer.separated || observer.switch_event < 0) break;
-      if (switches >= max_switches) throw too_many();
-      y = sys.settled(y, piece.t_final - tau < sys.probe_step());  // a switch undone at once: look ahead
-      tau = piece.t_final;
-    }
+    out.work = integrate_switching(sys, y, options, t_obs, observer, [&](const auto& z, int, double progress) {
+      return sys.settled(z, progress < sys.probe_step());  // a switch undone at once: look ahead
+    });
     out.separated = observer.separated;
     out.peak_normal_force_N = observer.peak_force_N;
     read_final_state<MdrObliqueContactSystem>(y, sys.slip_mps(y), spec, m, w0, v0, out);
     return out;
   }
-  ObliqueContactSystem sys(*force, c, K, m, onset, t_obs);
+  const ObliqueContactSystem sys(*force, c, K, m, onset, t_obs);
   ObliqueContactSystem::State y = sys.initial_state();
   Observer<ObliqueContactSystem::State> observer{.force = force.get()};
-  observer.note(y);
-  const double tau_end = regularised_tau_end(t_obs, sys.state_scale());
-  for (double tau = 0, switches = 0;; ++switches) {
-    observer.switch_event = -1;
-    const IntegrationStats piece = integrate_dormand_prince(sys, y, tau, tau_end, options, observer);
-    out.work.add_work(piece);
-    if (observer.separated || observer.switch_event < 0) break;
-    if (switches >= max_switches) throw too_many();
+  out.work = integrate_switching(sys, y, options, t_obs, observer, [&](const auto& z, int which, double) {
     using E = ObliqueContactEvent;
-    if (observer.switch_event == static_cast<int>(E::slip_reversal)) y = sys.reversal_state(y);
-    else if (observer.switch_event == static_cast<int>(E::stick_end)) y = sys.settled_mode(y, false, true);
-    else y = sys.stuck_state(y);
-    tau = piece.t_final;
-  }
+    if (which == static_cast<int>(E::slip_reversal)) return sys.reversal_state(z);  // T* recorded
+    if (which == static_cast<int>(E::stick_end)) return sys.settled_mode(z, false, true);
+    return sys.stuck_state(z);
+  });
   out.separated = observer.separated;
   out.peak_normal_force_N = observer.peak_force_N;
   read_final_state<ObliqueContactSystem>(y, sys.slip_mps(y), spec, m, w0, v0, out);
