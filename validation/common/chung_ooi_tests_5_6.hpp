@@ -107,11 +107,25 @@ inline double chung_ooi_oblique_value(const ChungOoiOblique& c, double x, const 
                                       const ObliqueImpactResult& r) {
   const double R = s.setup.ball_radius_m, v_n = chung_ooi_row(c.row).relative_speed_mps;
   const double v_st = chung_ooi_oblique_slip_mps(c, x, v_n), v_n_after = r.normal_restitution * v_n;
-  const double slip_after = r.tangential_velocity_after_mps + R * r.spin_after_rad_per_s;
+  // The contact point's slip after, w1 - w2 + R1 omega1 + R2 omega2 (against a second sphere).
+  double slip_after = r.tangential_velocity_after_mps + R * r.spin_after_rad_per_s;
+  if (s.second) slip_after += -r.second_tangential_velocity_after_mps + s.second->radius_m * r.second_spin_after_rad_per_s;
   if (c.test == 5)
     return c.spin_axis ? R * r.spin_after_rad_per_s / (chung_ooi_test5_friction * v_n)
                        : slip_after / (chung_ooi_test5_friction * v_n_after);
   return c.spin_axis ? slip_after / v_n_after : -slip_after / v_st;
+}
+
+/// Test 8 as Kratos runs it (test_examples/basic_benchmarks/benchmark8DEM.mdpa, commit 2c0c8330):
+/// test 6's spinning aluminium-alloy sphere and its law, e and mu against a resting sphere of
+/// radius 0.5 m, density 2.7e6 kg/m^3 and E = 7e13 Pa (1000 times test 6's), nu 0.33, a near-rigid,
+/// near-immovable body whose curvature gives R* = 0.083 m; the curve c is one of test 6's, at x.
+inline ObliqueImpactSpec chung_ooi_test8_spec(const ChungOoiOblique& c, double x, const std::string& model) {
+  ObliqueImpactSpec s = chung_ooi_oblique_spec(c, x, model);
+  constexpr double radius_m = 0.5, density_kgpm3 = 2.7e6;
+  s.second = SecondSphere{.radius_m = radius_m, .mass_kg = density_kgpm3 * 4.0 / 3.0 * std::numbers::pi * std::pow(radius_m, 3),
+                          .material = {7e13, 0.33}, .inertia_factor = 0.4, .spin_rad_per_s = 0};
+  return s;
 }
 
 /// Gross sliding's value of the curve at x (the header): where chung_ooi_oblique_gross_sliding, every model's.
