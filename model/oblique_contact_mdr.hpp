@@ -131,7 +131,11 @@ class MdrObliqueContactSystem {
     for_each_cell(y, normal(y), [&](int i, const Cell& c) { limit[i] = c.limit; });
     State z = y;
     const double s = slip_mps(probe), friction = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
-    double edge_mode = friction;
+    // With no cell in contact (onset), the first cell enters sliding where the cone is closed (a
+    // Hertz-type law: the Maw, Barber and Fawcett criterion then decides at once), but sticking,
+    // with no force, where a dashpot acting at zero overlap has opened it: sliding there would put
+    // the whole cone mu F_n on a cell of no stiffness, a force no spring had stored.
+    double edge_mode = normal(y).cone > 0 ? 0.0 : friction;
     int in_contact = 0;
     for_each_cell(probe, normal(probe), [&](int i, const Cell& c) {
       ++in_contact;
@@ -172,6 +176,14 @@ class MdrObliqueContactSystem {
     dy[omega] = two_u * R_lever_ * T * inverse_I_;
     dy[W] = two_u * T * s;
     dy[t_slide] = every_cell_slides ? two_u : 0.0;
+  }
+
+  /// Whether the cells' switch function is above 0 at y, so that the next switch will be seen
+  /// (after settled(): where it is not, the run settles again ahead).
+  bool switches_armed(const State& y) const {
+    Events g;
+    events(0, y, g);
+    return g[static_cast<int>(MdrContactEvent::cell_switch)] > 0;
   }
 
   /// The cells' switch function is the least of each cell's, each in its own scale and > 0 while
@@ -255,7 +267,11 @@ class MdrObliqueContactSystem {
     const double xdot = 2 * uu * y[v], da = std::sqrt(R_) * y[v];
     const int active = std::min(cells_, static_cast<int>(std::ceil(a / h_)));
     for (int i = 0; i < active; ++i) {
-      const double lo = i * h_, hi = std::min(lo + h_, a);
+      // The last cell reaches the contact's edge wherever it is: a law whose overlap exceeds the
+      // undamped Hertz one the cells were sized for (a softer kelvin-voigt spring) widens it,
+      // coarser there, but the shares still sum to 1 and the stiffness to 8 G* a.
+      const bool last = i == cells_ - 1;
+      const double lo = i * h_, hi = last ? a : std::min(lo + h_, a);
       if (!(hi > lo)) continue;
       // W_i = int_lo^hi (a^2 - xi^2)/R dxi = l_i [(a^2 - hi^2) + (a^2 - lo^2) + (a^2 - hi lo)] / (3R), each
       // difference a product: x l_i - (hi^3 - lo^3)/(3R) lost every digit to cancellation in a cell
@@ -265,7 +281,7 @@ class MdrObliqueContactSystem {
       const double share = W_i / W_total;
       // c_i = mu F W_i / W: dc_i/dtau = mu [dF share + F (dW_i W - W_i dW) / W^2].
       const double rate = n.cone_rate * share + n.cone * xdot * (length * W_total - W_i * a) / (W_total * W_total);
-      const bool edge = a < lo + h_;
+      const bool edge = last || a < lo + h_;
       visit(i, Cell{length, 8 * G_ * length, n.cone * share, rate, edge && y[v] < 0, da});
     }
   }

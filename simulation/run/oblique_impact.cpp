@@ -227,7 +227,10 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
     MdrObliqueContactSystem::State y = sys.initial_state();
     Observer<MdrObliqueContactSystem::State> observer{.force = force.get()};
     out.work = integrate_switching(sys, y, options, t_obs, observer, [&](const auto& z, int, double progress) {
-      return sys.settled(z, progress < sys.probe_step());  // a switch undone at once: look ahead
+      // A switch undone at once, or one that leaves a cell's switch function at 0 (which would
+      // hide every later switch): settle again, looking ahead past the jump in the rates.
+      const MdrObliqueContactSystem::State settled = sys.settled(z, progress < sys.probe_step());
+      return sys.switches_armed(settled) ? settled : sys.settled(z, true);
     });
     out.separated = observer.separated;
     out.peak_normal_force_N = observer.peak_force_N;
