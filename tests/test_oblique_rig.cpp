@@ -160,7 +160,11 @@ TEST_CASE("oblique: bad input exits 2 naming the option", "[rigs][oblique]") {
                                     {"--second-radius 1e-3", "--rod-E"},
                                     {"--tangential-damping -0.1", "--tangential-damping"},
                                     {"--tangential-damping 1", "--tangential-damping"},
-                                    {"--tangential-damping 0.3 --tangential-model mindlin-deresiewicz", "--tangential-damping"}})
+                                    {"--tangential-damping 0.3 --tangential-model mindlin-deresiewicz", "--tangential-damping"},
+                                    {"--tangential-damping 0.3 --tangential-model cattaneo-mindlin-mdr", "--tangential-damping"},
+                                    {"--contact-cells 50", "--contact-cells"},  // with a spring under one cone
+                                    {"--contact-cells 50.5 --tangential-model cattaneo-mindlin-mdr", "--contact-cells"},
+                                    {"--contact-cells 513 --tangential-model cattaneo-mindlin-mdr", "--contact-cells"}})
     refused(alumina + args, named);
   // A second sphere's own inputs, without a flat.
   const std::string pair = "oblique --mass 2.6e-4 --ball-radius 2.5e-3 --impact-velocity 3.9 --second-radius 1e-3 ";
@@ -174,4 +178,17 @@ TEST_CASE("oblique: bad input exits 2 naming the option", "[rigs][oblique]") {
   const auto no_mass = run_cli("oblique --impact-velocity 1");
   CHECK(no_mass.exit_code == 2);
   CHECK_THAT(no_mass.err, Catch::Contains("--mass"));
+}
+
+TEST_CASE("oblique: --contact-cells reaches the resolved contact's run and its JSON", "[rigs][oblique]") {
+  // The cells' count changes the run (the cells' error falls as their square,
+  // tests/test_oblique_mdr.cpp: 25 cells and 200 differ), and the run echoes the count it used; the
+  // default is 200 (simulation/run/oblique_impact.hpp).
+  const std::string resolved = "--incidence-angle 20 --friction 0.092 --restitution 0.98 --damping tsuji-dem "
+                               "--tangential-model cattaneo-mindlin-mdr";
+  const nlohmann::json coarse = oblique_json(resolved + " --contact-cells 25"), fine = oblique_json(resolved);
+  CHECK(coarse["inputs"]["contact_cells"].get<double>() == 25);
+  CHECK(fine["inputs"]["contact_cells"].get<double>() == 200);
+  CHECK(coarse["rebound_angle_deg"].get<double>() != fine["rebound_angle_deg"].get<double>());
+  CHECK(oblique_json("--incidence-angle 20 --friction 0.092")["inputs"].count("contact_cells") == 0);
 }

@@ -49,10 +49,15 @@ constexpr ParameterDecl second_spin{.key = "second-spin", .unit = "rad/s", .colu
 constexpr ParameterDecl second_inertia_factor{.key = "second-inertia-factor", .range = R::open_closed(0, 1),
     .default_value = "0.4", .default_number = 0.4, .default_source = "a solid sphere, 2/5",
     .help = "The second sphere's moment of inertia over m R^2 (with `second-radius`)"};
+constexpr ParameterDecl contact_cells{.key = "contact-cells", .range = R::integer(1, 512), .default_value = "200",
+    .default_number = default_contact_cells, .default_source = "second order in the cells: the slip after within about "
+                                                               "2e-5 of its limit at 200 (tests/test_oblique_mdr.cpp)",
+    .help = "Cells over the contact radius of a tangential model resolved over the contact area (--tangential-model "
+            "cattaneo-mindlin-mdr), an integer in [1, 512]"};
 namespace sphere2 = second_sphere_inputs;
-constexpr ParameterDecl inputs[] = {incidence_angle,      friction,        tangential_model, spin,        inertia_factor,
-                                    tangential_stiffness, tangential_damping, sphere2::radius, sphere2::E, sphere2::nu,
-                                    sphere2::mass,        sphere2::density, second_spin,      second_inertia_factor};
+constexpr ParameterDecl inputs[] = {incidence_angle,      friction,           tangential_model, spin,        inertia_factor,
+                                    tangential_stiffness, tangential_damping, contact_cells,    sphere2::radius, sphere2::E,
+                                    sphere2::nu,          sphere2::mass,      sphere2::density, second_spin, second_inertia_factor};
 /// Given only with a second sphere (`second-radius`).
 constexpr const ParameterDecl* second_sphere_only[] = {&sphere2::E, &sphere2::nu, &sphere2::mass, &sphere2::density,
                                                        &second_spin, &second_inertia_factor};
@@ -93,6 +98,10 @@ void refuse(const RunOptions& o, const RigInputs& in) {
   if (in.number("tangential-stiffness") && model != "linear-spring")
     throw InvalidParameter("tangential-stiffness", format_value(*in.number("tangential-stiffness")),
                            "given only with `tangential-model` linear-spring");
+  const TangentialModelInfo* info = find_tangential_model(model);  // null for a name the choices refuse
+  if (in.number(contact_cells.key) && !(info && info->resolves_contact_area))
+    throw InvalidParameter(std::string(contact_cells.key), format_value(*in.number(contact_cells.key)),
+                           "given only with a tangential model resolved over the contact area (cattaneo-mindlin-mdr)");
   if (in.number(sphere2::radius.key)) {
     for (const auto& [key, given] : {std::pair{"rod-E", o.rod_E_Pa}, {"rod-nu", o.rod_nu}})
       if (given) throw InvalidParameter(key, format_value(*given), "omitted with `second-radius` (a second sphere, not a flat)");
@@ -120,6 +129,7 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
   s.inertia_factor = in.number_or_default(inertia_factor);
   s.tangential_damping_ratio = in.number_or_default(tangential_damping);
   s.linear_stiffness_N_per_m = in.number("tangential-stiffness");
+  s.contact_cells = static_cast<int>(in.number_or_default(contact_cells));
   if (in.number(sphere2::radius.key)) {
     const Sphere b = sphere2::resolve(options, in, {setup.ball_radius_m, setup.mass_kg, setup.ball});
     s.second = SecondSphere{.radius_m = b.radius_m, .mass_kg = b.mass_kg, .material = b.material,
@@ -138,6 +148,8 @@ Run run(const RunOptions& options, const PaperParameters& paper, const RigInputs
     r.inputs.emplace_back(input_column(decl), fmt::format("{}", value));
   r.inputs.emplace_back(input_column(tangential_model), s.tangential_model);
   if (s.linear_stiffness_N_per_m) r.inputs.emplace_back(input_column(tangential_stiffness), fmt::format("{}", *s.linear_stiffness_N_per_m));
+  if (find_tangential_model(s.tangential_model)->resolves_contact_area)
+    r.inputs.emplace_back(input_column(contact_cells), fmt::format("{}", s.contact_cells));
   if (s.second)
     for (const auto& [decl, value] : {std::pair{sphere2::radius, s.second->radius_m}, {sphere2::E, s.second->material.E_Pa},
                                       {sphere2::nu, s.second->material.nu}, {sphere2::mass, s.second->mass_kg},
