@@ -16,8 +16,9 @@
 //
 // Discretised by symmetry on xi >= 0 into N cells of width h (cell i: [i h, (i + 1) h]); cell i
 // carries the tangential force f_i [N] of both halves, its stiffness k_i = 8 G* l_i with l_i its
-// length inside the contact, clamp(a - i h, 0, h), so that the row's stiffness is 8 G* a for
-// every a (not a staircase), and its limit
+// length inside the contact, clamp(a - i h, 0, h) (the last cell's a - i h, wherever the edge is;
+// h is sized for the undamped Hertz impact's largest contact radius), so that the row's stiffness
+// is 8 G* a for every a (not a staircase), and its limit
 //   c_i = mu F_n W_i / W,   W_i = int_cell max(x - xi^2/R, 0) dxi,   W = sum_i W_i = 2 a^3 / (3 R),
 // the cone mu F_n shared as MDR's normal springs share the Hertz force (exact for the undamped law;
 // for a damped law F_n is the law's, spread like Hertz's pressure). Each cell's force obeys
@@ -29,7 +30,9 @@
 // events, so that the right-hand side is smooth between switches (decided on f_i against c_i
 // inside a step, the stages of a larger step leave a narrow band around the limit and the steps
 // collapse); one event, the least of the cells' switch functions, stops the run at the first
-// switch, and settled() switches every cell that is due. The force on the sphere is
+// switch, and settled() switches every cell that is due (a cell entering the contact takes the
+// mode of its edge; at onset it slides where the cone is closed and sticks where a dashpot acting
+// at zero overlap has opened it). The force on the sphere is
 // T = sum_i T_i, T_i = clamp(f_i, -c_i, c_i) sticking and sigma_i c_i sliding. The sphere and the
 // normal contact are model/oblique_contact.hpp's (regularising u = x^{1/2}, dt/dtau = 2u;
 // s = w + R omega, s' = T/m_t).
