@@ -36,8 +36,11 @@ class ReboundAngleData final : public FitData {
   }
   std::vector<double> start(const std::vector<FitParameter>& parameters) override {
     std::vector<double> v;
-    for (const FitParameter& p : parameters)
-      v.push_back(p.option == "friction" ? 0.1 : (base_.linear_stiffness_N_per_m ? *base_.linear_stiffness_N_per_m : head_on_linear_stiffness(base_)));
+    for (const FitParameter& p : parameters) {
+      if (p.option == "friction") v.push_back(0.1);
+      else if (p.option == "ball-nu") v.push_back(base_.setup.ball.nu);
+      else v.push_back(base_.linear_stiffness_N_per_m ? *base_.linear_stiffness_N_per_m : head_on_linear_stiffness(base_));
+    }
     return v;
   }
   bool residuals(const std::vector<double>& law, const std::vector<double>&, double* r) override {
@@ -95,6 +98,7 @@ class ReboundAngleData final : public FitData {
     s.incidence_angle_deg = angle_deg;
     for (std::size_t j = 0; j < names_.size(); ++j) {
       if (names_[j] == "friction") s.friction = law[j];
+      else if (names_[j] == "ball-nu") s.setup.ball.nu = law[j];
       else s.linear_stiffness_N_per_m = law[j];
     }
     ++runs_;
@@ -124,8 +128,8 @@ FitResult fit_rebound_angles(const ReboundAngleTable& table, const ObliqueImpact
   if (settings.parameters.empty()) settings.parameters = {{"friction", 1e-3, 2.0}};
   std::vector<std::string> names;
   for (const FitParameter& p : settings.parameters) {
-    if (p.option != "friction" && p.option != "tangential-stiffness")
-      throw InvalidParameter("fit", p.option, "friction or tangential-stiffness, the parameters fitted to rebound angles");
+    if (p.option != "friction" && p.option != "tangential-stiffness" && p.option != "ball-nu")
+      throw InvalidParameter("fit", p.option, "friction, tangential-stiffness or ball-nu, the parameters fitted to rebound angles");
     if (p.option == "tangential-stiffness" && base.tangential_model != "linear-spring")
       throw InvalidParameter("fit", p.option, "fitted with the tangential model linear-spring only");
     names.push_back(p.option);

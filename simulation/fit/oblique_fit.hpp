@@ -6,8 +6,10 @@
 // (simulation/run/oblique_impact.hpp) per row.
 //
 // Model. At each row's incident angle, the rebound angle of `base` (its sphere, flat, normal law,
-// tangential model, speed and spin) with the fitted parameters replaced: Coulomb's mu (`friction`)
-// and, for the linear spring, its stiffness (`tangential-stiffness` [N/m]). The rebound angle of
+// tangential model, speed and spin) with the fitted parameters replaced: Coulomb's mu (`friction`),
+// the sphere's Poisson ratio (`ball-nu`: Mindlin's ratio of tangential to normal compliance
+// 2 (1 - nu)/(2 - nu), and E* a little), and, for the linear spring, its stiffness
+// (`tangential-stiffness` [N/m]). The rebound angle of
 // a sticking contact oscillates with k_t (through cos(Omega t_c), Omega^2 = k_t/m_t), so the least
 // squares in (mu, k_t) have many minima: on a virtual experiment (mu = 0.2, k_t = 2e6 N/m, four
 // angles, the test-4 sphere) the sum of squares is 0 at the truth, 3.4 deg^2 at mu = 0.3, but 1245
@@ -38,7 +40,8 @@ struct ReboundAngleTable {
 
 /// Fit `table` with the oblique impacts of `base` (its incidence angle replaced by each row's);
 /// settings.parameters empty: `friction` in [1e-3, 2]. Throws InvalidParameter("fit", ...) for a
-/// parameter other than `friction` and `tangential-stiffness` (the latter with linear-spring only),
+/// parameter other than `friction`, `ball-nu` and `tangential-stiffness` (the last with
+/// linear-spring only),
 /// and DataError for a table with no more rows than parameters, or rows of different lengths.
 FitResult fit_rebound_angles(const ReboundAngleTable& table, const ObliqueImpactSpec& base, const FitSettings& settings);
 
