@@ -61,6 +61,27 @@ class NormalForceJet {
   virtual ForceJet at(double u, double xdot) const = 0;
 };
 
+/// The normal contact's part of an oblique impact's rates in tau at u = x^{1/2} (clamped at 0) and
+/// v = x': the law's force F_n [N], dv/dtau = -2u F_n / m, dF_n/dtau = F_u v + F_v dv/dtau (finite at
+/// onset even for a dashpot in x^{1/2} x'), the Coulomb cone mu F_n (0 in tension) and its rate
+/// (0 in tension). Shared by the contact under one cone and the contact resolved over its area
+/// (model/oblique_contact_mdr.hpp).
+struct NormalContactRates {
+  double F, dv, dF, cone, cone_rate;
+};
+inline NormalContactRates normal_contact_rates(const NormalForceJet& normal, double u, double v, double friction,
+                                               double inverse_mass) {
+  const double uu = std::max(u, 0.0);
+  const ForceJet F = normal.at(uu, v);
+  NormalContactRates n{};
+  n.F = F.value;
+  n.dv = -2 * uu * F.value * inverse_mass;
+  n.dF = F.d[0] * v + F.d[1] * n.dv;
+  n.cone = friction * std::max(F.value, 0.0);
+  n.cone_rate = F.value > 0 ? friction * n.dF : 0.0;
+  return n;
+}
+
 /// The tangential side of an oblique impact.
 struct TangentialContact {
   const TangentialModelInfo* model = nullptr;
@@ -206,7 +227,6 @@ class ObliqueContactSystem {
   }
 
  private:
-  double cone_N(double normal_force_N) const { return c_.friction * std::max(normal_force_N, 0.0); }
   static constexpr double stick_band = 1e-8, onset_margin = 1e-10, slide_offset = 1e-6;
 
   /// The scale of T's rates in tau, dT/dtau = 2u dT/dt ~ 2 u_scale T_scale / t_H.
@@ -223,12 +243,12 @@ class ObliqueContactSystem {
   };
   Rates rates(const State& y) const {
     const double uu = std::max(y[u], 0.0), two_u = 2 * uu;
-    const ForceJet F = normal_->at(uu, y[v]);
+    const NormalContactRates n = normal_contact_rates(*normal_, y[u], y[v], c_.friction, inverse_m_);
     Rates r{};
-    r.dv = -two_u * F.value * inverse_m_;
-    r.dF = F.d[0] * y[v] + F.d[1] * r.dv;
-    r.cone = cone_N(F.value);
-    r.cone_rate = c_.friction * (F.value > 0 ? r.dF : 0.0);
+    r.dv = n.dv;
+    r.dF = n.dF;
+    r.cone = n.cone;
+    r.cone_rate = n.cone_rate;
     const double s = slip_mps(y);
     // The spring's force within the cone (sliding: sigma mu F_n less the dashpot's).
     TangentialState state{.overlap_m = uu * uu, .force_N = std::clamp(y[T], -r.cone, r.cone), .cone_N = r.cone,

@@ -104,14 +104,6 @@ class MdrObliqueContactSystem {
   /// The contact point's slip velocity s = w + R omega [m/s].
   double slip_mps(const State& y) const { return y[w] + R_lever_ * y[omega]; }
 
-  /// The tangential force on the sphere T = sum_i T_i [N].
-  double tangential_force_N(const State& y) const {
-    double T = 0;
-    const double s = slip_mps(y);
-    for_each_cell(y, normal(y), [&](int i, const Cell& c) { T += cell_state(y, i, c, s).force; });
-    return T;
-  }
-
   /// y with every cell in the mode its rates call for. A sticking cell at its limit (within
   /// stick_band) whose sticking rate pushes outwards at least as fast as the limit moves slides, its
   /// force set on the limit; a sliding cell whose sticking rate has turned inwards sticks, and so
@@ -131,14 +123,15 @@ class MdrObliqueContactSystem {
     }
     // The forces and limits are y's (at onset a cell in contact at the probe has none yet).
     std::array<double, max_cells> limit{};
-    for_each_cell(y, normal(y), [&](int i, const Cell& c) { limit[i] = c.limit; });
+    const Normal at_y = normal(y);
+    for_each_cell(y, at_y, [&](int i, const Cell& c) { limit[i] = c.limit; });
     State z = y;
     const double s = slip_mps(probe), friction = s > 0 ? -1.0 : (s < 0 ? 1.0 : 0.0);
     // With no cell in contact (onset), the first cell enters sliding where the cone is closed (a
     // Hertz-type law: the Maw, Barber and Fawcett criterion then decides at once), but sticking,
     // with no force, where a dashpot acting at zero overlap has opened it: sliding there would put
     // the whole cone mu F_n on a cell of no stiffness, a force no spring had stored.
-    double edge_mode = normal(y).cone > 0 ? 0.0 : friction;
+    double edge_mode = at_y.cone > 0 ? 0.0 : friction;
     int in_contact = 0;
     for_each_cell(probe, normal(probe), [&](int i, const Cell& c) {
       ++in_contact;
@@ -217,21 +210,9 @@ class MdrObliqueContactSystem {
  private:
   static constexpr double stick_band = 1e-8, onset_margin = 1e-10, slide_offset = 1e-6;
 
-  /// The normal law at y: dv/dtau, dF_n/dtau, the cone mu F_n (0 in tension) and its rate in tau.
-  struct Normal {
-    double F, dv, dF, cone, cone_rate;
-  };
-  Normal normal(const State& y) const {
-    const double uu = std::max(y[u], 0.0);
-    const ForceJet F = normal_->at(uu, y[v]);
-    Normal n{};
-    n.F = F.value;
-    n.dv = -2 * uu * F.value * inverse_m_;
-    n.dF = F.d[0] * y[v] + F.d[1] * n.dv;
-    n.cone = mu_ * std::max(F.value, 0.0);
-    n.cone_rate = F.value > 0 ? mu_ * n.dF : 0.0;
-    return n;
-  }
+  /// The normal law at y (model/oblique_contact.hpp).
+  using Normal = NormalContactRates;
+  Normal normal(const State& y) const { return normal_contact_rates(*normal_, y[u], y[v], mu_, inverse_m_); }
 
   /// A cell in contact: its length inside the contact l_i [m], stiffness 8 G* l_i [N/m], limit c_i
   /// [N] and the limit's rate in tau, and for the edge cell whether the contact shrinks and da/dtau.
