@@ -44,6 +44,17 @@
 
 namespace hertzdash {
 
+/// The relative L1 error sum |run - reference| / sum |reference| by which Kratos's Chung_Ooi_class
+/// compares its DEM with a digitised curve, accumulated point by point.
+struct KratosL1Error {
+  double difference = 0, reference = 0;
+  void add(double run, double reference_value) {
+    difference += std::abs(run - reference_value);
+    reference += std::abs(reference_value);
+  }
+  double value() const { return difference / reference; }
+};
+
 /// One benchmark test, a row of parameters.csv (SI units).
 struct ChungOoiTest {
   std::string name;             ///< test1, test2

@@ -58,14 +58,13 @@ inline constexpr ChungOoiTest4Curve chung_ooi_test4_curves[] = {
 /// The L1 relative error sum |run - reference| / sum |reference| over a curve's digitised angles
 /// (Kratos's Chung_Ooi_class), the law and model run at each.
 inline double chung_ooi_test4_error(const ChungOoiTest4Curve& c, const std::string& law, const std::string& model) {
-  double difference = 0, reference = 0;
+  KratosL1Error error;
   for (const auto& [angle, value] : read_two_columns(chung_ooi_data_dir() / c.file)) {
     const ObliqueImpactResult r = run_oblique_impact(chung_ooi_test4(law, model, angle));
     if (!r.separated) throw std::runtime_error(std::string("Chung and Ooi test 4: no separation at ") + std::to_string(angle) + " deg");
-    difference += std::abs(c.value(r) - value);
-    reference += std::abs(value);
+    error.add(c.value(r), value);
   }
-  return difference / reference;
+  return error.value();
 }
 
 }  // namespace hertzdash
