@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
+#include <string_view>
 
 namespace hertzdash {
 
@@ -21,6 +23,29 @@ namespace {
 double head_on_linear_stiffness(ObliqueImpactSpec base) {
   base.incidence_angle_deg = 0;
   return matched_linear_stiffness_N_per_m(base);
+}
+
+/// The parameters a fit of rebound angles can take: the option, its start from the base run, and
+/// where its value goes in each run.
+struct ReboundAngleParameter {
+  std::string_view option;
+  double (*start)(const ObliqueImpactSpec& base);
+  void (*apply)(ObliqueImpactSpec& run, double value);
+};
+constexpr ReboundAngleParameter rebound_angle_parameters[] = {
+    {"friction", [](const ObliqueImpactSpec&) { return 0.1; }, [](ObliqueImpactSpec& s, double v) { s.friction = v; }},
+    {"ball-nu", [](const ObliqueImpactSpec& b) { return b.setup.ball.nu; },
+     [](ObliqueImpactSpec& s, double v) { s.setup.ball.nu = v; }},
+    {"tangential-stiffness",
+     [](const ObliqueImpactSpec& b) { return b.linear_stiffness_N_per_m ? *b.linear_stiffness_N_per_m : head_on_linear_stiffness(b); },
+     [](ObliqueImpactSpec& s, double v) { s.linear_stiffness_N_per_m = v; }},
+};
+
+/// The entry of rebound_angle_parameters for `option`, or nullptr.
+const ReboundAngleParameter* find_rebound_angle_parameter(std::string_view option) {
+  for (const ReboundAngleParameter& p : rebound_angle_parameters)
+    if (p.option == option) return &p;
+  return nullptr;
 }
 
 class ReboundAngleData final : public FitData {
@@ -36,11 +61,7 @@ class ReboundAngleData final : public FitData {
   }
   std::vector<double> start(const std::vector<FitParameter>& parameters) override {
     std::vector<double> v;
-    for (const FitParameter& p : parameters) {
-      if (p.option == "friction") v.push_back(0.1);
-      else if (p.option == "ball-nu") v.push_back(base_.setup.ball.nu);
-      else v.push_back(base_.linear_stiffness_N_per_m ? *base_.linear_stiffness_N_per_m : head_on_linear_stiffness(base_));
-    }
+    for (const FitParameter& p : parameters) v.push_back(find_rebound_angle_parameter(p.option)->start(base_));
     return v;
   }
   bool residuals(const std::vector<double>& law, const std::vector<double>&, double* r) override {
@@ -96,11 +117,7 @@ class ReboundAngleData final : public FitData {
   ObliqueImpactResult run_at(const std::vector<double>& law, double angle_deg) {
     ObliqueImpactSpec s = base_;
     s.incidence_angle_deg = angle_deg;
-    for (std::size_t j = 0; j < names_.size(); ++j) {
-      if (names_[j] == "friction") s.friction = law[j];
-      else if (names_[j] == "ball-nu") s.setup.ball.nu = law[j];
-      else s.linear_stiffness_N_per_m = law[j];
-    }
+    for (std::size_t j = 0; j < names_.size(); ++j) find_rebound_angle_parameter(names_[j])->apply(s, law[j]);
     ++runs_;
     return run_oblique_impact(s);
   }
@@ -128,8 +145,11 @@ FitResult fit_rebound_angles(const ReboundAngleTable& table, const ObliqueImpact
   if (settings.parameters.empty()) settings.parameters = {{"friction", 1e-3, 2.0}};
   std::vector<std::string> names;
   for (const FitParameter& p : settings.parameters) {
-    if (p.option != "friction" && p.option != "tangential-stiffness" && p.option != "ball-nu")
-      throw InvalidParameter("fit", p.option, "friction, tangential-stiffness or ball-nu, the parameters fitted to rebound angles");
+    if (!find_rebound_angle_parameter(p.option)) {
+      std::string options;
+      for (const ReboundAngleParameter& q : rebound_angle_parameters) options += (options.empty() ? "" : ", ") + std::string(q.option);
+      throw InvalidParameter("fit", p.option, "one of " + options + ", the parameters fitted to rebound angles");
+    }
     if (p.option == "tangential-stiffness" && base.tangential_model != "linear-spring")
       throw InvalidParameter("fit", p.option, "fitted with the tangential model linear-spring only");
     names.push_back(p.option);
