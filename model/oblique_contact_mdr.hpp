@@ -74,7 +74,7 @@ class MdrObliqueContactSystem {
         G_(tangential.pair.shear_modulus_Pa), R_(tangential.pair.radius_m), inverse_m_(1 / mass_kg),
         inverse_I_(1 / (tangential.inertia_factor * mass_kg * tangential.radius_m * tangential.radius_m)),
         cells_(cells), onset_(onset), t_obs_s_(t_obs_s) {
-    if (cells < 1 || cells > max_cells) throw std::invalid_argument("MdrObliqueContactSystem: cells must be in [1, 512]");
+    if (cells < 1 || cells > max_cells) throw std::invalid_argument("MdrObliqueContactSystem: cells must be in [1, max_cells]");
     const double v0 = onset.normal_speed_mps, X = undamped_hertz_max_deformation_m(K, mass_kg, v0);
     h_ = 1.001 * std::sqrt(R_ * X) / cells;
     const double t_H = undamped_hertz_contact_time_factor() * X / v0;

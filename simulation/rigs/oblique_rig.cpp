@@ -1,6 +1,7 @@
 // The rig `oblique` (simulation/rigs/oblique_rig.hpp).
 #include "hertzdash/simulation/rigs/oblique_rig.hpp"
 
+#include "hertzdash/model/oblique_contact_mdr.hpp"  // max_cells
 #include "hertzdash/model/tangential/registry.hpp"
 #include "hertzdash/simulation/rigs/second_sphere_inputs.hpp"
 #include "hertzdash/simulation/options/run_description.hpp"
@@ -49,11 +50,12 @@ constexpr ParameterDecl second_spin{.key = "second-spin", .unit = "rad/s", .colu
 constexpr ParameterDecl second_inertia_factor{.key = "second-inertia-factor", .range = R::open_closed(0, 1),
     .default_value = "0.4", .default_number = 0.4, .default_source = "a solid sphere, 2/5",
     .help = "The second sphere's moment of inertia over m R^2 (with `second-radius`)"};
-constexpr ParameterDecl contact_cells{.key = "contact-cells", .range = R::integer(1, 512), .default_value = "200",
+constexpr ParameterDecl contact_cells{.key = "contact-cells", .range = R::integer(1, MdrObliqueContactSystem::max_cells),
+    .default_value = "200",
     .default_number = default_contact_cells, .default_source = "second order in the cells: the slip after within about "
                                                                "2e-5 of its limit at 200 (tests/test_oblique_mdr.cpp)",
     .help = "Cells over the contact radius of a tangential model resolved over the contact area (--tangential-model "
-            "cattaneo-mindlin-mdr), an integer in [1, 512]"};
+            "cattaneo-mindlin-mdr)"};
 namespace sphere2 = second_sphere_inputs;
 constexpr ParameterDecl inputs[] = {incidence_angle,      friction,           tangential_model, spin,        inertia_factor,
                                     tangential_stiffness, tangential_damping, contact_cells,    sphere2::radius, sphere2::E,

@@ -91,7 +91,8 @@ void validate(const ObliqueImpactSpec& s) {
                            "0 with the tangential model " + s.tangential_model +
                                " (its stiffness depends on the force or on the slip over the contact; the dashpot is offered with the other models)");
   if (model->resolves_contact_area && !(s.contact_cells >= 1 && s.contact_cells <= MdrObliqueContactSystem::max_cells))
-    throw InvalidParameter("contact-cells", std::to_string(s.contact_cells), "in [1, 512]");
+    throw InvalidParameter("contact-cells", std::to_string(s.contact_cells),
+                           fmt::format("in [1, {}]", MdrObliqueContactSystem::max_cells));
   if (s.linear_stiffness_N_per_m && !(*s.linear_stiffness_N_per_m > 0 && std::isfinite(*s.linear_stiffness_N_per_m)))
     throw InvalidParameter("tangential-stiffness", format_value(*s.linear_stiffness_N_per_m), "> 0");
   if (s.second) {
@@ -156,12 +157,15 @@ IntegrationStats integrate_switching(const System& sys, typename System::State& 
 }
 
 /// The result's fields from the state y after the contact of either system (both name their
-/// components alike), s the slip there: for two spheres each sphere's velocities from the pair's.
+/// components alike) and what its observer saw: for two spheres each sphere's velocities from the
+/// pair's.
 template <class System>
-void read_final_state(const typename System::State& y, double s, const ObliqueImpactSpec& spec, double m, double w0,
-                      double v0, ObliqueImpactResult& out) {
+void read_final_state(const System& sys, const typename System::State& y, const Observer<typename System::State>& observer,
+                      const ObliqueImpactSpec& spec, double m, double w0, double v0, ObliqueImpactResult& out) {
   using I = typename System::Index;
-  const double vn = -y[I::v];
+  const double vn = -y[I::v], s = sys.slip_mps(y);
+  out.separated = observer.separated;
+  out.peak_normal_force_N = observer.peak_force_N;
   out.contact_time_s = y[I::t];
   out.normal_restitution = vn / v0;
   out.tangential_velocity_after_mps = y[I::w];
@@ -232,9 +236,7 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
       const MdrObliqueContactSystem::State settled = sys.settled(z, progress < sys.probe_step());
       return sys.switches_armed(settled) ? settled : sys.settled(z, true);
     });
-    out.separated = observer.separated;
-    out.peak_normal_force_N = observer.peak_force_N;
-    read_final_state<MdrObliqueContactSystem>(y, sys.slip_mps(y), spec, m, w0, v0, out);
+    read_final_state(sys, y, observer, spec, m, w0, v0, out);
     return out;
   }
   const ObliqueContactSystem sys(*force, c, K, m, onset, t_obs);
@@ -246,9 +248,7 @@ ObliqueImpactResult run_oblique_impact(const ObliqueImpactSpec& spec) {
     if (which == static_cast<int>(E::stick_end)) return sys.settled_mode(z, false, true);
     return sys.stuck_state(z);
   });
-  out.separated = observer.separated;
-  out.peak_normal_force_N = observer.peak_force_N;
-  read_final_state<ObliqueContactSystem>(y, sys.slip_mps(y), spec, m, w0, v0, out);
+  read_final_state(sys, y, observer, spec, m, w0, v0, out);
   return out;
 }
 
